@@ -1,0 +1,18 @@
+#pragma once
+// Each subcommand registers itself on the CLI11 app and, when it is the one selected, sets `run`.
+// Exit codes: 0 success, 2 usage error, 3 invalid input (InputError), 1 anything unexpected.
+#include <CLI/CLI.hpp>
+
+#include <functional>
+
+namespace vl::cli {
+
+using CommandRunner = std::function<int()>;
+
+constexpr int kExitOk = 0;
+constexpr int kExitUsage = 2;
+constexpr int kExitInvalidInput = 3;
+
+void addReduceCommand(CLI::App& app, CommandRunner& run);
+
+} // namespace vl::cli

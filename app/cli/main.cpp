@@ -1,0 +1,29 @@
+// visemelab: the headless pipeline (reduce, refine, visemes, export, freq).
+#include "app/cli/Command.h"
+#include "core/common/Error.h"
+
+#include <cstdio>
+#include <exception>
+
+int main(int argc, char** argv) {
+    CLI::App app{"VisemeLab: optimal viseme reduction and adaptive deformable faces"};
+    app.require_subcommand(1, 1);
+    vl::cli::CommandRunner run;
+    vl::cli::addReduceCommand(app, run);
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        const int code = app.exit(e);
+        return code == 0 ? vl::cli::kExitOk : vl::cli::kExitUsage;
+    }
+    try {
+        return run ? run() : vl::cli::kExitUsage;
+    } catch (const vl::InputError& e) {
+        std::fprintf(stderr, "visemelab: error: %s\n", e.what());
+        return vl::cli::kExitInvalidInput;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "visemelab: internal error: %s\n", e.what());
+        return 1;
+    }
+}

@@ -1,0 +1,21 @@
+#pragma once
+// Errors the core reports. InputError is bad user input (a file, a flag, a table entry): its message
+// always names where the problem is (file, line, element or JSON path) so the user can fix it.
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+namespace vl {
+
+class InputError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// Throws InputError with the message "<where>: <what>".
+[[noreturn]] void throwInputError(std::string_view where, std::string_view what);
+
+// "<file>:<line>" for messages about a line of a text file.
+std::string fileLine(std::string_view file, std::size_t line);
+
+} // namespace vl

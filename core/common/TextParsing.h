@@ -1,0 +1,24 @@
+#pragma once
+// Small, strict number parsing and formatting shared by the text formats (OBJ, PLY, VRML, CSV).
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace vl {
+
+// Parses a finite double; throws InputError "<where>: ..." for junk, NaN or infinity.
+double parseFiniteDouble(std::string_view token, std::string_view where);
+
+// Parses a signed integer; throws InputError "<where>: ..." for junk or overflow.
+std::int64_t parseInteger(std::string_view token, std::string_view where);
+
+// Shortest text that parses back to exactly the same double (round-trip exact).
+std::string formatDouble(double value);
+
+// Splits on spaces/tabs (and '\r'), skipping empty tokens.
+std::vector<std::string_view> splitWhitespace(std::string_view line);
+
+std::string_view trim(std::string_view text);
+
+} // namespace vl

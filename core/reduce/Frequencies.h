@@ -1,0 +1,46 @@
+#pragma once
+// Viseme frequencies f_i: given directly, or derived from a phoneme frequency table and a
+// phoneme -> viseme map (a viseme's frequency is the sum of its phonemes').
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace vl {
+
+// Ordered (name, value) pairs; order is kept for display and output.
+struct FrequencyTable {
+    std::vector<std::pair<std::string, double>> entries;
+    double total() const;
+    const double* find(std::string_view name) const;
+};
+
+// phoneme -> viseme name, in table order.
+struct PhonemeVisemeMap {
+    std::vector<std::pair<std::string, std::string>> entries;
+    const std::string* visemeOf(std::string_view phoneme) const;
+};
+
+// What a frequency file holds: either viseme frequencies directly, or a phoneme table plus a map.
+struct FrequencySource {
+    FrequencyTable visemeFrequencies; // used when phonemes is empty
+    FrequencyTable phonemes;
+    PhonemeVisemeMap map;
+    bool isPhonemeBased() const { return !phonemes.entries.empty(); }
+};
+
+// CSV "name,frequency" lines (a header line and '#' comments allowed) or JSON: either
+// {"name": f, ...}, or {"phonemes": {...} | [[p,f],...], "map": {"phoneme": "viseme", ...}}.
+// Negative, NaN or non-numeric values are errors naming file and line / JSON path.
+FrequencySource loadFrequencyFile(const std::filesystem::path& path);
+FrequencyTable parseFrequencyCsv(std::string_view text, std::string_view source);
+PhonemeVisemeMap loadPhonemeMapFile(const std::filesystem::path& path); // CSV "phoneme,viseme" or JSON object
+
+// Frequencies per viseme of `visemeNames` (same order). Direct: every viseme must be listed and
+// unknown names are errors. Phoneme-based: every phoneme must be mapped to a known viseme (the
+// error lists all unmapped phonemes); visemes no phoneme maps to get 0. All must be >= 0 and not
+// all zero. Frequencies are normalised to sum to 1.
+std::vector<double> visemeFrequencies(const FrequencySource& source, const std::vector<std::string>& visemeNames,
+                                      std::string_view where = "frequencies");
+
+} // namespace vl

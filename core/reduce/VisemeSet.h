@@ -1,0 +1,46 @@
+#pragma once
+// An interpolable viseme set: a neutral mesh (topology, (u,v), neutral positions) plus n named
+// visemes that differ from it only in vertex positions.
+#include "core/mesh/Mesh.h"
+
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace vl {
+
+struct Viseme {
+    std::string name;
+    std::filesystem::path source; // file it was loaded from; empty when generated
+    std::vector<Vec3> positions;  // one per vertex of the neutral mesh, same order
+};
+
+struct VisemeSet {
+    MeshData neutral;
+    std::filesystem::path neutralSource;
+    std::vector<Viseme> visemes;
+
+    std::size_t size() const { return visemes.size(); }
+    std::size_t vertexCount() const { return neutral.positions.size(); }
+    // Index of the viseme with this name, or -1.
+    int find(std::string_view name) const;
+    // The viseme as a full mesh (neutral topology and (u,v), the viseme's positions).
+    MeshData meshOf(std::size_t viseme) const;
+};
+
+// Throws InputError naming `otherSource` and the first mismatch (vertex count, face count, or the
+// first differing face) when `other` is not interpolable with `reference`.
+void checkInterpolable(const MeshData& reference, std::string_view referenceSource, const MeshData& other,
+                       std::string_view otherSource);
+
+// Loads the neutral mesh and each (name, file) viseme, checking interpolability, unique non-empty
+// names and n >= 2.
+VisemeSet loadVisemeSet(const std::filesystem::path& neutral,
+                        const std::vector<std::pair<std::string, std::filesystem::path>>& visemes);
+
+// All mesh files of a folder sorted by file name, named by their stem (the neutral file excluded).
+std::vector<std::pair<std::string, std::filesystem::path>>
+listVisemeFolder(const std::filesystem::path& folder, const std::filesystem::path& excluded = {});
+
+} // namespace vl

@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages VisemeLab needs; does nothing when all are present (idempotent).
+set -euo pipefail
+packages=(g++ make cmake pkg-config ninja-build libglfw3-dev libimgui-dev libstb-dev libglm-dev
+  libopenmesh-dev nlohmann-json3-dev libespeak-ng-dev espeak-ng-data libgtest-dev libgmock-dev
+  libbenchmark-dev libtbb-dev libcli11-dev libtinygltf-dev libepoxy-dev xvfb xauth
+  libgl1-mesa-dri fonts-dejavu-core)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then exit 0; fi
+echo "Installing: ${missing[*]}" >&2
+sudo=""
+[ "$(id -u)" -ne 0 ] && sudo="sudo"
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -qq
+$sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2
