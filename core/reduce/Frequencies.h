@@ -40,7 +40,8 @@ PhonemeVisemeMap loadPhonemeMapFile(const std::filesystem::path& path); // CSV "
 // unknown names are errors. Phoneme-based: every phoneme must be mapped to a known viseme (the
 // error lists all unmapped phonemes); visemes no phoneme maps to get 0. All must be >= 0 and not
 // all zero. Frequencies are normalised to sum to 1.
-std::vector<double> visemeFrequencies(const FrequencySource& source, const std::vector<std::string>& visemeNames,
+std::vector<double> visemeFrequencies(const FrequencySource& source,
+                                      const std::vector<std::string>& visemeNames,
                                       std::string_view where = "frequencies");
 
 } // namespace vl

@@ -16,9 +16,9 @@ constexpr int kMaxExactVisemes = 20;
 
 struct ReductionProblem {
     std::span<const std::vector<Vec3>> shapes; // n shapes, same vertex count
-    std::span<const double> frequencies;        // n values >= 0, not all zero
-    std::span<const double> weights;            // one per vertex, >= 0
-    int target = 1;                             // m in 1..n
+    std::span<const double> frequencies;       // n values >= 0, not all zero
+    std::span<const double> weights;           // one per vertex, >= 0
+    int target = 1;                            // m in 1..n
 };
 
 struct Grouping {

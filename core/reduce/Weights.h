@@ -17,7 +17,8 @@ std::optional<WeightMode> weightModeFromString(std::string_view text);
 // uniform: all ones (the paper's rho1); area: summed incident triangle area of the neutral mesh
 // (rho2); painted: `painted` as given. Validates count and that every weight is finite and >= 0 and
 // not all zero; throws InputError naming `where` and the offending vertex.
-std::vector<double> computeWeights(WeightMode mode, const MeshData& neutral, const std::vector<double>& painted = {},
+std::vector<double> computeWeights(WeightMode mode, const MeshData& neutral,
+                                   const std::vector<double>& painted = {},
                                    std::string_view where = "weights");
 
 // Painted weights from a file: JSON (array, or object with a "weights" array) or plain text (one

@@ -1,0 +1,54 @@
+#pragma once
+// One reduction run from user-level inputs (viseme set, frequencies, weight mode, target) to the
+// merged meshes and the files the CLI and the editor write. Shared so both behave identically.
+#include "core/reduce/Frequencies.h"
+#include "core/reduce/Reduction.h"
+#include "core/reduce/VisemeSet.h"
+#include "core/reduce/Weights.h"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace vl {
+
+struct ReduceSettings {
+    WeightMode weightMode = WeightMode::Uniform;
+    std::vector<double> paintedWeights; // used when weightMode == Painted
+    int target = 1;
+};
+
+struct ReducedViseme {
+    std::string name;                 // member names joined by '+', e.g. "FF+TH"
+    std::vector<std::string> members; // original viseme names
+    double frequency = 0;             // sum of the members' normalised frequencies
+    std::vector<Vec3> positions;      // the frequency-weighted mean of the members
+};
+
+struct ReduceOutcome {
+    std::vector<std::string> visemeNames;
+    std::vector<double> frequencies; // normalised, one per original viseme
+    std::vector<double> weights;     // one per vertex
+    ReductionResult result;
+    std::vector<ReducedViseme> reduced; // for the chosen target m
+    // phoneme -> reduced index (empty when frequencies were given per viseme).
+    std::vector<std::pair<std::string, int>> phonemeToReduced;
+};
+
+ReduceOutcome runReduction(const VisemeSet& set, const FrequencySource& frequencies,
+                           const ReduceSettings& settings, const ProgressCallback& progress = {});
+
+struct ReduceTimings {
+    double loadMs = 0, reduceMs = 0, writeMs = 0;
+};
+
+// Writes into `outDir`: reduced_<i>_<name>.obj and .wrl per merged mesh and mapping.json (each original
+// viseme and phoneme -> reduced index). Returns the written file names (relative to outDir).
+std::vector<std::string> writeReductionOutputs(const std::filesystem::path& outDir, const VisemeSet& set,
+                                               const ReduceOutcome& outcome);
+
+// The JSON report: n, m, weights, cost, groups, cost_curve, frequencies, timing_ms, outputs.
+std::string reductionReportJson(const ReduceOutcome& outcome, WeightMode mode, const ReduceTimings& timings,
+                                const std::vector<std::string>& outputs);
+
+} // namespace vl

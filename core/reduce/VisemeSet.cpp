@@ -1,0 +1,85 @@
+#include "core/reduce/VisemeSet.h"
+
+#include "core/common/Error.h"
+#include "core/io/MeshIO.h"
+
+#include <algorithm>
+#include <set>
+
+namespace vl {
+
+int VisemeSet::find(std::string_view name) const {
+    for (std::size_t i = 0; i < visemes.size(); ++i)
+        if (visemes[i].name == name) return static_cast<int>(i);
+    return -1;
+}
+
+MeshData VisemeSet::meshOf(std::size_t viseme) const {
+    MeshData mesh = neutral;
+    mesh.positions = visemes.at(viseme).positions;
+    return mesh;
+}
+
+void checkInterpolable(const MeshData& reference, std::string_view referenceSource, const MeshData& other,
+                       std::string_view otherSource) {
+    const std::string against = " (the neutral mesh " + std::string(referenceSource) + " has ";
+    if (other.positions.size() != reference.positions.size())
+        throwInputError(otherSource, "not interpolable: " + std::to_string(other.positions.size()) +
+                                         " vertices" + against + std::to_string(reference.positions.size()) +
+                                         ")");
+    if (other.triangles.size() != reference.triangles.size())
+        throwInputError(otherSource, "not interpolable: " + std::to_string(other.triangles.size()) +
+                                         " triangles" + against + std::to_string(reference.triangles.size()) +
+                                         ")");
+    const auto mismatch =
+        std::mismatch(reference.triangles.begin(), reference.triangles.end(), other.triangles.begin());
+    if (mismatch.first != reference.triangles.end()) {
+        const auto face = static_cast<std::size_t>(mismatch.first - reference.triangles.begin());
+        const auto& a = *mismatch.first;
+        const auto& b = *mismatch.second;
+        auto text = [](const Triangle& t) {
+            return std::to_string(t[0]) + " " + std::to_string(t[1]) + " " + std::to_string(t[2]);
+        };
+        throwInputError(otherSource, "not interpolable: triangle " + std::to_string(face) + " is (" +
+                                         text(b) + ") but (" + text(a) + ") in the neutral mesh " +
+                                         std::string(referenceSource));
+    }
+}
+
+VisemeSet loadVisemeSet(const std::filesystem::path& neutral,
+                        const std::vector<std::pair<std::string, std::filesystem::path>>& visemes) {
+    if (visemes.size() < 2)
+        throwInputError("viseme set", "needs at least 2 visemes, got " + std::to_string(visemes.size()));
+    VisemeSet set;
+    set.neutralSource = neutral;
+    set.neutral = readMesh(neutral);
+    std::set<std::string> names;
+    for (const auto& [name, file] : visemes) {
+        if (name.empty()) throwInputError(file.string(), "viseme has an empty name");
+        if (!names.insert(name).second)
+            throwInputError(file.string(), "duplicate viseme name '" + name + "'");
+        MeshData mesh = readMesh(file);
+        checkInterpolable(set.neutral, neutral.string(), mesh, file.string());
+        set.visemes.push_back({name, file, std::move(mesh.positions)});
+    }
+    return set;
+}
+
+std::vector<std::pair<std::string, std::filesystem::path>>
+listVisemeFolder(const std::filesystem::path& folder, const std::filesystem::path& excluded) {
+    std::error_code ec;
+    if (!std::filesystem::is_directory(folder, ec)) throwInputError(folder.string(), "not a folder");
+    std::vector<std::filesystem::path> files;
+    for (const auto& entry : std::filesystem::directory_iterator(folder, ec))
+        if (entry.is_regular_file() && isMeshFile(entry.path())) files.push_back(entry.path());
+    std::sort(files.begin(), files.end());
+    std::vector<std::pair<std::string, std::filesystem::path>> result;
+    for (const auto& file : files) {
+        if (!excluded.empty() && std::filesystem::equivalent(file, excluded, ec)) continue;
+        result.emplace_back(file.stem().string(), file);
+    }
+    if (result.empty()) throwInputError(folder.string(), "contains no mesh files (.obj, .ply, .wrl)");
+    return result;
+}
+
+} // namespace vl

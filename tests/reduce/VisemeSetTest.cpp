@@ -1,0 +1,89 @@
+#include "core/reduce/VisemeSet.h"
+#include "core/common/Error.h"
+#include "core/io/MeshIO.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+using namespace vl;
+
+namespace {
+
+MeshData quadMesh(double z) {
+    MeshData mesh;
+    mesh.positions = {Vec3(0, 0, z), Vec3(1, 0, z), Vec3(1, 1, z), Vec3(0, 1, z)};
+    mesh.triangles = {Triangle{0, 1, 2}, Triangle{0, 2, 3}};
+    return mesh;
+}
+
+struct TempDir {
+    std::filesystem::path path;
+    explicit TempDir(const std::string& name) : path(std::filesystem::temp_directory_path() / name) {
+        std::filesystem::remove_all(path);
+        std::filesystem::create_directories(path);
+    }
+    ~TempDir() { std::filesystem::remove_all(path); }
+};
+
+std::string errorOf(const std::function<void()>& fn) {
+    try {
+        fn();
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+} // namespace
+
+TEST(VisemeSet, LoadsInterpolableSetAndKeepsOrder) {
+    TempDir dir("visemelab_set_ok");
+    writeMesh(dir.path / "neutral.obj", quadMesh(0));
+    writeMesh(dir.path / "b.obj", quadMesh(2));
+    writeMesh(dir.path / "a.ply", quadMesh(1));
+    const auto files = listVisemeFolder(dir.path, dir.path / "neutral.obj");
+    ASSERT_EQ(files.size(), 2u);
+    EXPECT_EQ(files[0].first, "a");
+    EXPECT_EQ(files[1].first, "b");
+    const auto set = loadVisemeSet(dir.path / "neutral.obj", files);
+    EXPECT_EQ(set.size(), 2u);
+    EXPECT_EQ(set.visemes[1].positions[2], Vec3(1, 1, 2));
+    EXPECT_EQ(set.find("b"), 1);
+    EXPECT_EQ(set.meshOf(0).positions[0], Vec3(0, 0, 1));
+}
+
+TEST(VisemeSet, NonInterpolableMeshesAreNamed) {
+    TempDir dir("visemelab_set_bad");
+    writeMesh(dir.path / "neutral.obj", quadMesh(0));
+    auto fewer = quadMesh(1);
+    fewer.positions.pop_back();
+    fewer.triangles.pop_back();
+    writeMesh(dir.path / "fewer.obj", fewer);
+    auto flipped = quadMesh(1);
+    flipped.triangles[1] = Triangle{0, 3, 2};
+    writeMesh(dir.path / "flipped.obj", flipped);
+    writeMesh(dir.path / "ok.obj", quadMesh(1));
+
+    auto msg = errorOf([&] {
+        loadVisemeSet(dir.path / "neutral.obj", {{"ok", dir.path / "ok.obj"}, {"f", dir.path / "fewer.obj"}});
+    });
+    EXPECT_NE(msg.find("fewer.obj: not interpolable: 3 vertices"), std::string::npos) << msg;
+    msg = errorOf([&] {
+        loadVisemeSet(dir.path / "neutral.obj",
+                      {{"ok", dir.path / "ok.obj"}, {"f", dir.path / "flipped.obj"}});
+    });
+    EXPECT_NE(msg.find("flipped.obj: not interpolable: triangle 1 is (0 3 2) but (0 2 3)"), std::string::npos)
+        << msg;
+    msg = errorOf([&] { loadVisemeSet(dir.path / "neutral.obj", {{"ok", dir.path / "ok.obj"}}); });
+    EXPECT_NE(msg.find("at least 2 visemes"), std::string::npos) << msg;
+    msg = errorOf([&] {
+        loadVisemeSet(dir.path / "neutral.obj", {{"x", dir.path / "ok.obj"}, {"x", dir.path / "ok.obj"}});
+    });
+    EXPECT_NE(msg.find("duplicate viseme name 'x'"), std::string::npos) << msg;
+    msg = errorOf([&] {
+        loadVisemeSet(dir.path / "neutral.obj",
+                      {{"x", dir.path / "ok.obj"}, {"y", dir.path / "missing.obj"}});
+    });
+    EXPECT_NE(msg.find("missing.obj: file not found"), std::string::npos) << msg;
+}

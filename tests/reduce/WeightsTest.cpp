@@ -1,0 +1,95 @@
+#include "core/reduce/Weights.h"
+#include "core/common/Error.h"
+#include "core/reduce/Reduction.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+using namespace vl;
+
+namespace {
+
+// A big triangle (v0, v1, v2) and a sliver (v1, v3, v2): v0 has a large area weight, v3 a tiny one.
+MeshData twoRegionMesh() {
+    MeshData mesh;
+    mesh.positions = {Vec3(0, 0, 0), Vec3(10, 0, 0), Vec3(0, 10, 0), Vec3(5.01, 5.01, 0)};
+    mesh.triangles = {Triangle{0, 1, 2}, Triangle{1, 3, 2}};
+    return mesh;
+}
+
+std::filesystem::path writeTemp(const std::string& name, const std::string& text) {
+    const auto path = std::filesystem::temp_directory_path() / ("visemelab_weights_" + name);
+    std::ofstream(path) << text;
+    return path;
+}
+
+} // namespace
+
+TEST(Weights, AreaWeightIsSumOfIncidentTriangleAreas) {
+    const auto mesh = twoRegionMesh();
+    const auto w = computeWeights(WeightMode::Area, mesh);
+    const double big = 50.0;
+    EXPECT_DOUBLE_EQ(w[0], big);
+    EXPECT_GT(w[1], big);
+    EXPECT_LT(w[3], 0.2);
+    EXPECT_DOUBLE_EQ(w[1] - big, w[3]);
+}
+
+// The paper claims rho1 (uniform) and rho2 (area) always give the same reduction. The merged mesh of a
+// fixed group is indeed weight-independent, but the optimal grouping is not: here they differ.
+TEST(Weights, UniformAndAreaWeightsCanPickDifferentGroupings) {
+    const auto mesh = twoRegionMesh();
+    const auto& n = mesh.positions;
+    // A1 = neutral; A2 moves the tiny-area vertex v3 by 2; A3 moves the large-area vertex v0 by 1.
+    std::vector<std::vector<Vec3>> shapes = {n, n, n};
+    shapes[1][3] += Vec3(0, 0, 2);
+    shapes[2][0] += Vec3(0, 0, 1);
+    const std::vector<double> f = {1, 1, 1};
+
+    const auto uniform = computeWeights(WeightMode::Uniform, mesh);
+    const auto area = computeWeights(WeightMode::Area, mesh);
+    const auto byUniform = reduceVisemes({shapes, f, uniform, 2}).best().groups;
+    const auto byArea = reduceVisemes({shapes, f, area, 2}).best().groups;
+    // Uniform: |A1-A3|^2 = 1 < |A1-A2|^2 = 4, so A1 and A3 merge. Area: moving v0 is expensive.
+    EXPECT_EQ(byUniform, (std::vector<std::vector<int>>{{0, 2}, {1}}));
+    EXPECT_EQ(byArea, (std::vector<std::vector<int>>{{0, 1}, {2}}));
+    EXPECT_NE(byUniform, byArea);
+
+    // For a fixed group the merged mesh does not depend on the weights.
+    const std::vector<int> group = {0, 1};
+    EXPECT_EQ(mergeGroup(shapes, f, group), mergeGroup(shapes, f, group));
+}
+
+TEST(Weights, PaintedWeightsAreValidated) {
+    const auto mesh = twoRegionMesh();
+    EXPECT_NO_THROW(computeWeights(WeightMode::Painted, mesh, {1, 0, 2, 0.5}));
+    EXPECT_THROW(computeWeights(WeightMode::Painted, mesh, {1, 2, 3}), InputError);
+    EXPECT_THROW(computeWeights(WeightMode::Painted, mesh, {0, 0, 0, 0}), InputError);
+    try {
+        computeWeights(WeightMode::Painted, mesh, {1, -1, 1, 1}, "paint.json");
+        FAIL();
+    } catch (const InputError& e) {
+        EXPECT_STREQ(e.what(), "paint.json: weight of vertex 1 is -1; weights must be finite and >= 0");
+    }
+}
+
+TEST(Weights, LoadsJsonAndTextFilesWithLocatedErrors) {
+    EXPECT_EQ(loadWeightsFile(writeTemp("a.json", "[1, 2.5, 0]")), (std::vector<double>{1, 2.5, 0}));
+    EXPECT_EQ(loadWeightsFile(writeTemp("b.json", "{\"weights\": [3, 4]}")), (std::vector<double>{3, 4}));
+    EXPECT_EQ(loadWeightsFile(writeTemp("c.txt", "# weights\n1\n2, 3\n")), (std::vector<double>{1, 2, 3}));
+    auto expectMessage = [](const std::filesystem::path& path, const std::string& fragment) {
+        try {
+            loadWeightsFile(path);
+            ADD_FAILURE() << "expected error for " << path;
+        } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+        }
+    };
+    expectMessage(writeTemp("d.txt", "1\n2\nnan\n"), "weights_d.txt:3: non-finite");
+    expectMessage(writeTemp("e.json", "[1, \"x\"]"), ":/1: expected a number");
+    expectMessage(writeTemp("f.json", ""), "empty weights file");
+    expectMessage(writeTemp("g.json", "[1,"), "invalid JSON");
+    expectMessage(std::filesystem::temp_directory_path() / "visemelab_no_such_file.json", "file not found");
+}
