@@ -1,0 +1,35 @@
+#pragma once
+// The bundled deformable face (paper section 3.4): a base geometry image generated procedurally from
+// analytic shapes (an ellipsoid-like head front plus smooth bumps: forehead, brow ridge, eye sockets
+// with eyeballs and lids, nose with nostrils, lips, chin, cheeks, jaw line) and AddVector fields for
+// the muscles that visemes need, split left/right where the paper does. A second individual (other
+// proportions) reuses the same fields unchanged: retargeting. Units are centimetres; the face looks
+// along +z, +y is up, +x is the viewer's right (the face's left).
+#include "core/deform/DeformationCascade.h"
+
+#include <span>
+#include <string_view>
+#include <vector>
+
+namespace vl::face {
+
+enum class Individual { Bundled, Retarget };
+
+std::string_view individualName(Individual who); // "bundled", "retarget"
+// Throws InputError naming `where` for anything but "bundled" / "retarget".
+Individual parseIndividual(std::string_view name, std::string_view where);
+
+// Base geometry image of an individual, sampled on a gridSize x gridSize grid.
+SampledField makeFaceGeometry(Individual who, int gridSize = 257);
+
+// The expression fields of every individual, in cascade order, with their parameters.
+// Parameter names: frontalis_l, frontalis_r, zygomatic_l, zygomatic_r, risorius_l, risorius_r,
+// jaw_open, lip_pucker, lip_press, upper_lip_raise, lower_lip_tuck.
+DeformationCascade makeFaceCascade(Individual who);
+DeformationCascade makeBundledFace();  // makeFaceCascade(Individual::Bundled)
+DeformationCascade makeRetargetFace(); // retarget(makeBundledFace(), its geometry): same fields
+
+// Preview colours (RGB in [0,1]) of the face regions at each (u,v): skin, lips, eyes, brows.
+std::vector<Vec3> faceColours(std::span<const Vec2> uvs);
+
+} // namespace vl::face

@@ -1,0 +1,42 @@
+#pragma once
+// A headless software renderer for previews and documentation pictures (no GL): z-buffered,
+// Lambert-shaded triangles with an optional wireframe overlay and per-vertex colours.
+#include "core/mesh/Mesh.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+namespace vl::preview {
+
+struct Image {
+    int width = 0;
+    int height = 0;
+    std::vector<std::uint8_t> rgba; // row-major from the top row, 4 bytes per pixel
+};
+
+struct RenderOptions {
+    int width = 512;
+    int height = 512;
+    // Camera orbit around the mesh centre, in degrees: yaw turns it to the mesh's right (+x),
+    // pitch raises it. 0/0 looks at the mesh along -z (the face front).
+    double yawDegrees = 0.0;
+    double pitchDegrees = 0.0;
+    double fovDegrees = 30.0;
+    bool wireframe = false;
+    std::vector<Vec3> vertexColours; // empty (uniform grey-beige) or one RGB in [0,1] per vertex
+    Vec3 background{0.13, 0.14, 0.17};
+    Vec3 wireColour{0.1, 0.1, 0.1};
+};
+
+// Renders `mesh` framed to fit the image. Throws InputError for an empty mesh, a size outside
+// 1..8192, or a colour list of the wrong length.
+Image render(const MeshData& mesh, const RenderOptions& options);
+
+// Places images side by side in rows of `columns` (all must have the same size).
+Image contactSheet(const std::vector<Image>& images, int columns);
+
+// Writes a PNG atomically (stb_image_write).
+void writePng(const std::filesystem::path& path, const Image& image);
+
+} // namespace vl::preview
