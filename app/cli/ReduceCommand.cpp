@@ -1,10 +1,159 @@
+// `visemelab reduce`: load a viseme set, reduce it to m merged meshes, write meshes, mapping and report.
 #include "app/cli/Command.h"
+#include "app/cli/Progress.h"
+#include "core/common/AtomicFile.h"
+#include "core/common/Error.h"
+#include "core/common/TextParsing.h"
+#include "core/reduce/ReduceRun.h"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
 
 namespace vl::cli {
 
+namespace {
+
+struct ReduceOptions {
+    std::string neutral;
+    std::vector<std::string> visemes; // NAME=FILE
+    std::string visemeDir;
+    std::vector<std::string> freqs; // NAME=F
+    std::string freqFile;
+    std::string mapFile;
+    std::string weights = "uniform";
+    int target = 0;
+    std::string outDir = "reduced";
+    std::string report;
+};
+
+std::pair<std::string, std::string> splitAssignment(const std::string& text, const std::string& option) {
+    const auto eq = text.find('=');
+    if (eq == std::string::npos || eq == 0 || eq + 1 == text.size())
+        throwInputError(option, "expected NAME=VALUE, got '" + text + "'");
+    return {text.substr(0, eq), text.substr(eq + 1)};
+}
+
+std::filesystem::path findNeutralIn(const std::filesystem::path& dir) {
+    for (const char* ext : {".obj", ".ply", ".wrl"}) {
+        const auto candidate = dir / (std::string("neutral") + ext);
+        if (std::filesystem::exists(candidate)) return candidate;
+    }
+    throwInputError(dir.string(), "no neutral mesh (neutral.obj/.ply/.wrl) in the folder; pass --neutral FILE");
+}
+
+VisemeSet loadSet(const ReduceOptions& o) {
+    if (!o.visemeDir.empty() && !o.visemes.empty())
+        throwInputError("--visemes", "use either --visemes DIR or --viseme NAME=FILE, not both");
+    std::filesystem::path neutral = o.neutral;
+    std::vector<std::pair<std::string, std::filesystem::path>> files;
+    if (!o.visemeDir.empty()) {
+        if (neutral.empty()) neutral = findNeutralIn(o.visemeDir);
+        files = listVisemeFolder(o.visemeDir, neutral);
+    } else {
+        if (neutral.empty()) throwInputError("--neutral", "a neutral mesh is required (or use --visemes DIR)");
+        for (const auto& v : o.visemes) files.emplace_back(splitAssignment(v, "--viseme"));
+    }
+    return loadVisemeSet(neutral, files);
+}
+
+FrequencySource loadFrequencies(const ReduceOptions& o, const VisemeSet& set) {
+    FrequencySource source;
+    if (!o.freqFile.empty() && !o.freqs.empty())
+        throwInputError("--freq", "use either --freq NAME=F or --freq-file FILE, not both");
+    if (!o.freqFile.empty()) {
+        source = loadFrequencyFile(o.freqFile);
+    } else if (!o.freqs.empty()) {
+        for (const auto& f : o.freqs) {
+            const auto [name, value] = splitAssignment(f, "--freq");
+            source.visemeFrequencies.entries.emplace_back(name, parseFiniteDouble(value, "--freq " + name));
+        }
+    } else {
+        std::fprintf(stderr, "visemelab: no frequencies given (--freq-file / --freq): using equal frequencies\n");
+        for (const auto& v : set.visemes) source.visemeFrequencies.entries.emplace_back(v.name, 1.0);
+    }
+    if (!o.mapFile.empty()) {
+        // With a map, the table holds phoneme frequencies.
+        if (!source.isPhonemeBased()) {
+            source.phonemes = std::move(source.visemeFrequencies);
+            source.visemeFrequencies = {};
+        }
+        source.map = loadPhonemeMapFile(o.mapFile);
+    }
+    if (source.isPhonemeBased() && source.map.entries.empty())
+        throwInputError("--freq-file", "a phoneme frequency table needs a phoneme -> viseme map (--map FILE)");
+    return source;
+}
+
+ReduceSettings loadSettings(const ReduceOptions& o) {
+    ReduceSettings settings;
+    settings.target = o.target;
+    if (const auto mode = weightModeFromString(o.weights)) {
+        settings.weightMode = *mode;
+        if (*mode == WeightMode::Painted) throwInputError("--weights", "painted weights need a file: --weights FILE");
+    } else {
+        settings.weightMode = WeightMode::Painted;
+        settings.paintedWeights = loadWeightsFile(o.weights);
+    }
+    return settings;
+}
+
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+int runReduce(const ReduceOptions& o) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const VisemeSet set = loadSet(o);
+    const FrequencySource frequencies = loadFrequencies(o, set);
+    const ReduceSettings settings = loadSettings(o);
+    ReduceTimings timings;
+    timings.loadMs = millisecondsSince(t0);
+
+    const auto t1 = std::chrono::steady_clock::now();
+    ProgressLine progress("reducing");
+    const ReduceOutcome outcome = runReduction(set, frequencies, settings, progress.callback());
+    progress.finish();
+    timings.reduceMs = millisecondsSince(t1);
+
+    const auto t2 = std::chrono::steady_clock::now();
+    const std::filesystem::path outDir = o.outDir;
+    auto outputs = writeReductionOutputs(outDir, set, outcome);
+    timings.writeMs = millisecondsSince(t2);
+    const std::filesystem::path reportPath = o.report.empty() ? outDir / "report.json" : std::filesystem::path(o.report);
+    writeFileAtomically(reportPath, reductionReportJson(outcome, settings.weightMode, timings, outputs));
+
+    std::printf("Reduced %zu visemes to %d (weights: %s), optimal cost %.6g\n", set.size(), o.target,
+                toString(settings.weightMode), outcome.result.best().cost);
+    for (std::size_t g = 0; g < outcome.reduced.size(); ++g)
+        std::printf("  %2zu: %s\n", g, outcome.reduced[g].name.c_str());
+    std::printf("Cost for p = 1..%d:", o.target);
+    for (const auto& grouping : outcome.result.curve) std::printf(" %.4g", grouping.cost);
+    std::printf("\nMerged meshes (OBJ + VRML) and mapping.json in %s\nReport: %s\n", outDir.string().c_str(),
+                reportPath.string().c_str());
+    return kExitOk;
+}
+
+} // namespace
+
 void addReduceCommand(CLI::App& app, CommandRunner& run) {
+    auto options = std::make_shared<ReduceOptions>();
     auto* cmd = app.add_subcommand("reduce", "Reduce a viseme set to m merged meshes (exact optimum)");
-    cmd->callback([&run] { run = [] { return kExitUsage; }; });
+    cmd->add_option("--neutral", options->neutral, "Neutral mesh (OBJ, PLY or VRML)");
+    cmd->add_option("--viseme", options->visemes, "A viseme as NAME=FILE (repeatable)");
+    cmd->add_option("--visemes", options->visemeDir,
+                    "Folder of viseme meshes, sorted by name; neutral.* in it is the neutral mesh");
+    cmd->add_option("--freq", options->freqs, "A viseme frequency as NAME=F (repeatable)");
+    cmd->add_option("--freq-file", options->freqFile,
+                    "Frequencies: CSV name,frequency or JSON (viseme table, or phonemes + map)");
+    cmd->add_option("--map", options->mapFile,
+                    "Phoneme -> viseme map (CSV phoneme,viseme or JSON); makes --freq-file a phoneme table");
+    cmd->add_option("--weights", options->weights, "Vertex weights: uniform, area, or a file of painted weights")
+        ->capture_default_str();
+    cmd->add_option("--target,-m", options->target, "Number of merged meshes m (1..n)")->required();
+    cmd->add_option("--out", options->outDir, "Output folder")->capture_default_str();
+    cmd->add_option("--report", options->report, "JSON report path (default OUT/report.json)");
+    cmd->callback([&run, options] { run = [options] { return runReduce(*options); }; });
 }
 
 } // namespace vl::cli
