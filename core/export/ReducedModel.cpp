@@ -1,0 +1,109 @@
+#include "core/export/ReducedModel.h"
+
+#include "core/common/Error.h"
+#include "core/reduce/Frequencies.h"
+#include "core/reduce/Reduction.h"
+#include "core/reduce/VisemeSet.h"
+
+#include <cmath>
+#include <set>
+
+namespace vl {
+
+int ReducedModel::findKey(std::string_view name) const {
+    for (std::size_t k = 0; k < keys.size(); ++k)
+        if (keys[k].name == name) return static_cast<int>(k);
+    return -1;
+}
+
+std::string mergedKeyName(const std::vector<std::string>& members) {
+    std::string name;
+    for (const std::string& m : members) name += (name.empty() ? "" : "+") + m;
+    return name;
+}
+
+ReducedModel buildReducedModel(const VisemeSet& set, const std::vector<double>& frequencies,
+                               const std::vector<int>& groupOf, const FrequencySource& source) {
+    const std::size_t n = set.size();
+    if (frequencies.size() != n || groupOf.size() != n)
+        throwInputError("export", "frequencies and grouping must have one entry per viseme");
+    int groupCount = 0;
+    for (int g : groupOf) {
+        if (g < 0 || g >= static_cast<int>(n)) throwInputError("export", "group index out of range");
+        groupCount = std::max(groupCount, g + 1);
+    }
+    std::vector<std::vector<int>> members(static_cast<std::size_t>(groupCount));
+    for (std::size_t i = 0; i < n; ++i)
+        members[static_cast<std::size_t>(groupOf[i])].push_back(static_cast<int>(i));
+
+    std::vector<std::vector<Vec3>> shapes;
+    shapes.reserve(n);
+    for (const Viseme& v : set.visemes) shapes.push_back(v.positions);
+
+    ReducedModel model;
+    model.neutral = set.neutral;
+    for (std::size_t g = 0; g < members.size(); ++g) {
+        if (members[g].empty()) throwInputError("export", "group " + std::to_string(g) + " has no member");
+        KeyMesh key;
+        for (int i : members[g]) {
+            key.members.push_back(set.visemes[static_cast<std::size_t>(i)].name);
+            key.frequency += frequencies[static_cast<std::size_t>(i)];
+        }
+        key.name = mergedKeyName(key.members);
+        key.positions = members[g].size() == 1 ? shapes[static_cast<std::size_t>(members[g][0])]
+                                               : mergeGroup(shapes, frequencies, members[g]);
+        model.keys.push_back(std::move(key));
+    }
+
+    if (source.isPhonemeBased()) {
+        for (const auto& [phoneme, viseme] : source.map.entries) {
+            const int v = set.find(viseme);
+            if (v < 0)
+                throwInputError("export",
+                                "phoneme '" + phoneme + "' maps to unknown viseme '" + viseme + "'");
+            model.phonemeToKey.emplace_back(phoneme, groupOf[static_cast<std::size_t>(v)]);
+        }
+        model.phonemeFrequencies = source.phonemes.entries;
+    } else {
+        for (std::size_t i = 0; i < n; ++i) model.phonemeToKey.emplace_back(set.visemes[i].name, groupOf[i]);
+    }
+    validateReducedModel(model, "export");
+    return model;
+}
+
+ReducedModel unreducedModel(const VisemeSet& set, const std::vector<double>& frequencies,
+                            const FrequencySource& source) {
+    std::vector<int> identity(set.size());
+    for (std::size_t i = 0; i < identity.size(); ++i) identity[i] = static_cast<int>(i);
+    return buildReducedModel(set, frequencies, identity, source);
+}
+
+void validateReducedModel(const ReducedModel& model, std::string_view where) {
+    const std::size_t v = model.neutral.positions.size();
+    if (v == 0 || model.neutral.triangles.empty()) throwInputError(where, "the neutral mesh is empty");
+    if (model.keys.empty()) throwInputError(where, "no key meshes");
+    std::set<std::string> names;
+    for (std::size_t k = 0; k < model.keys.size(); ++k) {
+        const KeyMesh& key = model.keys[k];
+        const std::string what = "key " + std::to_string(k) + " ('" + key.name + "')";
+        if (key.name.empty()) throwInputError(where, "key " + std::to_string(k) + " has no name");
+        if (!names.insert(key.name).second) throwInputError(where, what + ": duplicate name");
+        if (key.positions.size() != v)
+            throwInputError(where, what + ": " + std::to_string(key.positions.size()) +
+                                       " positions, the neutral has " + std::to_string(v));
+        for (const Vec3& p : key.positions)
+            if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+                throwInputError(where, what + ": non-finite position");
+    }
+    std::set<std::string> phonemes;
+    for (const auto& [phoneme, key] : model.phonemeToKey) {
+        if (phoneme.empty()) throwInputError(where, "empty phoneme name");
+        if (!phonemes.insert(phoneme).second)
+            throwInputError(where, "phoneme '" + phoneme + "' is listed twice");
+        if (key < 0 || key >= static_cast<int>(model.keys.size()))
+            throwInputError(where, "phoneme '" + phoneme + "' maps to key " + std::to_string(key) + " of " +
+                                       std::to_string(model.keys.size()));
+    }
+}
+
+} // namespace vl
