@@ -20,7 +20,7 @@ std::string_view individualName(Individual who); // "bundled", "retarget"
 Individual parseIndividual(std::string_view name, std::string_view where);
 
 // Base geometry image of an individual, sampled on a gridSize x gridSize grid.
-SampledField makeFaceGeometry(Individual who, int gridSize = 257);
+SampledField makeFaceGeometry(Individual who, int gridSize = 301);
 
 // The expression fields of every individual, in cascade order, with their parameters.
 // Parameter names: frontalis_l, frontalis_r, zygomatic_l, zygomatic_r, risorius_l, risorius_r,
