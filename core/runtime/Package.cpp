@@ -101,8 +101,9 @@ struct PackageParser {
         return true;
     }
 
-    // Sections lie in file order, 4-byte aligned, inside the payload, without overlap, and each
-    // has exactly the size its counts imply (the strings section is checked while parsing).
+    // Sections follow each other without gaps from the header to the end of the file, 4-byte
+    // aligned, and each has exactly the size its counts imply (the strings section is checked
+    // while parsing).
     bool checkSections() {
         const std::uint64_t v = out.vertexCount_;
         const std::uint64_t k = keyCount;
@@ -123,7 +124,8 @@ struct PackageParser {
             sizes[s] = u32At(data + header::kSections + 8 * s + 4);
             const std::string name = std::string("section '") + sectionName(s) + "'";
             if (offsets[s] % 4 != 0 || sizes[s] % 4 != 0) return fail(name + " is not 4-byte aligned");
-            if (offsets[s] < previousEnd) return fail(name + " overlaps the previous section or the header");
+            if (offsets[s] != previousEnd)
+                return fail(name + " does not start where the previous section ends");
             if (static_cast<std::uint64_t>(offsets[s]) + sizes[s] > size)
                 return fail(name + " extends past the end of the file");
             if (s != kSectionStrings && sizes[s] != expected[s])
@@ -131,6 +133,7 @@ struct PackageParser {
                             std::to_string(expected[s]));
             previousEnd = static_cast<std::uint64_t>(offsets[s]) + sizes[s];
         }
+        if (previousEnd != size) return fail("unused bytes after the last section");
         return true;
     }
 

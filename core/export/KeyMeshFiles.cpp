@@ -1,0 +1,48 @@
+#include "core/export/KeyMeshFiles.h"
+
+#include "core/common/Error.h"
+#include "core/io/MeshIO.h"
+
+#include <cctype>
+#include <system_error>
+
+namespace vl {
+
+std::string fileSafeName(std::string_view name) {
+    std::string safe(name);
+    for (char& c : safe)
+        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_' && c != '+') c = '_';
+    return safe;
+}
+
+std::string neutralFileName(std::string_view extension) {
+    return "neutral" + std::string(extension);
+}
+
+std::string keyFileName(const ReducedModel& model, std::size_t key, std::string_view extension) {
+    return "reduced_" + std::to_string(key) + "_" + fileSafeName(model.keys[key].name) +
+           std::string(extension);
+}
+
+MeshData keyMeshData(const ReducedModel& model, std::size_t key) {
+    MeshData mesh = model.neutral;
+    mesh.positions = model.keys[key].positions;
+    return mesh;
+}
+
+std::vector<std::string> writeKeyMeshFiles(const std::filesystem::path& outDir, const ReducedModel& model,
+                                           std::string_view extension) {
+    validateReducedModel(model, "export");
+    std::error_code ec;
+    std::filesystem::create_directories(outDir, ec);
+    if (ec) throwInputError(outDir.string(), "cannot create the output folder: " + ec.message());
+    std::vector<std::string> written{neutralFileName(extension)};
+    writeMesh(outDir / written.back(), model.neutral);
+    for (std::size_t k = 0; k < model.keys.size(); ++k) {
+        written.push_back(keyFileName(model, k, extension));
+        writeMesh(outDir / written.back(), keyMeshData(model, k));
+    }
+    return written;
+}
+
+} // namespace vl

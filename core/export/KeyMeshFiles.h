@@ -1,0 +1,28 @@
+#pragma once
+// One mesh file per key mesh (plus the neutral), in any format core/io writes: the OBJ export and
+// the VRML meshes of the XfaceEd export.
+#include "core/export/ReducedModel.h"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace vl {
+
+// File-system safe form of a name: letters, digits, '-', '_' and '+' kept, the rest become '_'.
+std::string fileSafeName(std::string_view name);
+
+// "neutral" + extension for the neutral mesh, "reduced_<k>_<safe name>" + extension for key k
+// (the names the reduce command uses, unique through the index).
+std::string neutralFileName(std::string_view extension);
+std::string keyFileName(const ReducedModel& model, std::size_t key, std::string_view extension);
+
+// The key mesh as a full mesh (neutral topology and (u,v), the key's positions).
+MeshData keyMeshData(const ReducedModel& model, std::size_t key);
+
+// Writes the neutral and every key mesh into `outDir` (created if missing) with `extension`
+// (".obj", ".ply" or ".wrl"); returns the file names written, neutral first.
+std::vector<std::string> writeKeyMeshFiles(const std::filesystem::path& outDir, const ReducedModel& model,
+                                           std::string_view extension);
+
+} // namespace vl
