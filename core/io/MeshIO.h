@@ -1,8 +1,24 @@
 #pragma once
 // Reading and writing meshes in formats other tools read: Wavefront OBJ, Stanford PLY (ASCII and
-// binary little-endian) and VRML97 IndexedFaceSet. Every reader keeps the file's vertex order
-// exactly, triangulates polygons as a fan from their first corner (the same way for every member
-// of a viseme set), and rejects bad input with an InputError naming the file and line/element.
+// binary little/big-endian) and VRML97 IndexedFaceSet. Every reader keeps the file's vertex order
+// exactly (never splits, merges, drops or reorders vertices), triangulates polygons as a fan from
+// their first corner (c0 c1 c2, c0 c2 c3, ...: the same way for every member of a viseme set), and
+// rejects bad input with an InputError naming the file and the line ("file:12: ...") or, where a
+// format has no lines, the element ("file: face 12: ...", elements counted from 0).
+//
+// Rejected everywhere: missing or empty file, no vertices, no faces, NaN/Inf coordinates, an index
+// out of range (zero in OBJ, which counts from 1; negative in PLY; below -1 in VRML), a face with
+// fewer than 3 corners and a degenerate face (the same vertex twice).
+//
+// Texture coordinates become one (u,v) per vertex. When a file indexes them separately from the
+// vertices (OBJ `f v/vt`, VRML texCoordIndex; MediaPipe's and ICT's meshes do), each vertex takes
+// the (u,v) of its first face corner in file order; at a UV seam (a vertex used with different
+// (u,v)) that first one is kept, because vertices are never split. Vertices no corner gives a
+// (u,v) get (0,0); so OBJ, which has no other way to give one, does not keep the (u,v) of vertices
+// that no face uses. Without any texture coordinates `uvs` is empty.
+//
+// Writers print doubles in their shortest exact form (OBJ, VRML) or as float64 (PLY), so reading a
+// written mesh gives back bit-identical positions, (u,v) and triangles.
 #include "core/mesh/Mesh.h"
 
 #include <filesystem>
@@ -14,7 +30,8 @@ namespace vl {
 
 enum class MeshFormat { Obj, Ply, Vrml };
 
-// Chooses the format from the extension (.obj, .ply, .wrl/.vrml); throws InputError otherwise.
+// Chooses the format from the extension (.obj, .ply, .wrl/.vrml, any letter case); throws
+// InputError otherwise.
 MeshFormat meshFormatFromPath(const std::filesystem::path& path);
 bool isMeshFile(const std::filesystem::path& path);
 
@@ -24,11 +41,31 @@ MeshData readMesh(const std::filesystem::path& path);
 void writeMesh(const std::filesystem::path& path, const MeshData& mesh);
 
 // Format-level entry points on in-memory text; `source` names the file in error messages.
+//
+// OBJ: reads `v x y z` (extra w or colour values ignored), `vt u [v]`, and `f` corners written v,
+// v/vt, v//vn or v/vt/vn with positive or negative (relative) indices; every other statement
+// (vn, o, g, s, usemtl, mtllib, l, ...) is ignored.
 MeshData parseObj(std::string_view text, std::string_view source);
+// `v` lines, `vt` lines when the mesh has (u,v), and `f a b c` or `f a/a b/b c/c`.
 std::string formatObj(const MeshData& mesh);
+
+// PLY: the `vertex` element's x, y, z (any numeric type) and (u,v) from u/v, s/t, texture_u/
+// texture_v or texture_s/texture_t; the `face` element's vertex_indices (or vertex_index) list of
+// any integer types. Other properties and elements are skipped.
 MeshData parsePly(std::string_view bytes, std::string_view source);
 std::string formatPly(const MeshData& mesh); // binary little-endian, float64: bit-exact round trip
+
+// VRML97: every IndexedFaceSet (inside any Transform/Shape/Group nesting) with its
+// `coord Coordinate { point [...] }`, `coordIndex`, and optional `texCoord TextureCoordinate` and
+// `texCoordIndex` (without texCoordIndex, vertex i takes texture coordinate i, as the VRML spec
+// has coordIndex index both). Several IndexedFaceSets are concatenated into one mesh in file order (the first
+// set's vertices come first), which matches XfaceEd's submesh numbering "file.wrl_0", "_1", ...
+// Transforms are ignored: positions are taken as written. DEF/USE of Coordinate and
+// TextureCoordinate nodes is resolved; a USE of a whole IndexedFaceSet does not add its geometry
+// again. PROTO declarations are skipped. VRML 1.0 and gzip-compressed files are rejected.
 MeshData parseVrml(std::string_view text, std::string_view source);
+// `#VRML V2.0 utf8` with one Shape { IndexedFaceSet } holding all vertices and triangles, and a
+// TextureCoordinate with one (u,v) per vertex (no texCoordIndex) when the mesh has them.
 std::string formatVrml(const MeshData& mesh);
 
 } // namespace vl

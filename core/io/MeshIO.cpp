@@ -1,0 +1,64 @@
+// Format dispatch by file extension, file reading and atomic writing.
+#include "core/io/MeshIO.h"
+
+#include "core/common/AtomicFile.h"
+#include "core/common/Error.h"
+
+#include <algorithm>
+#include <cctype>
+#include <optional>
+
+namespace vl {
+
+namespace {
+
+std::optional<MeshFormat> formatOfExtension(const std::filesystem::path& path) {
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (ext == ".obj") return MeshFormat::Obj;
+    if (ext == ".ply") return MeshFormat::Ply;
+    if (ext == ".wrl" || ext == ".vrml") return MeshFormat::Vrml;
+    return std::nullopt;
+}
+
+} // namespace
+
+MeshFormat meshFormatFromPath(const std::filesystem::path& path) {
+    if (const auto format = formatOfExtension(path)) return *format;
+    throwInputError(path.string(), "unknown mesh format '" + path.extension().string() +
+                                       "' (expected .obj, .ply, .wrl or .vrml)");
+}
+
+bool isMeshFile(const std::filesystem::path& path) {
+    return formatOfExtension(path).has_value();
+}
+
+MeshData readMesh(const std::filesystem::path& path) {
+    const MeshFormat format = meshFormatFromPath(path);
+    const std::string bytes = readFileToString(path);
+    const std::string source = path.string();
+    switch (format) {
+    case MeshFormat::Obj:
+        return parseObj(bytes, source);
+    case MeshFormat::Ply:
+        return parsePly(bytes, source);
+    case MeshFormat::Vrml:
+        return parseVrml(bytes, source);
+    }
+    throwInputError(source, "unknown mesh format");
+}
+
+void writeMesh(const std::filesystem::path& path, const MeshData& mesh) {
+    const MeshFormat format = meshFormatFromPath(path);
+    switch (format) {
+    case MeshFormat::Obj:
+        return writeFileAtomically(path, formatObj(mesh));
+    case MeshFormat::Ply:
+        return writeFileAtomically(path, formatPly(mesh));
+    case MeshFormat::Vrml:
+        return writeFileAtomically(path, formatVrml(mesh));
+    }
+}
+
+} // namespace vl

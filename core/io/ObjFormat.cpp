@@ -1,0 +1,189 @@
+// Wavefront OBJ reader and writer. Hand-written rather than OpenMesh's reader, which may reorder
+// or split vertices that carry texture coordinates; here the i-th `v` line is vertex i, always.
+#include "core/common/Error.h"
+#include "core/io/MeshIO.h"
+#include "core/io/MeshIOSupport.h"
+
+#include <cstring>
+#include <limits>
+
+namespace vl {
+
+namespace {
+
+bool isSpace(char c) {
+    return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
+}
+
+// The next whitespace-separated token of `line` at or after `pos`; empty at the end of the line.
+std::string_view nextToken(std::string_view line, std::size_t& pos) {
+    while (pos < line.size() && isSpace(line[pos])) ++pos;
+    const std::size_t start = pos;
+    while (pos < line.size() && !isSpace(line[pos])) ++pos;
+    return line.substr(start, pos - start);
+}
+
+class ObjParser {
+  public:
+    ObjParser(std::string_view text, std::string_view source) : text_(text), source_(source) {}
+
+    MeshData run() {
+        meshio::requireNotBlank(text_, source_);
+        std::size_t pos = 0;
+        while (pos < text_.size()) {
+            const void* newline = std::memchr(text_.data() + pos, '\n', text_.size() - pos);
+            const std::size_t end =
+                newline ? static_cast<std::size_t>(static_cast<const char*>(newline) - text_.data())
+                        : text_.size();
+            ++line_;
+            parseLine(text_.substr(pos, end - pos));
+            pos = end + 1;
+        }
+        return finish();
+    }
+
+  private:
+    // A positive index naming an element defined later in the file; checked once all are known.
+    struct ForwardReference {
+        std::size_t line;
+        std::int64_t index;
+        bool texture;
+    };
+
+    std::string where() const { return fileLine(source_, line_); }
+
+    void parseLine(std::string_view line) {
+        std::size_t pos = 0;
+        const std::string_view keyword = nextToken(line, pos);
+        if (keyword == "v")
+            parseVertex(line, pos);
+        else if (keyword == "vt")
+            parseTexCoord(line, pos);
+        else if (keyword == "f")
+            parseFace(line, pos);
+        // Everything else (comments, vn, o, g, s, usemtl, mtllib, l, ...) does not change the mesh.
+    }
+
+    void parseVertex(std::string_view line, std::size_t pos) {
+        const auto at = [this] { return where(); };
+        Vec3 p;
+        for (int k = 0; k < 3; ++k) {
+            const std::string_view token = nextToken(line, pos);
+            if (token.empty())
+                throwInputError(where(), "a vertex needs 3 coordinates, found " + std::to_string(k));
+            p[k] = meshio::toFiniteDouble(token, at);
+        }
+        // An optional w or per-vertex colour may follow; the mesh has no use for them.
+        mesh_.positions.push_back(p);
+    }
+
+    void parseTexCoord(std::string_view line, std::size_t pos) {
+        const auto at = [this] { return where(); };
+        const std::string_view u = nextToken(line, pos);
+        if (u.empty()) throwInputError(where(), "a texture coordinate needs at least u");
+        const std::string_view v = nextToken(line, pos); // v is optional in OBJ and then 0
+        texCoords_.emplace_back(meshio::toFiniteDouble(u, at),
+                                v.empty() ? 0.0 : meshio::toFiniteDouble(v, at));
+    }
+
+    // Turns a 1-based or negative (relative) OBJ index into a 0-based one.
+    std::int64_t resolveIndex(std::string_view token, std::size_t definedSoFar, bool texture) {
+        const char* what = texture ? "texture coordinate" : "vertex";
+        const std::int64_t index = meshio::toInteger(token, [this] { return where(); });
+        if (index == 0)
+            throwInputError(where(), std::string(what) + " index 0 is invalid (OBJ indices start at 1)");
+        if (index < 0) {
+            const auto resolved = static_cast<std::int64_t>(definedSoFar) + index;
+            if (resolved < 0)
+                throwInputError(where(), "relative " + std::string(what) + " index " + std::to_string(index) +
+                                             " points before the first one (" + std::to_string(definedSoFar) +
+                                             " defined so far)");
+            return resolved;
+        }
+        if (index > std::numeric_limits<std::uint32_t>::max())
+            throwInputError(where(), std::string(what) + " index " + std::to_string(index) + " out of range");
+        if (static_cast<std::size_t>(index) > definedSoFar) forward_.push_back({line_, index, texture});
+        return index - 1;
+    }
+
+    void parseFace(std::string_view line, std::size_t pos) {
+        corners_.clear();
+        for (std::string_view token = nextToken(line, pos); !token.empty(); token = nextToken(line, pos)) {
+            // Corner forms: v, v/vt, v//vn, v/vt/vn. Normals are not used.
+            const std::size_t slash = token.find('/');
+            const std::string_view vertexToken = token.substr(0, slash);
+            std::string_view textureToken;
+            bool malformed = vertexToken.empty();
+            if (slash != std::string_view::npos) {
+                const std::string_view rest = token.substr(slash + 1);
+                const std::size_t slash2 = rest.find('/');
+                textureToken = rest.substr(0, slash2);
+                malformed |=
+                    slash2 == std::string_view::npos ? textureToken.empty() : slash2 + 1 == rest.size();
+            }
+            if (malformed) throwInputError(where(), "malformed face corner '" + std::string(token) + "'");
+            const auto v =
+                static_cast<std::uint32_t>(resolveIndex(vertexToken, mesh_.positions.size(), false));
+            corners_.push_back(v);
+            if (!textureToken.empty()) {
+                const std::int64_t t = resolveIndex(textureToken, texCoords_.size(), true);
+                if (v >= cornerUV_.size()) cornerUV_.resize(v + std::size_t{1}, -1);
+                if (cornerUV_[v] < 0) cornerUV_[v] = t; // first corner wins at UV seams
+            }
+        }
+        const std::string problem = meshio::appendPolygonFan(corners_, faceCount_++, 1, mesh_.triangles);
+        if (!problem.empty()) throwInputError(where(), problem);
+    }
+
+    MeshData finish() {
+        for (const auto& ref : forward_) {
+            const std::size_t count = ref.texture ? texCoords_.size() : mesh_.positions.size();
+            if (static_cast<std::size_t>(ref.index) > count)
+                throwInputError(fileLine(source_, ref.line),
+                                std::string(ref.texture ? "texture coordinate" : "vertex") + " index " +
+                                    std::to_string(ref.index) + " out of range (" + std::to_string(count) +
+                                    (ref.texture ? " texture coordinates)" : " vertices)"));
+        }
+        meshio::requireVerticesAndFaces(mesh_, source_);
+        cornerUV_.resize(mesh_.positions.size(), -1);
+        mesh_.uvs = meshio::uvsFromFirstCorners(cornerUV_, texCoords_);
+        return std::move(mesh_);
+    }
+
+    std::string_view text_;
+    std::string_view source_;
+    std::size_t line_ = 0;
+    std::size_t faceCount_ = 0;
+    MeshData mesh_;
+    std::vector<Vec2> texCoords_;
+    std::vector<std::int64_t> cornerUV_; // per vertex (grown on use): first corner's texture coordinate or -1
+    std::vector<std::uint32_t> corners_;
+    std::vector<ForwardReference> forward_;
+};
+
+} // namespace
+
+MeshData parseObj(std::string_view text, std::string_view source) {
+    return ObjParser(text, source).run();
+}
+
+std::string formatObj(const MeshData& mesh) {
+    meshio::requireWritable(mesh);
+    std::string out = "# VisemeLab mesh: " + std::to_string(mesh.positions.size()) + " vertices, " +
+                      std::to_string(mesh.triangles.size()) + " triangles\n";
+    out.reserve(mesh.positions.size() * 64 + mesh.triangles.size() * 40);
+    for (const auto& p : mesh.positions) meshio::appendDoubles(out, "v ", {p[0], p[1], p[2]}, "\n");
+    for (const auto& uv : mesh.uvs) meshio::appendDoubles(out, "vt ", {uv[0], uv[1]}, "\n");
+    for (const auto& t : mesh.triangles) {
+        out += 'f';
+        for (const auto v : t) {
+            const std::string index = std::to_string(v + 1);
+            out.append(" ").append(index);
+            if (mesh.hasUVs()) out.append("/").append(index);
+        }
+        out += '\n';
+    }
+    return out;
+}
+
+} // namespace vl
