@@ -14,5 +14,7 @@ constexpr int kExitUsage = 2;
 constexpr int kExitInvalidInput = 3;
 
 void addReduceCommand(CLI::App& app, CommandRunner& run);
+void addVisemesCommand(CLI::App& app, CommandRunner& run);
+void addRenderCommand(CLI::App& app, CommandRunner& run);
 
 } // namespace vl::cli
