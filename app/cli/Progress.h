@@ -9,7 +9,7 @@
 namespace vl::cli {
 
 class ProgressLine {
-public:
+  public:
     explicit ProgressLine(std::string label) : label_(std::move(label)), enabled_(::isatty(2) != 0) {}
     ~ProgressLine() { finish(); }
     ProgressLine(const ProgressLine&) = delete;
@@ -28,7 +28,7 @@ public:
         shown_ = false;
     }
 
-private:
+  private:
     std::string label_;
     bool enabled_;
     bool shown_ = false;

@@ -39,7 +39,8 @@ std::filesystem::path findNeutralIn(const std::filesystem::path& dir) {
         const auto candidate = dir / (std::string("neutral") + ext);
         if (std::filesystem::exists(candidate)) return candidate;
     }
-    throwInputError(dir.string(), "no neutral mesh (neutral.obj/.ply/.wrl) in the folder; pass --neutral FILE");
+    throwInputError(dir.string(),
+                    "no neutral mesh (neutral.obj/.ply/.wrl) in the folder; pass --neutral FILE");
 }
 
 VisemeSet loadSet(const ReduceOptions& o) {
@@ -51,7 +52,8 @@ VisemeSet loadSet(const ReduceOptions& o) {
         if (neutral.empty()) neutral = findNeutralIn(o.visemeDir);
         files = listVisemeFolder(o.visemeDir, neutral);
     } else {
-        if (neutral.empty()) throwInputError("--neutral", "a neutral mesh is required (or use --visemes DIR)");
+        if (neutral.empty())
+            throwInputError("--neutral", "a neutral mesh is required (or use --visemes DIR)");
         for (const auto& v : o.visemes) files.emplace_back(splitAssignment(v, "--viseme"));
     }
     return loadVisemeSet(neutral, files);
@@ -69,7 +71,8 @@ FrequencySource loadFrequencies(const ReduceOptions& o, const VisemeSet& set) {
             source.visemeFrequencies.entries.emplace_back(name, parseFiniteDouble(value, "--freq " + name));
         }
     } else {
-        std::fprintf(stderr, "visemelab: no frequencies given (--freq-file / --freq): using equal frequencies\n");
+        std::fprintf(stderr,
+                     "visemelab: no frequencies given (--freq-file / --freq): using equal frequencies\n");
         for (const auto& v : set.visemes) source.visemeFrequencies.entries.emplace_back(v.name, 1.0);
     }
     if (!o.mapFile.empty()) {
@@ -81,7 +84,8 @@ FrequencySource loadFrequencies(const ReduceOptions& o, const VisemeSet& set) {
         source.map = loadPhonemeMapFile(o.mapFile);
     }
     if (source.isPhonemeBased() && source.map.entries.empty())
-        throwInputError("--freq-file", "a phoneme frequency table needs a phoneme -> viseme map (--map FILE)");
+        throwInputError("--freq-file",
+                        "a phoneme frequency table needs a phoneme -> viseme map (--map FILE)");
     return source;
 }
 
@@ -90,7 +94,8 @@ ReduceSettings loadSettings(const ReduceOptions& o) {
     settings.target = o.target;
     if (const auto mode = weightModeFromString(o.weights)) {
         settings.weightMode = *mode;
-        if (*mode == WeightMode::Painted) throwInputError("--weights", "painted weights need a file: --weights FILE");
+        if (*mode == WeightMode::Painted)
+            throwInputError("--weights", "painted weights need a file: --weights FILE");
     } else {
         settings.weightMode = WeightMode::Painted;
         settings.paintedWeights = loadWeightsFile(o.weights);
@@ -120,7 +125,8 @@ int runReduce(const ReduceOptions& o) {
     const std::filesystem::path outDir = o.outDir;
     auto outputs = writeReductionOutputs(outDir, set, outcome);
     timings.writeMs = millisecondsSince(t2);
-    const std::filesystem::path reportPath = o.report.empty() ? outDir / "report.json" : std::filesystem::path(o.report);
+    const std::filesystem::path reportPath =
+        o.report.empty() ? outDir / "report.json" : std::filesystem::path(o.report);
     writeFileAtomically(reportPath, reductionReportJson(outcome, settings.weightMode, timings, outputs));
 
     std::printf("Reduced %zu visemes to %d (weights: %s), optimal cost %.6g\n", set.size(), o.target,
@@ -148,7 +154,8 @@ void addReduceCommand(CLI::App& app, CommandRunner& run) {
                     "Frequencies: CSV name,frequency or JSON (viseme table, or phonemes + map)");
     cmd->add_option("--map", options->mapFile,
                     "Phoneme -> viseme map (CSV phoneme,viseme or JSON); makes --freq-file a phoneme table");
-    cmd->add_option("--weights", options->weights, "Vertex weights: uniform, area, or a file of painted weights")
+    cmd->add_option("--weights", options->weights,
+                    "Vertex weights: uniform, area, or a file of painted weights")
         ->capture_default_str();
     cmd->add_option("--target,-m", options->target, "Number of merged meshes m (1..n)")->required();
     cmd->add_option("--out", options->outDir, "Output folder")->capture_default_str();

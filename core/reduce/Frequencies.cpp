@@ -86,7 +86,7 @@ void addEntry(FrequencyTable& table, std::string name, double value, const std::
     table.entries.emplace_back(std::move(name), value);
 }
 
-FrequencyTable tableFromJson(const nlohmann::json& node, const std::string& where) {
+FrequencyTable tableFromJson(const nlohmann::ordered_json& node, const std::string& where) {
     FrequencyTable table;
     if (node.is_object()) {
         for (const auto& [key, value] : node.items()) {
@@ -109,7 +109,7 @@ FrequencyTable tableFromJson(const nlohmann::json& node, const std::string& wher
     return table;
 }
 
-PhonemeVisemeMap mapFromJson(const nlohmann::json& node, const std::string& where) {
+PhonemeVisemeMap mapFromJson(const nlohmann::ordered_json& node, const std::string& where) {
     if (!node.is_object()) throwInputError(where, "expected an object {\"phoneme\": \"viseme\", ...}");
     PhonemeVisemeMap map;
     for (const auto& [key, value] : node.items()) {
@@ -120,9 +120,9 @@ PhonemeVisemeMap mapFromJson(const nlohmann::json& node, const std::string& wher
     return map;
 }
 
-nlohmann::json parseJsonFile(const std::string& text, const std::string& source) {
+nlohmann::ordered_json parseJsonFile(const std::string& text, const std::string& source) {
     try {
-        return nlohmann::json::parse(text);
+        return nlohmann::ordered_json::parse(text);
     } catch (const nlohmann::json::parse_error& e) {
         throwInputError(source, std::string("invalid JSON: ") + e.what());
     }

@@ -1,0 +1,130 @@
+#include "CliRunner.h"
+
+#include "core/common/AtomicFile.h"
+#include "core/io/MeshIO.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+
+using namespace vl;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct TempDir {
+    fs::path path;
+    explicit TempDir(const std::string& name) : path(fs::temp_directory_path() / name) {
+        fs::remove_all(path);
+        fs::create_directories(path);
+    }
+    ~TempDir() { fs::remove_all(path); }
+};
+
+MeshData quad(double lift) {
+    MeshData mesh;
+    mesh.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, lift), Vec3(0, 1, 0)};
+    mesh.triangles = {Triangle{0, 1, 2}, Triangle{0, 2, 3}};
+    return mesh;
+}
+
+void writeSmallSet(const fs::path& dir) {
+    writeMesh(dir / "neutral.obj", quad(0));
+    writeMesh(dir / "a.obj", quad(0.1));
+    writeMesh(dir / "b.obj", quad(0.2));
+    writeMesh(dir / "c.obj", quad(3.0));
+}
+
+nlohmann::json readJson(const fs::path& path) {
+    return nlohmann::json::parse(readFileToString(path));
+}
+
+const fs::path kSample = fs::path(VISEMELAB_ASSETS_DIR) / "sample";
+
+} // namespace
+
+TEST(CliReduce, ReducesSmallSetAndWritesEverything) {
+    TempDir dir("visemelab_cli_small");
+    writeSmallSet(dir.path);
+    const auto out = dir.path / "out";
+    const auto r = test::runCli("reduce --visemes " + dir.path.string() +
+                                " --freq a=1 --freq b=1 --freq c=2 --target 2 --out " + out.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const auto report = readJson(out / "report.json");
+    EXPECT_EQ(report["n"], 3);
+    EXPECT_EQ(report["m"], 2);
+    EXPECT_EQ(report["weights"], "uniform");
+    EXPECT_EQ(report["groups"], nlohmann::json::parse(R"([["a","b"],["c"]])"));
+    EXPECT_EQ(report["cost_curve"].size(), 2u);
+    EXPECT_GT(report["cost_curve"][0].get<double>(), report["cost"].get<double>());
+    for (const char* key : {"load", "reduce", "write"}) EXPECT_TRUE(report["timing_ms"].contains(key)) << key;
+    const auto mapping = readJson(out / "mapping.json");
+    EXPECT_EQ(mapping["visemes"]["a"], 0);
+    EXPECT_EQ(mapping["visemes"]["c"], 1);
+    const auto merged = readMesh(out / "reduced_0_a+b.obj");
+    EXPECT_DOUBLE_EQ(merged.positions[2][2], 0.15); // mean of 0.1 and 0.2 with equal frequencies
+    EXPECT_TRUE(fs::exists(out / "reduced_1_c.wrl"));
+}
+
+TEST(CliReduce, PhonemeTableWithMapGivesPhonemeMapping) {
+    TempDir dir("visemelab_cli_phonemes");
+    writeSmallSet(dir.path);
+    std::ofstream(dir.path / "table.csv") << "phoneme,frequency\nAA,3\nP,1\nB,1\nF,2\n";
+    std::ofstream(dir.path / "map.csv") << "phoneme,viseme\nAA,c\nP,a\nB,a\nF,b\n";
+    const auto out = dir.path / "out";
+    const auto r = test::runCli(
+        "reduce --visemes " + dir.path.string() + " --freq-file " + (dir.path / "table.csv").string() +
+        " --map " + (dir.path / "map.csv").string() + " --weights area -m 2 --out " + out.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const auto mapping = readJson(out / "mapping.json");
+    EXPECT_EQ(mapping["phonemes"]["P"], mapping["visemes"]["a"]);
+    EXPECT_EQ(mapping["phonemes"]["AA"], mapping["visemes"]["c"]);
+    EXPECT_EQ(readJson(out / "report.json")["weights"], "area");
+}
+
+TEST(CliReduce, UsageErrorsExitWith2) {
+    EXPECT_EQ(test::runCli("").exitCode, 2);
+    EXPECT_EQ(test::runCli("reduce --visemes x").exitCode, 2); // --target missing
+    EXPECT_EQ(test::runCli("reduce --target notanumber").exitCode, 2);
+    EXPECT_EQ(test::runCli("reduce --help").exitCode, 0);
+}
+
+TEST(CliReduce, InvalidInputExitsWith3AndNamesTheProblem) {
+    TempDir dir("visemelab_cli_bad");
+    writeSmallSet(dir.path);
+    const std::string set = " --visemes " + dir.path.string() + " --out " + (dir.path / "out").string();
+    auto expect3 = [](const test::CliResult& r, const std::string& fragment) {
+        EXPECT_EQ(r.exitCode, 3) << r.output;
+        EXPECT_NE(r.output.find(fragment), std::string::npos) << r.output;
+    };
+    expect3(test::runCli("reduce" + set + " --target 4"), "target m = 4 is outside 1..3");
+    expect3(test::runCli("reduce" + set + " --target 0"), "outside 1..3");
+    expect3(test::runCli("reduce" + set + " -m 2 --freq a=1 --freq b=-1 --freq c=1"), "frequency must be");
+    expect3(test::runCli("reduce" + set + " -m 2 --freq a=0 --freq b=0 --freq c=0"),
+            "all viseme frequencies are zero");
+    expect3(test::runCli("reduce" + set + " -m 2 --weights " + (dir.path / "missing.json").string()),
+            "missing.json: file not found");
+    expect3(test::runCli("reduce --neutral " + (dir.path / "nope.obj").string() +
+                         " --viseme a=" + (dir.path / "a.obj").string() +
+                         " --viseme b=" + (dir.path / "b.obj").string() + " -m 1"),
+            "nope.obj: file not found");
+    std::ofstream(dir.path / "broken.obj") << "v 0 0 0\nv 1 0 nan\nv 0 1 0\nf 1 2 3\n";
+    expect3(test::runCli("reduce --neutral " + (dir.path / "neutral.obj").string() +
+                         " --viseme a=" + (dir.path / "a.obj").string() +
+                         " --viseme b=" + (dir.path / "broken.obj").string() + " -m 1"),
+            "broken.obj:2");
+}
+
+TEST(CliReduce, ReducesTheBundledSample) {
+    if (!fs::exists(kSample / "neutral.obj")) GTEST_SKIP() << "bundled sample not generated yet: " << kSample;
+    TempDir dir("visemelab_cli_sample");
+    const auto r = test::runCli("reduce --visemes " + kSample.string() +
+                                " --weights area --target 10 --out " + (dir.path / "out").string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const auto report = readJson(dir.path / "out" / "report.json");
+    EXPECT_EQ(report["m"], 10);
+    EXPECT_GE(report["n"].get<int>(), 15);
+    EXPECT_EQ(report["groups"].size(), 10u);
+}

@@ -1,0 +1,28 @@
+#pragma once
+// Runs the visemelab CLI as a child process and captures its exit code and output.
+#include <array>
+#include <cstdio>
+#include <string>
+#include <sys/wait.h>
+
+namespace vl::test {
+
+struct CliResult {
+    int exitCode = -1;
+    std::string output; // stdout and stderr together
+};
+
+inline CliResult runCli(const std::string& arguments) {
+    const std::string command = std::string(VISEMELAB_CLI) + " " + arguments + " 2>&1";
+    CliResult result;
+    FILE* pipe = ::popen(command.c_str(), "r");
+    if (!pipe) return result;
+    std::array<char, 4096> buffer{};
+    while (const auto n = std::fread(buffer.data(), 1, buffer.size(), pipe))
+        result.output.append(buffer.data(), n);
+    const int status = ::pclose(pipe);
+    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return result;
+}
+
+} // namespace vl::test
