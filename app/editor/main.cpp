@@ -1,0 +1,35 @@
+// visemelab-editor: the interactive editor. `--screenshot out.png` renders a few frames and saves
+// them instead (used by the GUI smoke test and for the user guide's pictures).
+#include "ui/EditorApp.h"
+
+#include <CLI/CLI.hpp>
+
+int main(int argc, char** argv) {
+    CLI::App app{"VisemeLab editor: viseme reduction and adaptive deformable faces"};
+    vl::ui::EditorOptions options;
+    app.add_option("--project", options.project, "Open this project file")->check(CLI::ExistingFile);
+    app.add_flag("--sample", options.sample, "Load the bundled sample face and its visemes");
+    app.add_option("--screenshot", options.screenshot, "Render --frames frames, save this PNG and exit");
+    app.add_option("--frames", options.frames, "Frames rendered before the screenshot")
+        ->check(CLI::Range(1, 10000));
+    app.add_option(
+        "--panel", options.panel,
+        "Panel to show: Visemes, Frequencies, Weights, Deformation, Refinement, Reduction, Export");
+    app.add_option("--viseme", options.viseme, "Viseme to select");
+    app.add_option("--preset", options.preset, "Viseme preset applied to the deformable face");
+    app.add_option(
+           "--size",
+           [&options](const CLI::results_t& r) {
+               return r.size() == 2 && CLI::detail::lexical_cast(r[0], options.width) &&
+                      CLI::detail::lexical_cast(r[1], options.height);
+           },
+           "Window size in pixels (width height)")
+        ->expected(2);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        const int code = app.exit(e);
+        return code == 0 ? 0 : 2;
+    }
+    return vl::ui::runEditor(options);
+}

@@ -1,0 +1,163 @@
+#include "ui/EditorApp.h"
+
+#include "core/common/Error.h"
+#include "ui/EditorUi.h"
+#include "ui/session/EditorSession.h"
+
+#include <epoxy/gl.h>
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
+#include <stb_image_write.h>
+
+#include <cstdio>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace vl::ui {
+namespace {
+
+std::string lastGlfwError;
+
+void onGlfwError(int, const char* description) {
+    lastGlfwError = description ? description : "unknown error";
+}
+
+void setupFontsAndStyle() {
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr; // fixed layout: nothing to remember
+    // DejaVu Sans covers IPA (phoneme symbols); ImGui's default font is Latin-1 only.
+    static const ImWchar ranges[] = {0x0020, 0x00FF, 0x0250, 0x02FF, 0x0300, 0x036F, 0x1D00, 0x1DBF, 0};
+    const char* font = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+    if (std::FILE* f = std::fopen(font, "rb")) {
+        std::fclose(f);
+        io.Fonts->AddFontFromFileTTF(font, 15.0f, nullptr, ranges);
+    } else {
+        io.Fonts->AddFontDefault();
+    }
+    ImGui::StyleColorsDark();
+    ImGuiStyle& style = ImGui::GetStyle();
+    style.WindowRounding = 0.0f;
+    style.FrameRounding = 4.0f;
+    style.GrabRounding = 4.0f;
+    style.TabRounding = 4.0f;
+    style.FramePadding = ImVec2(6, 4);
+    style.ItemSpacing = ImVec2(8, 6);
+    style.Colors[ImGuiCol_WindowBg] = ImVec4(0.11f, 0.12f, 0.14f, 1.0f);
+    style.Colors[ImGuiCol_MenuBarBg] = ImVec4(0.09f, 0.10f, 0.12f, 1.0f);
+}
+
+void applyStartOptions(const EditorOptions& options, EditorSession& session, EditorUi& ui) {
+    if (!options.project.empty()) session.openProject(options.project);
+    if (options.sample) session.loadSample();
+    if (!options.panel.empty()) {
+        const auto panel = panelFromName(options.panel);
+        if (!panel) throwInputError("--panel", "unknown panel '" + options.panel + "'");
+        ui.selectPanel(*panel);
+        if (*panel == Panel::Deformation && !session.face().cascade) session.loadFace();
+    }
+    if (!options.viseme.empty()) {
+        const int index = session.visemes() ? session.visemes()->find(options.viseme) : -1;
+        if (index < 0) throwInputError("--viseme", "no viseme named '" + options.viseme + "'");
+        session.selectedViseme = index;
+    }
+    if (!options.preset.empty()) {
+        if (!session.face().cascade) session.loadFace();
+        session.applyVisemePreset(options.preset);
+    }
+}
+
+} // namespace
+
+void saveBackBufferPng(const std::filesystem::path& file, int width, int height) {
+    std::vector<unsigned char> pixels(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3);
+    glReadBuffer(GL_BACK);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE, pixels.data());
+    const std::size_t row = static_cast<std::size_t>(width) * 3;
+    std::vector<unsigned char> flipped(pixels.size());
+    for (int y = 0; y < height; ++y)
+        std::copy_n(pixels.begin() +
+                        static_cast<std::ptrdiff_t>(static_cast<std::size_t>(height - 1 - y) * row),
+                    row, flipped.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(y) * row));
+    if (!stbi_write_png(file.string().c_str(), width, height, 3, flipped.data(), static_cast<int>(row)))
+        throw std::runtime_error(file.string() + ": cannot write the PNG");
+}
+
+int runEditor(const EditorOptions& options) {
+    glfwSetErrorCallback(onGlfwError);
+    if (!glfwInit()) {
+        std::fprintf(stderr,
+                     "visemelab-editor: no display: run under xvfb-run or use the visemelab CLI (%s)\n",
+                     lastGlfwError.c_str());
+        return 1;
+    }
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    GLFWwindow* window = glfwCreateWindow(options.width, options.height, "VisemeLab", nullptr, nullptr);
+    if (!window) {
+        std::fprintf(stderr, "visemelab-editor: cannot create an OpenGL 3.3 window: %s\n",
+                     lastGlfwError.c_str());
+        glfwTerminate();
+        return 1;
+    }
+    glfwMakeContextCurrent(window);
+    glfwSwapInterval(options.screenshot.empty() ? 1 : 0);
+
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    setupFontsAndStyle();
+    ImGui_ImplGlfw_InitForOpenGL(window, true);
+    ImGui_ImplOpenGL3_Init("#version 330 core");
+
+    int exitCode = 0;
+    {
+        EditorSession session;
+        try {
+            EditorUi ui(session, window);
+            applyStartOptions(options, session, ui);
+            const bool screenshotMode = !options.screenshot.empty();
+            for (int frame = 0; !glfwWindowShouldClose(window) || !ui.quitConfirmed(); ++frame) {
+                glfwPollEvents();
+                if (screenshotMode) session.finishBackgroundWork(); // deterministic pictures
+                ImGui_ImplOpenGL3_NewFrame();
+                ImGui_ImplGlfw_NewFrame();
+                ImGui::NewFrame();
+                ui.frame();
+                ImGui::Render();
+                int width = 0, height = 0;
+                glfwGetFramebufferSize(window, &width, &height);
+                glViewport(0, 0, width, height);
+                glClearColor(0.08f, 0.08f, 0.1f, 1.0f);
+                glClear(GL_COLOR_BUFFER_BIT);
+                ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+                if (screenshotMode && frame + 1 >= options.frames) {
+                    saveBackBufferPng(options.screenshot, width, height);
+                    std::printf("%s\n", options.screenshot.string().c_str());
+                    break;
+                }
+                glfwSwapBuffers(window);
+                if (ui.quitConfirmed()) break;
+            }
+        } catch (const InputError& e) {
+            std::fprintf(stderr, "visemelab-editor: error: %s\n", e.what());
+            exitCode = 3;
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "visemelab-editor: %s\n", e.what());
+            exitCode = 1;
+        }
+    }
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+    glfwDestroyWindow(window);
+    glfwTerminate();
+    return exitCode;
+}
+
+} // namespace vl::ui

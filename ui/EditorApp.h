@@ -1,0 +1,30 @@
+#pragma once
+// The editor program: window, GL context, ImGui and the frame loop; optionally renders a few
+// frames and saves a screenshot instead of running interactively.
+#include <filesystem>
+#include <string>
+
+namespace vl::ui {
+
+struct EditorOptions {
+    std::filesystem::path project;    // open this project at start
+    bool sample = false;              // load the bundled sample at start
+    std::filesystem::path screenshot; // non-empty: render `frames` frames, save a PNG, exit
+    int frames = 6;
+    std::string panel;  // panel to show (Visemes, Frequencies, Weights, ...)
+    std::string viseme; // viseme to select
+    std::string preset; // viseme preset applied to the deformable face
+    int field = -1;     // deformation stage to select in the Deformation panel
+    bool play = false;  // start the playback
+    int width = 1600;
+    int height = 1000;
+};
+
+// Returns the process exit code: 0 ok, 1 no display / GL failure, 3 invalid input.
+int runEditor(const EditorOptions& options);
+
+// Reads the back buffer (before the swap) and writes it as a PNG, rows flipped to top-down.
+// Throws std::runtime_error when the file cannot be written.
+void saveBackBufferPng(const std::filesystem::path& file, int width, int height);
+
+} // namespace vl::ui

@@ -1,0 +1,534 @@
+#include "ui/EditorUi.h"
+
+#include "core/common/Error.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <cctype>
+
+namespace vl::ui {
+namespace {
+
+constexpr const char* kPanelNames[] = {"Visemes",    "Frequencies", "Weights", "Deformation",
+                                       "Refinement", "Reduction",   "Export"};
+
+glm::vec3 toGlm(const Vec3& v) {
+    return {static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2])};
+}
+
+// A centred hint drawn over an empty view.
+void emptyViewHint(const ImVec2& min, const ImVec2& max, const char* text) {
+    const ImVec2 size = ImGui::CalcTextSize(text);
+    ImGui::GetWindowDrawList()->AddText(
+        ImVec2(0.5f * (min.x + max.x - size.x), 0.5f * (min.y + max.y - size.y)),
+        IM_COL32(200, 200, 210, 255), text);
+}
+
+void viewLabel(const ImVec2& min, const std::string& text) {
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    const ImVec2 size = ImGui::CalcTextSize(text.c_str());
+    draw->AddRectFilled(ImVec2(min.x + 8, min.y + 8), ImVec2(min.x + 16 + size.x, min.y + 12 + size.y),
+                        IM_COL32(20, 20, 24, 170), 4.0f);
+    draw->AddText(ImVec2(min.x + 12, min.y + 10), IM_COL32(235, 235, 240, 255), text.c_str());
+}
+
+} // namespace
+
+const char* panelName(Panel panel) {
+    return kPanelNames[static_cast<int>(panel)];
+}
+
+std::optional<Panel> panelFromName(std::string_view name) {
+    for (int i = 0; i < static_cast<int>(Panel::Count); ++i) {
+        const std::string_view candidate = kPanelNames[i];
+        if (candidate.size() == name.size() &&
+            std::equal(candidate.begin(), candidate.end(), name.begin(), [](char a, char b) {
+                return std::tolower(static_cast<unsigned char>(a)) ==
+                       std::tolower(static_cast<unsigned char>(b));
+            }))
+            return static_cast<Panel>(i);
+    }
+    return std::nullopt;
+}
+
+EditorUi::EditorUi(EditorSession& editorSession, GLFWwindow* window)
+    : session(editorSession), window_(window), shader_(shaderDirectory(), "mesh") {
+    afterView_.background = beforeView_.background = mainView_.background;
+}
+
+void EditorUi::selectPanel(Panel panel) {
+    activePanel_ = panel;
+    panelSelectPending_ = true;
+}
+
+void EditorUi::requestQuit() {
+    guarded([this] { quitConfirmed_ = true; });
+}
+
+void EditorUi::guarded(std::function<void()> action) {
+    if (!session.modified()) {
+        action();
+        return;
+    }
+    pendingGuarded_ = std::move(action);
+    openUnsavedPopup_ = true;
+}
+
+// --- GPU copies of the session's meshes ------------------------------------------------------
+
+void EditorUi::syncGpu() {
+    if (uploadedGeometry_ != session.geometryGeneration()) {
+        uploadedGeometry_ = session.geometryGeneration();
+        if (const VisemeSet* set = session.visemes()) {
+            std::vector<std::vector<Vec3>> targets;
+            for (const auto& v : set->visemes) targets.push_back(v.positions);
+            session.attempt("Display visemes", [&] {
+                visemeMesh_.setGeometry(set->neutral.positions, set->neutral.triangles, targets);
+            });
+        } else {
+            visemeMesh_.setGeometry({}, {}, {});
+        }
+        uploadedMerged_ = nullptr;
+        weightsKey_.clear(), errorKey_.clear(), influenceKey_.clear();
+        framePending_ = true;
+    }
+    const FaceModel& model = session.face();
+    if (uploadedCascade_ != model.cascade.get()) {
+        const bool first = uploadedCascade_ == nullptr;
+        uploadedCascade_ = model.cascade.get();
+        if (model.cascade) {
+            const FaceSamples& samples = session.faceSamples();
+            faceMesh_.setGeometry(samples.rest, model.domain->triangles, samples.targets);
+            faceMesh_.setColors(samples.colours);
+        } else {
+            faceMesh_.setGeometry({}, {}, {});
+        }
+        weightsKey_.clear(), errorKey_.clear(), influenceKey_.clear();
+        if (first) framePending_ = true;
+    }
+    const ReductionResult* curve = session.reductionCurve();
+    const int groups = session.project().reduction.target;
+    if (curve && (uploadedMerged_ != curve || uploadedMergedGroups_ != groups)) {
+        const auto& merged = session.mergedShapes();
+        const VisemeSet* set = session.visemes();
+        mergedMesh_.setGeometry(set->neutral.positions, set->neutral.triangles, merged);
+        uploadedMerged_ = curve;
+        uploadedMergedGroups_ = groups;
+        weightsKey_.clear(), errorKey_.clear(), influenceKey_.clear();
+    }
+    updateScalars();
+}
+
+// --- frame -----------------------------------------------------------------------------------
+
+void EditorUi::frame() {
+    session.poll();
+    if (playback_.playing) playback_.time += ImGui::GetIO().DeltaTime;
+    syncGpu();
+    if (framePending_) {
+        frameAll();
+        framePending_ = false;
+    }
+    if (glfwWindowShouldClose(window_) && !quitConfirmed_) {
+        glfwSetWindowShouldClose(window_, GLFW_FALSE);
+        requestQuit();
+    }
+    shortcuts();
+
+    const ImGuiIO& io = ImGui::GetIO();
+    menuBar();
+    const float menuHeight = ImGui::GetFrameHeight();
+    const float statusHeight = ImGui::GetFrameHeight() + 8.0f;
+    const float sideWidth = std::clamp(io.DisplaySize.x * 0.3f, 360.0f, 560.0f);
+    const float bodyHeight = std::max(1.0f, io.DisplaySize.y - menuHeight - statusHeight);
+    sidePanel(menuHeight, sideWidth, bodyHeight);
+    views(sideWidth, menuHeight, std::max(1.0f, io.DisplaySize.x - sideWidth), bodyHeight);
+    statusBar(statusHeight);
+    fileDialogs();
+    unsavedChangesPopup();
+}
+
+void EditorUi::frameAll() {
+    auto frameOn = [](Viewport& view, std::span<const Vec3> positions) {
+        Vec3 lo, hi;
+        if (!bounds(positions, lo, hi)) return;
+        view.camera.frame(toGlm(lo), toGlm(hi));
+    };
+    if (const VisemeSet* set = session.visemes()) {
+        frameOn(beforeView_, set->neutral.positions);
+        frameOn(afterView_, set->neutral.positions);
+        if (subject_ == ViewSubject::Visemes) frameOn(mainView_, set->neutral.positions);
+    }
+    if (subject_ == ViewSubject::Face && session.face().cascade)
+        frameOn(mainView_, session.faceSamples().rest);
+}
+
+void EditorUi::shortcuts() {
+    const ImGuiIO& io = ImGui::GetIO();
+    if (io.WantTextInput || fileDialog_.isOpen()) return;
+    if (io.KeyCtrl) {
+        if (ImGui::IsKeyPressed(GLFW_KEY_O, false)) {
+            guarded([this] {
+                fileDialog_.open("Open project", FileDialog::Mode::OpenFile, {".vlproj", ".json"},
+                                 [this](const auto& path) {
+                                     session.attempt("Open project", [&] { session.openProject(path); });
+                                 });
+            });
+        }
+        if (ImGui::IsKeyPressed(GLFW_KEY_S, false)) {
+            if (io.KeyShift || session.project().path.empty())
+                fileDialog_.open(
+                    "Save project as", FileDialog::Mode::SaveFile, {".vlproj"},
+                    [this](const auto& path) {
+                        session.attempt("Save project", [&] { session.saveProject(path); });
+                    },
+                    "project.vlproj");
+            else
+                session.attempt("Save project", [&] { session.saveProject(); });
+        }
+        if (ImGui::IsKeyPressed(GLFW_KEY_Z, false)) io.KeyShift ? session.redo() : session.undo();
+        if (ImGui::IsKeyPressed(GLFW_KEY_Y, false)) session.redo();
+        if (ImGui::IsKeyPressed(GLFW_KEY_L, false))
+            guarded([this] { session.attempt("Load sample", [&] { session.loadSample(); }); });
+    } else if (ImGui::IsKeyPressed(GLFW_KEY_F, false)) {
+        frameAll();
+    } else if (ImGui::IsKeyPressed(GLFW_KEY_W, false)) {
+        wireframe_ = !wireframe_;
+    }
+}
+
+void EditorUi::menuBar() {
+    if (!ImGui::BeginMainMenuBar()) return;
+    if (ImGui::BeginMenu("File")) {
+        if (ImGui::MenuItem("New project")) guarded([this] { session.newProject(); });
+        if (ImGui::MenuItem("Open project...", "Ctrl+O"))
+            guarded([this] {
+                fileDialog_.open("Open project", FileDialog::Mode::OpenFile, {".vlproj", ".json"},
+                                 [this](const auto& path) {
+                                     session.attempt("Open project", [&] { session.openProject(path); });
+                                 });
+            });
+        if (ImGui::MenuItem("Save project", "Ctrl+S", false, !session.project().path.empty()))
+            session.attempt("Save project", [&] { session.saveProject(); });
+        if (ImGui::MenuItem("Save project as...", "Ctrl+Shift+S"))
+            fileDialog_.open(
+                "Save project as", FileDialog::Mode::SaveFile, {".vlproj"},
+                [this](const auto& path) {
+                    session.attempt("Save project", [&] { session.saveProject(path); });
+                },
+                "project.vlproj");
+        ImGui::Separator();
+        if (ImGui::MenuItem("Load sample face", "Ctrl+L"))
+            guarded([this] { session.attempt("Load sample", [&] { session.loadSample(); }); });
+        if (ImGui::MenuItem("Open viseme folder..."))
+            guarded([this] {
+                fileDialog_.open("Open viseme folder", FileDialog::Mode::OpenFolder, {},
+                                 [this](const auto& path) {
+                                     session.attempt("Open folder", [&] { session.loadVisemeFolder(path); });
+                                 });
+            });
+        ImGui::Separator();
+        if (ImGui::MenuItem("Quit")) requestQuit();
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("Edit")) {
+        const std::string undo = "Undo " + session.undoName();
+        const std::string redo = "Redo " + session.redoName();
+        if (ImGui::MenuItem(undo.c_str(), "Ctrl+Z", false, session.canUndo())) session.undo();
+        if (ImGui::MenuItem(redo.c_str(), "Ctrl+Y", false, session.canRedo())) session.redo();
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("View")) {
+        if (ImGui::MenuItem("Frame model", "F")) frameAll();
+        ImGui::MenuItem("Wireframe overlay", "W", &wireframe_);
+        ImGui::Separator();
+        for (int i = 0; i < static_cast<int>(Panel::Count); ++i)
+            if (ImGui::MenuItem(kPanelNames[i], nullptr, activePanel_ == static_cast<Panel>(i)))
+                selectPanel(static_cast<Panel>(i));
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("Help")) {
+        ImGui::TextUnformatted("VisemeLab editor");
+        ImGui::Separator();
+        ImGui::TextUnformatted("Left drag: orbit    Right/middle drag: pan    Wheel: zoom");
+        ImGui::TextUnformatted("Arrows: orbit    +/-: zoom    F: frame    W: wireframe");
+        ImGui::TextUnformatted("Ctrl+O open, Ctrl+S save, Ctrl+Shift+S save as, Ctrl+L sample");
+        ImGui::TextUnformatted("Ctrl+Z undo, Ctrl+Y redo");
+        ImGui::TextUnformatted("Weights panel, brush on: left drag paints, Alt+left drag orbits");
+        ImGui::TextUnformatted("Guide: docs/user-guide.md");
+        ImGui::EndMenu();
+    }
+    if (session.modified()) {
+        ImGui::SameLine(ImGui::GetWindowWidth() - 140.0f);
+        ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.4f, 1.0f), "unsaved changes");
+    }
+    ImGui::EndMainMenuBar();
+}
+
+void EditorUi::sidePanel(float top, float width, float height) {
+    constexpr ImGuiWindowFlags kFixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                                        ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoTitleBar |
+                                        ImGuiWindowFlags_NoBringToFrontOnFocus;
+    ImGui::SetNextWindowPos(ImVec2(0, top));
+    ImGui::SetNextWindowSize(ImVec2(width, height));
+    ImGui::Begin("##side", nullptr, kFixed);
+    if (ImGui::BeginTabBar("##panels", ImGuiTabBarFlags_FittingPolicyScroll)) {
+        for (int i = 0; i < static_cast<int>(Panel::Count); ++i) {
+            const auto panel = static_cast<Panel>(i);
+            const ImGuiTabItemFlags flags =
+                panelSelectPending_ && activePanel_ == panel ? ImGuiTabItemFlags_SetSelected : 0;
+            if (ImGui::BeginTabItem(kPanelNames[i], nullptr, flags)) {
+                if (!panelSelectPending_) activePanel_ = panel;
+                ImGui::BeginChild("##panel-body");
+                switch (panel) {
+                case Panel::Visemes:
+                    visemesPanel();
+                    break;
+                case Panel::Frequencies:
+                    frequenciesPanel();
+                    break;
+                case Panel::Weights:
+                    weightsPanel();
+                    break;
+                case Panel::Deformation:
+                    deformationPanel();
+                    break;
+                case Panel::Refinement:
+                    refinementPanel();
+                    break;
+                case Panel::Reduction:
+                    reductionPanel();
+                    break;
+                case Panel::Export:
+                    exportPanel();
+                    break;
+                case Panel::Count:
+                    break;
+                }
+                ImGui::EndChild();
+                ImGui::EndTabItem();
+            }
+        }
+        panelSelectPending_ = false;
+        ImGui::EndTabBar();
+    }
+    ImGui::End();
+}
+
+void EditorUi::views(float left, float top, float width, float height) {
+    const ViewSubject subject = activePanel_ == Panel::Deformation || activePanel_ == Panel::Refinement
+                                    ? ViewSubject::Face
+                                    : ViewSubject::Visemes;
+    if (subject != subject_) {
+        subject_ = subject;
+        framePending_ = true;
+    }
+    ImGui::SetNextWindowPos(ImVec2(left, top));
+    ImGui::SetNextWindowSize(ImVec2(width, height));
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0.0f);
+    ImGui::Begin("##views", nullptr,
+                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
+                     ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoScrollWithMouse);
+    const ImVec2 size(width, height);
+    if (activePanel_ == Panel::Reduction)
+        comparisonViews(size);
+    else
+        mainView(size);
+    ImGui::End();
+    ImGui::PopStyleVar(2);
+}
+
+void EditorUi::statusBar(float height) {
+    const ImGuiIO& io = ImGui::GetIO();
+    ImGui::SetNextWindowPos(ImVec2(0, io.DisplaySize.y - height));
+    ImGui::SetNextWindowSize(ImVec2(io.DisplaySize.x, height));
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(8, 4));
+    ImGui::Begin("##status", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove);
+    std::string stats = "No mesh";
+    if (subject_ == ViewSubject::Face && session.face().cascade) {
+        stats = "Face: " + std::to_string(faceMesh_.vertexCount()) + " vertices, " +
+                std::to_string(faceMesh_.triangleCount()) + " triangles, " +
+                std::to_string(session.face().parameters.size()) + " parameters";
+    } else if (const VisemeSet* set = session.visemes()) {
+        stats = std::to_string(set->size()) + " visemes, " + std::to_string(set->vertexCount()) +
+                " vertices, " + std::to_string(set->neutral.triangles.size()) + " triangles";
+    }
+    ImGui::TextUnformatted(stats.c_str());
+    if (session.reductionRunning()) {
+        ImGui::SameLine();
+        ImGui::ProgressBar(static_cast<float>(session.reductionProgress()), ImVec2(160, 0), "reducing");
+    }
+    if (!session.messages().empty()) {
+        const StatusMessage& last = session.messages().back();
+        ImGui::SameLine(std::max(ImGui::GetCursorPosX() + 30.0f, io.DisplaySize.x * 0.3f));
+        const ImVec4 colour = last.kind == StatusMessage::Kind::Error ? ImVec4(1.0f, 0.45f, 0.4f, 1.0f)
+                                                                      : ImVec4(0.75f, 0.85f, 0.75f, 1.0f);
+        ImGui::TextColored(colour, "%s", last.text.c_str());
+        if (ImGui::IsItemHovered()) {
+            ImGui::BeginTooltip();
+            const auto& all = session.messages();
+            for (std::size_t i = all.size() > 12 ? all.size() - 12 : 0; i < all.size(); ++i)
+                ImGui::TextUnformatted(all[i].text.c_str());
+            ImGui::EndTooltip();
+        }
+    }
+    ImGui::End();
+    ImGui::PopStyleVar();
+}
+
+void EditorUi::fileDialogs() {
+    fileDialog_.draw();
+}
+
+void EditorUi::unsavedChangesPopup() {
+    if (openUnsavedPopup_) {
+        ImGui::OpenPopup("Unsaved changes");
+        openUnsavedPopup_ = false;
+    }
+    if (!ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+    ImGui::TextUnformatted("The project has unsaved changes.");
+    const bool hasPath = !session.project().path.empty();
+    if (ImGui::Button(hasPath ? "Save" : "Save as...", ImVec2(110, 0))) {
+        ImGui::CloseCurrentPopup();
+        auto action = std::move(pendingGuarded_);
+        if (hasPath) {
+            if (session.attempt("Save project", [&] { session.saveProject(); }) && action) action();
+        } else {
+            fileDialog_.open(
+                "Save project as", FileDialog::Mode::SaveFile, {".vlproj"},
+                [this, action](const auto& path) {
+                    if (session.attempt("Save project", [&] { session.saveProject(path); }) && action)
+                        action();
+                },
+                "project.vlproj");
+        }
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Discard changes", ImVec2(130, 0))) {
+        ImGui::CloseCurrentPopup();
+        if (auto action = std::move(pendingGuarded_)) action();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel", ImVec2(90, 0))) {
+        pendingGuarded_ = nullptr;
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+}
+
+// --- views -----------------------------------------------------------------------------------
+
+std::vector<float> EditorUi::visemeWeights(int viseme) const {
+    std::vector<float> w(session.visemeCount(), 0.0f);
+    if (viseme >= 0 && viseme < static_cast<int>(w.size())) w[static_cast<std::size_t>(viseme)] = 1.0f;
+    return w;
+}
+
+void EditorUi::mainView(ImVec2 size) {
+    DrawStyle style;
+    style.wireframe = wireframe_;
+    const bool painting = activePanel_ == Panel::Weights && brush_.enabled;
+    const bool orbit = !painting || ImGui::GetIO().KeyAlt;
+    std::string label;
+    ViewportEvents events;
+    if (subject_ == ViewSubject::Face) {
+        std::vector<float> q;
+        for (double v : session.face().parameters) q.push_back(static_cast<float>(v));
+        style.color = showFieldInfluence_ && selectedStage_ >= 0 ? ColorMode::Scalar : ColorMode::VertexColor;
+        events = mainView_.show("main", size, [&](const glm::mat4& view, const glm::mat4& projection) {
+            faceMesh_.draw(shader_, q, view, projection, style);
+        });
+        if (faceMesh_.empty())
+            emptyViewHint(events.imageMin, events.imageMax,
+                          "No face loaded: use \"Load bundled face\" in the panel");
+        else
+            label = std::string("Deformable face (") +
+                    std::string(face::individualName(session.face().individual)) + ")";
+    } else {
+        std::vector<float> weights =
+            playback_.playing ? playbackWeights(false) : visemeWeights(session.selectedViseme);
+        style.color =
+            activePanel_ == Panel::Weights && showWeightsColours_ ? ColorMode::Scalar : ColorMode::Surface;
+        if (activePanel_ == Panel::Weights) weights.assign(weights.size(), 0.0f); // paint on the neutral
+        events = mainView_.show(
+            "main", size,
+            [&](const glm::mat4& view, const glm::mat4& projection) {
+                visemeMesh_.draw(shader_, weights, view, projection, style);
+            },
+            orbit);
+        if (visemeMesh_.empty()) {
+            emptyViewHint(
+                events.imageMin, events.imageMax,
+                "No viseme set: File > Load sample face (Ctrl+L), or open a project or a viseme folder");
+        } else if (activePanel_ == Panel::Weights) {
+            label = std::string("Weights: ") + toString(session.project().weights.mode);
+        } else if (playback_.playing) {
+            label = "Playback (full set)";
+        } else {
+            const int s = session.selectedViseme;
+            label =
+                s >= 0 ? "Viseme " + session.visemes()->visemes[static_cast<std::size_t>(s)].name : "Neutral";
+        }
+        if (painting) paint(events);
+    }
+    if (!label.empty()) viewLabel(events.imageMin, label);
+}
+
+void EditorUi::comparisonViews(ImVec2 size) {
+    const ImVec2 half(std::floor(size.x * 0.5f) - 1.0f, size.y);
+    const int selected = std::max(session.selectedViseme, 0);
+    const Grouping* grouping = session.currentGrouping();
+    std::vector<float> before = playback_.playing ? playbackWeights(false) : visemeWeights(selected);
+    std::vector<float> after;
+    std::string afterLabel = "Reduced set: waiting for the reduction";
+    if (grouping && session.visemes()) {
+        if (playback_.playing) {
+            after = playbackWeights(true);
+            afterLabel = "Playback (reduced set, m = " + std::to_string(grouping->groups.size()) + ")";
+        } else {
+            const std::vector<int> groupOf = [&] {
+                std::vector<int> g(session.visemeCount(), 0);
+                for (std::size_t k = 0; k < grouping->groups.size(); ++k)
+                    for (int member : grouping->groups[k])
+                        g[static_cast<std::size_t>(member)] = static_cast<int>(k);
+                return g;
+            }();
+            const int group = groupOf[static_cast<std::size_t>(selected)];
+            after.assign(grouping->groups.size(), 0.0f);
+            after[static_cast<std::size_t>(group)] = 1.0f;
+            afterLabel = "Merged group " + std::to_string(group + 1) + " (error colours)";
+        }
+    }
+    DrawStyle plain;
+    plain.wireframe = wireframe_;
+    DrawStyle errors = plain;
+    errors.color = playback_.playing ? ColorMode::Surface : ColorMode::Scalar;
+    const ViewportEvents left =
+        beforeView_.show("before", half, [&](const glm::mat4& view, const glm::mat4& projection) {
+            visemeMesh_.draw(shader_, before, view, projection, plain);
+        });
+    if (session.visemes())
+        viewLabel(left.imageMin,
+                  playback_.playing
+                      ? "Playback (full set)"
+                      : "Original " + session.visemes()->visemes[static_cast<std::size_t>(selected)].name);
+    else
+        emptyViewHint(left.imageMin, left.imageMax, "No viseme set loaded");
+    ImGui::SameLine(0.0f, 2.0f);
+    const ViewportEvents right =
+        afterView_.show("after", half, [&](const glm::mat4& view, const glm::mat4& projection) {
+            if (grouping) mergedMesh_.draw(shader_, after, view, projection, errors);
+        });
+    if (session.visemes()) viewLabel(right.imageMin, afterLabel);
+    // One camera for both views: the one the user is moving wins.
+    if (right.hovered || right.leftDown)
+        beforeView_.camera = afterView_.camera;
+    else
+        afterView_.camera = beforeView_.camera;
+}
+
+} // namespace vl::ui

@@ -1,0 +1,124 @@
+#pragma once
+// The editor window's contents: menu bar, fixed side panel with one tab per task, the 3D views and
+// the status bar. Everything the user does goes through EditorSession; this class only draws and
+// keeps GPU copies of the session's meshes up to date.
+#include "ui/render/GlShader.h"
+#include "ui/render/GpuMesh.h"
+#include "ui/render/Viewport.h"
+#include "ui/session/EditorSession.h"
+#include "ui/widgets/FileDialog.h"
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+struct GLFWwindow;
+
+namespace vl::ui {
+
+enum class Panel { Visemes, Frequencies, Weights, Deformation, Refinement, Reduction, Export, Count };
+
+const char* panelName(Panel panel);
+std::optional<Panel> panelFromName(std::string_view name); // case-insensitive
+
+// What the main view shows.
+enum class ViewSubject { Visemes, Face };
+
+struct BrushSettings {
+    float radius = 1.0f;   // in model units
+    float strength = 0.5f; // per dab
+    int falloff = 1;       // index into the core's falloff kinds
+    int mode = 0;          // 0 add, 1 subtract, 2 smooth
+    bool symmetric = true;
+    bool enabled = false;
+};
+
+struct Playback {
+    bool playing = false;
+    double time = 0.0;           // seconds since start
+    double secondsPerKey = 0.18; // one viseme per key
+    std::string sequence;        // phonemes or viseme names, space separated; empty = all visemes
+};
+
+class EditorUi {
+  public:
+    EditorUi(EditorSession& session, GLFWwindow* window);
+
+    // Builds the whole interface for one frame (between ImGui::NewFrame and ImGui::Render).
+    void frame();
+    void selectPanel(Panel panel);
+    Panel activePanel() const { return activePanel_; }
+    // Frames every 3D view on its model (key F).
+    void frameAll();
+    // True when the user asked to quit and either nothing is unsaved or they confirmed.
+    bool quitConfirmed() const { return quitConfirmed_; }
+    void requestQuit();
+
+    EditorSession& session;
+
+  private:
+    friend struct PanelAccess;
+    void menuBar();
+    void statusBar(float height);
+    void sidePanel(float top, float width, float height);
+    void views(float left, float top, float width, float height);
+    void shortcuts();
+    void unsavedChangesPopup();
+    void fileDialogs();
+    void syncGpu();
+
+    void visemesPanel();
+    void frequenciesPanel();
+    void weightsPanel();
+    void deformationPanel();
+    void refinementPanel();
+    void reductionPanel();
+    void exportPanel();
+    void uvView(int stage, int influence);
+
+    void mainView(ImVec2 size);
+    void comparisonViews(ImVec2 size);
+    std::vector<float> visemeWeights(int viseme) const;
+    std::vector<float> playbackWeights(bool reduced) const;
+    std::vector<int> playbackKeys() const;
+    void paint(const ViewportEvents& events);
+    void updateScalars();
+
+    // Asks for confirmation first when there are unsaved changes.
+    void guarded(std::function<void()> action);
+
+    GLFWwindow* window_;
+    GlShader shader_;
+    GpuMesh visemeMesh_; // neutral + one target per viseme
+    GpuMesh mergedMesh_; // neutral + one target per merged group
+    GpuMesh faceMesh_;   // face cascade at q = 0 + one target per parameter
+    Viewport mainView_, beforeView_, afterView_;
+    std::uint64_t uploadedGeometry_ = 0;
+    const DeformationCascade* uploadedCascade_ = nullptr;
+    const ReductionResult* uploadedMerged_ = nullptr;
+    int uploadedMergedGroups_ = 0;
+    // What each mesh's scalars currently show, to re-upload only on change.
+    std::string weightsKey_, errorKey_, influenceKey_;
+
+    Panel activePanel_ = Panel::Visemes;
+    bool panelSelectPending_ = true;
+    ViewSubject subject_ = ViewSubject::Visemes;
+    bool wireframe_ = true;
+    bool showWeightsColours_ = true;
+    bool showFieldInfluence_ = true;
+    int selectedStage_ = -1, selectedInfluence_ = 0;
+    BrushSettings brush_;
+    bool strokeActive_ = false;
+    std::vector<double> strokeStart_;
+    std::vector<double> strokeWeights_;
+    Playback playback_;
+    FileDialog fileDialog_;
+    std::function<void()> pendingGuarded_;
+    bool openUnsavedPopup_ = false;
+    bool quitConfirmed_ = false;
+    bool framePending_ = true;
+    std::string importName_;
+};
+
+} // namespace vl::ui

@@ -1,0 +1,197 @@
+// Deformation panel: one live slider per cascade parameter, viseme presets, the base geometry
+// (retargeting) and editing of the analytic influence regions, drawn on the face and in (u,v).
+#include "core/deform/Visemes.h"
+#include "ui/EditorUi.h"
+#include "ui/panels/PanelWidgets.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace vl::ui {
+namespace {
+
+constexpr Falloff kFalloffs[] = {Falloff::Linear, Falloff::Smoothstep, Falloff::Cosine, Falloff::Gaussian};
+
+bool dragVec2(const char* label, Vec2& v, float speed, float lo, float hi) {
+    float values[2] = {static_cast<float>(v[0]), static_cast<float>(v[1])};
+    if (!ImGui::DragFloat2(label, values, speed, lo, hi, "%.3f")) return false;
+    v = Vec2(values[0], values[1]);
+    return true;
+}
+
+} // namespace
+
+void EditorUi::deformationPanel() {
+    const FaceModel& model = session.face();
+    if (!model.cascade) {
+        ImGui::TextWrapped(
+            "The deformable face is a cascade of vector fields on the (u,v) square: a base geometry "
+            "plus one field per muscle parameter.");
+        if (ImGui::Button("Load bundled face")) session.attempt("Load face", [&] { session.loadFace(); });
+        return;
+    }
+    const DeformationCascade& cascade = *model.cascade;
+
+    sectionHeader("Base geometry (retargeting)");
+    int individual = static_cast<int>(model.individual);
+    bool retargeted = ImGui::RadioButton("bundled", &individual, 0);
+    ImGui::SameLine();
+    retargeted |= ImGui::RadioButton("retarget (2nd individual)", &individual, 1);
+    if (retargeted)
+        session.attempt("Retarget",
+                        [&] { session.setIndividual(static_cast<face::Individual>(individual)); });
+
+    sectionHeader("Parameters");
+    if (ImGui::BeginCombo("preset", "apply a viseme...")) {
+        for (const VisemeParameters& preset : oculusVisemes())
+            if (ImGui::Selectable(preset.name.c_str()))
+                session.attempt("Preset", [&] { session.applyVisemePreset(preset.name); });
+        ImGui::EndCombo();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Defaults"))
+        session.attempt("Defaults", [&] { session.setParameters(cascade.defaults(), "Reset parameters"); });
+    for (std::size_t k = 0; k < cascade.parameters.size(); ++k) {
+        const DeformParameter& p = cascade.parameters[k];
+        float value = static_cast<float>(model.parameters[k]);
+        ImGui::PushID(static_cast<int>(k));
+        ImGui::SetNextItemWidth(-130);
+        if (ImGui::SliderFloat(p.name.c_str(), &value, static_cast<float>(p.min), static_cast<float>(p.max),
+                               "%.2f"))
+            session.attempt("Parameter", [&] { session.setParameter(static_cast<int>(k), value); });
+        endEditOnRelease(session);
+        ImGui::PopID();
+    }
+
+    sectionHeader("Fields");
+    ImGui::Checkbox("Show influence on the face", &showFieldInfluence_);
+    if (ImGui::BeginListBox("##stages", ImVec2(-1, 6.5f * ImGui::GetTextLineHeightWithSpacing()))) {
+        for (std::size_t s = 0; s < cascade.stages.size(); ++s) {
+            const DeformationStage& stage = cascade.stages[s];
+            for (std::size_t r = 0; r < stage.field.influences.size(); ++r) {
+                std::string label =
+                    stage.name + (stage.field.influences.size() > 1 ? " #" + std::to_string(r + 1) : "");
+                if (stage.kind == StageKind::AddVector)
+                    label += "  <- " + cascade.parameters[stage.parameter].name;
+                const bool selected =
+                    selectedStage_ == static_cast<int>(s) && selectedInfluence_ == static_cast<int>(r);
+                ImGui::PushID(static_cast<int>(s * 1000 + r));
+                if (ImGui::Selectable(label.c_str(), selected)) {
+                    selectedStage_ = static_cast<int>(s);
+                    selectedInfluence_ = static_cast<int>(r);
+                }
+                ImGui::PopID();
+            }
+        }
+        ImGui::EndListBox();
+    }
+    if (selectedStage_ < 0 || selectedStage_ >= static_cast<int>(cascade.stages.size())) {
+        ImGui::TextDisabled("Select an analytic field to edit it.");
+    } else {
+        const auto& influences = cascade.stages[static_cast<std::size_t>(selectedStage_)].field.influences;
+        if (selectedInfluence_ < static_cast<int>(influences.size())) {
+            InfluenceField field = influences[static_cast<std::size_t>(selectedInfluence_)];
+            bool changed = false;
+            ImGui::PushItemWidth(-110);
+            changed |= dragVec2("centre (u,v)", field.centre, 0.002f, 0.0f, 1.0f);
+            endEditOnRelease(session);
+            changed |= dragVec2("radii", field.radii, 0.002f, 0.005f, 1.0f);
+            endEditOnRelease(session);
+            changed |= dragVec2("plateau", field.plateau, 0.002f, 0.0f, 1.0f);
+            endEditOnRelease(session);
+            float degrees = static_cast<float>(field.rotation * 180.0 / M_PI);
+            if (ImGui::SliderFloat("rotation", &degrees, -180.0f, 180.0f, "%.0f deg")) {
+                field.rotation = degrees * M_PI / 180.0;
+                changed = true;
+            }
+            endEditOnRelease(session);
+            float direction[3] = {static_cast<float>(field.direction[0]),
+                                  static_cast<float>(field.direction[1]),
+                                  static_cast<float>(field.direction[2])};
+            if (ImGui::DragFloat3("direction", direction, 0.01f, -1.0f, 1.0f, "%.2f")) {
+                field.direction = Vec3(direction[0], direction[1], direction[2]);
+                changed = true;
+            }
+            endEditOnRelease(session);
+            float magnitude = static_cast<float>(field.magnitude);
+            if (ImGui::DragFloat("magnitude", &magnitude, 0.01f, -10.0f, 10.0f, "%.3f")) {
+                field.magnitude = magnitude;
+                changed = true;
+            }
+            endEditOnRelease(session);
+            int falloff = static_cast<int>(field.falloff);
+            const std::string current(falloffName(field.falloff));
+            if (ImGui::BeginCombo("falloff", current.c_str())) {
+                for (Falloff kind : kFalloffs)
+                    if (ImGui::Selectable(std::string(falloffName(kind)).c_str(),
+                                          static_cast<int>(kind) == falloff)) {
+                        field.falloff = kind;
+                        changed = true;
+                    }
+                ImGui::EndCombo();
+            }
+            ImGui::PopItemWidth();
+            if (changed)
+                session.attempt("Field",
+                                [&] { session.setInfluence(selectedStage_, selectedInfluence_, field); });
+            uvView(selectedStage_, selectedInfluence_);
+        }
+    }
+
+    sectionHeader("Visemes");
+    ImGui::TextWrapped("Generate the face's viseme set (one mesh per viseme preset) to reduce it.");
+    if (ImGui::Button("Generate viseme set from face"))
+        guarded([this] { session.attempt("Generate visemes", [&] { session.generateVisemesFromFace(); }); });
+}
+
+void EditorUi::uvView(int stage, int influence) {
+    const FaceModel& model = session.face();
+    const InfluenceField& field = model.cascade->stages[static_cast<std::size_t>(stage)]
+                                      .field.influences[static_cast<std::size_t>(influence)];
+    const float side = std::min(ImGui::GetContentRegionAvail().x, 260.0f);
+    const ImVec2 origin = ImGui::GetCursorScreenPos();
+    ImGui::InvisibleButton("##uv", ImVec2(side, side));
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    // v grows upwards in the view, as on the face.
+    auto toScreen = [&](double u, double v) {
+        return ImVec2(origin.x + static_cast<float>(u) * side, origin.y + static_cast<float>(1.0 - v) * side);
+    };
+    draw->AddRectFilled(origin, ImVec2(origin.x + side, origin.y + side), IM_COL32(30, 32, 38, 255));
+    const auto& uvs = model.domain->uvs;
+    for (const Triangle& t : model.domain->triangles)
+        for (int a = 0; a < 3; ++a) {
+            const Vec2& p = uvs[t[static_cast<std::size_t>(a)]];
+            const Vec2& q = uvs[t[static_cast<std::size_t>((a + 1) % 3)]];
+            if (t[static_cast<std::size_t>(a)] < t[static_cast<std::size_t>((a + 1) % 3)])
+                draw->AddLine(toScreen(p[0], p[1]), toScreen(q[0], q[1]), IM_COL32(80, 84, 96, 255));
+        }
+    auto ellipse = [&](const Vec2& radii, ImU32 colour) {
+        constexpr int kSegments = 64;
+        ImVec2 points[kSegments];
+        const double c = std::cos(field.rotation), s = std::sin(field.rotation);
+        for (int i = 0; i < kSegments; ++i) {
+            const double a = 2.0 * M_PI * i / kSegments;
+            const double x = radii[0] * std::cos(a), y = radii[1] * std::sin(a);
+            points[i] = toScreen(field.centre[0] + c * x - s * y, field.centre[1] + s * x + c * y);
+        }
+        draw->AddPolyline(points, kSegments, colour, ImDrawFlags_Closed, 2.0f);
+    };
+    ellipse(field.radii, IM_COL32(255, 190, 60, 255));
+    if (field.plateau[0] > 0.0) ellipse(field.plateau, IM_COL32(255, 120, 60, 200));
+    const ImVec2 centre = toScreen(field.centre[0], field.centre[1]);
+    draw->AddCircleFilled(centre, 5.0f, IM_COL32(255, 220, 120, 255));
+    // Dragging in the view moves the centre.
+    if (ImGui::IsItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0.0f)) {
+        const ImVec2 mouse = ImGui::GetIO().MousePos;
+        InfluenceField moved = field;
+        moved.centre = Vec2(std::clamp((mouse.x - origin.x) / side, 0.0f, 1.0f),
+                            std::clamp(1.0f - (mouse.y - origin.y) / side, 0.0f, 1.0f));
+        session.attempt("Field", [&] { session.setInfluence(stage, influence, moved); });
+    }
+    if (ImGui::IsItemDeactivated()) session.endEdit();
+    ImGui::TextDisabled("(u,v) view: drag to move the centre");
+}
+
+} // namespace vl::ui

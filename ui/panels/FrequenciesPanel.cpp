@@ -1,0 +1,113 @@
+// Frequencies panel: the editable phoneme frequency table with its phoneme -> viseme map (or direct
+// viseme frequencies), the resulting viseme frequencies live, CSV/JSON load and CSV save.
+#include "ui/EditorUi.h"
+#include "ui/panels/PanelWidgets.h"
+
+#include <imgui.h>
+
+namespace vl::ui {
+
+void EditorUi::frequenciesPanel() {
+    const VisemeSet* set = session.visemes();
+    if (!set) {
+        ImGui::TextWrapped("Load a viseme set first.");
+        return;
+    }
+    if (ImGui::Button("Load table..."))
+        fileDialog_.open("Load frequencies", FileDialog::Mode::OpenFile, {".csv", ".json"},
+                         [this](const auto& path) {
+                             session.attempt("Load frequencies", [&] { session.loadFrequencies(path); });
+                         });
+    ImGui::SameLine();
+    if (ImGui::Button("Save as CSV..."))
+        fileDialog_.open(
+            "Save frequencies", FileDialog::Mode::SaveFile, {".csv"},
+            [this](const auto& path) {
+                if (session.attempt("Save frequencies", [&] { session.saveFrequenciesCsv(path); }))
+                    session.info("Saved " + path.string());
+            },
+            "frequencies.csv");
+    helpMarker(
+        "CSV lines 'name,frequency', or JSON {\"phonemes\": {...}, \"map\": {...}}. A phoneme table needs a "
+        "map that covers every phoneme; errors name the file and line.");
+
+    std::vector<double> frequencies;
+    const bool ok = session.attempt("Frequencies", [&] { frequencies = session.visemeFrequencies(); });
+    sectionHeader("Viseme frequencies (normalised)");
+    if (ok) {
+        std::vector<float> values(frequencies.begin(), frequencies.end());
+        ImGui::PlotHistogram("##viseme-frequencies", values.data(), static_cast<int>(values.size()), 0,
+                             nullptr, 0.0f, FLT_MAX, ImVec2(-1, 80));
+        std::string names;
+        for (const auto& v : set->visemes) names += v.name + " ";
+        ImGui::TextDisabled("%s", names.c_str());
+    }
+
+    const FrequencySource& source = session.project().frequencies;
+    if (source.isPhonemeBased()) {
+        sectionHeader("Phonemes");
+        if (ImGui::BeginTable("##phonemes", 3,
+                              ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY | ImGuiTableFlags_BordersInnerV,
+                              ImVec2(0, ImGui::GetContentRegionAvail().y))) {
+            ImGui::TableSetupScrollFreeze(0, 1);
+            ImGui::TableSetupColumn("Phoneme");
+            ImGui::TableSetupColumn("Frequency");
+            ImGui::TableSetupColumn("Viseme");
+            ImGui::TableHeadersRow();
+            for (std::size_t i = 0; i < source.phonemes.entries.size(); ++i) {
+                const auto& [phoneme, value] = source.phonemes.entries[i];
+                ImGui::PushID(static_cast<int>(i));
+                ImGui::TableNextRow();
+                ImGui::TableNextColumn();
+                ImGui::TextUnformatted(phoneme.c_str());
+                ImGui::TableNextColumn();
+                float f = static_cast<float>(value);
+                ImGui::SetNextItemWidth(-1);
+                if (ImGui::DragFloat("##f", &f, 0.001f, 0.0f, 1e9f, "%.4f"))
+                    session.attempt("Phoneme frequency",
+                                    [&] { session.setPhonemeFrequency(static_cast<int>(i), f); });
+                endEditOnRelease(session);
+                ImGui::TableNextColumn();
+                const std::string* mapped = source.map.visemeOf(phoneme);
+                ImGui::SetNextItemWidth(-1);
+                if (ImGui::BeginCombo("##viseme", mapped ? mapped->c_str() : "(unmapped)")) {
+                    for (const auto& v : set->visemes)
+                        if (ImGui::Selectable(v.name.c_str(), mapped && *mapped == v.name))
+                            session.attempt("Phoneme map",
+                                            [&] { session.setPhonemeViseme(static_cast<int>(i), v.name); });
+                    ImGui::EndCombo();
+                }
+                ImGui::PopID();
+            }
+            ImGui::EndTable();
+        }
+    } else {
+        sectionHeader("Viseme frequencies (direct)");
+        if (ImGui::BeginTable("##direct", 2,
+                              ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY | ImGuiTableFlags_BordersInnerV,
+                              ImVec2(0, ImGui::GetContentRegionAvail().y))) {
+            ImGui::TableSetupScrollFreeze(0, 1);
+            ImGui::TableSetupColumn("Viseme");
+            ImGui::TableSetupColumn("Frequency");
+            ImGui::TableHeadersRow();
+            for (std::size_t i = 0; i < set->size(); ++i) {
+                const std::string& name = set->visemes[i].name;
+                const double* value = source.visemeFrequencies.find(name);
+                ImGui::PushID(static_cast<int>(i));
+                ImGui::TableNextRow();
+                ImGui::TableNextColumn();
+                ImGui::TextUnformatted(name.c_str());
+                ImGui::TableNextColumn();
+                float f = value ? static_cast<float>(*value) : 0.0f;
+                ImGui::SetNextItemWidth(-1);
+                if (ImGui::DragFloat("##f", &f, 0.01f, 0.0f, 1e9f, "%.3f"))
+                    session.attempt("Frequency", [&] { session.setVisemeFrequency(static_cast<int>(i), f); });
+                endEditOnRelease(session);
+                ImGui::PopID();
+            }
+            ImGui::EndTable();
+        }
+    }
+}
+
+} // namespace vl::ui

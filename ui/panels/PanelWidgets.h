@@ -1,0 +1,32 @@
+#pragma once
+// Small ImGui helpers shared by the panels.
+#include "ui/session/EditorSession.h"
+
+#include <imgui.h>
+
+namespace vl::ui {
+
+// Call after a slider/drag: releasing it ends the undo step the drag was merging into.
+inline void endEditOnRelease(EditorSession& session) {
+    if (ImGui::IsItemDeactivated()) session.endEdit();
+}
+
+inline void sectionHeader(const char* text) {
+    ImGui::Spacing();
+    ImGui::TextColored(ImVec4(0.55f, 0.75f, 1.0f, 1.0f), "%s", text);
+    ImGui::Separator();
+}
+
+inline void helpMarker(const char* text) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("(?)");
+    if (ImGui::IsItemHovered()) {
+        ImGui::BeginTooltip();
+        ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30.0f);
+        ImGui::TextUnformatted(text);
+        ImGui::PopTextWrapPos();
+        ImGui::EndTooltip();
+    }
+}
+
+} // namespace vl::ui

@@ -1,0 +1,116 @@
+// Visemes panel: the viseme list (frequency, group after reduction), preview on click, loading and
+// importing meshes with the core's interpolability errors shown.
+#include "ui/EditorUi.h"
+#include "ui/panels/PanelWidgets.h"
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include <algorithm>
+#include <cstdio>
+
+namespace vl::ui {
+
+void EditorUi::visemesPanel() {
+    if (ImGui::Button("Load sample face"))
+        guarded([this] { session.attempt("Load sample", [&] { session.loadSample(); }); });
+    ImGui::SameLine();
+    if (ImGui::Button("Open viseme folder..."))
+        guarded([this] {
+            fileDialog_.open("Open viseme folder", FileDialog::Mode::OpenFolder, {},
+                             [this](const auto& path) {
+                                 session.attempt("Open folder", [&] { session.loadVisemeFolder(path); });
+                             });
+        });
+
+    const VisemeSet* set = session.visemes();
+    if (!set) {
+        ImGui::Spacing();
+        ImGui::TextWrapped("No viseme set yet. Load the sample face, open a project (Ctrl+O) or a folder of "
+                           "interpolable meshes (OBJ/PLY/VRML) with one file named *neutral*.");
+        return;
+    }
+
+    sectionHeader("Import a viseme mesh");
+    ImGui::SetNextItemWidth(150);
+    ImGui::InputTextWithHint("##import-name", "name", &importName_);
+    ImGui::SameLine();
+    if (ImGui::Button("Choose file...")) {
+        if (importName_.empty()) {
+            session.error("Import: type a name for the new viseme first");
+        } else {
+            fileDialog_.open(
+                "Import viseme " + importName_, FileDialog::Mode::OpenFile, {".obj", ".ply", ".wrl", ".vrml"},
+                [this](const auto& path) {
+                    if (session.attempt("Import", [&] { session.importViseme(importName_, path); }))
+                        importName_.clear();
+                });
+        }
+    }
+    helpMarker("The mesh must have the neutral's vertex count and triangles (same order); otherwise the "
+               "core's error names the first mismatch and nothing changes.");
+
+    std::vector<double> frequencies;
+    const bool frequenciesOk =
+        session.attempt("Frequencies", [&] { frequencies = session.visemeFrequencies(); });
+    const Grouping* grouping = session.currentGrouping();
+    std::vector<int> groupOf(set->size(), -1);
+    if (grouping)
+        for (std::size_t g = 0; g < grouping->groups.size(); ++g)
+            for (int member : grouping->groups[g])
+                groupOf[static_cast<std::size_t>(member)] = static_cast<int>(g);
+
+    sectionHeader("Visemes");
+    ImGui::Text("%zu visemes, neutral: %s", set->size(),
+                set->neutralSource.empty() ? "generated" : set->neutralSource.filename().string().c_str());
+    if (ImGui::BeginTable("##visemes", 4,
+                          ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_ScrollY |
+                              ImGuiTableFlags_SizingStretchProp,
+                          ImVec2(0, ImGui::GetContentRegionAvail().y - 40))) {
+        ImGui::TableSetupScrollFreeze(0, 1);
+        ImGui::TableSetupColumn("Name", ImGuiTableColumnFlags_WidthStretch, 2.0f);
+        ImGui::TableSetupColumn("Frequency", ImGuiTableColumnFlags_WidthStretch, 2.0f);
+        ImGui::TableSetupColumn("Group", ImGuiTableColumnFlags_WidthStretch, 0.8f);
+        ImGui::TableSetupColumn("Source", ImGuiTableColumnFlags_WidthStretch, 1.6f);
+        ImGui::TableHeadersRow();
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        if (ImGui::Selectable("(neutral)", session.selectedViseme < 0, ImGuiSelectableFlags_SpanAllColumns))
+            session.selectedViseme = -1;
+        for (std::size_t i = 0; i < set->size(); ++i) {
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::PushID(static_cast<int>(i));
+            if (ImGui::Selectable(set->visemes[i].name.c_str(), session.selectedViseme == static_cast<int>(i),
+                                  ImGuiSelectableFlags_SpanAllColumns))
+                session.selectedViseme = static_cast<int>(i);
+            ImGui::TableNextColumn();
+            if (frequenciesOk) {
+                const float f = static_cast<float>(frequencies[i]);
+                char text[32];
+                std::snprintf(text, sizeof text, "%.1f%%", 100.0 * frequencies[i]);
+                ImGui::ProgressBar(std::min(1.0f, f * 4.0f), ImVec2(-1, 0), text);
+            }
+            ImGui::TableNextColumn();
+            if (groupOf[i] >= 0)
+                ImGui::Text("%d", groupOf[i] + 1);
+            else
+                ImGui::TextDisabled("-");
+            ImGui::TableNextColumn();
+            ImGui::TextDisabled("%s", set->visemes[i].source.empty()
+                                          ? "generated"
+                                          : set->visemes[i].source.filename().string().c_str());
+            ImGui::PopID();
+        }
+        ImGui::EndTable();
+    }
+    const bool canRemove = session.selectedViseme >= 0;
+    if (!canRemove) ImGui::BeginDisabled();
+    if (ImGui::Button("Remove selected"))
+        session.attempt("Remove viseme", [&] { session.removeViseme(session.selectedViseme); });
+    if (!canRemove) ImGui::EndDisabled();
+    ImGui::SameLine();
+    ImGui::Checkbox("Play all", &playback_.playing);
+}
+
+} // namespace vl::ui

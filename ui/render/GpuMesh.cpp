@@ -1,0 +1,201 @@
+#include "ui/render/GpuMesh.h"
+
+#include "ui/render/GlShader.h"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+namespace vl::ui {
+namespace {
+
+void appendVec3(std::vector<float>& out, const Vec3& v) {
+    out.push_back(static_cast<float>(v[0]));
+    out.push_back(static_cast<float>(v[1]));
+    out.push_back(static_cast<float>(v[2]));
+}
+
+GLsizeiptr byteSize(std::size_t count, std::size_t elementSize) {
+    return static_cast<GLsizeiptr>(count * elementSize);
+}
+
+} // namespace
+
+GpuMesh::~GpuMesh() {
+    release();
+}
+
+void GpuMesh::release() {
+    const GLuint buffers[] = {positionBuffer_, normalBuffer_, scalarBuffer_,
+                              colorBuffer_,    indexBuffer_,  targetBuffer_};
+    for (GLuint b : buffers)
+        if (b) glDeleteBuffers(1, &b);
+    if (targetTexture_) glDeleteTextures(1, &targetTexture_);
+    if (vao_) glDeleteVertexArrays(1, &vao_);
+    vao_ = positionBuffer_ = normalBuffer_ = scalarBuffer_ = colorBuffer_ = indexBuffer_ = targetBuffer_ =
+        targetTexture_ = 0;
+    triangleCount_ = 0;
+    targetCount_ = 0;
+}
+
+void GpuMesh::setGeometry(std::span<const Vec3> rest, std::span<const Triangle> triangles,
+                          std::span<const std::vector<Vec3>> targets) {
+    if (targets.size() > static_cast<std::size_t>(kMaxMorphTargets))
+        throw std::invalid_argument("at most " + std::to_string(kMaxMorphTargets) +
+                                    " morph targets can be shown");
+    for (const auto& target : targets)
+        if (target.size() != rest.size())
+            throw std::invalid_argument("morph target size differs from the mesh");
+    release();
+    rest_.assign(rest.begin(), rest.end());
+    triangles_.assign(triangles.begin(), triangles.end());
+
+    const std::size_t n = rest.size();
+    const std::vector<Vec3> restNormals = vertexNormals(rest, triangles);
+    std::vector<float> positions, normals;
+    positions.reserve(3 * n);
+    normals.reserve(3 * n);
+    for (std::size_t i = 0; i < n; ++i) {
+        appendVec3(positions, rest[i]);
+        appendVec3(normals, restNormals[i]);
+    }
+    // Per target: n position deltas, then n normal deltas (layout read by mesh.vert).
+    std::vector<float> texels;
+    texels.reserve(targets.size() * 6 * n + 3);
+    deltas_.clear();
+    deltas_.reserve(targets.size() * 3 * n);
+    for (const auto& target : targets) {
+        const std::vector<Vec3> targetNormals = vertexNormals(target, triangles);
+        for (std::size_t i = 0; i < n; ++i) {
+            appendVec3(texels, target[i] - rest[i]);
+            appendVec3(deltas_, target[i] - rest[i]);
+        }
+        for (std::size_t i = 0; i < n; ++i) appendVec3(texels, targetNormals[i] - restNormals[i]);
+    }
+    if (texels.empty()) texels.assign(3, 0.0f); // a texture buffer must not be empty
+
+    glGenVertexArrays(1, &vao_);
+    glBindVertexArray(vao_);
+    glGenBuffers(1, &positionBuffer_);
+    glBindBuffer(GL_ARRAY_BUFFER, positionBuffer_);
+    glBufferData(GL_ARRAY_BUFFER, byteSize(positions.size(), sizeof(float)), positions.data(),
+                 GL_STATIC_DRAW);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+    glEnableVertexAttribArray(0);
+    glGenBuffers(1, &normalBuffer_);
+    glBindBuffer(GL_ARRAY_BUFFER, normalBuffer_);
+    glBufferData(GL_ARRAY_BUFFER, byteSize(normals.size(), sizeof(float)), normals.data(), GL_STATIC_DRAW);
+    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+    glEnableVertexAttribArray(1);
+    glGenBuffers(1, &scalarBuffer_);
+    glBindBuffer(GL_ARRAY_BUFFER, scalarBuffer_);
+    const std::vector<float> zeros(n, 0.0f);
+    glBufferData(GL_ARRAY_BUFFER, byteSize(n, sizeof(float)), zeros.data(), GL_DYNAMIC_DRAW);
+    glVertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, 0, nullptr);
+    glEnableVertexAttribArray(2);
+    glGenBuffers(1, &colorBuffer_);
+    glBindBuffer(GL_ARRAY_BUFFER, colorBuffer_);
+    const std::vector<float> grey(3 * n, 0.8f);
+    glBufferData(GL_ARRAY_BUFFER, byteSize(grey.size(), sizeof(float)), grey.data(), GL_DYNAMIC_DRAW);
+    glVertexAttribPointer(3, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+    glEnableVertexAttribArray(3);
+    glGenBuffers(1, &indexBuffer_);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indexBuffer_);
+    static_assert(sizeof(Triangle) == 3 * sizeof(std::uint32_t));
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, byteSize(triangles.size(), sizeof(Triangle)), triangles.data(),
+                 GL_STATIC_DRAW);
+    glBindVertexArray(0);
+
+    glGenBuffers(1, &targetBuffer_);
+    glBindBuffer(GL_TEXTURE_BUFFER, targetBuffer_);
+    glBufferData(GL_TEXTURE_BUFFER, byteSize(texels.size(), sizeof(float)), texels.data(), GL_STATIC_DRAW);
+    glGenTextures(1, &targetTexture_);
+    glBindTexture(GL_TEXTURE_BUFFER, targetTexture_);
+    glTexBuffer(GL_TEXTURE_BUFFER, GL_RGB32F, targetBuffer_);
+    glBindTexture(GL_TEXTURE_BUFFER, 0);
+    glBindBuffer(GL_TEXTURE_BUFFER, 0);
+
+    triangleCount_ = triangles.size();
+    targetCount_ = static_cast<int>(targets.size());
+}
+
+void GpuMesh::setScalars(std::span<const float> values) {
+    if (!scalarBuffer_) return;
+    const std::size_t n = rest_.size();
+    std::vector<float> data(n, 0.0f);
+    std::copy_n(values.begin(), std::min(n, values.size()), data.begin());
+    glBindBuffer(GL_ARRAY_BUFFER, scalarBuffer_);
+    glBufferSubData(GL_ARRAY_BUFFER, 0, byteSize(n, sizeof(float)), data.data());
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+}
+
+void GpuMesh::setColors(std::span<const Vec3> colors) {
+    if (!colorBuffer_) return;
+    const std::size_t n = rest_.size();
+    std::vector<float> data;
+    data.reserve(3 * n);
+    for (std::size_t i = 0; i < n; ++i) appendVec3(data, i < colors.size() ? colors[i] : Vec3(0.8, 0.8, 0.8));
+    glBindBuffer(GL_ARRAY_BUFFER, colorBuffer_);
+    glBufferSubData(GL_ARRAY_BUFFER, 0, byteSize(data.size(), sizeof(float)), data.data());
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+}
+
+void GpuMesh::draw(const GlShader& shader, std::span<const float> weights, const glm::mat4& modelView,
+                   const glm::mat4& projection, const DrawStyle& style) const {
+    if (empty()) return;
+    float uniformWeights[kMaxMorphTargets] = {};
+    std::copy_n(weights.begin(),
+                std::min<std::size_t>(weights.size(), static_cast<std::size_t>(targetCount_)),
+                uniformWeights);
+
+    glUseProgram(shader.id());
+    glUniformMatrix4fv(shader.uniform("uModelView"), 1, GL_FALSE, glm::value_ptr(modelView));
+    glUniformMatrix4fv(shader.uniform("uProjection"), 1, GL_FALSE, glm::value_ptr(projection));
+    glUniform1i(shader.uniform("uTargetCount"), targetCount_);
+    glUniform1i(shader.uniform("uVertexCount"), static_cast<GLint>(rest_.size()));
+    glUniform1fv(shader.uniform("uTargetWeights"), kMaxMorphTargets, uniformWeights);
+    glUniform1i(shader.uniform("uColorMode"), static_cast<GLint>(style.color));
+    glUniform3fv(shader.uniform("uSurfaceColor"), 1, glm::value_ptr(style.surfaceColor));
+    glUniform4fv(shader.uniform("uWireColor"), 1, glm::value_ptr(style.wireColor));
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_BUFFER, targetTexture_);
+    glUniform1i(shader.uniform("uTargets"), 0);
+
+    glBindVertexArray(vao_);
+    const auto indexCount = static_cast<GLsizei>(3 * triangleCount_);
+    // Fill pass pushed back slightly so the line pass sits on top without z-fighting.
+    glUniform1i(shader.uniform("uWireframe"), 0);
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(1.0f, 1.0f);
+    glDrawElements(GL_TRIANGLES, indexCount, GL_UNSIGNED_INT, nullptr);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    if (style.wireframe) {
+        glUniform1i(shader.uniform("uWireframe"), 1);
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+        glDrawElements(GL_TRIANGLES, indexCount, GL_UNSIGNED_INT, nullptr);
+        glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+        glDisable(GL_BLEND);
+    }
+    glBindVertexArray(0);
+    glBindTexture(GL_TEXTURE_BUFFER, 0);
+    glUseProgram(0);
+}
+
+std::vector<Vec3> GpuMesh::blendedPositions(std::span<const float> weights) const {
+    std::vector<Vec3> out = rest_;
+    const std::size_t n = rest_.size();
+    const std::size_t count = std::min<std::size_t>(weights.size(), static_cast<std::size_t>(targetCount_));
+    for (std::size_t t = 0; t < count; ++t) {
+        if (weights[t] == 0.0f) continue;
+        const float* d = deltas_.data() + t * 3 * n;
+        for (std::size_t i = 0; i < n; ++i)
+            out[i] += Vec3(d[3 * i], d[3 * i + 1], d[3 * i + 2]) * static_cast<double>(weights[t]);
+    }
+    return out;
+}
+
+} // namespace vl::ui

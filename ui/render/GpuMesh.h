@@ -1,0 +1,69 @@
+#pragma once
+// A triangle mesh on the GPU with morph targets for live deformation (see shaders/mesh.vert):
+// rest positions and normals as vertex attributes, per-target position and normal deltas in a
+// texture buffer, an optional per-vertex scalar in [0,1] shown through the colour map.
+#include "core/mesh/Mesh.h"
+
+#include <epoxy/gl.h>
+#include <glm/glm.hpp>
+
+#include <span>
+#include <vector>
+
+namespace vl::ui {
+
+class GlShader;
+
+constexpr int kMaxMorphTargets = 128; // matches kMaxTargets in shaders/mesh.vert
+
+enum class ColorMode { Surface, Scalar, VertexColor };
+
+struct DrawStyle {
+    bool wireframe = true;
+    ColorMode color = ColorMode::Surface; // Scalar: the per-vertex scalar through the colour map
+    glm::vec3 surfaceColor{0.86f, 0.72f, 0.64f};
+    glm::vec4 wireColor{0.10f, 0.10f, 0.12f, 0.35f};
+};
+
+class GpuMesh {
+  public:
+    GpuMesh() = default;
+    ~GpuMesh();
+    GpuMesh(const GpuMesh&) = delete;
+    GpuMesh& operator=(const GpuMesh&) = delete;
+
+    // Uploads the rest shape and the targets (absolute positions, one array per target, each with
+    // rest.size() entries). Throws std::invalid_argument for mismatched sizes or too many targets.
+    void setGeometry(std::span<const Vec3> rest, std::span<const Triangle> triangles,
+                     std::span<const std::vector<Vec3>> targets);
+    // One value in [0,1] per vertex, or empty to clear.
+    void setScalars(std::span<const float> values);
+    // One RGB colour in [0,1] per vertex, or empty for the surface colour everywhere.
+    void setColors(std::span<const Vec3> colors);
+
+    // Weights beyond targetCount() are ignored; missing ones count as zero.
+    void draw(const GlShader& shader, std::span<const float> weights, const glm::mat4& modelView,
+              const glm::mat4& projection, const DrawStyle& style) const;
+
+    bool empty() const { return triangleCount_ == 0; }
+    int targetCount() const { return targetCount_; }
+    std::size_t vertexCount() const { return rest_.size(); }
+    std::size_t triangleCount() const { return triangleCount_; }
+    // The positions the vertex shader produces for these weights (for picking and framing).
+    std::vector<Vec3> blendedPositions(std::span<const float> weights) const;
+    const std::vector<Triangle>& triangles() const { return triangles_; }
+
+  private:
+    void release();
+
+    GLuint vao_ = 0, positionBuffer_ = 0, normalBuffer_ = 0, scalarBuffer_ = 0, colorBuffer_ = 0,
+           indexBuffer_ = 0;
+    GLuint targetBuffer_ = 0, targetTexture_ = 0;
+    std::size_t triangleCount_ = 0;
+    int targetCount_ = 0;
+    std::vector<Vec3> rest_;
+    std::vector<Triangle> triangles_;
+    std::vector<float> deltas_; // CPU copy of the position deltas, targetCount x vertexCount x 3
+};
+
+} // namespace vl::ui

@@ -1,0 +1,613 @@
+#include "ui/session/EditorSession.h"
+
+#include "core/common/AtomicFile.h"
+#include "core/common/Error.h"
+#include "core/common/TextParsing.h"
+#include "core/deform/FaceDomain.h"
+#include "core/deform/Visemes.h"
+#include "core/io/MeshIO.h"
+#include "core/reduce/Frequencies.h"
+#include "core/reduce/Weights.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+
+namespace vl::ui {
+namespace {
+
+constexpr std::size_t kMaxMessages = 200;
+
+std::vector<std::string> visemeNames(const VisemeSet* set) {
+    std::vector<std::string> names;
+    if (set)
+        for (const auto& v : set->visemes) names.push_back(v.name);
+    return names;
+}
+
+// The meshes a project references, loaded and checked for interpolability.
+std::shared_ptr<const VisemeSet> loadProjectMeshes(const Project& project) {
+    if (!project.neutral.isSet()) return nullptr;
+    auto set = std::make_shared<VisemeSet>();
+    if (project.neutral.isEmbedded()) {
+        set->neutral = project.neutral.embedded;
+        set->neutralSource = project.path.empty() ? "embedded neutral" : project.path.string() + ": /neutral";
+    } else {
+        set->neutralSource = resolveProjectFile(project, project.neutral.file);
+        set->neutral = readMesh(set->neutralSource);
+    }
+    for (std::size_t i = 0; i < project.visemes.size(); ++i) {
+        const ProjectViseme& v = project.visemes[i];
+        Viseme viseme{v.name, {}, v.positions};
+        if (v.isEmbedded()) {
+            if (v.positions.size() != set->vertexCount())
+                throwInputError("/visemes/" + std::to_string(i), "has " + std::to_string(v.positions.size()) +
+                                                                     " positions, the neutral mesh has " +
+                                                                     std::to_string(set->vertexCount()));
+        } else {
+            viseme.source = resolveProjectFile(project, v.file);
+            MeshData mesh = readMesh(viseme.source);
+            checkInterpolable(set->neutral, set->neutralSource.string(), mesh, viseme.source.string());
+            viseme.positions = std::move(mesh.positions);
+        }
+        set->visemes.push_back(std::move(viseme));
+    }
+    return set;
+}
+
+bool sameTable(const FrequencyTable& a, const FrequencyTable& b) {
+    return a.entries == b.entries;
+}
+
+bool sameReductionInputs(const EditorState& a, const EditorState& b) {
+    const Project& p = a.project;
+    const Project& q = b.project;
+    return a.visemes == b.visemes &&
+           sameTable(p.frequencies.visemeFrequencies, q.frequencies.visemeFrequencies) &&
+           sameTable(p.frequencies.phonemes, q.frequencies.phonemes) &&
+           p.frequencies.map.entries == q.frequencies.map.entries && p.weights.mode == q.weights.mode &&
+           p.weights.painted == q.weights.painted;
+}
+
+void requireFinite(double value, std::string_view what) {
+    if (!std::isfinite(value) || value < 0.0)
+        throwInputError(what, "must be a finite number >= 0, got " + formatDouble(value));
+}
+
+std::string lowercase(std::string text) {
+    std::transform(text.begin(), text.end(), text.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return text;
+}
+
+// Checks what the reduction needs from a state, so an edit that would break it is refused.
+void validateInputs(const EditorState& state) {
+    if (!state.visemes) return;
+    std::vector<std::string> names = visemeNames(state.visemes.get());
+    vl::visemeFrequencies(state.project.frequencies, names);
+    computeWeights(state.project.weights.mode, state.visemes->neutral, state.project.weights.painted);
+}
+
+} // namespace
+
+EditorSession::EditorSession() : history_(EditorState{}) {}
+
+EditorSession::~EditorSession() {
+    reductionTask_.cancel();
+}
+
+// --- history ---------------------------------------------------------------------------------
+
+void EditorSession::noteChange(const EditorState& before, const EditorState& after) {
+    if (!sameReductionInputs(before, after)) ++inputsGeneration_;
+    if (before.visemes != after.visemes) {
+        ++geometryGeneration_;
+        if (selectedViseme >= static_cast<int>(after.visemes ? after.visemes->size() : 0))
+            selectedViseme = -1;
+    }
+}
+
+void EditorSession::commit(std::string name, EditorState next, std::string mergeKey) {
+    const EditorState before = state();
+    history_.commit(std::move(name), std::move(next), std::move(mergeKey));
+    noteChange(before, state());
+}
+
+void EditorSession::resetTo(EditorState next) {
+    const EditorState before = state();
+    history_.reset(std::move(next));
+    noteChange(before, state());
+    ++inputsGeneration_; // a new document never reuses an old curve
+}
+
+void EditorSession::undo() {
+    if (!canUndo()) return;
+    const std::string name = history_.undoName();
+    const EditorState before = state();
+    history_.undo();
+    noteChange(before, state());
+    info("Undo: " + name);
+}
+
+void EditorSession::redo() {
+    if (!canRedo()) return;
+    const EditorState before = state();
+    history_.redo();
+    noteChange(before, state());
+    info("Redo: " + history_.undoName());
+}
+
+// --- messages --------------------------------------------------------------------------------
+
+void EditorSession::info(std::string text) {
+    messages_.push_back({StatusMessage::Kind::Info, std::move(text)});
+    if (messages_.size() > kMaxMessages) messages_.pop_front();
+}
+
+void EditorSession::error(std::string text) {
+    messages_.push_back({StatusMessage::Kind::Error, std::move(text)});
+    if (messages_.size() > kMaxMessages) messages_.pop_front();
+}
+
+bool EditorSession::attempt(std::string_view what, const std::function<void()>& action) {
+    try {
+        action();
+        return true;
+    } catch (const std::exception& e) {
+        error(std::string(what) + ": " + e.what());
+        return false;
+    }
+}
+
+// --- files -----------------------------------------------------------------------------------
+
+void EditorSession::newProject() {
+    reductionTask_.cancel();
+    resetTo(EditorState{});
+    selectedViseme = -1;
+    info("New project");
+}
+
+void EditorSession::openProject(const std::filesystem::path& file) {
+    EditorState next;
+    next.project = loadProject(file);
+    next.visemes = loadProjectMeshes(next.project);
+    validateInputs(next);
+    reductionTask_.cancel();
+    resetTo(std::move(next));
+    selectedViseme = visemes() ? visemes()->find(project().editor.selectedViseme) : -1;
+    info("Opened " + file.string());
+}
+
+void EditorSession::saveProject(const std::filesystem::path& file) {
+    const std::filesystem::path target = file.empty() ? project().path : file;
+    if (target.empty()) throwInputError("save", "the project has no file yet: use Save As");
+    Project toSave = project();
+    toSave.editor.selectedViseme = visemes() && selectedViseme >= 0
+                                       ? visemes()->visemes[static_cast<std::size_t>(selectedViseme)].name
+                                       : "";
+    toSave.reduction.result.reset();
+    if (const Grouping* grouping = currentGrouping()) {
+        ReductionResult last;
+        last.curve.assign(reductionCurve()->curve.begin(),
+                          reductionCurve()->curve.begin() + toSave.reduction.target);
+        (void)grouping;
+        toSave.reduction.result = std::move(last);
+    }
+    vl::saveProject(target, toSave);
+    // The saved file is the project's new home: record it without an undo step.
+    EditorState next = state();
+    next.project = rebaseProject(project(), target);
+    next.project.reduction.result = toSave.reduction.result;
+    history_.reset(std::move(next));
+    info("Saved " + target.string());
+}
+
+void EditorSession::loadVisemeFolder(const std::filesystem::path& folder) {
+    auto files = listVisemeFolder(folder);
+    auto neutral = std::find_if(files.begin(), files.end(), [](const auto& entry) {
+        return lowercase(entry.first).find("neutral") != std::string::npos;
+    });
+    if (neutral == files.end()) throwInputError(folder.string(), "no mesh named *neutral* in the folder");
+    const std::filesystem::path neutralFile = neutral->second;
+    files.erase(neutral);
+    EditorState next;
+    auto set = std::make_shared<VisemeSet>(loadVisemeSet(neutralFile, files));
+    next.project.neutral.file = std::filesystem::absolute(neutralFile);
+    for (const auto& viseme : set->visemes) {
+        next.project.visemes.push_back({viseme.name, std::filesystem::absolute(viseme.source), {}});
+        next.project.frequencies.visemeFrequencies.entries.emplace_back(viseme.name, 1.0);
+    }
+    next.project.reduction.target = std::max(1, static_cast<int>(set->size()) / 2);
+    next.visemes = std::move(set);
+    validateInputs(next);
+    reductionTask_.cancel();
+    resetTo(std::move(next));
+    selectedViseme = -1;
+    info("Loaded " + std::to_string(visemeCount()) + " visemes from " + folder.string());
+}
+
+std::filesystem::path EditorSession::assetsDirectory() {
+    if (const char* env = std::getenv("VISEMELAB_ASSETS"); env && *env) return env;
+    return VISEMELAB_ASSETS_DIR;
+}
+
+void EditorSession::loadSample() {
+    const std::filesystem::path dir = assetsDirectory();
+    for (const char* name : {"sample/sample.vlproj", "sample.vlproj"})
+        if (std::filesystem::exists(dir / name)) return openProject(dir / name);
+    // The sample is the bundled deformable face and its 15 Oculus visemes.
+    EditorState next;
+    next.face = makeFaceModel(face::Individual::Bundled, kSampleResolution);
+    setVisemesFromFace(next);
+    reductionTask_.cancel();
+    resetTo(std::move(next));
+    selectedViseme = -1;
+    info("Loaded the sample: bundled face with " + std::to_string(visemeCount()) + " visemes, " +
+         std::to_string(visemes()->vertexCount()) + " vertices");
+}
+
+// --- deformable face -------------------------------------------------------------------------
+
+FaceModel EditorSession::makeFaceModel(face::Individual individual, int resolution) {
+    FaceModel model;
+    model.individual = individual;
+    auto cascade = std::make_shared<DeformationCascade>(face::makeFaceCascade(individual));
+    model.parameters = cascade->defaults();
+    model.cascade = std::move(cascade);
+    model.domain =
+        std::make_shared<const MeshData>(face::faceDomainMesh(resolution, face::DomainDensity::MouthFocused));
+    return model;
+}
+
+void EditorSession::setVisemesFromFace(EditorState& next) {
+    const std::vector<VisemeParameters> presets = oculusVisemes();
+    auto set = std::make_shared<VisemeSet>(generateVisemeSet(*next.face.cascade, *next.face.domain, presets));
+    next.project = Project{};
+    next.project.neutral.embedded = set->neutral;
+    for (const auto& viseme : set->visemes) {
+        next.project.visemes.push_back({viseme.name, {}, viseme.positions});
+        next.project.frequencies.visemeFrequencies.entries.emplace_back(viseme.name, 1.0);
+    }
+    next.project.reduction.target = std::max(1, static_cast<int>(set->size()) * 2 / 3);
+    next.visemes = std::move(set);
+    validateInputs(next);
+}
+
+void EditorSession::loadFace(face::Individual individual, int resolution) {
+    EditorState next = state();
+    next.face = makeFaceModel(individual, resolution);
+    commit("Load face", std::move(next));
+    info("Loaded the " + std::string(face::individualName(individual)) + " face (" +
+         std::to_string(face().cascade->parameters.size()) + " parameters)");
+}
+
+void EditorSession::setParameter(int parameter, double value) {
+    const FaceModel& model = face();
+    if (!model.cascade || parameter < 0 || parameter >= static_cast<int>(model.parameters.size())) return;
+    std::vector<double> q = model.parameters;
+    q[static_cast<std::size_t>(parameter)] = value;
+    checkParameterValues(*model.cascade, q);
+    EditorState next = state();
+    next.face.parameters = std::move(q);
+    const std::string& name = model.cascade->parameters[static_cast<std::size_t>(parameter)].name;
+    commit("Set " + name, std::move(next), "parameter:" + name);
+}
+
+void EditorSession::setParameters(std::vector<double> values, const std::string& actionName) {
+    if (!face().cascade) throwInputError("parameters", "no face loaded");
+    checkParameterValues(*face().cascade, values);
+    EditorState next = state();
+    next.face.parameters = std::move(values);
+    commit(actionName, std::move(next));
+}
+
+void EditorSession::applyVisemePreset(const std::string& viseme) {
+    if (!face().cascade) throwInputError("viseme preset", "no face loaded");
+    for (const VisemeParameters& preset : oculusVisemes())
+        if (preset.name == viseme)
+            return setParameters(parameterVector(*face().cascade, preset), "Preset " + viseme);
+    throwInputError("viseme preset", "unknown viseme '" + viseme + "'");
+}
+
+void EditorSession::setInfluence(int stage, int influence, const InfluenceField& field) {
+    if (!face().cascade) throwInputError("field", "no face loaded");
+    auto cascade = std::make_shared<DeformationCascade>(*face().cascade);
+    if (stage < 0 || stage >= static_cast<int>(cascade->stages.size()))
+        throwInputError("field", "no such stage");
+    auto& influences = cascade->stages[static_cast<std::size_t>(stage)].field.influences;
+    if (influence < 0 || influence >= static_cast<int>(influences.size()))
+        throwInputError("field", "no such influence region");
+    influences[static_cast<std::size_t>(influence)] = field;
+    validateCascade(*cascade);
+    EditorState next = state();
+    const std::string name = cascade->stages[static_cast<std::size_t>(stage)].name;
+    next.face.cascade = std::move(cascade);
+    commit("Edit field " + name, std::move(next),
+           "field:" + std::to_string(stage) + ":" + std::to_string(influence));
+}
+
+void EditorSession::setIndividual(face::Individual individual) {
+    if (!face().cascade) throwInputError("base geometry", "no face loaded");
+    if (individual == face().individual) return;
+    VectorField base;
+    base.sampled = face::makeFaceGeometry(individual);
+    EditorState next = state();
+    next.face.cascade = std::make_shared<const DeformationCascade>(
+        retarget(*face().cascade, base, std::string(face::individualName(individual))));
+    next.face.individual = individual;
+    commit("Retarget to " + std::string(face::individualName(individual)), std::move(next));
+}
+
+void EditorSession::generateVisemesFromFace() {
+    if (!face().cascade) throwInputError("generate visemes", "no face loaded");
+    EditorState next = state();
+    setVisemesFromFace(next);
+    next.project.path = project().path;
+    commit("Generate visemes from face", std::move(next));
+    info("Generated " + std::to_string(visemeCount()) + " visemes from the face");
+}
+
+const FaceSamples& EditorSession::faceSamples() {
+    const FaceModel& model = face();
+    if (!model.cascade) {
+        samples_ = {};
+        samplesCascade_ = nullptr;
+        return samples_;
+    }
+    if (samplesCascade_ == model.cascade.get() && samplesDomain_ == model.domain.get()) return samples_;
+    const auto& uvs = model.domain->uvs;
+    const std::size_t k = model.cascade->parameters.size();
+    std::vector<double> q(k, 0.0);
+    FaceSamples out;
+    out.rest.reserve(uvs.size());
+    for (const Vec2& uv : uvs) out.rest.push_back(model.cascade->evaluateUnchecked(uv[0], uv[1], q));
+    for (std::size_t p = 0; p < k; ++p) {
+        q.assign(k, 0.0);
+        q[p] = 1.0;
+        std::vector<Vec3> target;
+        target.reserve(uvs.size());
+        for (const Vec2& uv : uvs) target.push_back(model.cascade->evaluateUnchecked(uv[0], uv[1], q));
+        out.targets.push_back(std::move(target));
+    }
+    out.colours = face::faceColours(uvs);
+    samples_ = std::move(out);
+    samplesCascade_ = model.cascade.get();
+    samplesDomain_ = model.domain.get();
+    return samples_;
+}
+
+void EditorSession::importViseme(const std::string& name, const std::filesystem::path& file) {
+    if (!visemes()) throwInputError(file.string(), "load a neutral mesh or viseme set first");
+    if (name.empty()) throwInputError(file.string(), "the viseme needs a name");
+    if (visemes()->find(name) >= 0)
+        throwInputError(file.string(), "a viseme named '" + name + "' already exists");
+    MeshData mesh = readMesh(file);
+    checkInterpolable(visemes()->neutral, visemes()->neutralSource.string(), mesh, file.string());
+    EditorState next = state();
+    auto set = std::make_shared<VisemeSet>(*visemes());
+    set->visemes.push_back({name, file, std::move(mesh.positions)});
+    next.visemes = std::move(set);
+    next.project.visemes.push_back({name, std::filesystem::absolute(file), {}});
+    if (!next.project.frequencies.isPhonemeBased())
+        next.project.frequencies.visemeFrequencies.entries.emplace_back(name, 1.0);
+    validateInputs(next);
+    commit("Import viseme " + name, std::move(next));
+    info("Imported " + name + " from " + file.string());
+}
+
+void EditorSession::removeViseme(int index) {
+    if (!visemes() || index < 0 || index >= static_cast<int>(visemeCount())) return;
+    if (visemeCount() <= 2) throwInputError("remove viseme", "a viseme set needs at least 2 visemes");
+    const auto i = static_cast<std::size_t>(index);
+    EditorState next = state();
+    auto set = std::make_shared<VisemeSet>(*visemes());
+    const std::string name = set->visemes[i].name;
+    set->visemes.erase(set->visemes.begin() + index);
+    next.visemes = std::move(set);
+    auto& projectVisemes = next.project.visemes;
+    projectVisemes.erase(std::remove_if(projectVisemes.begin(), projectVisemes.end(),
+                                        [&](const ProjectViseme& v) { return v.name == name; }),
+                         projectVisemes.end());
+    auto& direct = next.project.frequencies.visemeFrequencies.entries;
+    direct.erase(std::remove_if(direct.begin(), direct.end(), [&](const auto& e) { return e.first == name; }),
+                 direct.end());
+    next.project.reduction.target =
+        std::min(next.project.reduction.target, static_cast<int>(next.visemes->size()));
+    validateInputs(next);
+    commit("Remove viseme " + name, std::move(next));
+}
+
+// --- frequencies -----------------------------------------------------------------------------
+
+std::vector<double> EditorSession::visemeFrequencies() const {
+    return vl::visemeFrequencies(project().frequencies, visemeNames(visemes()));
+}
+
+void EditorSession::setVisemeFrequency(int viseme, double value) {
+    if (!visemes() || viseme < 0 || viseme >= static_cast<int>(visemeCount())) return;
+    const std::string& name = visemes()->visemes[static_cast<std::size_t>(viseme)].name;
+    requireFinite(value, "frequency of " + name);
+    if (project().frequencies.isPhonemeBased())
+        throwInputError("frequency of " + name, "frequencies come from the phoneme table: edit the phonemes");
+    EditorState next = state();
+    auto& entries = next.project.frequencies.visemeFrequencies.entries;
+    auto it = std::find_if(entries.begin(), entries.end(), [&](const auto& e) { return e.first == name; });
+    if (it == entries.end())
+        entries.emplace_back(name, value);
+    else
+        it->second = value;
+    validateInputs(next);
+    commit("Set frequency of " + name, std::move(next), "viseme-frequency:" + name);
+}
+
+void EditorSession::setPhonemeFrequency(int phoneme, double value) {
+    auto& entries = project().frequencies.phonemes.entries;
+    if (phoneme < 0 || phoneme >= static_cast<int>(entries.size())) return;
+    const std::string name = entries[static_cast<std::size_t>(phoneme)].first;
+    requireFinite(value, "frequency of phoneme " + name);
+    EditorState next = state();
+    next.project.frequencies.phonemes.entries[static_cast<std::size_t>(phoneme)].second = value;
+    validateInputs(next);
+    commit("Set frequency of phoneme " + name, std::move(next), "phoneme-frequency:" + name);
+}
+
+void EditorSession::setPhonemeViseme(int phoneme, const std::string& viseme) {
+    const auto& table = project().frequencies.phonemes.entries;
+    if (phoneme < 0 || phoneme >= static_cast<int>(table.size())) return;
+    if (!visemes() || visemes()->find(viseme) < 0)
+        throwInputError("phoneme map", "unknown viseme '" + viseme + "'");
+    const std::string name = table[static_cast<std::size_t>(phoneme)].first;
+    EditorState next = state();
+    auto& map = next.project.frequencies.map.entries;
+    auto it = std::find_if(map.begin(), map.end(), [&](const auto& e) { return e.first == name; });
+    if (it == map.end())
+        map.emplace_back(name, viseme);
+    else
+        it->second = viseme;
+    validateInputs(next);
+    commit("Map phoneme " + name + " to " + viseme, std::move(next));
+}
+
+void EditorSession::loadFrequencies(const std::filesystem::path& file) {
+    EditorState next = state();
+    next.project.frequencies = loadFrequencyFile(file);
+    validateInputs(next);
+    commit("Load frequencies " + file.filename().string(), std::move(next));
+    info("Loaded frequencies from " + file.string());
+}
+
+void EditorSession::saveFrequenciesCsv(const std::filesystem::path& file) const {
+    const FrequencySource& source = project().frequencies;
+    std::string text;
+    if (source.isPhonemeBased()) {
+        text = "phoneme,frequency,viseme\n";
+        for (const auto& [phoneme, f] : source.phonemes.entries) {
+            const std::string* viseme = source.map.visemeOf(phoneme);
+            text += phoneme + "," + formatDouble(f) + "," + (viseme ? *viseme : std::string()) + "\n";
+        }
+    } else {
+        text = "viseme,frequency\n";
+        for (const auto& [name, f] : source.visemeFrequencies.entries)
+            text += name + "," + formatDouble(f) + "\n";
+    }
+    writeFileAtomically(file, text);
+}
+
+// --- weights ---------------------------------------------------------------------------------
+
+std::vector<double> EditorSession::weights() const {
+    if (!visemes()) return {};
+    return computeWeights(project().weights.mode, visemes()->neutral, project().weights.painted);
+}
+
+void EditorSession::setWeightMode(WeightMode mode) {
+    if (mode == project().weights.mode) return;
+    EditorState next = state();
+    next.project.weights.mode = mode;
+    if (mode == WeightMode::Painted && next.project.weights.painted.size() != visemes()->vertexCount())
+        next.project.weights.painted.assign(visemes() ? visemes()->vertexCount() : 0, 1.0);
+    validateInputs(next);
+    commit(std::string("Weights: ") + toString(mode), std::move(next));
+}
+
+void EditorSession::setPaintedWeights(std::vector<double> painted, const std::string& actionName) {
+    if (!visemes()) throwInputError("weights", "no mesh loaded");
+    EditorState next = state();
+    next.project.weights.mode = WeightMode::Painted;
+    next.project.weights.painted = std::move(painted);
+    validateInputs(next);
+    commit(actionName, std::move(next));
+}
+
+// --- reduction -------------------------------------------------------------------------------
+
+void EditorSession::setTarget(int m) {
+    const int n = static_cast<int>(visemeCount());
+    if (m < 1 || m > std::max(n, 1))
+        throwInputError("target", "m must be in 1.." + std::to_string(n) + ", got " + std::to_string(m));
+    if (m == project().reduction.target) return;
+    EditorState next = state();
+    next.project.reduction.target = m;
+    commit("Target m = " + std::to_string(m), std::move(next), "target");
+}
+
+const ReductionResult* EditorSession::reductionCurve() const {
+    return curve_.result && curve_.inputsGeneration == inputsGeneration_ ? curve_.result.get() : nullptr;
+}
+
+const Grouping* EditorSession::currentGrouping() const {
+    const ReductionResult* curve = reductionCurve();
+    const int m = project().reduction.target;
+    if (!curve || m < 1 || m > static_cast<int>(curve->curve.size())) return nullptr;
+    return &curve->curve[static_cast<std::size_t>(m - 1)];
+}
+
+const std::vector<std::vector<Vec3>>& EditorSession::mergedShapes() {
+    const Grouping* grouping = currentGrouping();
+    if (!grouping) {
+        merged_.clear();
+        mergedFor_ = nullptr;
+        return merged_;
+    }
+    if (mergedFor_ != reductionCurve() || mergedGroups_ != project().reduction.target) {
+        std::vector<std::vector<Vec3>> shapes;
+        for (const auto& v : visemes()->visemes) shapes.push_back(v.positions);
+        const std::vector<double> f = visemeFrequencies();
+        merged_.clear();
+        for (const auto& group : grouping->groups) merged_.push_back(mergeGroup(shapes, f, group));
+        mergedFor_ = reductionCurve();
+        mergedGroups_ = project().reduction.target;
+    }
+    return merged_;
+}
+
+void EditorSession::startReduction() {
+    if (!visemes() || visemeCount() < 2)
+        throwInputError("reduction", "load a viseme set with at least 2 visemes");
+    if (reductionCurve()) return;
+    if (reductionTask_.running() && runningGeneration_ == inputsGeneration_) return;
+    const int n = static_cast<int>(visemeCount());
+    if (n > kMaxExactVisemes)
+        throwInputError("reduction", "exact reduction handles at most " + std::to_string(kMaxExactVisemes) +
+                                         " visemes, the set has " + std::to_string(n));
+    // Inputs are copied: the worker must not see later edits.
+    auto shapes = std::make_shared<std::vector<std::vector<Vec3>>>();
+    for (const auto& v : visemes()->visemes) shapes->push_back(v.positions);
+    auto frequencies = std::make_shared<std::vector<double>>(visemeFrequencies());
+    auto w = std::make_shared<std::vector<double>>(weights());
+    runningGeneration_ = inputsGeneration_;
+    reductionTask_.start("Reducing " + std::to_string(n) + " visemes",
+                         [shapes, frequencies, w, n](const auto& progress) {
+                             ReductionProblem problem{*shapes, *frequencies, *w, n};
+                             return std::make_shared<const ReductionResult>(reduceVisemes(problem, progress));
+                         });
+}
+
+void EditorSession::poll() {
+    if (auto outcome = reductionTask_.take()) {
+        if (outcome->index() == 0) {
+            if (runningGeneration_ == inputsGeneration_) curve_ = {std::get<0>(*outcome), runningGeneration_};
+        } else {
+            error("Reduction: " + std::get<1>(*outcome));
+            runningGeneration_ = 0;
+        }
+    }
+    const int n = static_cast<int>(visemeCount());
+    const bool failedOnThese = runningGeneration_ == inputsGeneration_ && !reductionTask_.running();
+    if (autoReduce && n >= 2 && n <= kMaxExactVisemes && !reductionCurve() && !failedOnThese &&
+        !reductionTask_.running())
+        attempt("Reduction", [this] { startReduction(); });
+}
+
+void EditorSession::finishBackgroundWork() {
+    for (int round = 0; round < 3; ++round) {
+        reductionTask_.wait();
+        poll();
+        if (!reductionTask_.running()) break;
+    }
+    reductionTask_.wait();
+    poll();
+}
+
+} // namespace vl::ui

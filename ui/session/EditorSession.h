@@ -1,0 +1,187 @@
+#pragma once
+// The editor's document and every action on it, with no GL or ImGui: the panels call these
+// methods, and so does the GUI smoke test, so both exercise the same code paths. Each edit builds
+// a new state from the current one and commits it to the undo history only when the core accepted
+// it, so bad input (a broken file, a non-interpolable mesh) changes nothing.
+#include "core/deform/BundledFace.h"
+#include "core/deform/DeformationCascade.h"
+#include "core/project/Project.h"
+#include "core/reduce/Reduction.h"
+#include "core/reduce/VisemeSet.h"
+#include "ui/session/BackgroundTask.h"
+#include "ui/session/CommandHistory.h"
+
+#include <deque>
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace vl::ui {
+
+// The deformable face being edited: its cascade (fields and parameters), the parameter values
+// shown, and the (u,v) mesh it is displayed on.
+struct FaceModel {
+    std::shared_ptr<const DeformationCascade> cascade; // null until a face is loaded
+    face::Individual individual = face::Individual::Bundled;
+    std::shared_ptr<const MeshData> domain; // (u,v) triangulation; positions unused
+    std::vector<double> parameters;         // one value per cascade parameter
+};
+
+// One undoable state: the project plus the meshes it references, loaded and checked.
+struct EditorState {
+    Project project;
+    std::shared_ptr<const VisemeSet> visemes; // null until a viseme set is loaded
+    FaceModel face;
+};
+
+// A face cascade sampled on its display mesh: positions at q = 0 and at each unit vector e_k
+// (the cascade is linear in q, so the shader reproduces any q as rest + sum q_k (target_k - rest)).
+struct FaceSamples {
+    std::vector<Vec3> rest;
+    std::vector<std::vector<Vec3>> targets;
+    std::vector<Vec3> colours;
+};
+
+struct StatusMessage {
+    enum class Kind { Info, Error } kind = Kind::Info;
+    std::string text;
+};
+
+// The reduction for every p = 1..n on the current inputs (n = number of visemes).
+struct ReductionCurve {
+    std::shared_ptr<const ReductionResult> result;
+    std::uint64_t inputsGeneration = 0; // valid while it equals EditorSession::inputsGeneration()
+};
+
+class EditorSession {
+  public:
+    EditorSession();
+    ~EditorSession();
+
+    const EditorState& state() const { return history_.current(); }
+    const Project& project() const { return state().project; }
+    const VisemeSet* visemes() const { return state().visemes.get(); }
+    std::size_t visemeCount() const { return visemes() ? visemes()->size() : 0; }
+
+    // --- files -------------------------------------------------------------------------------
+    void newProject();
+    void openProject(const std::filesystem::path& file);
+    // Saves to `file`, or to the project's own path when empty (throws InputError when it has none).
+    void saveProject(const std::filesystem::path& file = {});
+    // A folder of meshes: the one whose name contains "neutral" is the neutral, the others are
+    // visemes sorted by name; frequencies start uniform.
+    void loadVisemeFolder(const std::filesystem::path& folder);
+    // The bundled sample (assets/), whatever form the core ships it in.
+    void loadSample();
+    static std::filesystem::path assetsDirectory();
+    // Adds one viseme mesh; throws the core's interpolability error and changes nothing on failure.
+    void importViseme(const std::string& name, const std::filesystem::path& file);
+    void removeViseme(int index);
+    bool modified() const { return history_.modified(); }
+
+    // --- frequencies -------------------------------------------------------------------------
+    // Normalised viseme frequencies from the current table (throws InputError when invalid).
+    std::vector<double> visemeFrequencies() const;
+    void setVisemeFrequency(int viseme, double value);   // direct mode
+    void setPhonemeFrequency(int phoneme, double value); // phoneme mode
+    void setPhonemeViseme(int phoneme, const std::string& viseme);
+    void loadFrequencies(const std::filesystem::path& file);
+    void saveFrequenciesCsv(const std::filesystem::path& file) const;
+
+    // --- weights -----------------------------------------------------------------------------
+    void setWeightMode(WeightMode mode);
+    std::vector<double> weights() const; // the metric's per-vertex weights (throws when invalid)
+    void setPaintedWeights(std::vector<double> painted, const std::string& actionName);
+
+    // --- deformable face ---------------------------------------------------------------------
+    // Loads the bundled face (fields, parameters) on a (u,v) mesh of the given resolution.
+    void loadFace(face::Individual individual = face::Individual::Bundled, int resolution = 48);
+    const FaceModel& face() const { return state().face; }
+    void setParameter(int parameter, double value);
+    void setParameters(std::vector<double> values, const std::string& actionName);
+    // The parameter vector of a viseme of the face (oculusVisemes()).
+    void applyVisemePreset(const std::string& viseme);
+    // Replaces one analytic influence region of a stage (validated by the core first).
+    void setInfluence(int stage, int influence, const InfluenceField& field);
+    // Retargeting: the same fields on another individual's base geometry.
+    void setIndividual(face::Individual individual);
+    // The face's visemes generated on its (u,v) mesh become the viseme set (embedded meshes).
+    void generateVisemesFromFace();
+    // Per-vertex samples of the current cascade on its mesh (cached by cascade and mesh).
+    const FaceSamples& faceSamples();
+
+    // --- reduction ---------------------------------------------------------------------------
+    void setTarget(int m);
+    // Starts the reduction of the current inputs on a worker thread (no-op when already current).
+    void startReduction();
+    bool reductionRunning() const { return reductionTask_.running(); }
+    double reductionProgress() const { return reductionTask_.progress(); }
+    // The curve if it is up to date with the inputs, else null.
+    const ReductionResult* reductionCurve() const;
+    // Grouping into the target number of groups from the current curve, or null.
+    const Grouping* currentGrouping() const;
+    // Merged shape of each group of currentGrouping() (frequency-weighted means; cached).
+    const std::vector<std::vector<Vec3>>& mergedShapes();
+    bool autoReduce = true; // re-run in the background after every input change
+
+    // --- frame loop --------------------------------------------------------------------------
+    // Collects finished background work and starts automatic re-runs; call once per frame.
+    void poll();
+    // Blocks until background work has finished and was collected (tests, screenshots).
+    void finishBackgroundWork();
+
+    // --- undo / redo -------------------------------------------------------------------------
+    bool canUndo() const { return history_.canUndo(); }
+    bool canRedo() const { return history_.canRedo(); }
+    std::string undoName() const { return canUndo() ? history_.undoName() : std::string(); }
+    std::string redoName() const { return canRedo() ? history_.redoName() : std::string(); }
+    void undo();
+    void redo();
+    // Ends the current slider drag so the next change is a separate undo step.
+    void endEdit() { history_.closeMerge(); }
+
+    // --- messages ----------------------------------------------------------------------------
+    void info(std::string text);
+    void error(std::string text);
+    const std::deque<StatusMessage>& messages() const { return messages_; }
+    // Runs `action`; an exception becomes an error message "<what>: <reason>" and returns false.
+    bool attempt(std::string_view what, const std::function<void()>& action);
+
+    // --- view state (not part of the document, not undoable) -----------------------------------
+    int selectedViseme = -1;
+    std::uint64_t inputsGeneration() const { return inputsGeneration_; }
+    // Increments whenever the mesh set changes (renderers re-upload when it differs).
+    std::uint64_t geometryGeneration() const { return geometryGeneration_; }
+
+  private:
+    // Commits `next` as an undo step; `mergeKey` collapses a slider drag into one step.
+    void commit(std::string name, EditorState next, std::string mergeKey = {});
+    void noteChange(const EditorState& before, const EditorState& after);
+    void resetTo(EditorState state);
+    static FaceModel makeFaceModel(face::Individual individual, int resolution);
+    // Generates the face's visemes into `next` as a fresh project (embedded meshes).
+    static void setVisemesFromFace(EditorState& next);
+    static constexpr int kSampleResolution = 40;
+
+    CommandHistory<EditorState> history_;
+    std::deque<StatusMessage> messages_;
+    std::uint64_t inputsGeneration_ = 1;
+    std::uint64_t geometryGeneration_ = 1;
+    ReductionCurve curve_;
+    std::uint64_t runningGeneration_ = 0;
+    BackgroundTask<std::shared_ptr<const ReductionResult>> reductionTask_;
+    // mergedShapes() cache, keyed by the curve and the number of groups.
+    const ReductionResult* mergedFor_ = nullptr;
+    int mergedGroups_ = 0;
+    std::vector<std::vector<Vec3>> merged_;
+    // faceSamples() cache.
+    const DeformationCascade* samplesCascade_ = nullptr;
+    const MeshData* samplesDomain_ = nullptr;
+    FaceSamples samples_;
+};
+
+} // namespace vl::ui
