@@ -114,6 +114,57 @@ std::vector<double> allGroupCosts(const std::vector<double>& gram, std::span<con
     return cost;
 }
 
+struct Split {
+    double cost = kInf;
+    std::uint32_t rest = 0; // the remainder R = T \ V handed to the layer below
+};
+
+// The best split of state T: V = T \ R with R a subset of `others` (= T minus its lowest element)
+// and |R| >= minRest (the layer below needs at least that many elements; smaller R are +inf there).
+// Two enumerations of the same candidates: all submasks of `others` (cheapest when most are
+// feasible), or depth-first over the elements moved into V, |others \ R| <= |others| - minRest
+// (cheapest when minRest is large and most submasks would be infeasible). Ties keep the first found.
+Split bestSplit(std::uint32_t T, std::uint32_t others, int minRest, const std::vector<double>& cost,
+                const std::vector<double>& below) {
+    Split best;
+    auto consider = [&](std::uint32_t r) {
+        const double c = cost[T ^ r] + below[r >> 1];
+        if (c < best.cost) best = {c, r};
+    };
+    const int k = std::popcount(others);
+    const int maxMoved = k - minRest; // at most this many elements of `others` join V
+    if (maxMoved < 0) return best;
+    if (2 * maxMoved >= k) {
+        for (std::uint32_t r = others;; r = (r - 1) & others) {
+            consider(r);
+            if (r == 0) break;
+        }
+        return best;
+    }
+    std::uint32_t bits[32]; // the single-bit masks of `others`, lowest first
+    for (std::uint32_t x = others, i = 0; x; x &= x - 1) bits[i++] = x & (~x + 1);
+    // Iterative DFS: moved[d] is the set moved into V at depth d, next[d] the next element index to try.
+    std::uint32_t moved[33];
+    int next[33];
+    int depth = 0;
+    moved[0] = 0;
+    next[0] = 0;
+    consider(others);
+    while (depth >= 0) {
+        const int i = next[depth];
+        if (i < k && depth < maxMoved) {
+            next[depth] = i + 1;
+            moved[depth + 1] = moved[depth] | bits[i];
+            consider(others ^ moved[depth + 1]);
+            ++depth;
+            next[depth] = i + 1;
+        } else {
+            --depth;
+        }
+    }
+    return best;
+}
+
 std::vector<int> membersOf(std::uint32_t mask) {
     std::vector<int> members;
     for (std::uint32_t bits = mask; bits; bits &= bits - 1) members.push_back(std::countr_zero(bits));
@@ -158,19 +209,7 @@ ReductionResult reduceVisemes(const ReductionProblem& problem, const ProgressCal
                 const auto T = static_cast<std::uint32_t>(t << 1);
                 if (std::popcount(T) < q) continue;
                 const std::uint32_t low = T & (~T + 1);
-                const std::uint32_t others = T ^ low;
-                double bestCost = kInf;
-                std::uint32_t bestRest = 0;
-                // Enumerate remainders R of T\{low}; V = T \ R contains low. best[q-1][R] is +inf
-                // when |R| < q-1, so infeasible splits never win.
-                for (std::uint32_t r = others;; r = (r - 1) & others) {
-                    const double c = cost[T ^ r] + prev[r >> 1];
-                    if (c < bestCost) {
-                        bestCost = c;
-                        bestRest = r;
-                    }
-                    if (r == 0) break;
-                }
+                const auto [bestCost, bestRest] = bestSplit(T, T ^ low, q - 1, cost, prev);
                 cur[t] = bestCost;
                 choice[t] = bestRest;
             }
@@ -188,15 +227,9 @@ ReductionResult reduceVisemes(const ReductionProblem& problem, const ProgressCal
         if (p == 1) {
             bestCost = cost[full];
         } else {
-            const auto& prev = best[static_cast<std::size_t>(p - 2)];
-            for (std::uint32_t r = others;; r = (r - 1) & others) {
-                const double c = cost[full ^ r] + prev[r >> 1];
-                if (c < bestCost) {
-                    bestCost = c;
-                    bestRest = r;
-                }
-                if (r == 0) break;
-            }
+            const Split split = bestSplit(full, others, p - 1, cost, best[static_cast<std::size_t>(p - 2)]);
+            bestCost = split.cost;
+            bestRest = split.rest;
         }
         // Walk the recorded choices down the layers to recover the groups.
         Grouping& grouping = result.curve[static_cast<std::size_t>(p - 1)];
