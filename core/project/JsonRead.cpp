@@ -1,0 +1,286 @@
+#include "core/project/JsonRead.h"
+
+#include "core/common/Error.h"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+namespace vl {
+
+namespace {
+
+// The parser callback sees events, not paths: this rebuilds the path of the current element so a
+// duplicate key, or a number the parser cannot hold, can be reported where it is.
+class PathTracker {
+  public:
+    explicit PathTracker(std::string_view source) : source_(source) {}
+
+    bool onEvent(Json::parse_event_t event, const Json& parsed) {
+        switch (event) {
+        case Json::parse_event_t::object_start:
+            frames_.push_back({true, {}, {}, 0});
+            break;
+        case Json::parse_event_t::array_start:
+            frames_.push_back({false, {}, {}, 0});
+            break;
+        case Json::parse_event_t::key: {
+            Frame& top = frames_.back();
+            top.currentKey = parsed.get<std::string>();
+            if (!top.keys.insert(top.currentKey).second)
+                throwInputError(std::string(source_) + ": " + currentPath(),
+                                "duplicate key \"" + top.currentKey + "\"");
+            break;
+        }
+        case Json::parse_event_t::object_end:
+        case Json::parse_event_t::array_end:
+            frames_.pop_back();
+            elementDone();
+            break;
+        case Json::parse_event_t::value:
+            elementDone();
+            break;
+        }
+        return true;
+    }
+
+    // Path of the element being parsed (after its key, for object members).
+    std::string currentPath() const {
+        std::string path;
+        for (const Frame& f : frames_)
+            path = f.isObject ? jsonPathAppend(path, f.currentKey) : jsonPathAppend(path, f.index);
+        return path.empty() ? "/" : path;
+    }
+
+  private:
+    struct Frame {
+        bool isObject;
+        std::set<std::string> keys;
+        std::string currentKey;
+        std::size_t index;
+    };
+
+    void elementDone() {
+        if (!frames_.empty() && !frames_.back().isObject) ++frames_.back().index;
+    }
+
+    std::string_view source_;
+    std::vector<Frame> frames_;
+};
+
+std::string describe(const Json& value) {
+    if (value.is_number() || value.is_boolean() || value.is_null()) return value.dump();
+    if (value.is_string()) {
+        auto text = value.dump();
+        if (text.size() > 40) text = text.substr(0, 37) + "...";
+        return "string " + text;
+    }
+    return jsonTypeName(value);
+}
+
+} // namespace
+
+Json parseJsonStrict(std::string_view text, std::string_view source) {
+    PathTracker tracker(source);
+    const Json::parser_callback_t callback = [&tracker](int, Json::parse_event_t event, Json& parsed) {
+        return tracker.onEvent(event, parsed);
+    };
+    try {
+        return Json::parse(text.begin(), text.end(), callback);
+    } catch (const Json::parse_error& e) {
+        // Drop nlohmann's "[json.exception.parse_error.101] " prefix; keep "parse error at line L, column C:
+        // ...".
+        std::string message = e.what();
+        if (const auto close = message.find("] ");
+            message.starts_with("[json.exception") && close != std::string::npos)
+            message.erase(0, close + 2);
+        throwInputError(source, "invalid JSON: " + message);
+    } catch (const Json::out_of_range& e) {
+        // A literal such as 1e999 overflows a double; nlohmann reports it without a position.
+        std::string message = e.what();
+        const auto quote = message.find('\'');
+        const std::string literal =
+            quote == std::string::npos ? "" : message.substr(quote + 1, message.rfind('\'') - quote - 1);
+        throwInputError(std::string(source) + ": " + tracker.currentPath(),
+                        "number out of range: " + literal);
+    }
+}
+
+std::string jsonTypeName(const Json& value) {
+    switch (value.type()) {
+    case Json::value_t::null:
+        return "null";
+    case Json::value_t::object:
+        return "object";
+    case Json::value_t::array:
+        return "array";
+    case Json::value_t::string:
+        return "string";
+    case Json::value_t::boolean:
+        return "boolean";
+    case Json::value_t::number_integer:
+    case Json::value_t::number_unsigned:
+    case Json::value_t::number_float:
+        return "number";
+    case Json::value_t::binary:
+        return "binary";
+    case Json::value_t::discarded:
+        break;
+    }
+    return "invalid value";
+}
+
+std::string jsonPathAppend(std::string_view path, std::string_view key) {
+    std::string result(path);
+    result += '/';
+    for (const char c : key) {
+        if (c == '~')
+            result += "~0";
+        else if (c == '/')
+            result += "~1";
+        else
+            result += c;
+    }
+    return result;
+}
+
+std::string jsonPathAppend(std::string_view path, std::size_t index) {
+    return std::string(path) + "/" + std::to_string(index);
+}
+
+void JsonNode::fail(std::string_view what) const {
+    throwInputError(path_.empty() ? "/" : path_, what);
+}
+
+void JsonNode::expectObject() const {
+    if (!value_->is_object()) fail("expected an object, found " + describe(*value_));
+}
+
+void JsonNode::allowOnly(std::initializer_list<std::string_view> allowed) const {
+    expectObject();
+    for (const auto& [key, value] : value_->items())
+        if (std::find(allowed.begin(), allowed.end(), key) == allowed.end())
+            throwInputError(jsonPathAppend(path_, key), "unknown field");
+}
+
+bool JsonNode::has(std::string_view key) const {
+    expectObject();
+    return value_->contains(key);
+}
+
+JsonNode JsonNode::operator[](std::string_view key) const {
+    expectObject();
+    const auto it = value_->find(key);
+    if (it == value_->end()) throwInputError(jsonPathAppend(path_, key), "missing field");
+    return JsonNode(*it, jsonPathAppend(path_, key));
+}
+
+std::vector<std::pair<std::string, JsonNode>> JsonNode::members() const {
+    expectObject();
+    std::vector<std::pair<std::string, JsonNode>> result;
+    for (const auto& [key, value] : value_->items())
+        result.emplace_back(key, JsonNode(value, jsonPathAppend(path_, key)));
+    return result;
+}
+
+void JsonNode::expectArray() const {
+    if (!value_->is_array()) fail("expected an array, found " + describe(*value_));
+}
+
+std::size_t JsonNode::size() const {
+    expectArray();
+    return value_->size();
+}
+
+void JsonNode::expectSize(std::size_t n) const {
+    if (size() != n)
+        fail("expected an array of " + std::to_string(n) + " elements, found " +
+             std::to_string(value_->size()));
+}
+
+JsonNode JsonNode::operator[](std::size_t index) const {
+    if (index >= size()) throwInputError(jsonPathAppend(path_, index), "missing array element");
+    return JsonNode((*value_)[index], jsonPathAppend(path_, index));
+}
+
+std::vector<JsonNode> JsonNode::elements() const {
+    expectArray();
+    std::vector<JsonNode> result;
+    result.reserve(value_->size());
+    for (std::size_t i = 0; i < value_->size(); ++i)
+        result.emplace_back((*value_)[i], jsonPathAppend(path_, i));
+    return result;
+}
+
+std::string JsonNode::string() const {
+    if (!value_->is_string()) fail("expected a string, found " + describe(*value_));
+    return value_->get<std::string>();
+}
+
+std::string JsonNode::nonEmptyString() const {
+    auto text = string();
+    if (text.empty()) fail("expected a non-empty string");
+    return text;
+}
+
+bool JsonNode::boolean() const {
+    if (!value_->is_boolean()) fail("expected true or false, found " + describe(*value_));
+    return value_->get<bool>();
+}
+
+double JsonNode::number() const {
+    if (!value_->is_number()) fail("expected a number, found " + describe(*value_));
+    const double v = value_->get<double>();
+    // JSON has no NaN/Inf literals, but an overflowing literal such as 1e999 parses to infinity.
+    if (!std::isfinite(v)) fail("expected a finite number, found " + value_->dump());
+    return v;
+}
+
+double JsonNode::nonNegativeNumber() const {
+    if (!value_->is_number()) fail("expected a non-negative number, found " + describe(*value_));
+    const double v = number();
+    if (v < 0.0) fail("expected a non-negative number, found " + value_->dump());
+    return v;
+}
+
+std::int64_t JsonNode::integer() const {
+    if (value_->is_number_unsigned()) {
+        const auto u = value_->get<std::uint64_t>();
+        if (u > static_cast<std::uint64_t>(INT64_MAX)) fail("integer out of range: " + value_->dump());
+        return static_cast<std::int64_t>(u);
+    }
+    if (!value_->is_number_integer()) fail("expected an integer, found " + describe(*value_));
+    return value_->get<std::int64_t>();
+}
+
+std::int64_t JsonNode::integerInRange(std::int64_t lo, std::int64_t hi) const {
+    const auto v = integer();
+    if (v < lo || v > hi)
+        fail(std::to_string(v) + " is outside the allowed range " + std::to_string(lo) + ".." +
+             std::to_string(hi));
+    return v;
+}
+
+Vec3 JsonNode::vec3() const {
+    expectSize(3);
+    return Vec3((*this)[0].number(), (*this)[1].number(), (*this)[2].number());
+}
+
+Vec2 JsonNode::vec2() const {
+    expectSize(2);
+    return Vec2((*this)[0].number(), (*this)[1].number());
+}
+
+std::vector<double> JsonNode::numbers() const {
+    std::vector<double> result;
+    for (const auto& e : elements()) result.push_back(e.number());
+    return result;
+}
+
+std::vector<double> JsonNode::nonNegativeNumbers() const {
+    std::vector<double> result;
+    for (const auto& e : elements()) result.push_back(e.nonNegativeNumber());
+    return result;
+}
+
+} // namespace vl

@@ -1,0 +1,73 @@
+#include "core/project/JsonWrite.h"
+
+#include <algorithm>
+
+namespace vl {
+
+namespace {
+
+bool isScalar(const Json& v) {
+    return !v.is_object() && !v.is_array();
+}
+
+bool isFlatArray(const Json& v) {
+    return v.is_array() && std::all_of(v.begin(), v.end(), isScalar);
+}
+
+void indent(std::string& out, int level) {
+    out.append(static_cast<std::size_t>(level) * 2, ' ');
+}
+
+void write(std::string& out, const Json& value, int level) {
+    if (isScalar(value)) {
+        out += value.dump(); // strings escaped, numbers in shortest round-trip form
+    } else if (value.empty()) {
+        out += value.is_object() ? "{}" : "[]";
+    } else if (isFlatArray(value)) {
+        out += '[';
+        bool first = true;
+        for (const auto& e : value) {
+            if (!first) out += ", ";
+            first = false;
+            out += e.dump();
+        }
+        out += ']';
+    } else if (value.is_array()) {
+        out += "[\n";
+        bool first = true;
+        for (const auto& e : value) {
+            if (!first) out += ",\n";
+            first = false;
+            indent(out, level + 1);
+            write(out, e, level + 1);
+        }
+        out += '\n';
+        indent(out, level);
+        out += ']';
+    } else {
+        out += "{\n";
+        bool first = true;
+        for (const auto& [key, e] : value.items()) {
+            if (!first) out += ",\n";
+            first = false;
+            indent(out, level + 1);
+            out += Json(key).dump();
+            out += ": ";
+            write(out, e, level + 1);
+        }
+        out += '\n';
+        indent(out, level);
+        out += '}';
+    }
+}
+
+} // namespace
+
+std::string formatJsonPretty(const Json& value) {
+    std::string out;
+    write(out, value, 0);
+    out += '\n';
+    return out;
+}
+
+} // namespace vl

@@ -1,0 +1,111 @@
+#pragma once
+// A VisemeLab project: everything a designer edits, saved as one JSON document
+// ("format": "visemelab-project", "version": 1; docs/project-format.md describes every field).
+// The state is plain data from the core modules; this module only reads, validates and writes it.
+#include "core/deform/DeformationCascade.h"
+#include "core/deform/Visemes.h"
+#include "core/mesh/Mesh.h"
+#include "core/reduce/Frequencies.h"
+#include "core/reduce/Reduction.h"
+#include "core/reduce/Weights.h"
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace vl {
+
+constexpr int kProjectVersion = 1;       // written by saveProject; newer versions are refused
+constexpr int kOldestProjectVersion = 0; // older versions load through a migration
+inline constexpr const char* kProjectFormat = "visemelab-project";
+
+// The neutral mesh: a file (relative to the project file's folder, or absolute) or embedded data.
+struct ProjectNeutral {
+    std::filesystem::path file; // empty when embedded
+    MeshData embedded;          // used when file is empty; no positions = the project has no neutral yet
+    bool isEmbedded() const { return file.empty() && !embedded.positions.empty(); }
+    bool isSet() const { return !file.empty() || !embedded.positions.empty(); }
+};
+
+// A viseme: a name plus a file, or embedded positions (it shares the neutral's topology and (u,v)).
+struct ProjectViseme {
+    std::string name;
+    std::filesystem::path file;  // empty when embedded
+    std::vector<Vec3> positions; // used when file is empty
+    bool isEmbedded() const { return file.empty(); }
+};
+
+struct ProjectWeights {
+    WeightMode mode = WeightMode::Uniform;
+    std::vector<double> painted; // one per vertex; kept when another mode is selected
+};
+
+struct ProjectReduction {
+    int target = 1;                        // m, in 1..n
+    std::optional<ReductionResult> result; // the last run (groups ordered and canonical), if any
+};
+
+// The deformable face (paper "Adaptive Deformable Models"): its cascade of fields, the current
+// slider values, and visemes as named parameter vectors. No stages = the project has no face model.
+struct ProjectDeformation {
+    DeformationCascade cascade;
+    std::vector<double> values;            // one per cascade parameter (empty when there is no cascade)
+    std::vector<VisemeParameters> visemes; // parameters not listed keep their default
+
+    bool isSet() const { return !cascade.stages.empty(); }
+};
+
+// Cheap editor state that is worth restoring when a project is reopened.
+struct ProjectEditorState {
+    std::string selectedViseme; // empty = none
+};
+
+struct Project {
+    // The project file this state belongs to. Not stored in the file; relative mesh paths resolve
+    // against its folder. Empty for a project that has never been saved.
+    std::filesystem::path path;
+
+    ProjectNeutral neutral;
+    std::vector<ProjectViseme> visemes;
+    FrequencySource frequencies; // direct viseme frequencies, or phoneme table + phoneme->viseme map
+    ProjectWeights weights;
+    ProjectDeformation deformation;
+    ProjectReduction reduction;
+    ProjectEditorState editor;
+
+    int findViseme(std::string_view name) const; // index or -1
+};
+
+// Exact equality of every field (doubles compared bit-for-bit by value; NaN never equal).
+bool operator==(const Project& a, const Project& b);
+inline bool operator!=(const Project& a, const Project& b) {
+    return !(a == b);
+}
+
+// Reads, migrates (older versions) and validates a project file. Every problem is an InputError
+// "<file>: <JSON path>: <what>", e.g. "p.vlproj: /visemes/3/file: file not found (…/aa.obj)".
+// Referenced mesh files must exist; their contents are read by loadProjectVisemeSet.
+Project loadProject(const std::filesystem::path& file);
+
+// Validates the project (the same checks as loading, except that mesh files need not exist) and
+// writes it atomically: on any error the previous file is left untouched. Relative mesh paths are
+// rebased when `file` is in another folder than project.path (see rebaseProject).
+void saveProject(const std::filesystem::path& file, const Project& project);
+
+// The project as the JSON text saveProject writes (after validation).
+std::string projectToJsonText(const Project& project);
+
+// Parses and validates project JSON text as if it were the file `projectFile` (relative mesh paths
+// resolve against its folder); `checkFiles` verifies that referenced mesh files exist.
+Project projectFromJsonText(std::string_view text, const std::filesystem::path& projectFile,
+                            bool checkFiles = true);
+
+// The same project with relative mesh paths rewritten so they still point to the same files from
+// the folder of `newFile`, and path = newFile.
+Project rebaseProject(const Project& project, const std::filesystem::path& newFile);
+
+// Absolute (or working-directory-relative) location of a mesh file the project references.
+std::filesystem::path resolveProjectFile(const Project& project, const std::filesystem::path& file);
+
+} // namespace vl

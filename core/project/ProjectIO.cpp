@@ -1,0 +1,108 @@
+// Loading and saving project files: version dispatch, validation, atomic write, path rebasing.
+#include "core/common/AtomicFile.h"
+#include "core/common/Error.h"
+#include "core/project/JsonWrite.h"
+#include "core/project/ProjectJson.h"
+
+namespace vl {
+
+namespace {
+
+std::filesystem::path folderOf(const std::filesystem::path& file) {
+    return file.has_parent_path() ? file.parent_path() : std::filesystem::path(".");
+}
+
+[[noreturn]] void rethrowWithPrefix(const InputError& e, std::string_view prefix) {
+    throw InputError(std::string(prefix) + e.what());
+}
+
+std::string toText(const Project& project) {
+    try {
+        return formatJsonPretty(projectToJson(project));
+    } catch (const Json::exception& e) { // e.g. a name that is not valid UTF-8
+        throwInputError("project", std::string("cannot be written as JSON: ") + e.what());
+    }
+}
+
+} // namespace
+
+Project projectFromJsonText(std::string_view text, const std::filesystem::path& projectFile,
+                            bool checkFiles) {
+    const Json document = parseJsonStrict(text, projectFile.string());
+    const JsonNode root(document, "");
+    const int version = projectVersionOf(root);
+    const ProjectReadContext context{folderOf(projectFile), checkFiles};
+    Project project;
+    if (version == kProjectVersion) {
+        project = projectFromJson(root, context);
+    } else {
+        const Json upgraded = migrateProjectJson(root, version);
+        try {
+            project = projectFromJson(JsonNode(upgraded, ""), context);
+        } catch (const InputError& e) {
+            rethrowWithPrefix(e, "in the version " + std::to_string(version) +
+                                     " project after migration to version " +
+                                     std::to_string(kProjectVersion) + ": ");
+        }
+    }
+    project.path = projectFile;
+    return project;
+}
+
+Project loadProject(const std::filesystem::path& file) {
+    const std::string text = readFileToString(file); // its errors already name the file
+    try {
+        return projectFromJsonText(text, file, true);
+    } catch (const InputError& e) {
+        const std::string message = e.what();
+        if (message.starts_with(file.string())) throw; // JSON syntax errors name the file themselves
+        rethrowWithPrefix(e, file.string() + ": ");
+    }
+}
+
+std::string projectToJsonText(const Project& project) {
+    std::string text = toText(project);
+    // One set of rules for loading and saving: the text must load back to the same state. This also
+    // refuses NaN (written as null by nlohmann) and every other invalid value with its JSON path.
+    const Project reloaded = projectFromJsonText(text, project.path, false);
+    Project expected = project;
+    expected.path = reloaded.path;
+    if (reloaded != expected)
+        throwInputError("project",
+                        "does not survive a save/load round trip (groups not in canonical order?)");
+    return text;
+}
+
+void saveProject(const std::filesystem::path& file, const Project& project) {
+    std::string text;
+    try {
+        text = projectToJsonText(rebaseProject(project, file));
+    } catch (const InputError& e) {
+        rethrowWithPrefix(e, "cannot save " + file.string() + ": ");
+    }
+    writeFileAtomically(file, text);
+}
+
+std::filesystem::path resolveProjectFile(const Project& project, const std::filesystem::path& file) {
+    if (file.is_absolute() || project.path.empty()) return file;
+    return (folderOf(project.path) / file).lexically_normal();
+}
+
+Project rebaseProject(const Project& project, const std::filesystem::path& newFile) {
+    Project rebased = project;
+    rebased.path = newFile;
+    const auto oldFolder = std::filesystem::absolute(folderOf(project.path)).lexically_normal();
+    const auto newFolder = std::filesystem::absolute(folderOf(newFile)).lexically_normal();
+    if (oldFolder == newFolder) return rebased;
+    const auto rebase = [&](std::filesystem::path& file) {
+        if (file.empty() || file.is_absolute()) return;
+        const auto target = (oldFolder / file).lexically_normal();
+        const auto relative = target.lexically_relative(newFolder);
+        file = relative.empty() ? target : relative;
+    };
+    rebase(rebased.neutral.file);
+    for (auto& viseme : rebased.visemes) rebase(viseme.file);
+    return rebased;
+}
+
+} // namespace vl

@@ -1,0 +1,36 @@
+#pragma once
+// Internal to core/project: conversion between Project sections and JSON (current version).
+// Readers validate everything they read and throw InputError "<JSON path>: <what>".
+#include "core/project/JsonRead.h"
+#include "core/project/Project.h"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace vl {
+
+// What section readers need beyond their JSON node.
+struct ProjectReadContext {
+    std::filesystem::path folder; // folder of the project file, for relative mesh paths
+    bool checkFiles = true;       // referenced mesh files must exist
+};
+
+Json projectToJson(const Project& project);
+Project projectFromJson(const JsonNode& root, const ProjectReadContext& context); // version already checked
+
+Json frequenciesToJson(const FrequencySource& frequencies);
+FrequencySource frequenciesFromJson(const JsonNode& node, const std::vector<std::string>& visemeNames);
+
+// Sampled grids equal to a built-in face geometry are written as {"builtin": name, ...}.
+Json deformationToJson(const ProjectDeformation& deformation);
+ProjectDeformation deformationFromJson(const JsonNode& node);
+
+Json reductionToJson(const ProjectReduction& reduction, const std::vector<std::string>& visemeNames);
+ProjectReduction reductionFromJson(const JsonNode& node, const std::vector<std::string>& visemeNames);
+
+// Version handling: the version of a document, and the upgrade of an older one to the current layout.
+int projectVersionOf(const JsonNode& root); // checks "format" too; refuses newer versions
+Json migrateProjectJson(const JsonNode& root, int fromVersion);
+
+} // namespace vl

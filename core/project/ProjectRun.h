@@ -1,0 +1,26 @@
+#pragma once
+// Turning a project into work: loading the meshes it references and running its reduction, so the
+// CLI (`visemelab reduce --project`) and the editor do exactly the same thing.
+#include "core/project/Project.h"
+#include "core/reduce/ReduceRun.h"
+#include "core/reduce/VisemeSet.h"
+
+namespace vl {
+
+// Reads the neutral mesh and every viseme (files resolved against the project's folder, or
+// embedded data) and checks interpolability. Errors name the JSON path and the file, e.g.
+// "/visemes/3/file (mouth/aa.obj): not interpolable: 1499 vertices (the neutral mesh ... has 1500)".
+VisemeSet loadProjectVisemeSet(const Project& project);
+
+// The reduction settings the project holds (weight mode, painted weights, target).
+ReduceSettings projectReduceSettings(const Project& project);
+
+// Runs the exact reduction of `set` (normally loadProjectVisemeSet(project)) with the project's
+// frequencies, weights and target. Errors name the project's JSON paths where they can.
+ReduceOutcome reduceProject(const Project& project, const VisemeSet& set,
+                            const ProgressCallback& progress = {});
+
+// Stores the outcome as the project's last result.
+void storeReductionResult(Project& project, const ReduceOutcome& outcome);
+
+} // namespace vl

@@ -1,0 +1,101 @@
+// The "reduction" section: target m and the last result (cost curve with the grouping for each p),
+// groups written as viseme names so the file stays readable and survives reordering of the list.
+#include "core/common/Error.h"
+#include "core/project/ProjectJson.h"
+
+#include <algorithm>
+
+namespace vl {
+
+namespace {
+
+Json groupingToJson(const Grouping& grouping, const std::vector<std::string>& visemeNames,
+                    std::string_view path) {
+    Json groups = Json::array();
+    for (const auto& group : grouping.groups) {
+        Json names = Json::array();
+        for (const int member : group) {
+            if (member < 0 || static_cast<std::size_t>(member) >= visemeNames.size())
+                throwInputError(path, "group member " + std::to_string(member) + " is not a viseme index");
+            names.push_back(visemeNames[static_cast<std::size_t>(member)]);
+        }
+        groups.push_back(std::move(names));
+    }
+    Json json = Json::object();
+    json["cost"] = grouping.cost;
+    json["groups"] = std::move(groups);
+    return json;
+}
+
+// Reads the grouping into p groups, checks that it is a partition of all visemes and puts it in the
+// canonical order of ReductionResult (members ascending, groups by first member).
+Grouping groupingFromJson(const JsonNode& node, std::size_t p, const std::vector<std::string>& visemeNames) {
+    node.allowOnly({"cost", "groups"});
+    Grouping grouping;
+    grouping.cost = node["cost"].nonNegativeNumber();
+    const JsonNode groups = node["groups"];
+    if (groups.size() != p)
+        groups.fail("expected " + std::to_string(p) + " groups (entry " + std::to_string(p) +
+                    " of the cost curve), found " + std::to_string(groups.size()));
+    std::vector<int> groupOf(visemeNames.size(), -1);
+    for (const JsonNode& group : groups.elements()) {
+        if (group.size() == 0) group.fail("empty group");
+        std::vector<int> members;
+        for (const JsonNode& member : group.elements()) {
+            const std::string name = member.string();
+            const auto it = std::find(visemeNames.begin(), visemeNames.end(), name);
+            if (it == visemeNames.end()) member.fail("unknown viseme \"" + name + "\"");
+            const auto index = static_cast<std::size_t>(it - visemeNames.begin());
+            if (groupOf[index] >= 0) member.fail("viseme \"" + name + "\" is in more than one group");
+            groupOf[index] = static_cast<int>(grouping.groups.size());
+            members.push_back(static_cast<int>(index));
+        }
+        std::sort(members.begin(), members.end());
+        grouping.groups.push_back(std::move(members));
+    }
+    for (std::size_t i = 0; i < visemeNames.size(); ++i)
+        if (groupOf[i] < 0) groups.fail("viseme \"" + visemeNames[i] + "\" is in no group");
+    std::sort(grouping.groups.begin(), grouping.groups.end(),
+              [](const std::vector<int>& a, const std::vector<int>& b) { return a.front() < b.front(); });
+    return grouping;
+}
+
+} // namespace
+
+Json reductionToJson(const ProjectReduction& reduction, const std::vector<std::string>& visemeNames) {
+    Json json = Json::object();
+    json["target"] = reduction.target;
+    if (!reduction.result) {
+        json["result"] = nullptr;
+        return json;
+    }
+    Json curve = Json::array();
+    for (std::size_t p = 0; p < reduction.result->curve.size(); ++p)
+        curve.push_back(groupingToJson(reduction.result->curve[p], visemeNames,
+                                       jsonPathAppend("/reduction/result/curve", p)));
+    json["result"] = Json{{"curve", std::move(curve)}};
+    return json;
+}
+
+ProjectReduction reductionFromJson(const JsonNode& node, const std::vector<std::string>& visemeNames) {
+    node.allowOnly({"target", "result"});
+    ProjectReduction reduction;
+    const auto n = static_cast<std::int64_t>(visemeNames.size());
+    // With no visemes yet any m >= 1 is kept; it is checked again once visemes exist.
+    reduction.target = static_cast<int>(node["target"].integerInRange(1, n > 0 ? n : kMaxExactVisemes));
+    if (!node.has("result") || node["result"].isNull()) return reduction;
+
+    const JsonNode result = node["result"];
+    result.allowOnly({"curve"});
+    const JsonNode curve = result["curve"];
+    if (curve.size() == 0 || curve.size() > visemeNames.size())
+        curve.fail("expected 1.." + std::to_string(visemeNames.size()) + " entries (p = 1..m), found " +
+                   std::to_string(curve.size()));
+    ReductionResult parsed;
+    for (std::size_t p = 0; p < curve.size(); ++p)
+        parsed.curve.push_back(groupingFromJson(curve[p], p + 1, visemeNames));
+    reduction.result = std::move(parsed);
+    return reduction;
+}
+
+} // namespace vl
