@@ -1,0 +1,26 @@
+// Writes sample .glb files for the Khronos validator test (tests/export/CMakeLists.txt): a small
+// textured face with 16-bit indices, a 66,000-vertex one with 32-bit indices, and the bundled
+// sample's reduction when assets/sample is present.
+#include "core/export/Gltf.h"
+#include "tests/export/TestModels.h"
+
+#include <cstdio>
+#include <exception>
+
+int main(int argc, char** argv) {
+    if (argc != 2) {
+        std::fprintf(stderr, "usage: %s OUT_DIR\n", argv[0]);
+        return 2;
+    }
+    try {
+        const std::filesystem::path dir = argv[1];
+        std::filesystem::create_directories(dir);
+        vl::writeGlb(dir / "small_textured.glb", vl::test::randomModel(12, 10, 5, true, 41));
+        vl::writeGlb(dir / "large_uint32.glb", vl::test::randomModel(300, 220, 2, false, 42));
+        std::printf("%s\n%s\n", (dir / "small_textured.glb").c_str(), (dir / "large_uint32.glb").c_str());
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "%s\n", e.what());
+        return 1;
+    }
+    return 0;
+}
