@@ -54,6 +54,15 @@ bool sameDeformation(const ProjectDeformation& a, const ProjectDeformation& b) {
     return true;
 }
 
+bool sameRefinement(const CriterionSettings& a, const CriterionSettings& b) {
+    return a.kind == b.kind && a.maxDepth == b.maxDepth && a.depth.depth == b.depth.depth &&
+           a.normals.dihedralAngleDeg == b.normals.dihedralAngleDeg &&
+           a.normals.normalAngleDeg == b.normals.normalAngleDeg &&
+           a.contour.averageError == b.contour.averageError &&
+           a.contour.maximumError == b.contour.maximumError &&
+           a.contour.samplesPerSide == b.contour.samplesPerSide;
+}
+
 bool sameResult(const std::optional<ReductionResult>& a, const std::optional<ReductionResult>& b) {
     if (a.has_value() != b.has_value()) return false;
     if (!a) return true;
@@ -82,7 +91,8 @@ bool operator==(const Project& a, const Project& b) {
            sameMesh(a.neutral.embedded, b.neutral.embedded) &&
            sameFrequencies(a.frequencies, b.frequencies) && a.weights.mode == b.weights.mode &&
            a.weights.painted == b.weights.painted && sameDeformation(a.deformation, b.deformation) &&
-           a.reduction.target == b.reduction.target && sameResult(a.reduction.result, b.reduction.result) &&
+           sameRefinement(a.refinement, b.refinement) && a.reduction.target == b.reduction.target &&
+           sameResult(a.reduction.result, b.reduction.result) &&
            a.editor.selectedViseme == b.editor.selectedViseme;
 }
 

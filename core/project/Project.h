@@ -2,6 +2,7 @@
 // A VisemeLab project: everything a designer edits, saved as one JSON document
 // ("format": "visemelab-project", "version": 1; docs/project-format.md describes every field).
 // The state is plain data from the core modules; this module only reads, validates and writes it.
+#include "core/adaptive/Criteria.h"
 #include "core/deform/DeformationCascade.h"
 #include "core/deform/Visemes.h"
 #include "core/mesh/Mesh.h"
@@ -71,6 +72,7 @@ struct Project {
     FrequencySource frequencies; // direct viseme frequencies, or phoneme table + phoneme->viseme map
     ProjectWeights weights;
     ProjectDeformation deformation;
+    CriterionSettings refinement; // adaptive mesh: criterion and the thresholds of every criterion
     ProjectReduction reduction;
     ProjectEditorState editor;
 

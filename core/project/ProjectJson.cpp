@@ -173,6 +173,7 @@ Json projectToJson(const Project& project) {
     root["frequencies"] = frequenciesToJson(project.frequencies);
     root["weights"] = weightsToJson(project.weights);
     root["deformation"] = deformationToJson(project.deformation);
+    root["refinement"] = refinementToJson(project.refinement);
     root["reduction"] = reductionToJson(project.reduction, names);
     root["editor"] = Json{{"selectedViseme", project.editor.selectedViseme}};
     return root;
@@ -180,7 +181,7 @@ Json projectToJson(const Project& project) {
 
 Project projectFromJson(const JsonNode& root, const ProjectReadContext& context) {
     root.allowOnly({"format", "version", "neutral", "visemes", "frequencies", "weights", "deformation",
-                    "reduction", "editor"});
+                    "refinement", "reduction", "editor"});
     Project project;
     project.neutral = neutralFromJson(root["neutral"], context);
 
@@ -199,6 +200,7 @@ Project projectFromJson(const JsonNode& root, const ProjectReadContext& context)
     if (root.has("frequencies")) project.frequencies = frequenciesFromJson(root["frequencies"], names);
     if (root.has("weights")) project.weights = weightsFromJson(root["weights"], project.neutral);
     if (root.has("deformation")) project.deformation = deformationFromJson(root["deformation"]);
+    if (root.has("refinement")) project.refinement = refinementFromJson(root["refinement"]);
     if (root.has("reduction")) project.reduction = reductionFromJson(root["reduction"], names);
     if (root.has("editor")) {
         const JsonNode editor = root["editor"];

@@ -26,6 +26,10 @@ FrequencySource frequenciesFromJson(const JsonNode& node, const std::vector<std:
 Json deformationToJson(const ProjectDeformation& deformation);
 ProjectDeformation deformationFromJson(const JsonNode& node);
 
+// Criteria without a section in the file keep their default thresholds.
+Json refinementToJson(const CriterionSettings& settings);
+CriterionSettings refinementFromJson(const JsonNode& node);
+
 Json reductionToJson(const ProjectReduction& reduction, const std::vector<std::string>& visemeNames);
 ProjectReduction reductionFromJson(const JsonNode& node, const std::vector<std::string>& visemeNames);
 

@@ -241,6 +241,12 @@ inline Project randomProject(std::mt19937_64& rng, const std::filesystem::path& 
         project.reduction.result = std::move(result);
     }
     project.deformation = randomDeformation(rng);
+    project.refinement.kind = static_cast<CriterionKind>(rng() % 3);
+    project.refinement.maxDepth = static_cast<int>(rng() % 31);
+    project.refinement.depth.depth = static_cast<int>(rng() % 12);
+    project.refinement.normals = {randomDouble(rng, true), randomDouble(rng, true)};
+    project.refinement.contour = {randomDouble(rng, true), randomDouble(rng, true),
+                                  1 + static_cast<int>(rng() % 32)};
     if (n > 0 && rng() % 2 == 0) project.editor.selectedViseme = names[rng() % names.size()];
     return project;
 }

@@ -244,6 +244,38 @@ TEST_F(ProjectValidation, ResultGroupsAreCanonicalised) {
     EXPECT_EQ(p.reduction.result->curve[1].groups, (std::vector<std::vector<int>>{{0}, {1, 2, 3}}));
 }
 
+TEST_F(ProjectValidation, Refinement) {
+    doc["refinement"] = parseJsonStrict(R"({"criterion": "contour", "maxDepth": 8,
+        "normals": {"dihedralAngleDeg": 15, "normalAngleDeg": 25},
+        "contour": {"averageError": 0.01, "maximumError": 0.05, "samplesPerSide": 6}})",
+                                        "r");
+    const Project p = load();
+    EXPECT_EQ(p.refinement.kind, CriterionKind::Contour);
+    EXPECT_EQ(p.refinement.maxDepth, 8);
+    EXPECT_EQ(p.refinement.depth.depth, CriterionSettings{}.depth.depth); // section absent: default
+    EXPECT_EQ(p.refinement.normals.normalAngleDeg, 25.0);
+    EXPECT_EQ(p.refinement.contour.samplesPerSide, 6);
+
+    doc["refinement"]["criterion"] = "curvature";
+    EXPECT_LOAD_ERROR(
+        "/refinement/criterion: unknown criterion 'curvature' (expected depth, normals or contour)");
+    doc["refinement"]["criterion"] = "normals";
+    doc["refinement"]["maxDepth"] = 31;
+    EXPECT_LOAD_ERROR("/refinement/maxDepth: 31 is outside the allowed range 0..30");
+    doc["refinement"]["maxDepth"] = 5;
+    doc["refinement"]["normals"]["dihedralAngleDeg"] = -3;
+    EXPECT_LOAD_ERROR("/refinement/normals/dihedralAngleDeg: expected a non-negative number, found -3");
+    doc["refinement"]["normals"]["dihedralAngleDeg"] = 3;
+    doc["refinement"]["contour"]["samplesPerSide"] = 0;
+    EXPECT_LOAD_ERROR("/refinement/contour/samplesPerSide: 0 is outside the allowed range 1..32");
+    doc["refinement"]["contour"]["samplesPerSide"] = 2;
+    doc["refinement"]["depth"] = Json{{"depth", -1}};
+    EXPECT_LOAD_ERROR("/refinement/depth/depth: -1 is outside the allowed range");
+    doc["refinement"].erase("depth");
+    doc["refinement"].erase("maxDepth");
+    EXPECT_LOAD_ERROR("/refinement/maxDepth: missing field");
+}
+
 TEST_F(ProjectValidation, EditorSelection) {
     doc["editor"]["selectedViseme"] = "zz";
     EXPECT_LOAD_ERROR("/editor/selectedViseme: unknown viseme \"zz\"");
