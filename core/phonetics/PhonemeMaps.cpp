@@ -1,0 +1,69 @@
+#include "core/phonetics/PhonemeMaps.h"
+
+#include "core/common/Error.h"
+#include "core/phonetics/Arpabet.h"
+
+#include <algorithm>
+
+namespace vl {
+
+namespace {
+
+std::string joinList(const std::vector<std::string>& names) {
+    std::string text;
+    for (const auto& name : names) text += (text.empty() ? "" : ", ") + name;
+    return text;
+}
+
+} // namespace
+
+void checkMapCovers(const PhonemeVisemeMap& map, std::span<const std::string> phonemes, std::string_view where) {
+    std::vector<std::string> unmapped;
+    for (const auto& phoneme : phonemes)
+        if (!map.visemeOf(phoneme)) unmapped.push_back(phoneme);
+    if (!unmapped.empty())
+        throwInputError(where, std::to_string(unmapped.size()) + " phoneme" + (unmapped.size() == 1 ? "" : "s") +
+                                   " not mapped to any viseme: " + joinList(unmapped));
+}
+
+void checkMapVisemes(const PhonemeVisemeMap& map, std::span<const std::string> visemeNames,
+                     std::string_view where) {
+    std::vector<std::string> unknown;
+    for (const auto& viseme : mapVisemeNames(map))
+        if (std::find(visemeNames.begin(), visemeNames.end(), viseme) == visemeNames.end()) unknown.push_back(viseme);
+    if (!unknown.empty())
+        throwInputError(where, "the map names visemes that are not in the viseme set: " + joinList(unknown) +
+                                   " (the set has " + joinList({visemeNames.begin(), visemeNames.end()}) + ")");
+}
+
+void checkArpabetMap(const PhonemeVisemeMap& map, std::string_view where) {
+    std::vector<std::string> foreign;
+    for (const auto& [phoneme, viseme] : map.entries)
+        if (!findArpabet(phoneme)) foreign.push_back(phoneme);
+    if (!foreign.empty())
+        throwInputError(where, "not ARPAbet phonemes (see docs/phonemes.md): " + joinList(foreign));
+    checkMapCovers(map, arpabetSymbols(), where);
+}
+
+std::vector<std::string> mapVisemeNames(const PhonemeVisemeMap& map) {
+    std::vector<std::string> names;
+    for (const auto& [phoneme, viseme] : map.entries)
+        if (std::find(names.begin(), names.end(), viseme) == names.end()) names.push_back(viseme);
+    return names;
+}
+
+std::vector<BundledPhonemeMap> bundledPhonemeMaps(const std::filesystem::path& assetsDir) {
+    const auto dir = assetsDir / "phonemes";
+    return {
+        {"oculus", "Oculus / Meta 15 visemes", dir / "map_oculus.csv"},
+        {"mpeg4", "MPEG-4 FBA visemes (15 incl. none)", dir / "map_mpeg4.csv"},
+        {"rhubarb", "Preston Blair / Rhubarb mouth shapes A-H, X", dir / "map_rhubarb.csv"},
+        {"sample-face", "Bundled sample face (Oculus names)", dir / "map_sample_face.csv"},
+    };
+}
+
+std::filesystem::path defaultPhonemeTablePath(const std::filesystem::path& assetsDir) {
+    return assetsDir / "phonemes" / "en-us_frequencies.csv";
+}
+
+} // namespace vl

@@ -1,0 +1,68 @@
+#include "PhoneticsTestSupport.h"
+#include "tests/app/CliRunner.h"
+
+#include "core/common/AtomicFile.h"
+#include "core/phonetics/PhonemeTableIO.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+using namespace vl;
+
+namespace {
+
+std::string quoted(const std::filesystem::path& path) { return "'" + path.string() + "'"; }
+
+} // namespace
+
+TEST(FreqCli, PrintsAndWritesTheTable) {
+    test::ScratchDir dir("cli");
+    const auto corpus = dir.write("corpus.txt", "The cat sat on the mat.\nA boy sings; the judge measures the house.\n");
+    const auto csv = dir.path() / "table.csv";
+    const auto result = test::runCli("freq " + quoted(corpus) + " --out " + quoted(csv));
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_NE(result.output.find("AH       ʌ              6    16.22 %"), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find("37 phonemes"), std::string::npos) << result.output;
+    const auto table = loadPhonemeTable(csv);
+    ASSERT_EQ(table.entries.size(), 39u);
+    EXPECT_EQ(table.entries[0], (std::pair<std::string, double>{"AH", 6}));
+}
+
+TEST(FreqCli, JsonWithMapFeedsTheReducer) {
+    test::ScratchDir dir("cli-json");
+    const auto corpus = dir.write("corpus.txt", "Four poor fire fighters came at noon.");
+    const auto json = dir.path() / "table.json";
+    const auto map = test::assetsDir() / "phonemes" / "map_oculus.csv";
+    const auto result =
+        test::runCli("freq " + quoted(corpus) + " --voice en-us --quiet --map " + quoted(map) + " --out " + quoted(json));
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    const FrequencySource source = loadFrequencyFile(json);
+    ASSERT_TRUE(source.isPhonemeBased());
+    EXPECT_EQ(source.map.entries.size(), 39u);
+    EXPECT_EQ(nlohmann::json::parse(readFileToString(json))["voice"], "en-us");
+}
+
+TEST(FreqCli, BadInputGetsExitCodesAndNamesTheFile) {
+    test::ScratchDir dir("cli-bad");
+    const auto empty = dir.write("empty.txt", "");
+    auto result = test::runCli("freq " + quoted(empty));
+    EXPECT_EQ(result.exitCode, 3);
+    EXPECT_NE(result.output.find("empty.txt: empty file"), std::string::npos) << result.output;
+
+    const auto binary = dir.write("blob.bin", std::string("\x7F" "ELF\x02\x01\x01\0\0\0\0\0\0\0\0\0", 16));
+    result = test::runCli("freq " + quoted(binary));
+    EXPECT_EQ(result.exitCode, 3);
+    EXPECT_NE(result.output.find("blob.bin: binary file"), std::string::npos) << result.output;
+
+    const auto corpus = dir.write("ok.txt", "hello world");
+    result = test::runCli("freq " + quoted(corpus) + " --voice xx-none");
+    EXPECT_EQ(result.exitCode, 3);
+    EXPECT_NE(result.output.find("xx-none"), std::string::npos) << result.output;
+
+    const auto map = test::assetsDir() / "phonemes" / "map_oculus.csv";
+    result = test::runCli("freq " + quoted(corpus) + " --map " + quoted(map) + " --out " + quoted(dir.path() / "t.csv"));
+    EXPECT_EQ(result.exitCode, 2) << result.output;
+
+    result = test::runCli("freq");
+    EXPECT_EQ(result.exitCode, 2) << result.output;
+}
