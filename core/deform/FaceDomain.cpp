@@ -10,11 +10,14 @@
 namespace vl::face {
 
 double mouthHoleHalfHeight(double u) {
-    return kMouthHalfHeight * std::max(0.0, 1.0 - std::abs(u - kMouthU) / kMouthHalfWidth);
+    // The tolerance makes the corners exactly 0 although 0.5 - 0.1 is not exact in binary.
+    const double t = std::abs(u - kMouthU) / kMouthHalfWidth;
+    return t >= 1.0 - 1e-12 ? 0.0 : kMouthHalfHeight * (1.0 - t);
 }
 
 bool insideMouthHole(double u, double v) {
-    return std::abs(v - kMouthV) < mouthHoleHalfHeight(u);
+    // The tolerance keeps rim vertices (computed as kMouthV -/+ half-height) outside despite rounding.
+    return std::abs(v - kMouthV) < mouthHoleHalfHeight(u) - 1e-12;
 }
 
 namespace {

@@ -1,0 +1,64 @@
+#include "core/deform/FaceDomain.h"
+#include "core/io/MeshIO.h"
+#include "core/reduce/VisemeSet.h"
+#include "tests/app/CliRunner.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+
+namespace vl {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path freshDir(const std::string& name) {
+    const auto dir = fs::temp_directory_path() / ("visemelab_" + name);
+    fs::remove_all(dir);
+    return dir;
+}
+
+TEST(CliVisemes, WritesAnInterpolableSetAndItsParameterVectors) {
+    const auto dir = freshDir("cli_visemes");
+    const auto r =
+        test::runCli("visemes --face retarget --resolution 14 --density uniform --out " + dir.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const auto files = listVisemeFolder(dir, dir / "neutral.obj");
+    ASSERT_EQ(files.size(), 15u);
+    const VisemeSet set = loadVisemeSet(dir / "neutral.obj", files);
+    EXPECT_EQ(set.neutral.triangles, face::faceDomainMesh(14).triangles);
+    std::ifstream in(dir / "visemes.json");
+    const auto j = nlohmann::json::parse(in);
+    EXPECT_EQ(j["face"], "retarget");
+    EXPECT_EQ(j["visemes"].size(), 15u);
+    EXPECT_EQ(j["visemes"][10]["name"], "aa");
+    EXPECT_EQ(j["visemes"][10]["parameters"]["jaw_open"], 1.0);
+    EXPECT_EQ(j["vertices"], set.vertexCount());
+    fs::remove_all(dir);
+}
+
+TEST(CliVisemes, RejectsBadOptions) {
+    EXPECT_EQ(test::runCli("visemes --face alien --out /tmp/x").exitCode, 3);
+    EXPECT_EQ(test::runCli("visemes --resolution 3 --out /tmp/x").exitCode, 3);
+    EXPECT_EQ(test::runCli("visemes --density foo --out /tmp/x").exitCode, 3);
+    EXPECT_EQ(test::runCli("visemes --resolution abc").exitCode, 2);
+}
+
+TEST(CliRender, WritesAPngOfAMesh) {
+    const auto dir = freshDir("cli_render");
+    ASSERT_EQ(test::runCli("visemes --resolution 12 --out " + dir.string()).exitCode, 0);
+    const auto png = dir / "aa.png";
+    const auto r = test::runCli("render " + (dir / "aa.obj").string() + " --out " + png.string() +
+                                " --size 64x48 --wireframe --face-colours --yaw 20");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_GT(fs::file_size(png), 100u);
+    EXPECT_EQ(test::runCli("render " + (dir / "aa.obj").string() + " --out x.png --size 64").exitCode, 3);
+    EXPECT_EQ(test::runCli("render " + (dir / "missing.obj").string() + " --out x.png").exitCode, 3);
+    EXPECT_EQ(test::runCli("render").exitCode, 2);
+    fs::remove_all(dir);
+}
+
+} // namespace
+} // namespace vl
