@@ -18,7 +18,9 @@ constexpr double kMaxSuspiciousShare = 0.10;
 // The share is judged once this many bytes were seen (or at the end of a shorter file).
 constexpr std::uint64_t kMinBytesToJudge = 4096;
 
-bool isContinuation(unsigned char c) { return (c & 0xC0) == 0x80; }
+bool isContinuation(unsigned char c) {
+    return (c & 0xC0) == 0x80;
+}
 
 // Length of the well-formed UTF-8 sequence starting at text[i] (RFC 3629: no overlongs, no
 // surrogates, nothing above U+10FFFF), or 0 when the bytes there are not one.
@@ -28,7 +30,8 @@ std::size_t utf8SequenceLength(std::string_view text, std::size_t i) {
     if (c < 0x80) return 1;
     std::size_t length = 0;
     unsigned char low = 0x80, high = 0xBF; // allowed range of the second byte
-    if (c >= 0xC2 && c <= 0xDF) length = 2;
+    if (c >= 0xC2 && c <= 0xDF)
+        length = 2;
     else if (c >= 0xE0 && c <= 0xEF) {
         length = 3;
         if (c == 0xE0) low = 0xA0;
@@ -51,14 +54,18 @@ bool isControl(unsigned char c) {
     return (c < 0x20 && c != '\t' && c != '\n' && c != '\v' && c != '\f' && c != '\r') || c == 0x7F;
 }
 
-bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f'; }
+bool isSpace(char c) {
+    return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f';
+}
 
-bool endsClause(char c) { return c == '.' || c == '!' || c == '?' || c == ';' || c == ':'; }
+bool endsClause(char c) {
+    return c == '.' || c == '!' || c == '?' || c == ';' || c == ':';
+}
 
 // Collects bytes and hands them on in pieces cut at clause or word boundaries, checking that
 // they are text on the way.
 class CorpusChunker {
-public:
+  public:
     CorpusChunker(std::string_view source, std::uint64_t totalBytes, std::size_t chunkBytes,
                   const CorpusChunkFn& fn)
         : source_(source), total_(totalBytes), chunkBytes_(chunkBytes < 16 ? 16 : chunkBytes), fn_(fn) {}
@@ -75,7 +82,7 @@ public:
         return stats_;
     }
 
-private:
+  private:
     // Where to cut pending_: after the last clause end or blank line in its second half, else
     // after its last line break or space, else (one giant word) at a character boundary.
     std::size_t cutPosition() const {
@@ -117,10 +124,11 @@ private:
         stats_.bytes += chunk.size() - start;
         stats_.replacedBytes += suspicious;
         if ((last || stats_.bytes >= kMinBytesToJudge) &&
-            static_cast<double>(stats_.replacedBytes) > kMaxSuspiciousShare * static_cast<double>(stats_.bytes)) {
+            static_cast<double>(stats_.replacedBytes) >
+                kMaxSuspiciousShare * static_cast<double>(stats_.bytes)) {
             const auto percent = 100 * stats_.replacedBytes / stats_.bytes;
-            throwInputError(source_, "binary file, not UTF-8 text (" + std::to_string(percent) + "% of the first " +
-                                         std::to_string(stats_.bytes) +
+            throwInputError(source_, "binary file, not UTF-8 text (" + std::to_string(percent) +
+                                         "% of the first " + std::to_string(stats_.bytes) +
                                          " bytes are invalid UTF-8 or control characters)");
         }
         fn_(std::string_view(chunk).substr(start), offset_, total_);
@@ -169,8 +177,7 @@ CorpusStats forEachCorpusChunk(const std::filesystem::path& path, const CorpusCh
 CorpusStats forEachTextChunk(std::string_view text, std::string_view source, const CorpusChunkFn& chunk,
                              std::size_t chunkBytes) {
     CorpusChunker chunker(source, text.size(), chunkBytes, chunk);
-    for (std::size_t at = 0; at < text.size(); at += chunkBytes)
-        chunker.push(text.substr(at, chunkBytes));
+    for (std::size_t at = 0; at < text.size(); at += chunkBytes) chunker.push(text.substr(at, chunkBytes));
     return chunker.finish();
 }
 

@@ -16,7 +16,8 @@ struct CorpusStats {
 
 // chunk: text of one piece (valid UTF-8); bytesDone / bytesTotal for progress (bytesTotal is 0
 // when the size is unknown, e.g. for a pipe).
-using CorpusChunkFn = std::function<void(std::string_view chunk, std::uint64_t bytesDone, std::uint64_t bytesTotal)>;
+using CorpusChunkFn =
+    std::function<void(std::string_view chunk, std::uint64_t bytesDone, std::uint64_t bytesTotal)>;
 
 constexpr std::size_t kDefaultCorpusChunkBytes = 64 * 1024;
 

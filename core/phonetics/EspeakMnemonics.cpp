@@ -17,101 +17,101 @@ struct MnemonicRule {
 // Every mnemonic of espeak-ng's en and en-us phoneme tables (plus the base-table consonants they
 // use). The IPA in the comments is what espeak-ng 1.51 writes for en-us.
 constexpr MnemonicRule kRules[] = {
-    {"0", {"AA", ""}},        // ɑː lot (ɒ in British voices)
-    {"0#", {"AA", ""}},       // unstressed o that may reduce
-    {"02", {"AH", ""}},       // becomes ʌ in en-us
-    {"3", {"ER", ""}},        // ɚ butter
-    {"3:", {"ER", ""}},       // ɜː (r-coloured in en-us) bird
-    {"?", {"T", ""}},         // ʔ glottal stop, an allophone of /t/ (button)
-    {"@", {"AH", ""}},        // ə
-    {"@#", {"AH", ""}},       // fronted ə
-    {"@-", {"AH", ""}, true}, // optional ə (nation-al); espeak drops it before r
-    {"@2", {"AH", ""}},       // ə of "the"
-    {"@5", {"AH", ""}},       // ə of "to"
-    {"@L", {"AH", "L"}},      // əl syllabic l (little)
-    {"A#", {"AE", ""}},       // a in British, used for bath words
-    {"A:", {"AA", ""}},       // ɑː father
-    {"A@", {"AA", "R"}},      // ɑːɹ car
-    {"A~", {"AA", ""}},       // nasal ɑ̃ (French loans)
-    {"D", {"DH", ""}},        // ð
-    {"E", {"EH", ""}},        // ɛ
-    {"E#", {"EH", ""}},       // ɛ that may reduce
-    {"E2", {"EH", ""}},       // ɛ that does not reduce
-    {"I", {"IH", ""}},        // ɪ
-    {"I#", {"IH", ""}},       // ᵻ roses, wanted (en-us)
-    {"I2", {"IH", ""}},       // ɪ unstressed (intend)
-    {"I2#", {"IH", ""}},      // ɪ of -ed adjectives
-    {"IR", {"ER", ""}},       // əɹ (Scottish split 3:)
-    {"N", {"NG", ""}},        // ŋ
-    {"O", {"AO", ""}},        // ɔ
-    {"O2", {"AO", ""}},       // ɔ off, cloth (en-us)
-    {"O:", {"AO", ""}},       // ɔː thought
-    {"O@", {"AO", "R"}},      // ɔːɹ for
-    {"OI", {"OY", ""}},       // ɔɪ boy
-    {"O~", {"AO", ""}},       // nasal ɔ̃ (French loans)
-    {"S", {"SH", ""}},        // ʃ
-    {"T", {"TH", ""}},        // θ
-    {"U", {"UH", ""}},        // ʊ
-    {"U@", {"UH", "R"}},      // ʊɹ poor
-    {"V", {"AH", ""}},        // ʌ
-    {"VR", {"ER", ""}},       // ʌɹ (Scottish split 3:)
-    {"Z", {"ZH", ""}},        // ʒ
-    {"a", {"AE", ""}},        // æ
-    {"a#", {"AH", ""}},       // ɐ about, a
-    {"a#2", {"AH", ""}},      // "an"
-    {"a2", {"AE", ""}},       // æ that does not reduce
-    {"aI", {"AY", ""}},       // aɪ
-    {"aI3", {"AY", "ER"}},    // aɪɚ fire
+    {"0", {"AA", ""}},           // ɑː lot (ɒ in British voices)
+    {"0#", {"AA", ""}},          // unstressed o that may reduce
+    {"02", {"AH", ""}},          // becomes ʌ in en-us
+    {"3", {"ER", ""}},           // ɚ butter
+    {"3:", {"ER", ""}},          // ɜː (r-coloured in en-us) bird
+    {"?", {"T", ""}},            // ʔ glottal stop, an allophone of /t/ (button)
+    {"@", {"AH", ""}},           // ə
+    {"@#", {"AH", ""}},          // fronted ə
+    {"@-", {"AH", ""}, true},    // optional ə (nation-al); espeak drops it before r
+    {"@2", {"AH", ""}},          // ə of "the"
+    {"@5", {"AH", ""}},          // ə of "to"
+    {"@L", {"AH", "L"}},         // əl syllabic l (little)
+    {"A#", {"AE", ""}},          // a in British, used for bath words
+    {"A:", {"AA", ""}},          // ɑː father
+    {"A@", {"AA", "R"}},         // ɑːɹ car
+    {"A~", {"AA", ""}},          // nasal ɑ̃ (French loans)
+    {"D", {"DH", ""}},           // ð
+    {"E", {"EH", ""}},           // ɛ
+    {"E#", {"EH", ""}},          // ɛ that may reduce
+    {"E2", {"EH", ""}},          // ɛ that does not reduce
+    {"I", {"IH", ""}},           // ɪ
+    {"I#", {"IH", ""}},          // ᵻ roses, wanted (en-us)
+    {"I2", {"IH", ""}},          // ɪ unstressed (intend)
+    {"I2#", {"IH", ""}},         // ɪ of -ed adjectives
+    {"IR", {"ER", ""}},          // əɹ (Scottish split 3:)
+    {"N", {"NG", ""}},           // ŋ
+    {"O", {"AO", ""}},           // ɔ
+    {"O2", {"AO", ""}},          // ɔ off, cloth (en-us)
+    {"O:", {"AO", ""}},          // ɔː thought
+    {"O@", {"AO", "R"}},         // ɔːɹ for
+    {"OI", {"OY", ""}},          // ɔɪ boy
+    {"O~", {"AO", ""}},          // nasal ɔ̃ (French loans)
+    {"S", {"SH", ""}},           // ʃ
+    {"T", {"TH", ""}},           // θ
+    {"U", {"UH", ""}},           // ʊ
+    {"U@", {"UH", "R"}},         // ʊɹ poor
+    {"V", {"AH", ""}},           // ʌ
+    {"VR", {"ER", ""}},          // ʌɹ (Scottish split 3:)
+    {"Z", {"ZH", ""}},           // ʒ
+    {"a", {"AE", ""}},           // æ
+    {"a#", {"AH", ""}},          // ɐ about, a
+    {"a#2", {"AH", ""}},         // "an"
+    {"a2", {"AE", ""}},          // æ that does not reduce
+    {"aI", {"AY", ""}},          // aɪ
+    {"aI3", {"AY", "ER"}},       // aɪɚ fire
     {"aI@", {"AY", "AH"}, true}, // aɪə science
-    {"aU", {"AW", ""}},       // aʊ
-    {"aU@", {"AW", "ER"}},    // aʊɚ hour
-    {"aa", {"AE", ""}},       // æ bath, ask (en-us)
+    {"aU", {"AW", ""}},          // aʊ
+    {"aU@", {"AW", "ER"}},       // aʊɚ hour
+    {"aa", {"AE", ""}},          // æ bath, ask (en-us)
     {"b", {"B", ""}},
     {"d", {"D", ""}},
-    {"d#", {"D", ""}},        // past tense -d
-    {"dZ", {"JH", ""}},       // dʒ
-    {"e#", {"EH", ""}},       // ɛ explore
-    {"e:", {"EY", ""}},       // e: (loans)
-    {"e@", {"EH", "R"}},      // ɛɹ care
-    {"eI", {"EY", ""}},       // eɪ
+    {"d#", {"D", ""}},   // past tense -d
+    {"dZ", {"JH", ""}},  // dʒ
+    {"e#", {"EH", ""}},  // ɛ explore
+    {"e:", {"EY", ""}},  // e: (loans)
+    {"e@", {"EH", "R"}}, // ɛɹ care
+    {"eI", {"EY", ""}},  // eɪ
     {"f", {"F", ""}},
     {"g", {"G", ""}},
     {"h", {"HH", ""}},
-    {"i", {"IY", ""}},        // i happy
-    {"i:", {"IY", ""}},       // iː
+    {"i", {"IY", ""}},          // i happy
+    {"i:", {"IY", ""}},         // iː
     {"i@", {"IY", "AH"}, true}, // iə idea; IY before r (zero)
-    {"i@3", {"IH", "R"}},     // ɪɹ fear
+    {"i@3", {"IH", "R"}},       // ɪɹ fear
     {"j", {"Y", ""}},
     {"k", {"K", ""}},
     {"l", {"L", ""}},
-    {"l-", {"AH", "L"}},      // syllabic l
+    {"l-", {"AH", "L"}}, // syllabic l
     {"m", {"M", ""}},
-    {"m-", {"AH", "M"}},      // syllabic m
+    {"m-", {"AH", "M"}}, // syllabic m
     {"n", {"N", ""}},
-    {"n-", {"AH", "N"}},      // n̩ button
-    {"o:", {"OW", ""}},       // o: (loans)
-    {"o@", {"AO", "R"}},      // oːɹ four
-    {"oU", {"OW", ""}},       // oʊ
-    {"oU#", {"OW", ""}},      // o that may reduce (going)
+    {"n-", {"AH", "N"}}, // n̩ button
+    {"o:", {"OW", ""}},  // o: (loans)
+    {"o@", {"AO", "R"}}, // oːɹ four
+    {"oU", {"OW", ""}},  // oʊ
+    {"oU#", {"OW", ""}}, // o that may reduce (going)
     {"p", {"P", ""}},
     {"r", {"R", ""}},
-    {"r-", {"R", ""}},        // linking r
+    {"r-", {"R", ""}}, // linking r
     {"r/", {"R", ""}},
     {"s", {"S", ""}},
     {"t", {"T", ""}},
-    {"t#", {"T", ""}},        // ɾ flap (city, water); T as in CMUdict
-    {"t2", {"T", ""}},        // t that does not reduce
-    {"tS", {"CH", ""}},       // tʃ
-    {"u:", {"UW", ""}},       // uː
+    {"t#", {"T", ""}},  // ɾ flap (city, water); T as in CMUdict
+    {"t2", {"T", ""}},  // t that does not reduce
+    {"tS", {"CH", ""}}, // tʃ
+    {"u:", {"UW", ""}}, // uː
     {"v", {"V", ""}},
     {"w", {"W", ""}},
-    {"w#", {"W", ""}},        // ʍ which (Scottish)
-    {"x", {"K", ""}},         // x loch, Bach: K as in CMUdict
+    {"w#", {"W", ""}}, // ʍ which (Scottish)
+    {"x", {"K", ""}},  // x loch, Bach: K as in CMUdict
     {"z", {"Z", ""}},
-    {"z#", {"Z", ""}},        // plural -s
-    {"z/2", {"Z", ""}},       // 's suffix
-    {"N-", {"AH", "NG"}},     // syllabic ŋ (base table)
-    {"R", {"R", ""}},         // base-table r variants
+    {"z#", {"Z", ""}},    // plural -s
+    {"z/2", {"Z", ""}},   // 's suffix
+    {"N-", {"AH", "NG"}}, // syllabic ŋ (base table)
+    {"R", {"R", ""}},     // base-table r variants
     {"r.", {"R", ""}},
     {"w/", {"W", ""}},
 };
@@ -127,8 +127,8 @@ const MnemonicRule* findRule(std::string_view mnemonic) {
 }
 
 std::string_view stripStress(std::string_view token) {
-    while (!token.empty() && (token.front() == '\'' || token.front() == ',' || token.front() == '%' ||
-                              token.front() == '='))
+    while (!token.empty() &&
+           (token.front() == '\'' || token.front() == ',' || token.front() == '%' || token.front() == '='))
         token.remove_prefix(1);
     return token;
 }
@@ -138,7 +138,9 @@ bool isMarker(std::string_view m) {
     return m.empty() || m.front() == '_' || m == ";" || m == ":" || m == "-" || m == "|" || m == "||";
 }
 
-bool isRhotic(std::string_view m) { return m == "r" || m == "r-" || m == "r/"; }
+bool isRhotic(std::string_view m) {
+    return m == "r" || m == "r-" || m == "r/";
+}
 
 } // namespace
 

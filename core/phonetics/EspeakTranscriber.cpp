@@ -31,7 +31,8 @@ void ensureInitialised() {
     if (initialised) return;
     // DONT_EXIT: without it espeak-ng calls exit() when its data files are missing.
     if (espeak_Initialize(AUDIO_OUTPUT_SYNCHRONOUS, 0, nullptr, espeakINITIALIZE_DONT_EXIT) < 0)
-        throw std::runtime_error("espeak-ng could not be initialised (is the espeak-ng-data package installed?)");
+        throw std::runtime_error(
+            "espeak-ng could not be initialised (is the espeak-ng-data package installed?)");
     initialised = true;
 }
 
@@ -62,7 +63,7 @@ std::vector<std::string_view> split(std::string_view text, char separator) {
 }
 
 class EspeakTranscriber final : public PhonemeTranscriber {
-public:
+  public:
     explicit EspeakTranscriber(std::string voice) : voice_(std::move(voice)) {
         std::lock_guard lock(engineMutex());
         ensureInitialised();
@@ -97,7 +98,7 @@ public:
     PhonemeNotation notation() const override { return notation_; }
     const std::map<std::string, std::size_t>& skippedSymbols() const override { return skipped_; }
 
-private:
+  private:
     std::string voice_;
     PhonemeNotation notation_ = PhonemeNotation::Arpabet;
     std::map<std::string, std::size_t> skipped_;

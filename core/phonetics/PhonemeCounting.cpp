@@ -11,15 +11,19 @@ namespace {
 
 using Counter = std::map<std::string, std::uint64_t>;
 
-CorpusChunkFn countingChunkFn(PhonemeTranscriber& transcriber, Counter& counts, const CountProgressFn& progress) {
-    return [&transcriber, &counts, &progress](std::string_view chunk, std::uint64_t done, std::uint64_t total) {
-        for (const auto& phoneme : transcriber.transcribe(chunk)) ++counts[phoneme];
-        if (progress) progress(done, total);
-    };
+CorpusChunkFn countingChunkFn(PhonemeTranscriber& transcriber, Counter& counts,
+                              const CountProgressFn& progress) {
+    return
+        [&transcriber, &counts, &progress](std::string_view chunk, std::uint64_t done, std::uint64_t total) {
+            for (const auto& phoneme : transcriber.transcribe(chunk)) ++counts[phoneme];
+            if (progress) progress(done, total);
+        };
 }
 
-PhonemeCountResult finishCount(const Counter& counts, const CorpusStats& corpus, PhonemeTranscriber& transcriber,
-                               const std::map<std::string, std::size_t>& skippedBefore, std::string_view source) {
+PhonemeCountResult finishCount(const Counter& counts, const CorpusStats& corpus,
+                               PhonemeTranscriber& transcriber,
+                               const std::map<std::string, std::size_t>& skippedBefore,
+                               std::string_view source) {
     PhonemeCountResult result;
     result.notation = transcriber.notation();
     result.corpus = corpus;
@@ -37,7 +41,8 @@ PhonemeCountResult finishCount(const Counter& counts, const CorpusStats& corpus,
 
 } // namespace
 
-FrequencyTable sortedCountTable(const std::map<std::string, std::uint64_t>& counts, PhonemeNotation notation) {
+FrequencyTable sortedCountTable(const std::map<std::string, std::uint64_t>& counts,
+                                PhonemeNotation notation) {
     std::vector<std::pair<std::string, std::uint64_t>> rows(counts.begin(), counts.end());
     if (notation == PhonemeNotation::Arpabet)
         for (const auto& phoneme : arpabetInventory())
@@ -46,7 +51,8 @@ FrequencyTable sortedCountTable(const std::map<std::string, std::uint64_t>& coun
         return a.second != b.second ? a.second > b.second : a.first < b.first;
     });
     FrequencyTable table;
-    for (auto& [phoneme, count] : rows) table.entries.emplace_back(std::move(phoneme), static_cast<double>(count));
+    for (auto& [phoneme, count] : rows)
+        table.entries.emplace_back(std::move(phoneme), static_cast<double>(count));
     return table;
 }
 

@@ -17,12 +17,14 @@ std::string joinList(const std::vector<std::string>& names) {
 
 } // namespace
 
-void checkMapCovers(const PhonemeVisemeMap& map, std::span<const std::string> phonemes, std::string_view where) {
+void checkMapCovers(const PhonemeVisemeMap& map, std::span<const std::string> phonemes,
+                    std::string_view where) {
     std::vector<std::string> unmapped;
     for (const auto& phoneme : phonemes)
         if (!map.visemeOf(phoneme)) unmapped.push_back(phoneme);
     if (!unmapped.empty())
-        throwInputError(where, std::to_string(unmapped.size()) + " phoneme" + (unmapped.size() == 1 ? "" : "s") +
+        throwInputError(where, std::to_string(unmapped.size()) + " phoneme" +
+                                   (unmapped.size() == 1 ? "" : "s") +
                                    " not mapped to any viseme: " + joinList(unmapped));
 }
 
@@ -30,10 +32,12 @@ void checkMapVisemes(const PhonemeVisemeMap& map, std::span<const std::string> v
                      std::string_view where) {
     std::vector<std::string> unknown;
     for (const auto& viseme : mapVisemeNames(map))
-        if (std::find(visemeNames.begin(), visemeNames.end(), viseme) == visemeNames.end()) unknown.push_back(viseme);
+        if (std::find(visemeNames.begin(), visemeNames.end(), viseme) == visemeNames.end())
+            unknown.push_back(viseme);
     if (!unknown.empty())
         throwInputError(where, "the map names visemes that are not in the viseme set: " + joinList(unknown) +
-                                   " (the set has " + joinList({visemeNames.begin(), visemeNames.end()}) + ")");
+                                   " (the set has " + joinList({visemeNames.begin(), visemeNames.end()}) +
+                                   ")");
 }
 
 void checkArpabetMap(const PhonemeVisemeMap& map, std::string_view where) {

@@ -13,10 +13,12 @@ namespace vl {
 
 // Throws InputError at `where` listing, in one message, every phoneme of `phonemes` the map
 // does not map.
-void checkMapCovers(const PhonemeVisemeMap& map, std::span<const std::string> phonemes, std::string_view where);
+void checkMapCovers(const PhonemeVisemeMap& map, std::span<const std::string> phonemes,
+                    std::string_view where);
 
 // Throws InputError at `where` listing every viseme the map names that is not in `visemeNames`.
-void checkMapVisemes(const PhonemeVisemeMap& map, std::span<const std::string> visemeNames, std::string_view where);
+void checkMapVisemes(const PhonemeVisemeMap& map, std::span<const std::string> visemeNames,
+                     std::string_view where);
 
 // An ARPAbet map must map all 39 phonemes and nothing else (a key outside the inventory is a typo).
 void checkArpabetMap(const PhonemeVisemeMap& map, std::string_view where);

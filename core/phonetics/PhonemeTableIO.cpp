@@ -27,8 +27,8 @@ std::size_t displayWidth(std::string_view text) {
     for (std::size_t i = 0; i < text.size(); ++i) {
         const auto c = static_cast<unsigned char>(text[i]);
         if ((c & 0xC0) == 0x80) continue;
-        const bool combining = c == 0xCC || (c == 0xCD && i + 1 < text.size() &&
-                                             static_cast<unsigned char>(text[i + 1]) < 0xB0);
+        const bool combining =
+            c == 0xCC || (c == 0xCD && i + 1 < text.size() && static_cast<unsigned char>(text[i + 1]) < 0xB0);
         if (!combining) ++width;
     }
     return width;
@@ -44,7 +44,9 @@ std::string padLeft(const std::string& text, std::size_t width) {
     return text.size() < width ? std::string(width - text.size(), ' ') + text : text;
 }
 
-bool isJson(const std::filesystem::path& path) { return path.extension() == ".json"; }
+bool isJson(const std::filesystem::path& path) {
+    return path.extension() == ".json";
+}
 
 } // namespace
 
@@ -81,7 +83,8 @@ std::string formatPhonemeTableJson(const FrequencyTable& table, const PhonemeTab
     relativeFrequencies(table, "phoneme table"); // refuses negative or all-zero tables
     using nlohmann::json;
     // Written by hand so that each [phoneme, count] pair and each map entry stays on one line.
-    std::string text = "{\n  \"voice\": " + json(info.voice).dump() + ",\n  \"source\": " + json(info.source).dump() +
+    std::string text = "{\n  \"voice\": " + json(info.voice).dump() +
+                       ",\n  \"source\": " + json(info.source).dump() +
                        ",\n  \"total\": " + formatDouble(table.total()) + ",\n  \"phonemes\": [";
     std::string ipa;
     for (std::size_t i = 0; i < table.entries.size(); ++i) {
@@ -112,14 +115,15 @@ std::string formatPhonemeTableText(const FrequencyTable& table) {
     return text;
 }
 
-void savePhonemeTable(const std::filesystem::path& path, const FrequencyTable& table, const PhonemeTableInfo& info,
-                      const PhonemeVisemeMap* map) {
+void savePhonemeTable(const std::filesystem::path& path, const FrequencyTable& table,
+                      const PhonemeTableInfo& info, const PhonemeVisemeMap* map) {
     const auto extension = path.extension();
     if (extension != ".csv" && extension != ".json")
         throwInputError(path.string(), "unknown table format: the file name must end in .csv or .json");
     if (map && !isJson(path))
-        throwInputError(path.string(), "a CSV table cannot hold the phoneme map; write .json, or keep the map "
-                                       "in its own file");
+        throwInputError(path.string(),
+                        "a CSV table cannot hold the phoneme map; write .json, or keep the map "
+                        "in its own file");
     writeFileAtomically(path, isJson(path) ? formatPhonemeTableJson(table, info, map)
                                            : formatPhonemeTableCsv(table));
 }
@@ -135,7 +139,8 @@ FrequencySource loadPhonemeFrequencySource(const std::filesystem::path& tablePat
     if (!source.isPhonemeBased()) std::swap(source.phonemes, source.visemeFrequencies);
     if (!mapPath.empty()) source.map = loadPhonemeMapFile(mapPath);
     if (source.map.entries.empty())
-        throwInputError(tablePath.string(), "no phoneme -> viseme map: give a map file (assets/phonemes/map_*.csv)");
+        throwInputError(tablePath.string(),
+                        "no phoneme -> viseme map: give a map file (assets/phonemes/map_*.csv)");
     std::vector<std::string> phonemes;
     for (const auto& [phoneme, value] : source.phonemes.entries) phonemes.push_back(phoneme);
     checkMapCovers(source.map, phonemes, (mapPath.empty() ? tablePath : mapPath).string());

@@ -33,8 +33,8 @@ std::string formatPhonemeTableJson(const FrequencyTable& table, const PhonemeTab
 std::string formatPhonemeTableText(const FrequencyTable& table);
 
 // Writes CSV or JSON by the extension (.csv / .json), atomically. A map needs JSON.
-void savePhonemeTable(const std::filesystem::path& path, const FrequencyTable& table, const PhonemeTableInfo& info,
-                      const PhonemeVisemeMap* map = nullptr);
+void savePhonemeTable(const std::filesystem::path& path, const FrequencyTable& table,
+                      const PhonemeTableInfo& info, const PhonemeVisemeMap* map = nullptr);
 
 // Reads a table written by savePhonemeTable (or any "phoneme,frequency" CSV / phoneme JSON).
 FrequencyTable loadPhonemeTable(const std::filesystem::path& path);

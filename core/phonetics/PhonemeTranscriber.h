@@ -13,7 +13,7 @@ namespace vl {
 enum class PhonemeNotation { Arpabet, Ipa };
 
 class PhonemeTranscriber {
-public:
+  public:
     virtual ~PhonemeTranscriber() = default;
 
     // The phonemes of `text` (UTF-8) in reading order; pauses and punctuation produce none.

@@ -21,12 +21,13 @@ struct Collected {
 };
 
 CorpusChunkFn collectInto(Collected& collected) {
-    return [&collected](std::string_view chunk, std::uint64_t, std::uint64_t) { collected.chunks.emplace_back(chunk); };
+    return [&collected](std::string_view chunk, std::uint64_t, std::uint64_t) {
+        collected.chunks.emplace_back(chunk);
+    };
 }
 
 // Expects an InputError whose message names `source` and contains `phrase`.
-template <typename Fn>
-void expectInputError(Fn fn, const std::string& source, const std::string& phrase) {
+template <typename Fn> void expectInputError(Fn fn, const std::string& source, const std::string& phrase) {
     try {
         fn();
         FAIL() << "expected InputError about " << phrase;
@@ -38,8 +39,8 @@ void expectInputError(Fn fn, const std::string& source, const std::string& phras
 }
 
 std::string randomProse(std::mt19937& rng, std::size_t words) {
-    const char* vocabulary[] = {"the", "cat", "sat", "on", "mat", "über", "naïve", "zoë", "boy", "house",
-                                "sing", "judge", "measure", "a", "thought"};
+    const char* vocabulary[] = {"the", "cat",   "sat",  "on",    "mat",     "über", "naïve",  "zoë",
+                                "boy", "house", "sing", "judge", "measure", "a",    "thought"};
     const char* separators[] = {" ", " ", " ", ", ", ". ", "! ", "\n", "\n\n", "; ", "  "};
     std::string text;
     for (std::size_t i = 0; i < words; ++i) {
@@ -107,7 +108,8 @@ TEST(CorpusText, EmptyAndBlankFilesAreErrorsNamingTheFile) {
     const auto nothing = [](std::string_view, std::uint64_t, std::uint64_t) {};
     expectInputError([&] { forEachCorpusChunk(empty, nothing); }, "empty.txt", "empty file");
     expectInputError([&] { forEachCorpusChunk(blank, nothing); }, "blank.txt", "only white space");
-    expectInputError([&] { forEachCorpusChunk(dir.path() / "missing.txt", nothing); }, "missing.txt", "not found");
+    expectInputError([&] { forEachCorpusChunk(dir.path() / "missing.txt", nothing); }, "missing.txt",
+                     "not found");
     expectInputError([&] { forEachCorpusChunk(dir.path(), nothing); }, dir.path().string(), "directory");
 }
 
@@ -125,17 +127,20 @@ TEST(CorpusText, BinaryFilesAreErrorsNamingTheFile) {
     for (int i = 0; i < 100000; ++i) noise += static_cast<char>(0x80 + rng() % 0x80); // mostly invalid UTF-8
     expectInputError([&] { forEachCorpusChunk(dir.write("noise.dat", noise), nothing); }, "noise.dat",
                      "binary file");
-    expectInputError([&] { forEachCorpusChunk(dir.write("utf16.txt", std::string("\xFF\xFEh\0i\0", 6)), nothing); },
-                     "utf16.txt", "UTF-16");
+    expectInputError(
+        [&] { forEachCorpusChunk(dir.write("utf16.txt", std::string("\xFF\xFEh\0i\0", 6)), nothing); },
+        "utf16.txt", "UTF-16");
     // Too many control characters is binary too, even without NUL or invalid UTF-8.
-    expectInputError([&] { forEachCorpusChunk(dir.write("ctrl.txt", std::string(50, '\x01') + "text"), nothing); },
-                     "ctrl.txt", "binary file");
+    expectInputError(
+        [&] { forEachCorpusChunk(dir.write("ctrl.txt", std::string(50, '\x01') + "text"), nothing); },
+        "ctrl.txt", "binary file");
 }
 
 TEST(CorpusText, StrayLatin1BytesAreReplacedNotFatal) {
     test::ScratchDir dir("latin1");
     std::string text;
-    for (int i = 0; i < 200; ++i) text += "A caf\xE9 in the old town, and a na\xEFve reader.\n"; // Latin-1 é, ï
+    for (int i = 0; i < 200; ++i)
+        text += "A caf\xE9 in the old town, and a na\xEFve reader.\n"; // Latin-1 é, ï
     Collected collected;
     const auto stats = forEachCorpusChunk(dir.write("latin1.txt", text), collectInto(collected));
     EXPECT_EQ(stats.replacedBytes, 400u);

@@ -1,5 +1,5 @@
-#include "core/phonetics/Arpabet.h"
 #include "core/phonetics/EspeakMnemonics.h"
+#include "core/phonetics/Arpabet.h"
 
 #include <gtest/gtest.h>
 
@@ -34,29 +34,29 @@ TEST(EspeakMnemonics, StressMarksAreDropped) {
 }
 
 TEST(EspeakMnemonics, RColouredVowelsAbsorbTheFollowingR) {
-    EXPECT_EQ(toArpabet("k 'A@"), "K AA R");               // car
-    EXPECT_EQ(toArpabet("f 'o@"), "F AO R");               // four
-    EXPECT_EQ(toArpabet("p 'U@ r-"), "P UH R");            // poor + linking r
-    EXPECT_EQ(toArpabet("b 'e@ r I N"), "B EH R IH NG");   // bearing: one R, not two
-    EXPECT_EQ(toArpabet("p 'eI p 3 r-"), "P EY P ER");     // paper + linking r
-    EXPECT_EQ(toArpabet("h '3: r i"), "HH ER IY");         // hurry
-    EXPECT_EQ(toArpabet("f 'aI3 r-"), "F AY ER");          // fire
-    EXPECT_EQ(toArpabet("'aU 3 r-"), "AW ER");             // hour
-    EXPECT_EQ(toArpabet("m 'I r 3"), "M IH R ER");         // mirror: the r before 3 stays
-    EXPECT_EQ(toArpabet("f 'i@3"), "F IH R");              // fear
+    EXPECT_EQ(toArpabet("k 'A@"), "K AA R");             // car
+    EXPECT_EQ(toArpabet("f 'o@"), "F AO R");             // four
+    EXPECT_EQ(toArpabet("p 'U@ r-"), "P UH R");          // poor + linking r
+    EXPECT_EQ(toArpabet("b 'e@ r I N"), "B EH R IH NG"); // bearing: one R, not two
+    EXPECT_EQ(toArpabet("p 'eI p 3 r-"), "P EY P ER");   // paper + linking r
+    EXPECT_EQ(toArpabet("h '3: r i"), "HH ER IY");       // hurry
+    EXPECT_EQ(toArpabet("f 'aI3 r-"), "F AY ER");        // fire
+    EXPECT_EQ(toArpabet("'aU 3 r-"), "AW ER");           // hour
+    EXPECT_EQ(toArpabet("m 'I r 3"), "M IH R ER");       // mirror: the r before 3 stays
+    EXPECT_EQ(toArpabet("f 'i@3"), "F IH R");            // fear
 }
 
 TEST(EspeakMnemonics, OptionalSchwasAndCentringDiphthongsBeforeR) {
     EXPECT_EQ(toArpabet("'a v @- r I2 dZ"), "AE V R IH JH"); // average
     EXPECT_EQ(toArpabet("n 'a S @- n @L"), "N AE SH AH N AH L");
-    EXPECT_EQ(toArpabet("z 'i@ r oU"), "Z IY R OW");         // zero
-    EXPECT_EQ(toArpabet("aI d 'i@"), "AY D IY AH");          // idea
-    EXPECT_EQ(toArpabet("s 'aI@ n s"), "S AY AH N S");       // science
+    EXPECT_EQ(toArpabet("z 'i@ r oU"), "Z IY R OW");   // zero
+    EXPECT_EQ(toArpabet("aI d 'i@"), "AY D IY AH");    // idea
+    EXPECT_EQ(toArpabet("s 'aI@ n s"), "S AY AH N S"); // science
 }
 
 TEST(EspeakMnemonics, SyllabicConsonantsFlapsAndGlottalStops) {
-    EXPECT_EQ(toArpabet("b 'V ? n-"), "B AH T AH N");   // button
-    EXPECT_EQ(toArpabet("l 'I t# @L"), "L IH T AH L");  // little
+    EXPECT_EQ(toArpabet("b 'V ? n-"), "B AH T AH N");    // button
+    EXPECT_EQ(toArpabet("l 'I t# @L"), "L IH T AH L");   // little
     EXPECT_EQ(toArpabet("r 'oU z I# z"), "R OW Z IH Z"); // roses (ᵻ)
     EXPECT_EQ(toArpabet("D I2 ;"), "DH IH");             // ';' marks linking, no phoneme
 }
@@ -79,12 +79,12 @@ TEST(EspeakMnemonics, ForeignSymbolsAreSkippedAndCounted) {
 // normalise to inventory phonemes, so English text never loses a phoneme.
 TEST(EspeakMnemonics, EveryEnglishTableMnemonicMapsIntoTheInventory) {
     const char* mnemonics[] = {
-        "@", "3", "3:", "@2", "@5", "@L", "@#", "@-", "a", "a#", "a2", "a#2", "aa", "A:", "A@", "A#", "A~",
-        "E", "E#", "E2", "e:", "e#", "e@", "eI", "I", "I#", "I2", "I2#", "IR", "i", "i:", "i@", "i@3", "0",
-        "0#", "02", "O", "O:", "O2", "O~", "O@", "o@", "o:", "oU", "oU#", "OI", "V", "VR", "U", "U@", "u:",
-        "aU", "aU@", "aI", "aI@", "aI3", "p", "b", "t", "t#", "t2", "d", "d#", "k", "g", "?", "x", "f", "v",
-        "T", "D", "s", "z", "z#", "z/2", "S", "Z", "h", "m", "n", "N", "l", "r", "r-", "r/", "w", "w#", "j",
-        "tS", "dZ", "n-", "m-", "l-"};
+        "@",   "3",  "3:", "@2", "@5",  "@L", "@#",  "@-",  "a",  "a#", "a2",  "a#2", "aa",  "A:", "A@", "A#",
+        "A~",  "E",  "E#", "E2", "e:",  "e#", "e@",  "eI",  "I",  "I#", "I2",  "I2#", "IR",  "i",  "i:", "i@",
+        "i@3", "0",  "0#", "02", "O",   "O:", "O2",  "O~",  "O@", "o@", "o:",  "oU",  "oU#", "OI", "V",  "VR",
+        "U",   "U@", "u:", "aU", "aU@", "aI", "aI@", "aI3", "p",  "b",  "t",   "t#",  "t2",  "d",  "d#", "k",
+        "g",   "?",  "x",  "f",  "v",   "T",  "D",   "s",   "z",  "z#", "z/2", "S",   "Z",   "h",  "m",  "n",
+        "N",   "l",  "r",  "r-", "r/",  "w",  "w#",  "j",   "tS", "dZ", "n-",  "m-",  "l-"};
     for (const char* m : mnemonics) {
         std::map<std::string, std::size_t> skipped;
         std::vector<std::string> out;

@@ -11,13 +11,16 @@ using namespace vl;
 
 namespace {
 
-std::string quoted(const std::filesystem::path& path) { return "'" + path.string() + "'"; }
+std::string quoted(const std::filesystem::path& path) {
+    return "'" + path.string() + "'";
+}
 
 } // namespace
 
 TEST(FreqCli, PrintsAndWritesTheTable) {
     test::ScratchDir dir("cli");
-    const auto corpus = dir.write("corpus.txt", "The cat sat on the mat.\nA boy sings; the judge measures the house.\n");
+    const auto corpus =
+        dir.write("corpus.txt", "The cat sat on the mat.\nA boy sings; the judge measures the house.\n");
     const auto csv = dir.path() / "table.csv";
     const auto result = test::runCli("freq " + quoted(corpus) + " --out " + quoted(csv));
     ASSERT_EQ(result.exitCode, 0) << result.output;
@@ -33,8 +36,8 @@ TEST(FreqCli, JsonWithMapFeedsTheReducer) {
     const auto corpus = dir.write("corpus.txt", "Four poor fire fighters came at noon.");
     const auto json = dir.path() / "table.json";
     const auto map = test::assetsDir() / "phonemes" / "map_oculus.csv";
-    const auto result =
-        test::runCli("freq " + quoted(corpus) + " --voice en-us --quiet --map " + quoted(map) + " --out " + quoted(json));
+    const auto result = test::runCli("freq " + quoted(corpus) + " --voice en-us --quiet --map " +
+                                     quoted(map) + " --out " + quoted(json));
     ASSERT_EQ(result.exitCode, 0) << result.output;
     const FrequencySource source = loadFrequencyFile(json);
     ASSERT_TRUE(source.isPhonemeBased());
@@ -49,7 +52,9 @@ TEST(FreqCli, BadInputGetsExitCodesAndNamesTheFile) {
     EXPECT_EQ(result.exitCode, 3);
     EXPECT_NE(result.output.find("empty.txt: empty file"), std::string::npos) << result.output;
 
-    const auto binary = dir.write("blob.bin", std::string("\x7F" "ELF\x02\x01\x01\0\0\0\0\0\0\0\0\0", 16));
+    const auto binary = dir.write("blob.bin", std::string("\x7F"
+                                                          "ELF\x02\x01\x01\0\0\0\0\0\0\0\0\0",
+                                                          16));
     result = test::runCli("freq " + quoted(binary));
     EXPECT_EQ(result.exitCode, 3);
     EXPECT_NE(result.output.find("blob.bin: binary file"), std::string::npos) << result.output;
@@ -60,7 +65,8 @@ TEST(FreqCli, BadInputGetsExitCodesAndNamesTheFile) {
     EXPECT_NE(result.output.find("xx-none"), std::string::npos) << result.output;
 
     const auto map = test::assetsDir() / "phonemes" / "map_oculus.csv";
-    result = test::runCli("freq " + quoted(corpus) + " --map " + quoted(map) + " --out " + quoted(dir.path() / "t.csv"));
+    result = test::runCli("freq " + quoted(corpus) + " --map " + quoted(map) + " --out " +
+                          quoted(dir.path() / "t.csv"));
     EXPECT_EQ(result.exitCode, 2) << result.output;
 
     result = test::runCli("freq");

@@ -17,9 +17,10 @@ namespace {
 //   a boy sings                  AH  B OY  S IH NG Z
 //   the judge measures the house DH AH  JH AH JH  M EH ZH ER Z  DH AH  HH AW S
 constexpr const char* kFixedText = "The cat sat on the mat.\nA boy sings; the judge measures the house.\n";
-const std::map<std::string, double> kFixedCounts = {
-    {"AH", 6}, {"DH", 4}, {"AE", 3}, {"S", 3},  {"T", 3},  {"JH", 2}, {"M", 2},  {"Z", 2},  {"AO", 1}, {"AW", 1},
-    {"B", 1},  {"EH", 1}, {"ER", 1}, {"HH", 1}, {"IH", 1}, {"K", 1},  {"N", 1},  {"NG", 1}, {"OY", 1}, {"ZH", 1}};
+const std::map<std::string, double> kFixedCounts = {{"AH", 6}, {"DH", 4}, {"AE", 3}, {"S", 3},  {"T", 3},
+                                                    {"JH", 2}, {"M", 2},  {"Z", 2},  {"AO", 1}, {"AW", 1},
+                                                    {"B", 1},  {"EH", 1}, {"ER", 1}, {"HH", 1}, {"IH", 1},
+                                                    {"K", 1},  {"N", 1},  {"NG", 1}, {"OY", 1}, {"ZH", 1}};
 
 std::map<std::string, double> asMap(const FrequencyTable& table) {
     std::map<std::string, double> counts;
@@ -64,7 +65,8 @@ TEST(PhonemeCounting, StreamedCountsEqualOneShotTranscription) {
     test::ScratchDir dir("stream-count");
     const auto file = dir.write("corpus.txt", text);
     std::uint64_t calls = 0;
-    const auto result = countPhonemesInFile(file, *transcriber, [&](std::uint64_t, std::uint64_t) { ++calls; });
+    const auto result =
+        countPhonemesInFile(file, *transcriber, [&](std::uint64_t, std::uint64_t) { ++calls; });
     EXPECT_EQ(asMap(result.counts), reference);
     const auto inMemory = countPhonemesInText(text, "text", *transcriber);
     EXPECT_EQ(asMap(inMemory.counts), reference);

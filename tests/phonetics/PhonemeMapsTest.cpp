@@ -96,7 +96,7 @@ TEST(PhonemeMaps, DefaultTableIsCoveredByEveryMapAndGivesOculusFrequencies) {
     double sum = 0;
     for (const double f : frequencies) sum += f;
     EXPECT_NEAR(sum, 1.0, 1e-12);
-    EXPECT_EQ(frequencies[0], 0.0);                  // sil: no phoneme
+    EXPECT_EQ(frequencies[0], 0.0); // sil: no phoneme
     for (std::size_t i = 1; i < frequencies.size(); ++i) EXPECT_GT(frequencies[i], 0.0) << kOculusVisemes[i];
 }
 

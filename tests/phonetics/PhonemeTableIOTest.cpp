@@ -75,7 +75,8 @@ TEST(PhonemeTableIO, CsvTablePlusSeparateMapFile) {
         loadPhonemeFrequencySource(table, mapFile);
         FAIL() << "expected InputError";
     } catch (const InputError& e) {
-        EXPECT_NE(std::string(e.what()).find("3 phonemes not mapped to any viseme: N, ZH, OY"), std::string::npos)
+        EXPECT_NE(std::string(e.what()).find("3 phonemes not mapped to any viseme: N, ZH, OY"),
+                  std::string::npos)
             << e.what();
     }
     try {

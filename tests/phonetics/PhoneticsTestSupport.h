@@ -10,7 +10,7 @@ namespace vl::test {
 
 // A fresh directory under the system temp dir, removed again at the end of the test.
 class ScratchDir {
-public:
+  public:
     explicit ScratchDir(const std::string& name)
         : path_(std::filesystem::temp_directory_path() /
                 ("visemelab-phonetics-" + name + "-" + std::to_string(::getpid()))) {
@@ -32,10 +32,12 @@ public:
     }
     const std::filesystem::path& path() const { return path_; }
 
-private:
+  private:
     std::filesystem::path path_;
 };
 
-inline std::filesystem::path assetsDir() { return VISEMELAB_ASSETS_DIR; }
+inline std::filesystem::path assetsDir() {
+    return VISEMELAB_ASSETS_DIR;
+}
 
 } // namespace vl::test
