@@ -16,6 +16,7 @@ constexpr int kExitInvalidInput = 3;
 void addReduceCommand(CLI::App& app, CommandRunner& run);
 void addVisemesCommand(CLI::App& app, CommandRunner& run);
 void addRenderCommand(CLI::App& app, CommandRunner& run);
+void addRefineCommand(CLI::App& app, CommandRunner& run);
 void addExportCommand(CLI::App& app, CommandRunner& run);
 
 } // namespace vl::cli

@@ -12,6 +12,7 @@ int main(int argc, char** argv) {
     vl::cli::addReduceCommand(app, run);
     vl::cli::addVisemesCommand(app, run);
     vl::cli::addRenderCommand(app, run);
+    vl::cli::addRefineCommand(app, run);
     vl::cli::addExportCommand(app, run);
 
     try {
