@@ -43,8 +43,10 @@ void writeMesh(const std::filesystem::path& path, const MeshData& mesh);
 // Format-level entry points on in-memory text; `source` names the file in error messages.
 //
 // OBJ: reads `v x y z` (extra w or colour values ignored), `vt u [v]`, and `f` corners written v,
-// v/vt, v//vn or v/vt/vn with positive or negative (relative) indices; every other statement
-// (vn, o, g, s, usemtl, mtllib, l, ...) is ignored.
+// v/vt, v//vn or v/vt/vn with positive or negative (relative) indices ('#' starts a comment
+// anywhere). Other statements (vn, vp, o, g, s, usemtl, mtllib, l, ...) are ignored, except
+// unknown ones starting with v or f (say `V` or `vx`), which are rejected: skipping a line that may
+// be a vertex would renumber every vertex after it. Line continuations ('\') are not supported.
 MeshData parseObj(std::string_view text, std::string_view source);
 // `v` lines, `vt` lines when the mesh has (u,v), and `f a b c` or `f a/a b/b c/c`.
 std::string formatObj(const MeshData& mesh);

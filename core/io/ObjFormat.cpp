@@ -29,7 +29,7 @@ class ObjParser {
 
     MeshData run() {
         meshio::requireNotBlank(text_, source_);
-        std::size_t pos = 0;
+        std::size_t pos = text_.starts_with("\xEF\xBB\xBF") ? 3 : 0; // UTF-8 byte order mark
         while (pos < text_.size()) {
             const void* newline = std::memchr(text_.data() + pos, '\n', text_.size() - pos);
             const std::size_t end =
@@ -53,15 +53,21 @@ class ObjParser {
     std::string where() const { return fileLine(source_, line_); }
 
     void parseLine(std::string_view line) {
+        line = line.substr(0, line.find('#')); // comments, also at the end of a statement
         std::size_t pos = 0;
         const std::string_view keyword = nextToken(line, pos);
-        if (keyword == "v")
+        if (keyword == "v") {
             parseVertex(line, pos);
-        else if (keyword == "vt")
+        } else if (keyword == "vt") {
             parseTexCoord(line, pos);
-        else if (keyword == "f")
+        } else if (keyword == "f" || keyword == "fo") { // "fo" is the old spelling of "f"
             parseFace(line, pos);
-        // Everything else (comments, vn, o, g, s, usemtl, mtllib, l, ...) does not change the mesh.
+        } else if (keyword != "vn" && keyword != "vp" && !keyword.empty() &&
+                   (keyword[0] == 'v' || keyword[0] == 'V' || keyword[0] == 'f' || keyword[0] == 'F')) {
+            // Skipping something that may be a vertex or face would silently renumber the rest.
+            throwInputError(where(), "unknown OBJ statement '" + std::string(keyword) + "'");
+        }
+        // Everything else (vn, vp, o, g, s, usemtl, mtllib, l, ...) does not change the mesh.
     }
 
     void parseVertex(std::string_view line, std::size_t pos) {

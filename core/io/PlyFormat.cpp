@@ -184,12 +184,13 @@ std::vector<Role> rolesOf(const PlyElement& element, std::string_view source) {
 template <class Reader> MeshData readData(Reader& reader, const PlyHeader& header, std::string_view source) {
     MeshData mesh;
     const std::size_t vertexCount = header.find("vertex")->count;
-    mesh.positions.reserve(
-        std::min(vertexCount, std::size_t{1} << 24)); // bounded: the count is not trusted yet
+    // The header's count is not trusted yet: reserve at most a plausible amount.
+    mesh.positions.reserve(std::min(vertexCount, std::size_t{1} << 24));
     std::vector<std::uint32_t> corners;
     std::size_t faceIndex = 0;
     for (const auto& element : header.elements) {
         const std::vector<Role> roles = rolesOf(element, source);
+        if (roles.empty()) continue; // no properties, no data, however large the count
         reader.at = {&element.name, 0};
         const bool hasUV = std::find(roles.begin(), roles.end(), Role::U) != roles.end();
         for (std::size_t i = 0; i < element.count; ++i) {

@@ -44,8 +44,9 @@ TEST(ObjFormat, EachVertexTakesTheUVOfItsFirstCornerAndSeamsKeepTheFirst) {
     EXPECT_EQ(mesh.uvs[4], Vec2(0.0, 0.0)); // used by no face: (0,0)
 }
 
-TEST(ObjFormat, AcceptsCrLfTabsPlusSignsAndForwardReferences) {
-    const std::string text = "f 1 2 3\r\nv\t+1 2 3\r\nv 4 5 6 \r\n  v 7 8 9\r\n";
+TEST(ObjFormat, AcceptsBomCrLfTabsPlusSignsCommentsAndForwardReferences) {
+    const std::string text = "\xEF\xBB\xBF"
+                             "fo 1 2 3 # old spelling\r\nv\t+1 2 3#c\r\nv 4 5 6 \r\n  v 7 8 9\r\n";
     const MeshData mesh = parseObj(text, "t.obj");
     ASSERT_EQ(mesh.positions.size(), 3u);
     EXPECT_EQ(mesh.positions[0], Vec3(1, 2, 3));
@@ -79,6 +80,9 @@ TEST(ObjFormat, RejectsBadInputNamingFileAndLine) {
     expectInputError(bad(tri + "f 1// 2 3\n"), {"bad.obj:4:", "malformed face corner"});
     expectInputError(bad(tri + "f /1 2 3\n"), {"bad.obj:4:", "malformed face corner"});
     expectInputError(bad(tri + "f 1 2 three\n"), {"bad.obj:4:", "expected an integer"});
+    expectInputError(bad(tri + "V 1 2 3\nf 1 2 3\n"), {"bad.obj:4:", "unknown OBJ statement 'V'"});
+    expectInputError(bad(tri + "vx 1 2 3\nf 1 2 3\n"), {"bad.obj:4:", "unknown OBJ statement 'vx'"});
+    expectInputError(bad(tri + "f 1 2 \\\n 3\n"), {"bad.obj:4:", "expected an integer, found '\\'"});
 }
 
 // ---- reference: a deliberately plain parser (istringstream, strtod), no shortcuts ----

@@ -89,6 +89,12 @@ TEST(PlyFormat, BinaryLittleAndBigEndianAgreeWithAscii) {
     expectIdenticalMesh(expected, parsePly(binaryQuads(true), "be.ply"));
 }
 
+TEST(PlyFormat, ElementWithoutPropertiesHoldsNoDataHoweverLargeItsCount) {
+    const std::string text = "ply\nformat binary_little_endian 1.0\nelement junk 4000000000000\n" +
+                             binaryQuads(false).substr(binaryQuads(false).find("element vertex"));
+    EXPECT_EQ(parsePly(text, "junk.ply").triangles.size(), 5u);
+}
+
 TEST(PlyFormat, ReadsEveryUVNamingConvention) {
     for (const auto& [u, v] :
          {std::pair{"u", "v"}, {"s", "t"}, {"texture_u", "texture_v"}, {"texture_s", "texture_t"}}) {
