@@ -14,6 +14,7 @@ constexpr int kExitUsage = 2;
 constexpr int kExitInvalidInput = 3;
 
 void addReduceCommand(CLI::App& app, CommandRunner& run);
+void addFreqCommand(CLI::App& app, CommandRunner& run);
 void addVisemesCommand(CLI::App& app, CommandRunner& run);
 void addRenderCommand(CLI::App& app, CommandRunner& run);
 void addRefineCommand(CLI::App& app, CommandRunner& run);

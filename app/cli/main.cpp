@@ -10,6 +10,7 @@ int main(int argc, char** argv) {
     app.require_subcommand(1, 1);
     vl::cli::CommandRunner run;
     vl::cli::addReduceCommand(app, run);
+    vl::cli::addFreqCommand(app, run);
     vl::cli::addVisemesCommand(app, run);
     vl::cli::addRenderCommand(app, run);
     vl::cli::addRefineCommand(app, run);
