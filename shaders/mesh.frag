@@ -15,8 +15,8 @@ out vec4 fragColor;
 // Perceptually ordered blue -> teal -> yellow -> red ramp (a compact "turbo"-like map).
 vec3 colorMap(float t) {
     t = clamp(t, 0.0, 1.0);
-    const vec3 c0 = vec3(0.19, 0.07, 0.23);
-    const vec3 c1 = vec3(0.16, 0.47, 0.93);
+    const vec3 c0 = vec3(0.18, 0.24, 0.52);
+    const vec3 c1 = vec3(0.15, 0.52, 0.92);
     const vec3 c2 = vec3(0.10, 0.85, 0.60);
     const vec3 c3 = vec3(0.95, 0.85, 0.20);
     const vec3 c4 = vec3(0.80, 0.12, 0.05);

@@ -87,6 +87,7 @@ void EditorUi::syncGpu() {
             for (const auto& v : set->visemes) targets.push_back(v.positions);
             session.attempt("Display visemes", [&] {
                 visemeMesh_.setGeometry(set->neutral.positions, set->neutral.triangles, targets);
+                if (const auto& colours = session.state().visemeColours) visemeMesh_.setColors(*colours);
             });
         } else {
             visemeMesh_.setGeometry({}, {}, {});
@@ -115,6 +116,7 @@ void EditorUi::syncGpu() {
         const auto& merged = session.mergedShapes();
         const VisemeSet* set = session.visemes();
         mergedMesh_.setGeometry(set->neutral.positions, set->neutral.triangles, merged);
+        if (const auto& colours = session.state().visemeColours) mergedMesh_.setColors(*colours);
         uploadedMerged_ = curve;
         uploadedMergedGroups_ = groups;
         weightsKey_.clear(), errorKey_.clear(), influenceKey_.clear();
@@ -142,7 +144,7 @@ void EditorUi::frame() {
     menuBar();
     const float menuHeight = ImGui::GetFrameHeight();
     const float statusHeight = ImGui::GetFrameHeight() + 8.0f;
-    const float sideWidth = std::clamp(io.DisplaySize.x * 0.3f, 360.0f, 560.0f);
+    const float sideWidth = std::clamp(io.DisplaySize.x * 0.36f, 400.0f, 640.0f);
     const float bodyHeight = std::max(1.0f, io.DisplaySize.y - menuHeight - statusHeight);
     sidePanel(menuHeight, sideWidth, bodyHeight);
     views(sideWidth, menuHeight, std::max(1.0f, io.DisplaySize.x - sideWidth), bodyHeight);
@@ -275,7 +277,11 @@ void EditorUi::sidePanel(float top, float width, float height) {
     ImGui::SetNextWindowPos(ImVec2(0, top));
     ImGui::SetNextWindowSize(ImVec2(width, height));
     ImGui::Begin("##side", nullptr, kFixed);
-    if (ImGui::BeginTabBar("##panels", ImGuiTabBarFlags_FittingPolicyScroll)) {
+    ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(4, 4));
+    ImGui::PushStyleVar(ImGuiStyleVar_ItemInnerSpacing, ImVec2(2, 4));
+    const bool tabs = ImGui::BeginTabBar("##panels", ImGuiTabBarFlags_FittingPolicyResizeDown);
+    ImGui::PopStyleVar(2);
+    if (tabs) {
         for (int i = 0; i < static_cast<int>(Panel::Count); ++i) {
             const auto panel = static_cast<Panel>(i);
             const ImGuiTabItemFlags flags =
@@ -422,6 +428,10 @@ void EditorUi::unsavedChangesPopup() {
 
 // --- views -----------------------------------------------------------------------------------
 
+ColorMode EditorUi::surfaceColours() const {
+    return session.state().visemeColours ? ColorMode::VertexColor : ColorMode::Surface;
+}
+
 std::vector<float> EditorUi::visemeWeights(int viseme) const {
     std::vector<float> w(session.visemeCount(), 0.0f);
     if (viseme >= 0 && viseme < static_cast<int>(w.size())) w[static_cast<std::size_t>(viseme)] = 1.0f;
@@ -505,8 +515,9 @@ void EditorUi::comparisonViews(ImVec2 size) {
     }
     DrawStyle plain;
     plain.wireframe = wireframe_;
+    plain.color = surfaceColours();
     DrawStyle errors = plain;
-    errors.color = playback_.playing ? ColorMode::Surface : ColorMode::Scalar;
+    if (!playback_.playing) errors.color = ColorMode::Scalar;
     const ViewportEvents left =
         beforeView_.show("before", half, [&](const glm::mat4& view, const glm::mat4& projection) {
             visemeMesh_.draw(shader_, before, view, projection, plain);

@@ -80,6 +80,7 @@ class EditorUi {
     void mainView(ImVec2 size);
     void comparisonViews(ImVec2 size);
     std::vector<float> visemeWeights(int viseme) const;
+    ColorMode surfaceColours() const; // face colours for visemes generated from the face model
     std::vector<float> playbackWeights(bool reduced) const;
     std::vector<int> playbackKeys() const;
     void paint(const ViewportEvents& events);

@@ -5,6 +5,8 @@
 
 #include <imgui.h>
 
+#include <cfloat>
+
 namespace vl::ui {
 
 void EditorUi::frequenciesPanel() {
@@ -37,7 +39,7 @@ void EditorUi::frequenciesPanel() {
     if (ok) {
         std::vector<float> values(frequencies.begin(), frequencies.end());
         ImGui::PlotHistogram("##viseme-frequencies", values.data(), static_cast<int>(values.size()), 0,
-                             nullptr, 0.0f, FLT_MAX, ImVec2(-1, 80));
+                             nullptr, 0.0f, FLT_MAX, ImVec2(ImGui::GetContentRegionAvail().x, 80));
         std::string names;
         for (const auto& v : set->visemes) names += v.name + " ";
         ImGui::TextDisabled("%s", names.c_str());

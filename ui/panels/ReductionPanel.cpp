@@ -44,7 +44,7 @@ void EditorUi::reductionPanel() {
     char overlay[64];
     std::snprintf(overlay, sizeof overlay, "m = %d: cost %.4g", m, grouping ? grouping->cost : 0.0);
     ImGui::PlotLines("##cost", costs.data(), static_cast<int>(costs.size()), 0, overlay, 0.0f, top * 1.05f,
-                     ImVec2(-1, 120));
+                     ImVec2(ImGui::GetContentRegionAvail().x, 120)); // 1.86 PlotLines takes no negative width
     {
         // Mark the chosen m on the curve (PlotLines spreads the points over the inner frame).
         const ImVec2 lo = ImGui::GetItemRectMin();

@@ -81,6 +81,7 @@ void EditorUi::visemesPanel() {
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
             ImGui::PushID(static_cast<int>(i));
+            ImGui::AlignTextToFramePadding();
             if (ImGui::Selectable(set->visemes[i].name.c_str(), session.selectedViseme == static_cast<int>(i),
                                   ImGuiSelectableFlags_SpanAllColumns))
                 session.selectedViseme = static_cast<int>(i);

@@ -6,6 +6,7 @@
 #include "core/deform/FaceDomain.h"
 #include "core/deform/Visemes.h"
 #include "core/io/MeshIO.h"
+#include "core/project/ProjectRun.h"
 #include "core/reduce/Frequencies.h"
 #include "core/reduce/Weights.h"
 
@@ -23,36 +24,6 @@ std::vector<std::string> visemeNames(const VisemeSet* set) {
     if (set)
         for (const auto& v : set->visemes) names.push_back(v.name);
     return names;
-}
-
-// The meshes a project references, loaded and checked for interpolability.
-std::shared_ptr<const VisemeSet> loadProjectMeshes(const Project& project) {
-    if (!project.neutral.isSet()) return nullptr;
-    auto set = std::make_shared<VisemeSet>();
-    if (project.neutral.isEmbedded()) {
-        set->neutral = project.neutral.embedded;
-        set->neutralSource = project.path.empty() ? "embedded neutral" : project.path.string() + ": /neutral";
-    } else {
-        set->neutralSource = resolveProjectFile(project, project.neutral.file);
-        set->neutral = readMesh(set->neutralSource);
-    }
-    for (std::size_t i = 0; i < project.visemes.size(); ++i) {
-        const ProjectViseme& v = project.visemes[i];
-        Viseme viseme{v.name, {}, v.positions};
-        if (v.isEmbedded()) {
-            if (v.positions.size() != set->vertexCount())
-                throwInputError("/visemes/" + std::to_string(i), "has " + std::to_string(v.positions.size()) +
-                                                                     " positions, the neutral mesh has " +
-                                                                     std::to_string(set->vertexCount()));
-        } else {
-            viseme.source = resolveProjectFile(project, v.file);
-            MeshData mesh = readMesh(viseme.source);
-            checkInterpolable(set->neutral, set->neutralSource.string(), mesh, viseme.source.string());
-            viseme.positions = std::move(mesh.positions);
-        }
-        set->visemes.push_back(std::move(viseme));
-    }
-    return set;
 }
 
 bool sameTable(const FrequencyTable& a, const FrequencyTable& b) {
@@ -171,7 +142,18 @@ void EditorSession::newProject() {
 void EditorSession::openProject(const std::filesystem::path& file) {
     EditorState next;
     next.project = loadProject(file);
-    next.visemes = loadProjectMeshes(next.project);
+    if (next.project.neutral.isSet())
+        next.visemes = std::make_shared<const VisemeSet>(loadProjectVisemeSet(next.project));
+    if (next.project.deformation.isSet()) {
+        FaceModel& model = next.face;
+        model.cascade = std::make_shared<const DeformationCascade>(next.project.deformation.cascade);
+        model.parameters = next.project.deformation.values;
+        model.domain = std::make_shared<const MeshData>(
+            face::faceDomainMesh(kSampleResolution, face::DomainDensity::MouthFocused));
+        if (next.visemes && next.project.neutral.isEmbedded() && next.visemes->neutral.hasUVs())
+            next.visemeColours =
+                std::make_shared<const std::vector<Vec3>>(face::faceColours(next.visemes->neutral.uvs));
+    }
     validateInputs(next);
     reductionTask_.cancel();
     resetTo(std::move(next));
@@ -187,6 +169,11 @@ void EditorSession::saveProject(const std::filesystem::path& file) {
                                        ? visemes()->visemes[static_cast<std::size_t>(selectedViseme)].name
                                        : "";
     toSave.reduction.result.reset();
+    if (face().cascade) {
+        toSave.deformation.cascade = *face().cascade;
+        toSave.deformation.values = face().parameters;
+        if (toSave.deformation.visemes.empty()) toSave.deformation.visemes = oculusVisemes();
+    }
     if (const Grouping* grouping = currentGrouping()) {
         ReductionResult last;
         last.curve.assign(reductionCurve()->curve.begin(),
@@ -270,6 +257,7 @@ void EditorSession::setVisemesFromFace(EditorState& next) {
         next.project.frequencies.visemeFrequencies.entries.emplace_back(viseme.name, 1.0);
     }
     next.project.reduction.target = std::max(1, static_cast<int>(set->size()) * 2 / 3);
+    next.visemeColours = std::make_shared<const std::vector<Vec3>>(face::faceColours(next.face.domain->uvs));
     next.visemes = std::move(set);
     validateInputs(next);
 }

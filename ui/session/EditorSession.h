@@ -35,6 +35,8 @@ struct FaceModel {
 struct EditorState {
     Project project;
     std::shared_ptr<const VisemeSet> visemes; // null until a viseme set is loaded
+    // Per-vertex preview colours (lips, eyes, brows) when the visemes come from the face model.
+    std::shared_ptr<const std::vector<Vec3>> visemeColours;
     FaceModel face;
 };
 

@@ -1,0 +1,231 @@
+// Drives the editor's session the way the panels do (load the sample, move a slider, run a
+// reduction, paint, undo) and checks the resulting state; bad input must change nothing.
+#include "ui/session/EditorSession.h"
+#include "core/common/Error.h"
+#include "core/io/MeshIO.h"
+#include "core/paint/WeightBrush.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+namespace vl::ui {
+namespace {
+
+std::filesystem::path tempDir(const char* name) {
+    const auto dir = std::filesystem::temp_directory_path() / ("visemelab-ui-" + std::string(name));
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+TEST(EditorSession, LoadsTheSampleAsAnInterpolableVisemeSet) {
+    EditorSession session;
+    session.loadSample();
+    ASSERT_NE(session.visemes(), nullptr);
+    EXPECT_EQ(session.visemeCount(), 15u);
+    EXPECT_GT(session.visemes()->vertexCount(), 1000u);
+    EXPECT_FALSE(session.modified());
+    EXPECT_FALSE(session.canUndo());
+}
+
+TEST(EditorSession, ReductionRunsInTheBackgroundAndMatchesTheCoreReference) {
+    EditorSession session;
+    session.loadSample();
+    session.setTarget(10);
+    session.startReduction();
+    session.finishBackgroundWork();
+    const ReductionResult* curve = session.reductionCurve();
+    ASSERT_NE(curve, nullptr);
+    ASSERT_EQ(curve->curve.size(), session.visemeCount()); // p = 1..n for the plot
+    const Grouping* grouping = session.currentGrouping();
+    ASSERT_NE(grouping, nullptr);
+    EXPECT_EQ(grouping->groups.size(), 10u);
+    // The cost the panel shows is the slow, obvious evaluation of the same grouping.
+    std::vector<std::vector<Vec3>> shapes;
+    for (const auto& v : session.visemes()->visemes) shapes.push_back(v.positions);
+    const double reference =
+        groupingCost(shapes, session.visemeFrequencies(), session.weights(), grouping->groups);
+    EXPECT_NEAR(grouping->cost, reference, 1e-9 * std::max(1.0, reference));
+    // Costs decrease with more groups and reach 0 at p = n.
+    for (std::size_t p = 1; p < curve->curve.size(); ++p)
+        EXPECT_LE(curve->curve[p].cost, curve->curve[p - 1].cost + 1e-12);
+    EXPECT_NEAR(curve->curve.back().cost, 0.0, 1e-12);
+    EXPECT_EQ(session.mergedShapes().size(), 10u);
+}
+
+TEST(EditorSession, ChangingAnInputInvalidatesTheCurveUntilTheNextRun) {
+    EditorSession session;
+    session.autoReduce = false;
+    session.loadSample();
+    session.startReduction();
+    session.finishBackgroundWork();
+    ASSERT_NE(session.reductionCurve(), nullptr);
+    session.setVisemeFrequency(session.visemes()->find("aa"), 5.0);
+    EXPECT_EQ(session.reductionCurve(), nullptr);
+    session.startReduction();
+    session.finishBackgroundWork();
+    ASSERT_NE(session.reductionCurve(), nullptr);
+    // Changing only m reuses the curve: no recomputation needed.
+    session.setTarget(4);
+    ASSERT_NE(session.currentGrouping(), nullptr);
+    EXPECT_EQ(session.currentGrouping()->groups.size(), 4u);
+}
+
+TEST(EditorSession, AutoReduceStartsFromPoll) {
+    EditorSession session;
+    session.loadSample();
+    session.poll();
+    session.finishBackgroundWork();
+    EXPECT_NE(session.reductionCurve(), nullptr);
+}
+
+TEST(EditorSession, SliderDragIsOneUndoStep) {
+    EditorSession session;
+    session.loadFace();
+    const int jaw = session.face().cascade->findParameter("jaw_open");
+    ASSERT_GE(jaw, 0);
+    const double before = session.face().parameters[static_cast<std::size_t>(jaw)];
+    const std::size_t steps = 5;
+    for (std::size_t i = 1; i <= steps; ++i) session.setParameter(jaw, 0.1 * static_cast<double>(i));
+    session.endEdit();
+    EXPECT_DOUBLE_EQ(session.face().parameters[static_cast<std::size_t>(jaw)], 0.5);
+    session.undo();
+    EXPECT_DOUBLE_EQ(session.face().parameters[static_cast<std::size_t>(jaw)], before);
+    session.redo();
+    EXPECT_DOUBLE_EQ(session.face().parameters[static_cast<std::size_t>(jaw)], 0.5);
+}
+
+TEST(EditorSession, OutOfRangeParameterIsRefusedAndChangesNothing) {
+    EditorSession session;
+    session.loadFace();
+    const auto before = session.face().parameters;
+    EXPECT_THROW(session.setParameter(0, 1e9), InputError);
+    EXPECT_EQ(session.face().parameters, before);
+}
+
+TEST(EditorSession, Viseme_PresetAndFieldEditsAreUndoable) {
+    EditorSession session;
+    session.loadFace();
+    session.applyVisemePreset("aa");
+    const int jaw = session.face().cascade->findParameter("jaw_open");
+    EXPECT_GT(session.face().parameters[static_cast<std::size_t>(jaw)], 0.0);
+    // Edit the first analytic region found.
+    const auto& stages = session.face().cascade->stages;
+    int stage = -1;
+    for (std::size_t s = 0; s < stages.size() && stage < 0; ++s)
+        if (!stages[s].field.influences.empty()) stage = static_cast<int>(s);
+    ASSERT_GE(stage, 0);
+    const auto* cascadeBefore = session.face().cascade.get();
+    InfluenceField field = stages[static_cast<std::size_t>(stage)].field.influences[0];
+    field.magnitude *= 2.0;
+    session.setInfluence(stage, 0, field);
+    EXPECT_DOUBLE_EQ(
+        session.face().cascade->stages[static_cast<std::size_t>(stage)].field.influences[0].magnitude,
+        field.magnitude);
+    session.undo();
+    EXPECT_EQ(session.face().cascade.get(), cascadeBefore);
+    // An invalid region (zero radius) is refused.
+    field.radii = Vec2(0.0, 0.0);
+    EXPECT_THROW(session.setInfluence(stage, 0, field), InputError);
+    EXPECT_EQ(session.face().cascade.get(), cascadeBefore);
+}
+
+TEST(EditorSession, NonInterpolableImportShowsTheCoreErrorAndChangesNothing) {
+    EditorSession session;
+    session.loadSample();
+    const auto dir = tempDir("import");
+    MeshData broken;
+    broken.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
+    broken.triangles = {Triangle{0, 1, 2}};
+    writeMesh(dir / "broken.obj", broken);
+    const VisemeSet* before = session.visemes();
+    try {
+        session.importViseme("broken", dir / "broken.obj");
+        FAIL() << "import of a non-interpolable mesh succeeded";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("not interpolable"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(session.visemes(), before);
+    EXPECT_FALSE(session.canUndo());
+    // attempt() turns the same failure into a status message, as the panels do.
+    EXPECT_FALSE(session.attempt("Import", [&] { session.importViseme("broken", dir / "broken.obj"); }));
+    ASSERT_FALSE(session.messages().empty());
+    EXPECT_EQ(session.messages().back().kind, StatusMessage::Kind::Error);
+
+    // An interpolable mesh (a copy of a viseme) imports, and undo removes it again.
+    writeMesh(dir / "copy.obj", session.visemes()->meshOf(0));
+    session.importViseme("copy", dir / "copy.obj");
+    EXPECT_EQ(session.visemeCount(), 16u);
+    session.undo();
+    EXPECT_EQ(session.visemeCount(), 15u);
+    EXPECT_EQ(session.visemes(), before);
+}
+
+TEST(EditorSession, NegativeFrequencyIsRefused) {
+    EditorSession session;
+    session.loadSample();
+    const auto before = session.visemeFrequencies();
+    EXPECT_THROW(session.setVisemeFrequency(0, -1.0), InputError);
+    EXPECT_EQ(session.visemeFrequencies(), before);
+}
+
+TEST(EditorSession, PaintStrokeIsOneUndoStep) {
+    EditorSession session;
+    session.loadSample();
+    const VisemeSet& set = *session.visemes();
+    std::vector<double> weights(set.vertexCount(), 0.5);
+    WeightBrush brush;
+    brush.radius = 1.0;
+    brush.strength = 0.5;
+    for (int dab = 0; dab < 3; ++dab)
+        applyBrushDab(set.neutral.positions, set.neutral.triangles, brush, set.neutral.positions[100],
+                      weights);
+    session.setPaintedWeights(weights, "Paint stroke");
+    EXPECT_EQ(session.project().weights.mode, WeightMode::Painted);
+    EXPECT_EQ(session.weights(), weights);
+    session.undo();
+    EXPECT_EQ(session.project().weights.mode, WeightMode::Uniform);
+}
+
+TEST(EditorSession, SaveAndReopenProjectKeepsTheState) {
+    const auto dir = tempDir("project");
+    EditorSession session;
+    session.loadSample();
+    session.setTarget(7);
+    session.setVisemeFrequency(3, 2.5);
+    session.startReduction();
+    session.finishBackgroundWork();
+    ASSERT_TRUE(session.modified());
+    session.saveProject(dir / "p.vlproj");
+    EXPECT_FALSE(session.modified());
+
+    EditorSession reopened;
+    reopened.openProject(dir / "p.vlproj");
+    ASSERT_NE(reopened.visemes(), nullptr);
+    EXPECT_EQ(reopened.visemeCount(), session.visemeCount());
+    EXPECT_EQ(reopened.project().reduction.target, 7);
+    EXPECT_EQ(reopened.visemeFrequencies(), session.visemeFrequencies());
+    EXPECT_EQ(reopened.visemes()->visemes[5].positions, session.visemes()->visemes[5].positions);
+    ASSERT_TRUE(reopened.project().reduction.result.has_value());
+    EXPECT_EQ(reopened.project().reduction.result->best().groups, session.currentGrouping()->groups);
+}
+
+TEST(EditorSession, BrokenProjectFileIsReportedAndTheOpenProjectStays) {
+    const auto dir = tempDir("broken-project");
+    {
+        std::FILE* f = std::fopen((dir / "bad.vlproj").string().c_str(), "w");
+        std::fputs("{ \"format\": \"visemelab-project\", \"version\": 1, \"visemes\": 3 }", f);
+        std::fclose(f);
+    }
+    EditorSession session;
+    session.loadSample();
+    const VisemeSet* before = session.visemes();
+    EXPECT_FALSE(session.attempt("Open project", [&] { session.openProject(dir / "bad.vlproj"); }));
+    EXPECT_EQ(session.visemes(), before);
+    EXPECT_NE(session.messages().back().text.find("bad.vlproj"), std::string::npos)
+        << session.messages().back().text;
+}
+
+} // namespace
+} // namespace vl::ui
