@@ -1,6 +1,8 @@
 // `visemelab visemes`: writes the interpolable viseme set of a bundled deformable face (neutral +
 // the 15 Oculus visemes as OBJ) and visemes.json with the names and parameter vectors.
 #include "app/cli/Command.h"
+#include "app/cli/CriterionOptions.h"
+#include "core/adaptive/CascadeSurface.h"
 #include "core/common/AtomicFile.h"
 #include "core/common/Error.h"
 #include "core/deform/BundledFace.h"
@@ -22,11 +24,18 @@ struct VisemesOptions {
     std::string outDir = "visemes";
     int resolution = 38;
     std::string density = "mouth";
+    CriterionOptions adaptive; // --criterion given: adaptive refinement instead of the grid
 };
 
 // The (u,v) mesh every viseme is generated on. One place, so other ways of building it (adaptive
 // refinement criteria) plug in here.
-MeshData buildVisemeMesh(const VisemesOptions& o, const DeformationCascade& /*face*/) {
+MeshData buildVisemeMesh(const VisemesOptions& o, const DeformationCascade& face) {
+    if (!o.adaptive.criterion.empty()) {
+        // Refined until the criterion holds for the neutral face and every viseme (one shared mesh).
+        std::vector<std::vector<double>> poses{face.defaults()};
+        for (const auto& v : oculusVisemes()) poses.push_back(parameterVector(face, v));
+        return refineFaceMesh(face, o.adaptive.baseResolution, criterionSettings(o.adaptive), poses);
+    }
     face::DomainDensity density;
     if (o.density == "uniform")
         density = face::DomainDensity::Uniform;
@@ -43,6 +52,7 @@ nlohmann::json describe(const VisemesOptions& o, const DeformationCascade& face,
     j["face"] = o.face;
     j["resolution"] = o.resolution;
     j["density"] = o.density;
+    if (!o.adaptive.criterion.empty()) j["criterion"] = o.adaptive.criterion;
     j["vertices"] = set.vertexCount();
     j["triangles"] = set.neutral.triangles.size();
     j["neutral"] = "neutral.obj";
@@ -90,6 +100,7 @@ void addVisemesCommand(CLI::App& app, CommandRunner& run) {
     cmd->add_option("--density", options->density,
                     "Grid line spacing: uniform, or mouth (denser at mouth and eyes)")
         ->capture_default_str();
+    addCriterionOptions(cmd, options->adaptive);
     cmd->callback([&run, options] { run = [options] { return runVisemes(*options); }; });
 }
 
