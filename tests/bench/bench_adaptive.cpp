@@ -1,0 +1,77 @@
+// Adaptive mesh benchmarks on the bundled face (base mesh: faceBaseDomain(10), 200 triangles):
+// unconditional refinement to three levels (goal <= 10 ms), normals-based and contour-based
+// refinement (goal <= 30 ms), and re-adaptation after a slider change. Each iteration builds the
+// RBMT base mesh from the domain and refines it, as `visemelab refine` does.
+#include "core/adaptive/CascadeSurface.h"
+#include "core/deform/BundledFace.h"
+#include "core/deform/FaceDomain.h"
+
+#include <benchmark/benchmark.h>
+
+namespace {
+
+using namespace vl;
+
+CascadeSurface bundledSurface() {
+    const DeformationCascade cascade = face::makeBundledFace();
+    return CascadeSurface(cascade, face::faceBaseDomain(10), cascade.defaults());
+}
+
+void refineBundled(benchmark::State& state, const CriterionSettings& settings) {
+    const CascadeSurface surface = bundledSurface();
+    const auto criterion = makeCriterion(settings);
+    std::size_t faces = 0;
+    for (auto _ : state) {
+        AdaptiveMesh mesh(surface);
+        mesh.refine(*criterion);
+        faces = mesh.faceCount();
+        benchmark::DoNotOptimize(faces);
+    }
+    state.counters["triangles"] = static_cast<double>(faces);
+}
+
+void BM_RefineDepth3(benchmark::State& state) {
+    CriterionSettings s;
+    s.kind = CriterionKind::Depth;
+    s.depth.depth = 3;
+    refineBundled(state, s);
+}
+BENCHMARK(BM_RefineDepth3)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_RefineNormals(benchmark::State& state) {
+    CriterionSettings s;
+    s.kind = CriterionKind::Normals; // defaults: 20 degrees, max depth 10
+    refineBundled(state, s);
+}
+BENCHMARK(BM_RefineNormals)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_RefineContour(benchmark::State& state) {
+    CriterionSettings s;
+    s.kind = CriterionKind::Contour; // defaults: average 0.02 cm, maximum 0.08 cm, 16 samples
+    refineBundled(state, s);
+}
+BENCHMARK(BM_RefineContour)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// A slider change (jaw 0 <-> 1) followed by re-adaptation (resample, weld, refine) under contour.
+void BM_ReadaptContourJaw(benchmark::State& state) {
+    CascadeSurface surface = bundledSurface();
+    CriterionSettings s;
+    s.kind = CriterionKind::Contour;
+    const auto criterion = makeCriterion(s);
+    AdaptiveMesh mesh(surface);
+    mesh.refine(*criterion);
+    const auto jaw = static_cast<std::size_t>(surface.cascade().findParameter("jaw_open"));
+    auto q = surface.parameters();
+    int step = 0;
+    for (auto _ : state) {
+        q[jaw] = (step++ % 2) ? 0.0 : 1.0;
+        surface.setParameters(q);
+        mesh.adapt(*criterion);
+    }
+    state.counters["triangles"] = static_cast<double>(mesh.faceCount());
+}
+BENCHMARK(BM_ReadaptContourJaw)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+} // namespace
+
+BENCHMARK_MAIN();
