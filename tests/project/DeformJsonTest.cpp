@@ -52,10 +52,10 @@ TEST(DeformJson, AnEditedGeometryImageIsWrittenInFull) {
     EXPECT_TRUE(loadProject(p.path) == p);
 }
 
-class DeformValidation : public ::testing::Test {
+class DeformValidation : public test::DocumentTest {
   protected:
-    DeformValidation() : dir("deformvalid") {
-        doc = parseJsonStrict(R"({
+    DeformValidation() : DocumentTest("deformvalid", kDocument) {}
+    static constexpr std::string_view kDocument = R"({
           "format": "visemelab-project", "version": 1, "neutral": null, "visemes": [],
           "deformation": {
             "cascade": {
@@ -72,28 +72,11 @@ class DeformValidation : public ::testing::Test {
             "visemes": [{"name": "aa", "values": {"jaw": 1}}, {"name": "sil", "values": {}}]
           },
           "reduction": {"target": 1, "result": null}
-        })",
-                              "base");
-    }
-    Project load() const {
-        test::writeText(dir / "p.vlproj", doc.dump(1));
-        return loadProject(dir / "p.vlproj");
-    }
-    std::string errorOf() const {
-        return test::inputErrorOf([&] { load(); });
-    }
+        })";
+
     Json& stage(std::size_t k) { return doc["deformation"]["cascade"]["stages"][k]; }
     Json& influence() { return stage(1)["field"]["influences"][0]; }
-
-    ScratchDir dir;
-    Json doc;
 };
-
-#define EXPECT_LOAD_ERROR(expected)                                                                          \
-    do {                                                                                                     \
-        const std::string message_ = errorOf();                                                              \
-        EXPECT_NE(message_.find(expected), std::string::npos) << "message: " << message_;                    \
-    } while (0)
 
 TEST_F(DeformValidation, TheBaseDocumentLoads) {
     const Project p = load();

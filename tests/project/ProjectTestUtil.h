@@ -3,6 +3,7 @@
 // expectation helper for InputError messages.
 #include "core/common/Error.h"
 #include "core/deform/VectorField.h"
+#include "core/project/JsonRead.h"
 #include "core/project/Project.h"
 
 #include <gtest/gtest.h>
@@ -54,6 +55,28 @@ template <class F> std::string inputErrorOf(F&& f) {
         EXPECT_NE(message_.find(expected), std::string::npos)                                                \
             << "message: " << message_ << "\nexpected: " << (expected);                                      \
     } while (0)
+
+// A project document edited in a test and loaded as a file of a scratch folder.
+class DocumentTest : public ::testing::Test {
+  protected:
+    DocumentTest(const std::string& name, std::string_view json)
+        : dir(name), doc(parseJsonStrict(json, "test")) {}
+
+    Project load() const {
+        const auto file = dir / "p.vlproj";
+        writeText(file, doc.dump(2));
+        return loadProject(file);
+    }
+    std::string errorOf() const {
+        return inputErrorOf([&] { load(); });
+    }
+
+    ScratchDir dir;
+    Json doc;
+};
+
+// In a DocumentTest: loading the document fails with a message containing `expected`.
+#define EXPECT_LOAD_ERROR(expected) EXPECT_INPUT_ERROR(load(), expected)
 
 // Doubles that stress exact printing: tiny, huge, subnormal, negative zero, non-terminating binary.
 inline double randomDouble(std::mt19937_64& rng, bool nonNegative) {

@@ -8,12 +8,13 @@ namespace {
 
 using test::ScratchDir;
 
-class ProjectValidation : public ::testing::Test {
+class ProjectValidation : public test::DocumentTest {
   protected:
-    ProjectValidation() : dir("validation") {
+    ProjectValidation() : DocumentTest("validation", kDocument) {
         for (const char* name : {"neutral.obj", "sil.obj", "aa.obj", "E.obj", "oh.obj"})
             test::writeText(dir / name, "");
-        doc = parseJsonStrict(R"({
+    }
+    static constexpr std::string_view kDocument = R"({
           "format": "visemelab-project",
           "version": 1,
           "neutral": {"file": "neutral.obj"},
@@ -25,29 +26,8 @@ class ProjectValidation : public ::testing::Test {
               {"cost": 3.5, "groups": [["sil", "aa", "E", "oh"]]},
               {"cost": 1.25, "groups": [["sil"], ["aa", "E", "oh"]]}]}},
           "editor": {"selectedViseme": "aa"}
-        })",
-                              "base");
-    }
-
-    // Loads the (edited) document as a project file in the scratch folder.
-    Project load() const {
-        const auto file = dir / "p.vlproj";
-        test::writeText(file, doc.dump(2));
-        return loadProject(file);
-    }
-    std::string errorOf() const {
-        return test::inputErrorOf([&] { load(); });
-    }
-
-    ScratchDir dir;
-    Json doc;
+        })";
 };
-
-#define EXPECT_LOAD_ERROR(expected)                                                                          \
-    do {                                                                                                     \
-        const std::string message_ = errorOf();                                                              \
-        EXPECT_NE(message_.find(expected), std::string::npos) << "message: " << message_;                    \
-    } while (0)
 
 TEST_F(ProjectValidation, TheBaseDocumentLoads) {
     const Project p = load();
