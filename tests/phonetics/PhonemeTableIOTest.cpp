@@ -31,7 +31,7 @@ TEST(PhonemeTableIO, CsvRoundTripKeepsOrderAndCounts) {
     savePhonemeTable(file, sampleTable(), {"en-us", "corpus.txt"});
     const std::string csv = readFileToString(file);
     EXPECT_EQ(csv.substr(0, csv.find('\n')), "phoneme,count,frequency,ipa");
-    EXPECT_NE(csv.find("AH,1234,0.387809,ʌ\n"), std::string::npos) << csv;
+    EXPECT_NE(csv.find("AH,1234,0.386713,ʌ\n"), std::string::npos) << csv;
     EXPECT_EQ(loadPhonemeTable(file).entries, sampleTable().entries);
 }
 
@@ -115,7 +115,7 @@ TEST(PhonemeTableIO, BadTablesAndNamesAreRefused) {
 
 TEST(PhonemeTableIO, TextTableAlignsIpaColumns) {
     const std::string text = formatPhonemeTableText(sampleTable());
-    EXPECT_NE(text.find("AH       ʌ           1234    38.78 %\n"), std::string::npos) << text;
+    EXPECT_NE(text.find("AH       ʌ           1234    38.67 %\n"), std::string::npos) << text;
     EXPECT_NE(text.find("ZH       ʒ              3     0.09 %\n"), std::string::npos) << text;
     EXPECT_EQ(ipaOf("CH"), "tʃ");
     EXPECT_EQ(ipaOf("ʁ"), "ʁ"); // IPA tables name phonemes by their IPA already
