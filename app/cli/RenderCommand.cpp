@@ -1,4 +1,5 @@
-// `visemelab render`: a headless preview of a mesh as a PNG (software rasteriser, no GL).
+// `visemelab render`: a headless preview of one mesh, or a contact sheet of several, as a PNG
+// (software rasteriser, no GL).
 #include "app/cli/Command.h"
 #include "core/common/Error.h"
 #include "core/common/TextParsing.h"
@@ -13,7 +14,8 @@ namespace vl::cli {
 namespace {
 
 struct RenderCliOptions {
-    std::string mesh;
+    std::vector<std::string> meshes;
+    int columns = 4;
     std::string out;
     std::string size = "512x512";
     double yaw = 0.0;
@@ -34,17 +36,22 @@ void parseSize(const std::string& text, preview::RenderOptions& options) {
 }
 
 int runRender(const RenderCliOptions& o) {
-    const MeshData mesh = readMesh(o.mesh);
+    if (o.columns < 1) throwInputError("--columns", "must be at least 1");
     preview::RenderOptions options;
     parseSize(o.size, options);
     options.yawDegrees = o.yaw;
     options.pitchDegrees = o.pitch;
     options.wireframe = o.wireframe;
-    if (o.faceColours) {
-        if (!mesh.hasUVs()) throwInputError(o.mesh, "--face-colours needs (u,v) coordinates in the mesh");
-        options.vertexColours = face::faceColours(mesh.uvs);
+    std::vector<preview::Image> images;
+    for (const auto& file : o.meshes) {
+        const MeshData mesh = readMesh(file);
+        if (o.faceColours) {
+            if (!mesh.hasUVs()) throwInputError(file, "--face-colours needs (u,v) coordinates in the mesh");
+            options.vertexColours = face::faceColours(mesh.uvs);
+        }
+        images.push_back(preview::render(mesh, options));
     }
-    preview::writePng(o.out, preview::render(mesh, options));
+    preview::writePng(o.out, images.size() == 1 ? images.front() : preview::contactSheet(images, o.columns));
     std::printf("wrote %s\n", o.out.c_str());
     return kExitOk;
 }
@@ -53,8 +60,11 @@ int runRender(const RenderCliOptions& o) {
 
 void addRenderCommand(CLI::App& app, CommandRunner& run) {
     auto options = std::make_shared<RenderCliOptions>();
-    auto* cmd = app.add_subcommand("render", "Render a mesh to a PNG (headless software renderer)");
-    cmd->add_option("mesh", options->mesh, "Mesh file (OBJ, PLY, VRML)")->required();
+    auto* cmd = app.add_subcommand("render", "Render meshes to a PNG (headless software renderer)");
+    cmd->add_option("meshes", options->meshes, "Mesh files (OBJ, PLY, VRML); several make a contact sheet")
+        ->required();
+    cmd->add_option("--columns", options->columns, "Images per row of a contact sheet")
+        ->capture_default_str();
     cmd->add_option("--out", options->out, "PNG file to write")->required();
     cmd->add_option("--size", options->size, "Image size WxH")->capture_default_str();
     cmd->add_option("--yaw", options->yaw, "Camera turn to the mesh's right (+x), degrees")

@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 
@@ -25,7 +26,21 @@ struct VisemesOptions {
     int resolution = 38;
     std::string density = "mouth";
     CriterionOptions adaptive; // --criterion given: adaptive refinement instead of the grid
+    int decimals = 6;
 };
+
+// Rounds coordinates to `decimals` decimal places (file size: short numbers); < 0 keeps them exact.
+void roundCoordinates(VisemeSet& set, int decimals) {
+    if (decimals < 0) return;
+    const double scale = std::pow(10.0, decimals);
+    const auto round = [scale](double x) { return std::round(x * scale) / scale; };
+    const auto roundAll = [&](std::vector<Vec3>& points) {
+        for (auto& p : points) p = Vec3(round(p[0]), round(p[1]), round(p[2]));
+    };
+    roundAll(set.neutral.positions);
+    for (auto& uv : set.neutral.uvs) uv = Vec2(round(uv[0]), round(uv[1]));
+    for (auto& v : set.visemes) roundAll(v.positions);
+}
 
 // The (u,v) mesh every viseme is generated on. One place, so other ways of building it (adaptive
 // refinement criteria) plug in here.
@@ -52,6 +67,7 @@ nlohmann::json describe(const VisemesOptions& o, const DeformationCascade& face,
     j["face"] = o.face;
     j["resolution"] = o.resolution;
     j["density"] = o.density;
+    j["decimals"] = o.decimals;
     if (!o.adaptive.criterion.empty()) j["criterion"] = o.adaptive.criterion;
     j["vertices"] = set.vertexCount();
     j["triangles"] = set.neutral.triangles.size();
@@ -73,7 +89,9 @@ int runVisemes(const VisemesOptions& o) {
     const DeformationCascade cascade = face::makeFaceCascade(individual);
     const MeshData uvMesh = buildVisemeMesh(o, cascade);
     const auto visemes = oculusVisemes();
-    const VisemeSet set = generateVisemeSet(cascade, uvMesh, visemes);
+    if (o.decimals > 15) throwInputError("--decimals", "must be at most 15 (or negative for exact values)");
+    VisemeSet set = generateVisemeSet(cascade, uvMesh, visemes);
+    roundCoordinates(set, o.decimals);
 
     const std::filesystem::path out = o.outDir;
     std::filesystem::create_directories(out);
@@ -101,6 +119,9 @@ void addVisemesCommand(CLI::App& app, CommandRunner& run) {
                     "Grid line spacing: uniform, or mouth (denser at mouth and eyes)")
         ->capture_default_str();
     addCriterionOptions(cmd, options->adaptive);
+    cmd->add_option("--decimals", options->decimals,
+                    "Round coordinates to this many decimals (centimetres; negative: exact doubles)")
+        ->capture_default_str();
     cmd->callback([&run, options] { run = [options] { return runVisemes(*options); }; });
 }
 

@@ -19,7 +19,7 @@ Proportions proportionsOf(Individual who) {
         p.width = 1.12;
         p.jawWidth = 1.15;
         p.midfaceLength = 1.22;
-        p.noseProjection = 1.3;
+        p.noseProjection = 1.15;
         p.noseWidth = 1.15;
         p.lipFullness = 1.5;
         p.chin = 0.7;
@@ -39,7 +39,7 @@ double lipWeight(double u, double v) {
 double eyeWhiteWeight(double u, double v) {
     const double du = std::abs(u - kMouthU) - kEyeU;
     const double a = du / 0.058, b = (v - kEyeV) / 0.022;
-    return std::clamp(1.6 * (1.0 - (a * a + b * b)), 0.0, 1.0);
+    return std::clamp(2.5 * (1.0 - (a * a + b * b)), 0.0, 1.0);
 }
 
 double irisWeight(double u, double v) {
@@ -137,7 +137,7 @@ double featureDepth(double u, double v, const Proportions& p) {
         // Eye socket, eyeball (a spherical cap) and the upper lid's fold.
         z -= 1.5 * p.eyeDepth * bump(u, v, eu, kEyeV + 0.004, 0.08, 0.06);
         const double a = (u - eu) / 0.062, b = (v - kEyeV) / 0.045;
-        z += 1.15 * std::sqrt(std::max(0.0, 1.0 - a * a - b * b));
+        z += 1.15 * std::pow(std::max(0.0, 1.0 - a * a - b * b), 1.2); // smooth rim, no crease
         z += 0.2 * bump(u, v, eu, kEyeV + 0.028, 0.055, 0.01);
         z += 0.1 * bump(u, v, eu, kEyeV - 0.026, 0.05, 0.008);
         // Brow ridge and cheeks.

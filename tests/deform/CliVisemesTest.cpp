@@ -5,7 +5,9 @@
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+#include <stb_image.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -36,6 +38,9 @@ TEST(CliVisemes, WritesAnInterpolableSetAndItsParameterVectors) {
     EXPECT_EQ(j["visemes"][10]["name"], "aa");
     EXPECT_EQ(j["visemes"][10]["parameters"]["jaw_open"], 1.0);
     EXPECT_EQ(j["vertices"], set.vertexCount());
+    // Coordinates are rounded to --decimals (6 by default).
+    for (const auto& p : set.neutral.positions)
+        for (int k = 0; k < 3; ++k) EXPECT_NEAR(p[k] * 1e6, std::round(p[k] * 1e6), 1e-6);
     fs::remove_all(dir);
 }
 
@@ -54,6 +59,15 @@ TEST(CliRender, WritesAPngOfAMesh) {
                                 " --size 64x48 --wireframe --face-colours --yaw 20");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_GT(fs::file_size(png), 100u);
+    const auto sheet = dir / "sheet.png";
+    ASSERT_EQ(test::runCli("render " + (dir / "aa.obj").string() + " " + (dir / "ou.obj").string() + " " +
+                           (dir / "PP.obj").string() + " --columns 2 --size 30x20 --out " + sheet.string())
+                  .exitCode,
+              0);
+    int w = 0, h = 0, n = 0;
+    ASSERT_TRUE(stbi_info(sheet.c_str(), &w, &h, &n));
+    EXPECT_EQ(w, 60);
+    EXPECT_EQ(h, 40);
     EXPECT_EQ(test::runCli("render " + (dir / "aa.obj").string() + " --out x.png --size 64").exitCode, 3);
     EXPECT_EQ(test::runCli("render " + (dir / "missing.obj").string() + " --out x.png").exitCode, 3);
     EXPECT_EQ(test::runCli("render").exitCode, 2);
