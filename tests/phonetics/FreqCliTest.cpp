@@ -2,6 +2,7 @@
 #include "tests/app/CliRunner.h"
 
 #include "core/common/AtomicFile.h"
+#include "core/io/MeshIO.h"
 #include "core/phonetics/PhonemeTableIO.h"
 
 #include <gtest/gtest.h>
@@ -71,4 +72,31 @@ TEST(FreqCli, BadInputGetsExitCodesAndNamesTheFile) {
 
     result = test::runCli("freq");
     EXPECT_EQ(result.exitCode, 2) << result.output;
+}
+
+// The whole flow of the issue: bundled phoneme table + bundled map -> viseme frequencies -> reduction.
+TEST(FreqCli, ReduceTakesTheBundledTablePlusMap) {
+    test::ScratchDir dir("cli-reduce");
+    const std::vector<std::string> oculus = {"sil", "PP", "FF", "TH", "DD", "kk", "CH", "SS",
+                                             "nn",  "RR", "aa", "E",  "ih", "oh", "ou"};
+    auto quad = [](double lift) {
+        MeshData mesh;
+        mesh.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, lift), Vec3(0, 1, 0)};
+        mesh.triangles = {Triangle{0, 1, 2}, Triangle{0, 2, 3}};
+        return mesh;
+    };
+    const auto visemes = dir.path() / "visemes";
+    std::filesystem::create_directories(visemes);
+    writeMesh(visemes / "neutral.obj", quad(0));
+    for (std::size_t i = 0; i < oculus.size(); ++i)
+        writeMesh(visemes / (oculus[i] + ".obj"), quad(0.1 * double(i)));
+    const auto phonemes = test::assetsDir() / "phonemes";
+    const auto out = dir.path() / "out";
+    const auto result = test::runCli(
+        "reduce --visemes " + quoted(visemes) + " --freq-file " + quoted(phonemes / "en-us_frequencies.csv") +
+        " --map " + quoted(phonemes / "map_oculus.csv") + " --target 4 --out " + quoted(out));
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    const auto mapping = nlohmann::json::parse(readFileToString(out / "mapping.json"));
+    ASSERT_TRUE(mapping.contains("phonemes")) << mapping.dump();
+    EXPECT_EQ(mapping["phonemes"].size(), 39u);
 }
