@@ -1,7 +1,9 @@
 #include "core/phonetics/Arpabet.h"
+#include "core/common/AtomicFile.h"
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <set>
 
 using namespace vl;
@@ -38,4 +40,15 @@ TEST(Arpabet, FindsEverySymbolAndNothingElse) {
     EXPECT_EQ(findArpabet("SH")->ipa, "ʃ");
     EXPECT_EQ(arpabetSymbols().front(), "AA");
     EXPECT_EQ(arpabetSymbols().back(), "ZH");
+}
+
+// docs/phonemes.md shows the inventory; keep it in step with the code.
+TEST(Arpabet, DocumentedTableMatchesTheInventory) {
+    const auto docs = std::filesystem::path(VISEMELAB_ASSETS_DIR).parent_path() / "docs" / "phonemes.md";
+    const std::string text = readFileToString(docs);
+    for (const auto& p : arpabetInventory()) {
+        const std::string row =
+            "| " + std::string(p.symbol) + " | " + std::string(p.ipa) + " | " + std::string(p.example) + " |";
+        EXPECT_NE(text.find(row), std::string::npos) << "docs/phonemes.md lacks the row " << row;
+    }
 }
