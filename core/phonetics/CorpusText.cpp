@@ -127,9 +127,9 @@ class CorpusChunker {
             static_cast<double>(stats_.replacedBytes) >
                 kMaxSuspiciousShare * static_cast<double>(stats_.bytes)) {
             const auto percent = 100 * stats_.replacedBytes / stats_.bytes;
-            throwInputError(source_, "binary file, not UTF-8 text (" + std::to_string(percent) +
-                                         "% of the first " + std::to_string(stats_.bytes) +
-                                         " bytes are invalid UTF-8 or control characters)");
+            throwInputError(source_, "binary file, not UTF-8 text (" + std::to_string(percent) + "% of the " +
+                                         std::to_string(stats_.bytes) +
+                                         " bytes read are invalid UTF-8 or control characters)");
         }
         fn_(std::string_view(chunk).substr(start), offset_, total_);
     }
