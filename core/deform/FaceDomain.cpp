@@ -72,7 +72,10 @@ MeshData faceDomainMesh(int resolution, DomainDensity density) {
     if (resolution < 10 || resolution > 4096)
         throwInputError("face domain", "resolution " + std::to_string(resolution) + " is outside 10..4096");
     const bool focused = density == DomainDensity::MouthFocused;
-    const Density du = [focused](double u) { return focused ? 1.0 + 1.0 * bump(u, kMouthU, 0.2) + 0.9 * bump(std::abs(u - kMouthU), 0.135, 0.05) : 1.0; };
+    const Density du = [focused](double u) {
+        return focused ? 1.0 + 1.0 * bump(u, kMouthU, 0.2) + 0.9 * bump(std::abs(u - kMouthU), 0.135, 0.05)
+                       : 1.0;
+    };
     const Density dv = [focused](double v) {
         return focused ? 1.0 + 2.5 * bump(v, kMouthV, 0.09) + 1.4 * bump(v, 0.585, 0.05) : 1.0;
     };

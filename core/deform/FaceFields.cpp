@@ -59,13 +59,17 @@ std::vector<InfluenceField> risorius(double side) {
 
 std::vector<InfluenceField> jawOpen() {
     // Constant over the chin and the lower lip, zero at the upper lip; the outer ellipse meets the
-    // mouth line at the corners, so the lower rim opens in an elliptic arc; decreasing to the border.
+    // mouth line at the corners, so the lower rim opens in an arc; decreasing to the border.
     return {region({kMouthU, 0.12}, {0.42, 0.186}, {0, -1, -0.3}, 2.1, {0.22, 0.16}),
             // rounds the lower lip's arc, and lifts the upper lip a little as the lips part
             region({kMouthU, kMouthV - kMouthHalfHeight}, {0.12, 0.03}, {0, -1, -0.1}, 0.5, {0, 0},
                    Falloff::Cosine),
             region({kMouthU, kMouthV + kMouthHalfHeight}, {0.12, 0.03}, {0, 1, 0.1}, 0.3, {0, 0},
-                   Falloff::Cosine)};
+                   Falloff::Cosine),
+            // thin regions hugging the lower rim half-way to each corner (too thin to reach the upper
+            // rim): they widen the opening from a V into a U
+            region({kMouthU - 0.055, kMouthV - 0.013}, {0.05, 0.017}, {0, -1, -0.1}, 0.8),
+            region({kMouthU + 0.055, kMouthV - 0.013}, {0.05, 0.017}, {0, -1, -0.1}, 0.8)};
 }
 
 std::vector<InfluenceField> lipPucker() {
