@@ -1,6 +1,7 @@
 #include "core/common/Error.h"
 #include "core/deform/CascadeSampler.h"
 #include "core/deform/DeformationCascade.h"
+#include "tests/deform/ErrorMessage.h"
 
 #include <gtest/gtest.h>
 
@@ -9,14 +10,7 @@
 namespace vl {
 namespace {
 
-std::string errorOf(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "no error";
-}
+using test::errorOf;
 
 InfluenceField randomRegion(std::mt19937& rng) {
     std::uniform_real_distribution<double> unit(0.0, 1.0), sym(-1.0, 1.0);

@@ -1,5 +1,6 @@
 #include "core/deform/VectorField.h"
 #include "core/common/Error.h"
+#include "tests/deform/ErrorMessage.h"
 
 #include <gtest/gtest.h>
 
@@ -137,12 +138,7 @@ TEST(VectorField, SumsTheSampledPartAndTheRegions) {
 
 TEST(VectorField, ValidationNamesTheProblem) {
     const auto message = [](const VectorField& f) {
-        try {
-            validateField(f, "stage 'jaw'");
-        } catch (const InputError& e) {
-            return std::string(e.what());
-        }
-        return std::string("no error");
+        return test::errorOf([&] { validateField(f, "stage 'jaw'"); });
     };
     VectorField f;
     f.influences.push_back(sampleRegion());

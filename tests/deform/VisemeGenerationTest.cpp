@@ -2,6 +2,7 @@
 #include "core/deform/BundledFace.h"
 #include "core/deform/FaceDomain.h"
 #include "core/deform/Visemes.h"
+#include "tests/deform/ErrorMessage.h"
 
 #include <gtest/gtest.h>
 
@@ -10,14 +11,7 @@
 namespace vl {
 namespace {
 
-std::string errorOf(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "no error";
-}
+using test::errorOf;
 
 TEST(Visemes, OculusSetHasFifteenNamedValidVectors) {
     const auto visemes = oculusVisemes();
