@@ -64,10 +64,17 @@ void applyStartOptions(const EditorOptions& options, EditorSession& session, Edi
         if (index < 0) throwInputError("--viseme", "no viseme named '" + options.viseme + "'");
         session.selectedViseme = index;
     }
+    if (!options.refine.empty()) {
+        if (!session.face().cascade) session.loadFace();
+        CriterionSettings settings = session.project().refinement;
+        settings.kind = parseCriterionKind(options.refine, "--refine");
+        session.setRefinementSettings(settings);
+    }
     if (!options.preset.empty()) {
         if (!session.face().cascade) session.loadFace();
         session.applyVisemePreset(options.preset);
     }
+    if (!options.refine.empty()) session.startRefinement(RefineAction::Refine);
 }
 
 } // namespace

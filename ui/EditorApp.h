@@ -14,8 +14,7 @@ struct EditorOptions {
     std::string panel;  // panel to show (Visemes, Frequencies, Weights, ...)
     std::string viseme; // viseme to select
     std::string preset; // viseme preset applied to the deformable face
-    int field = -1;     // deformation stage to select in the Deformation panel
-    bool play = false;  // start the playback
+    std::string refine; // run a refinement with this criterion (depth, normals, contour)
     int width = 1600;
     int height = 1000;
 };

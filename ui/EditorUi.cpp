@@ -97,9 +97,10 @@ void EditorUi::syncGpu() {
         framePending_ = true;
     }
     const FaceModel& model = session.face();
-    if (uploadedCascade_ != model.cascade.get()) {
+    if (uploadedCascade_ != model.cascade.get() || uploadedDomain_ != model.domain.get()) {
         const bool first = uploadedCascade_ == nullptr;
         uploadedCascade_ = model.cascade.get();
+        uploadedDomain_ = model.domain.get();
         if (model.cascade) {
             const FaceSamples& samples = session.faceSamples();
             faceMesh_.setGeometry(samples.rest, model.domain->triangles, samples.targets);

@@ -97,6 +97,7 @@ class EditorUi {
     Viewport mainView_, beforeView_, afterView_;
     std::uint64_t uploadedGeometry_ = 0;
     const DeformationCascade* uploadedCascade_ = nullptr;
+    const MeshData* uploadedDomain_ = nullptr;
     const ReductionResult* uploadedMerged_ = nullptr;
     int uploadedMergedGroups_ = 0;
     // What each mesh's scalars currently show, to re-upload only on change.

@@ -17,6 +17,8 @@ int main(int argc, char** argv) {
         "Panel to show: Visemes, Frequencies, Weights, Deformation, Refinement, Reduction, Export");
     app.add_option("--viseme", options.viseme, "Viseme to select");
     app.add_option("--preset", options.preset, "Viseme preset applied to the deformable face");
+    app.add_option("--refine", options.refine,
+                   "Refine the face with this criterion: depth, normals, contour");
     app.add_option(
            "--size",
            [&options](const CLI::results_t& r) {

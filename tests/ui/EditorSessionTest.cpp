@@ -229,3 +229,48 @@ TEST(EditorSession, BrokenProjectFileIsReportedAndTheOpenProjectStays) {
 
 } // namespace
 } // namespace vl::ui
+
+namespace vl::ui {
+namespace {
+
+TEST(EditorSession, RefinementRunsInTheBackgroundAndIsUndoable) {
+    EditorSession session;
+    session.loadFace();
+    const MeshData* gridDomain = session.face().domain.get();
+    CriterionSettings settings = session.project().refinement;
+    settings.kind = CriterionKind::Depth;
+    settings.depth.depth = 3;
+    session.setRefinementSettings(settings);
+    session.startRefinement(RefineAction::Refine);
+    EXPECT_THROW(session.startRefinement(RefineAction::Refine), InputError); // one run at a time
+    session.finishBackgroundWork();
+    ASSERT_TRUE(session.lastRefinement().has_value());
+    const MeshData& refined = *session.face().domain;
+    EXPECT_NE(&refined, gridDomain);
+    EXPECT_EQ(refined.triangles.size(), session.lastRefinement()->triangles);
+    EXPECT_EQ(refined.uvs.size(), refined.positions.size());
+    EXPECT_EQ(session.lastRefinement()->maxLevel, 3);
+    session.undo();
+    EXPECT_EQ(session.face().domain.get(), gridDomain);
+    // Bad thresholds are refused and change nothing.
+    settings.contour.averageError = -1.0;
+    EXPECT_THROW(session.setRefinementSettings(settings), InputError);
+    EXPECT_EQ(session.project().refinement.contour.averageError, CriterionSettings{}.contour.averageError);
+}
+
+TEST(EditorSession, VisemesGeneratedOnARefinedMeshAreInterpolable) {
+    EditorSession session;
+    session.loadFace();
+    session.startRefinement(RefineAction::AllVisemes);
+    session.finishBackgroundWork();
+    ASSERT_TRUE(session.lastRefinement().has_value());
+    session.generateVisemesFromFace();
+    ASSERT_NE(session.visemes(), nullptr);
+    EXPECT_EQ(session.visemes()->vertexCount(), session.face().domain->uvs.size());
+    session.startReduction();
+    session.finishBackgroundWork();
+    EXPECT_NE(session.reductionCurve(), nullptr);
+}
+
+} // namespace
+} // namespace vl::ui

@@ -1,4 +1,5 @@
-// Refinement panel: adaptive (RBMT) refinement of the deformable face.
+// Refinement panel: the adaptive mesh's criterion and thresholds, refine / simplify / re-adapt
+// buttons running on a worker thread, live counts and timing, and the automatic mode.
 #include "ui/EditorUi.h"
 #include "ui/panels/PanelWidgets.h"
 
@@ -7,8 +8,102 @@
 namespace vl::ui {
 
 void EditorUi::refinementPanel() {
-    sectionHeader("Adaptive refinement");
-    ImGui::TextWrapped("Waiting for the core's adaptive mesh module (core/adaptive).");
+    const FaceModel& model = session.face();
+    if (!model.cascade) {
+        ImGui::TextWrapped("Adaptive refinement works on the deformable face.");
+        if (ImGui::Button("Load bundled face")) session.attempt("Load face", [&] { session.loadFace(); });
+        return;
+    }
+    CriterionSettings settings = session.project().refinement;
+    bool changed = false;
+    sectionHeader("Criterion");
+    int kind = static_cast<int>(settings.kind);
+    changed |= ImGui::RadioButton("depth", &kind, 0);
+    ImGui::SameLine();
+    changed |= ImGui::RadioButton("normals", &kind, 1);
+    ImGui::SameLine();
+    changed |= ImGui::RadioButton("contour error", &kind, 2);
+    settings.kind = static_cast<CriterionKind>(kind);
+    ImGui::PushItemWidth(-150);
+    changed |= ImGui::SliderInt("max depth", &settings.maxDepth, 0, 16);
+    endEditOnRelease(session);
+    switch (settings.kind) {
+    case CriterionKind::Depth:
+        changed |= ImGui::SliderInt("depth", &settings.depth.depth, 0, 12);
+        endEditOnRelease(session);
+        break;
+    case CriterionKind::Normals: {
+        float dihedral = static_cast<float>(settings.normals.dihedralAngleDeg);
+        float normal = static_cast<float>(settings.normals.normalAngleDeg);
+        if (ImGui::SliderFloat("dihedral angle", &dihedral, 1.0f, 90.0f, "%.1f deg")) {
+            settings.normals.dihedralAngleDeg = dihedral;
+            changed = true;
+        }
+        endEditOnRelease(session);
+        if (ImGui::SliderFloat("normal angle", &normal, 1.0f, 90.0f, "%.1f deg")) {
+            settings.normals.normalAngleDeg = normal;
+            changed = true;
+        }
+        endEditOnRelease(session);
+        break;
+    }
+    case CriterionKind::Contour: {
+        float average = static_cast<float>(settings.contour.averageError);
+        float maximum = static_cast<float>(settings.contour.maximumError);
+        if (ImGui::SliderFloat("average error", &average, 0.001f, 0.5f, "%.4f",
+                               ImGuiSliderFlags_Logarithmic)) {
+            settings.contour.averageError = average;
+            changed = true;
+        }
+        endEditOnRelease(session);
+        if (ImGui::SliderFloat("maximum error", &maximum, 0.001f, 2.0f, "%.4f",
+                               ImGuiSliderFlags_Logarithmic)) {
+            settings.contour.maximumError = maximum;
+            changed = true;
+        }
+        endEditOnRelease(session);
+        changed |= ImGui::SliderInt("samples per side", &settings.contour.samplesPerSide, 1, 16);
+        endEditOnRelease(session);
+        break;
+    }
+    }
+    ImGui::PopItemWidth();
+    if (changed) session.attempt("Thresholds", [&] { session.setRefinementSettings(settings); });
+
+    sectionHeader("Adapt the face mesh");
+    const bool busy = session.refinementRunning();
+    if (busy) ImGui::BeginDisabled();
+    if (ImGui::Button("Refine"))
+        session.attempt("Refine", [&] { session.startRefinement(RefineAction::Refine); });
+    ImGui::SameLine();
+    if (ImGui::Button("Simplify"))
+        session.attempt("Simplify", [&] { session.startRefinement(RefineAction::Simplify); });
+    ImGui::SameLine();
+    if (ImGui::Button("Re-adapt"))
+        session.attempt("Re-adapt", [&] { session.startRefinement(RefineAction::Adapt); });
+    ImGui::SameLine();
+    if (ImGui::Button("For all visemes"))
+        session.attempt("Refine", [&] { session.startRefinement(RefineAction::AllVisemes); });
+    if (busy) ImGui::EndDisabled();
+    helpMarker(
+        "Refine splits edges where the criterion asks (for the current slider values); Simplify welds "
+        "where it allows; Re-adapt does both after a change. 'For all visemes' refines one mesh for "
+        "every viseme pose: Generate viseme set (Deformation panel) then gives an interpolable set on it.");
+    ImGui::Checkbox("Automatic: re-adapt after every slider or threshold change", &session.autoRefine);
+    if (busy) ImGui::ProgressBar(-1.0f * static_cast<float>(ImGui::GetTime()), ImVec2(-1, 0), "refining...");
+
+    sectionHeader("Current mesh");
+    ImGui::Text("%zu vertices, %zu triangles", model.domain->positions.size(),
+                model.domain->triangles.size());
+    if (const auto& report = session.lastRefinement()) {
+        ImGui::Text("Last run: %s in %.1f ms", report->action.c_str(), report->milliseconds);
+        ImGui::Text("%zu splits, %zu welds, %zu tests", report->stats.splits, report->stats.welds,
+                    report->stats.tests);
+        if (report->maxLevel >= 0) ImGui::Text("Deepest level: %d", report->maxLevel);
+    } else {
+        ImGui::TextDisabled("The face is shown on a regular (u,v) grid until you refine.");
+    }
+    ImGui::TextDisabled("Parameters: Deformation panel (the view shows the same face).");
 }
 
 } // namespace vl::ui

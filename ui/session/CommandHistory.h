@@ -34,6 +34,8 @@ template <class State> class CommandHistory {
             savedIndex_ = savedIndex_ == 0 ? kNever : savedIndex_ - 1;
         }
     }
+    // Replaces the current state without a new undo step (derived data such as a re-adapted mesh).
+    void amend(State state) { entries_[index_].state = std::move(state); }
     // Ends merging: the next commit with the same key becomes a new step (a slider was released).
     void closeMerge() { entries_[index_].mergeKey.clear(); }
 

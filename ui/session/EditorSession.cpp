@@ -1,5 +1,6 @@
 #include "ui/session/EditorSession.h"
 
+#include "core/adaptive/CascadeSurface.h"
 #include "core/common/AtomicFile.h"
 #include "core/common/Error.h"
 #include "core/common/TextParsing.h"
@@ -12,6 +13,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <chrono>
 #include <cmath>
 
 namespace vl::ui {
@@ -24,6 +26,15 @@ std::vector<std::string> visemeNames(const VisemeSet* set) {
     if (set)
         for (const auto& v : set->visemes) names.push_back(v.name);
     return names;
+}
+
+bool sameCriterion(const CriterionSettings& a, const CriterionSettings& b) {
+    return a.kind == b.kind && a.maxDepth == b.maxDepth && a.depth.depth == b.depth.depth &&
+           a.normals.dihedralAngleDeg == b.normals.dihedralAngleDeg &&
+           a.normals.normalAngleDeg == b.normals.normalAngleDeg &&
+           a.contour.averageError == b.contour.averageError &&
+           a.contour.maximumError == b.contour.maximumError &&
+           a.contour.samplesPerSide == b.contour.samplesPerSide;
 }
 
 bool sameTable(const FrequencyTable& a, const FrequencyTable& b) {
@@ -61,10 +72,19 @@ void validateInputs(const EditorState& state) {
 
 } // namespace
 
+// The adaptive mesh and its surface live between refinement runs (the paper's dynamic mesh): only
+// the worker touches them, one run at a time.
+struct AdaptiveWork {
+    std::shared_ptr<const DeformationCascade> cascade;
+    std::unique_ptr<CascadeSurface> surface;
+    std::unique_ptr<AdaptiveMesh> mesh;
+};
+
 EditorSession::EditorSession() : history_(EditorState{}) {}
 
 EditorSession::~EditorSession() {
     reductionTask_.cancel();
+    refinementTask_.wait();
 }
 
 // --- history ---------------------------------------------------------------------------------
@@ -508,6 +528,82 @@ void EditorSession::setPaintedWeights(std::vector<double> painted, const std::st
     commit(actionName, std::move(next));
 }
 
+// --- adaptive refinement ---------------------------------------------------------------------
+
+void EditorSession::setRefinementSettings(const CriterionSettings& settings) {
+    validateCriterionSettings(settings);
+    EditorState next = state();
+    next.project.refinement = settings;
+    commit("Refinement thresholds", std::move(next), "refinement");
+}
+
+void EditorSession::startRefinement(RefineAction action) {
+    startRefinementTask(action, false);
+}
+
+void EditorSession::startRefinementTask(RefineAction action, bool automatic) {
+    if (!face().cascade) throwInputError("refinement", "no face loaded: load the bundled face first");
+    if (refinementTask_.running()) throwInputError("refinement", "a refinement is already running");
+    validateCriterionSettings(project().refinement);
+    // The worker gets copies: later edits do not reach it.
+    const std::shared_ptr<const DeformationCascade> cascade = face().cascade;
+    const std::vector<double> q = face().parameters;
+    const CriterionSettings settings = project().refinement;
+    std::vector<std::vector<double>> poses;
+    if (action == RefineAction::AllVisemes)
+        for (const VisemeParameters& viseme : oculusVisemes())
+            poses.push_back(parameterVector(*cascade, viseme));
+    if (!adaptive_) adaptive_ = std::make_shared<AdaptiveWork>();
+    if (automatic) {
+        autoCascade_ = cascade.get();
+        autoParameters_ = q;
+        autoSettings_ = settings;
+    }
+    refinementTask_.start(
+        "Refining", [work = adaptive_, cascade, q, settings, poses, action, automatic](const auto&) {
+            const auto start = std::chrono::steady_clock::now();
+            const std::unique_ptr<Criterion> criterion = makeCriterion(settings);
+            RefineOutcome outcome;
+            outcome.automatic = automatic;
+            MeshData result;
+            if (action == RefineAction::AllVisemes) {
+                result = refineFaceMesh(*cascade, 10, settings, poses, &outcome.report.stats);
+                outcome.report.action = "refined for all visemes";
+            } else {
+                if (work->cascade != cascade || !work->mesh) {
+                    // A new cascade (field edit, retargeting): start again from the base mesh.
+                    work->mesh.reset();
+                    work->surface = std::make_unique<CascadeSurface>(*cascade, face::faceBaseDomain(10), q);
+                    work->mesh = std::make_unique<AdaptiveMesh>(*work->surface);
+                    work->cascade = cascade;
+                } else {
+                    work->surface->setParameters(q);
+                }
+                if (action == RefineAction::Refine) {
+                    work->mesh->resample();
+                    outcome.report.stats = work->mesh->refine(*criterion);
+                    outcome.report.action = "refined";
+                } else if (action == RefineAction::Simplify) {
+                    work->mesh->resample();
+                    outcome.report.stats = work->mesh->simplify(*criterion);
+                    outcome.report.action = "simplified";
+                } else {
+                    outcome.report.stats = work->mesh->adapt(*criterion);
+                    outcome.report.action = "re-adapted";
+                }
+                outcome.report.maxLevel = work->mesh->maxLevel();
+                result = work->mesh->toMeshData();
+            }
+            outcome.report.triangles = result.triangles.size();
+            outcome.report.vertices = result.positions.size();
+            if (action == RefineAction::AllVisemes) outcome.report.maxLevel = -1;
+            outcome.domain = std::make_shared<const MeshData>(std::move(result));
+            outcome.report.milliseconds =
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+            return outcome;
+        });
+}
+
 // --- reduction -------------------------------------------------------------------------------
 
 void EditorSession::setTarget(int m) {
@@ -573,6 +669,27 @@ void EditorSession::startReduction() {
 }
 
 void EditorSession::poll() {
+    if (auto outcome = refinementTask_.take()) {
+        if (outcome->index() == 0) {
+            RefineOutcome& result = std::get<0>(*outcome);
+            lastRefinement_ = result.report;
+            if (face().cascade) {
+                EditorState next = state();
+                next.face.domain = result.domain;
+                // Automatic re-adaptation follows other edits: it is not an undo step of its own.
+                if (result.automatic)
+                    history_.amend(std::move(next));
+                else
+                    commit("Refinement: " + result.report.action, std::move(next));
+            }
+        } else {
+            error("Refinement: " + std::get<1>(*outcome));
+        }
+    }
+    if (autoRefine && face().cascade && !refinementTask_.running() &&
+        (autoCascade_ != face().cascade.get() || autoParameters_ != face().parameters ||
+         !sameCriterion(autoSettings_, project().refinement)))
+        attempt("Refinement", [this] { startRefinementTask(RefineAction::Adapt, true); });
     if (auto outcome = reductionTask_.take()) {
         if (outcome->index() == 0) {
             if (runningGeneration_ == inputsGeneration_) curve_ = {std::get<0>(*outcome), runningGeneration_};
@@ -589,13 +706,13 @@ void EditorSession::poll() {
 }
 
 void EditorSession::finishBackgroundWork() {
-    for (int round = 0; round < 3; ++round) {
+    // poll() may start automatic re-runs; a few rounds settle them.
+    for (int round = 0; round < 4; ++round) {
+        refinementTask_.wait();
         reductionTask_.wait();
         poll();
-        if (!reductionTask_.running()) break;
+        if (!refinementTask_.running() && !reductionTask_.running()) break;
     }
-    reductionTask_.wait();
-    poll();
 }
 
 } // namespace vl::ui

@@ -3,6 +3,8 @@
 // methods, and so does the GUI smoke test, so both exercise the same code paths. Each edit builds
 // a new state from the current one and commits it to the undo history only when the core accepted
 // it, so bad input (a broken file, a non-interpolable mesh) changes nothing.
+#include "core/adaptive/AdaptiveMesh.h"
+#include "core/adaptive/Criteria.h"
 #include "core/deform/BundledFace.h"
 #include "core/deform/DeformationCascade.h"
 #include "core/project/Project.h"
@@ -58,6 +60,25 @@ struct ReductionCurve {
     std::shared_ptr<const ReductionResult> result;
     std::uint64_t inputsGeneration = 0; // valid while it equals EditorSession::inputsGeneration()
 };
+
+// What the last adaptive refinement produced.
+struct RefinementReport {
+    std::string action;
+    std::size_t triangles = 0;
+    std::size_t vertices = 0;
+    int maxLevel = 0;
+    AdaptStats stats;
+    double milliseconds = 0.0;
+};
+
+enum class RefineAction {
+    Refine,     // split where the criterion asks, for the current parameters
+    Simplify,   // weld where the criterion allows
+    Adapt,      // re-adapt after a parameter or threshold change (resample, weld, split)
+    AllVisemes, // one mesh refined for every viseme pose (for an interpolable viseme set)
+};
+
+struct AdaptiveWork; // the adaptive mesh, owned by the refinement worker between runs
 
 class EditorSession {
   public:
@@ -115,6 +136,16 @@ class EditorSession {
     void generateVisemesFromFace();
     // Per-vertex samples of the current cascade on its mesh (cached by cascade and mesh).
     const FaceSamples& faceSamples();
+
+    // --- adaptive refinement -----------------------------------------------------------------
+    void setRefinementSettings(const CriterionSettings& settings); // validated, undoable
+    // Runs on a worker thread; the refined (u,v) mesh becomes the face's display and viseme mesh.
+    // Refused while a refinement runs.
+    void startRefinement(RefineAction action);
+    bool refinementRunning() const { return refinementTask_.running(); }
+    const std::optional<RefinementReport>& lastRefinement() const { return lastRefinement_; }
+    // Re-adapt in the background after every parameter, field or threshold change.
+    bool autoRefine = false;
 
     // --- reduction ---------------------------------------------------------------------------
     void setTarget(int m);
@@ -180,6 +211,19 @@ class EditorSession {
     const ReductionResult* mergedFor_ = nullptr;
     int mergedGroups_ = 0;
     std::vector<std::vector<Vec3>> merged_;
+    struct RefineOutcome {
+        std::shared_ptr<const MeshData> domain;
+        RefinementReport report;
+        bool automatic = false;
+    };
+    BackgroundTask<RefineOutcome> refinementTask_;
+    std::shared_ptr<AdaptiveWork> adaptive_;
+    std::optional<RefinementReport> lastRefinement_;
+    // Inputs of the last automatic re-adaptation.
+    const DeformationCascade* autoCascade_ = nullptr;
+    std::vector<double> autoParameters_;
+    CriterionSettings autoSettings_;
+    void startRefinementTask(RefineAction action, bool automatic);
     // faceSamples() cache.
     const DeformationCascade* samplesCascade_ = nullptr;
     const MeshData* samplesDomain_ = nullptr;
