@@ -88,7 +88,18 @@ void CascadeSampler::evaluateBlock(std::size_t block, std::span<const double> q,
         const double* x = f.x.data();
         const double* y = f.y.data();
         const double* z = f.z.data();
-        for (std::uint32_t e = f.blockStart[block]; e < f.blockStart[block + 1]; ++e) {
+        const std::uint32_t first = f.blockStart[block], last = f.blockStart[block + 1];
+        if (last - first == end - begin) {
+            // The field covers the whole block: entry first + k is vertex begin + k, no index needed.
+            for (std::size_t j = 0; j < end - begin; ++j) {
+                Vec3& p = out[begin + j];
+                p[0] += w * x[first + j];
+                p[1] += w * y[first + j];
+                p[2] += w * z[first + j];
+            }
+            continue;
+        }
+        for (std::uint32_t e = first; e < last; ++e) {
             Vec3& p = out[index[e]];
             p[0] += w * x[e];
             p[1] += w * y[e];
