@@ -4,6 +4,8 @@
 #include <CLI/CLI.hpp>
 
 #include <functional>
+#include <stdexcept>
+#include <string>
 
 namespace vl::cli {
 
@@ -12,6 +14,15 @@ using CommandRunner = std::function<int()>;
 constexpr int kExitOk = 0;
 constexpr int kExitUsage = 2;
 constexpr int kExitInvalidInput = 3;
+
+// A combination of flags that CLI11 cannot check by itself; main prints it and exits with 2.
+class UsageError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+[[noreturn]] inline void throwUsage(const std::string& message) {
+    throw UsageError(message);
+}
 
 void addReduceCommand(CLI::App& app, CommandRunner& run);
 void addFreqCommand(CLI::App& app, CommandRunner& run);

@@ -4,6 +4,7 @@
 #include "core/common/AtomicFile.h"
 #include "core/common/Error.h"
 #include "core/common/TextParsing.h"
+#include "core/project/ProjectRun.h"
 #include "core/reduce/ReduceRun.h"
 
 #include <chrono>
@@ -14,7 +15,10 @@ namespace vl::cli {
 
 namespace {
 
+constexpr int kTargetNotGiven = -1;
+
 struct ReduceOptions {
+    std::string project;
     std::string neutral;
     std::vector<std::string> visemes; // NAME=FILE
     std::string visemeDir;
@@ -22,7 +26,7 @@ struct ReduceOptions {
     std::string freqFile;
     std::string mapFile;
     std::string weights = "uniform";
-    int target = 0;
+    int target = kTargetNotGiven;
     std::string outDir = "reduced";
     std::string report;
 };
@@ -107,11 +111,35 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
-int runReduce(const ReduceOptions& o) {
+// Everything a run needs, from a project file (flags given alongside override it) or from flags.
+struct ReduceInputs {
+    VisemeSet set;
+    FrequencySource frequencies;
+    ReduceSettings settings;
+};
+
+ReduceInputs loadInputs(const ReduceOptions& o, bool weightsGiven) {
+    ReduceInputs in;
+    if (o.project.empty()) {
+        if (o.target == kTargetNotGiven) throwUsage("--target M is required (or --project FILE)");
+        in.set = loadSet(o);
+        in.frequencies = loadFrequencies(o, in.set);
+        in.settings = loadSettings(o);
+        return in;
+    }
+    if (!o.neutral.empty() || !o.visemes.empty() || !o.visemeDir.empty())
+        throwUsage("--project already names the meshes; drop --neutral/--viseme/--visemes");
+    const Project project = loadProject(o.project);
+    in.set = loadProjectVisemeSet(project);
+    in.frequencies = (o.freqFile.empty() && o.freqs.empty()) ? project.frequencies : loadFrequencies(o, in.set);
+    in.settings = weightsGiven ? loadSettings(o) : projectReduceSettings(project);
+    in.settings.target = o.target != kTargetNotGiven ? o.target : project.reduction.target;
+    return in;
+}
+
+int runReduce(const ReduceOptions& o, bool weightsGiven) {
     const auto t0 = std::chrono::steady_clock::now();
-    const VisemeSet set = loadSet(o);
-    const FrequencySource frequencies = loadFrequencies(o, set);
-    const ReduceSettings settings = loadSettings(o);
+    const auto [set, frequencies, settings] = loadInputs(o, weightsGiven);
     ReduceTimings timings;
     timings.loadMs = millisecondsSince(t0);
 
@@ -129,11 +157,11 @@ int runReduce(const ReduceOptions& o) {
         o.report.empty() ? outDir / "report.json" : std::filesystem::path(o.report);
     writeFileAtomically(reportPath, reductionReportJson(outcome, settings.weightMode, timings, outputs));
 
-    std::printf("Reduced %zu visemes to %d (weights: %s), optimal cost %.6g\n", set.size(), o.target,
+    std::printf("Reduced %zu visemes to %d (weights: %s), optimal cost %.6g\n", set.size(), settings.target,
                 toString(settings.weightMode), outcome.result.best().cost);
     for (std::size_t g = 0; g < outcome.reduced.size(); ++g)
         std::printf("  %2zu: %s\n", g, outcome.reduced[g].name.c_str());
-    std::printf("Cost for p = 1..%d:", o.target);
+    std::printf("Cost for p = 1..%d:", settings.target);
     for (const auto& grouping : outcome.result.curve) std::printf(" %.4g", grouping.cost);
     std::printf("\nMerged meshes (OBJ + VRML) and mapping.json in %s\nReport: %s\n", outDir.string().c_str(),
                 reportPath.string().c_str());
@@ -145,6 +173,8 @@ int runReduce(const ReduceOptions& o) {
 void addReduceCommand(CLI::App& app, CommandRunner& run) {
     auto options = std::make_shared<ReduceOptions>();
     auto* cmd = app.add_subcommand("reduce", "Reduce a viseme set to m merged meshes (exact optimum)");
+    cmd->add_option("--project", options->project,
+                    "Project file (.vlproj): meshes, frequencies, weights and target; flags override it");
     cmd->add_option("--neutral", options->neutral, "Neutral mesh (OBJ, PLY or VRML)");
     cmd->add_option("--viseme", options->visemes, "A viseme as NAME=FILE (repeatable)");
     cmd->add_option("--visemes", options->visemeDir,
@@ -154,13 +184,16 @@ void addReduceCommand(CLI::App& app, CommandRunner& run) {
                     "Frequencies: CSV name,frequency or JSON (viseme table, or phonemes + map)");
     cmd->add_option("--map", options->mapFile,
                     "Phoneme -> viseme map (CSV phoneme,viseme or JSON); makes --freq-file a phoneme table");
-    cmd->add_option("--weights", options->weights,
+    auto* weights = cmd->add_option("--weights", options->weights,
                     "Vertex weights: uniform, area, or a file of painted weights")
         ->capture_default_str();
-    cmd->add_option("--target,-m", options->target, "Number of merged meshes m (1..n)")->required();
+    cmd->add_option("--target,-m", options->target, "Number of merged meshes m (1..n); required without --project");
     cmd->add_option("--out", options->outDir, "Output folder")->capture_default_str();
     cmd->add_option("--report", options->report, "JSON report path (default OUT/report.json)");
-    cmd->callback([&run, options] { run = [options] { return runReduce(*options); }; });
+    cmd->callback([&run, options, weights] {
+        const bool weightsGiven = weights->count() > 0;
+        run = [options, weightsGiven] { return runReduce(*options, weightsGiven); };
+    });
 }
 
 } // namespace vl::cli

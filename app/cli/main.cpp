@@ -24,6 +24,9 @@ int main(int argc, char** argv) {
     }
     try {
         return run ? run() : vl::cli::kExitUsage;
+    } catch (const vl::cli::UsageError& e) {
+        std::fprintf(stderr, "visemelab: usage error: %s (see --help)\n", e.what());
+        return vl::cli::kExitUsage;
     } catch (const vl::InputError& e) {
         std::fprintf(stderr, "visemelab: error: %s\n", e.what());
         return vl::cli::kExitInvalidInput;

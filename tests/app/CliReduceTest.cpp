@@ -2,6 +2,7 @@
 
 #include "core/common/AtomicFile.h"
 #include "core/io/MeshIO.h"
+#include "core/project/Project.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -82,6 +83,39 @@ TEST(CliReduce, PhonemeTableWithMapGivesPhonemeMapping) {
     EXPECT_EQ(mapping["phonemes"]["P"], mapping["visemes"]["a"]);
     EXPECT_EQ(mapping["phonemes"]["AA"], mapping["visemes"]["c"]);
     EXPECT_EQ(readJson(out / "report.json")["weights"], "area");
+}
+
+TEST(CliReduce, ReadsAProjectFileAndLetsFlagsOverrideIt) {
+    TempDir dir("visemelab_cli_project");
+    writeSmallSet(dir.path);
+    Project project;
+    project.path = dir.path / "p.vlproj"; // relative mesh paths below resolve against its folder
+    project.neutral.file = "neutral.obj";
+    for (const char* name : {"a", "b", "c"}) project.visemes.push_back({name, std::string(name) + ".obj", {}});
+    project.frequencies.visemeFrequencies.entries = {{"a", 1}, {"b", 1}, {"c", 2}};
+    project.weights.mode = WeightMode::Area;
+    project.reduction.target = 2;
+    saveProject(dir.path / "p.vlproj", project);
+
+    const auto out = dir.path / "out";
+    auto r = test::runCli("reduce --project " + (dir.path / "p.vlproj").string() + " --out " + out.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    auto report = readJson(out / "report.json");
+    EXPECT_EQ(report["m"], 2);
+    EXPECT_EQ(report["weights"], "area");
+    EXPECT_EQ(report["groups"], nlohmann::json::parse(R"([["a","b"],["c"]])"));
+
+    r = test::runCli("reduce --project " + (dir.path / "p.vlproj").string() + " -m 1 --weights uniform --out " + out.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    report = readJson(out / "report.json");
+    EXPECT_EQ(report["m"], 1);
+    EXPECT_EQ(report["weights"], "uniform");
+
+    r = test::runCli("reduce --project " + (dir.path / "p.vlproj").string() + " --visemes " + dir.path.string());
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    r = test::runCli("reduce --project " + (dir.path / "missing.vlproj").string());
+    EXPECT_EQ(r.exitCode, 3) << r.output;
+    EXPECT_NE(r.output.find("missing.vlproj"), std::string::npos) << r.output;
 }
 
 TEST(CliReduce, UsageErrorsExitWith2) {
