@@ -4,6 +4,7 @@
 #include "core/adaptive/ContourError.h"
 #include "core/common/Error.h"
 
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -36,13 +37,15 @@ class NormalsCriterion final : public Criterion {
     bool needsRefinement(const AdaptiveMesh& mesh, OpenMesh::FaceHandle f) const override {
         const auto& m = mesh.mesh();
         const Vec3 n = faceNormal(mesh, f);
+        std::array<Vec3, 3> vertexNormal; // at the start of each halfedge, computed once
+        int k = 0;
         for (const auto h : m.fh_range(f)) {
             const auto g = m.face_handle(m.opposite_halfedge_handle(h));
             if (g.is_valid() && angleBetween(n, faceNormal(mesh, g)) > dihedral_) return true;
-            const Vec3 a = averagedVertexNormal(mesh, m.from_vertex_handle(h));
-            const Vec3 b = averagedVertexNormal(mesh, m.to_vertex_handle(h));
-            if (angleBetween(a, b) > endpoint_) return true;
+            vertexNormal[k++] = averagedVertexNormal(mesh, m.from_vertex_handle(h));
         }
+        for (int e = 0; e < 3; ++e)
+            if (angleBetween(vertexNormal[e], vertexNormal[(e + 1) % 3]) > endpoint_) return true;
         return false;
     }
 
