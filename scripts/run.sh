@@ -9,6 +9,7 @@ if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ] && [ -x "$bin/visemelab-editor" ]; 
 fi
 out=out/sample-reduction
 echo "No display: running the headless pipeline on the bundled sample (15 visemes -> 10)."
-"$bin/visemelab" reduce --visemes assets/sample --freq-file assets/sample/frequencies.csv \
+"$bin/visemelab" reduce --visemes assets/sample \
+  --freq-file assets/phonemes/en-us_frequencies.csv --map assets/phonemes/map_sample_face.csv \
   --weights area --target 10 --out "$out"
 echo "Results: $(pwd)/$out (merged OBJ + VRML meshes, mapping.json, report.json)"

@@ -161,4 +161,6 @@ TEST(CliReduce, ReducesTheBundledSample) {
     EXPECT_EQ(report["m"], 10);
     EXPECT_GE(report["n"].get<int>(), 15);
     EXPECT_EQ(report["groups"].size(), 10u);
+    const auto mapping = readJson(dir.path / "out" / "mapping.json");
+    EXPECT_GE(mapping["phonemes"].size(), 39u); // every phoneme of the inventory maps to a reduced viseme
 }
