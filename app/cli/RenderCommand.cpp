@@ -8,6 +8,7 @@
 #include "core/preview/Renderer.h"
 
 #include <cstdio>
+#include <filesystem>
 
 namespace vl::cli {
 
@@ -43,7 +44,9 @@ int runRender(const RenderCliOptions& o) {
     options.pitchDegrees = o.pitch;
     options.wireframe = o.wireframe;
     std::vector<preview::Image> images;
+    std::vector<std::string> labels; // file names without extension
     for (const auto& file : o.meshes) {
+        labels.push_back(std::filesystem::path(file).stem().string());
         const MeshData mesh = readMesh(file);
         if (o.faceColours) {
             if (!mesh.hasUVs()) throwInputError(file, "--face-colours needs (u,v) coordinates in the mesh");
@@ -51,7 +54,8 @@ int runRender(const RenderCliOptions& o) {
         }
         images.push_back(preview::render(mesh, options));
     }
-    preview::writePng(o.out, images.size() == 1 ? images.front() : preview::contactSheet(images, o.columns));
+    preview::writePng(o.out,
+                      images.size() == 1 ? images.front() : preview::contactSheet(images, o.columns, labels));
     std::printf("wrote %s\n", o.out.c_str());
     return kExitOk;
 }

@@ -178,9 +178,12 @@ Image render(const MeshData& mesh, const RenderOptions& options) {
     return image;
 }
 
-Image contactSheet(const std::vector<Image>& images, int columns) {
+Image contactSheet(const std::vector<Image>& images, int columns, const std::vector<std::string>& labels) {
     if (images.empty() || columns < 1)
         throwInputError("contact sheet", "needs at least one image and column");
+    if (!labels.empty() && labels.size() != images.size())
+        throwInputError("contact sheet", "got " + std::to_string(labels.size()) + " labels for " +
+                                             std::to_string(images.size()) + " images");
     const int w = images.front().width, h = images.front().height;
     for (const auto& im : images)
         if (im.width != w || im.height != h) throwInputError("contact sheet", "images differ in size");
@@ -196,6 +199,8 @@ Image contactSheet(const std::vector<Image>& images, int columns) {
         for (int y = 0; y < h; ++y)
             std::copy_n(&images[k].rgba[static_cast<std::size_t>(y) * w * 4], static_cast<std::size_t>(w) * 4,
                         &sheet.rgba[(static_cast<std::size_t>(oy + y) * sheet.width + ox) * 4]);
+        if (!labels.empty())
+            drawLabel(sheet, ox + 6, oy + 6, labels[k], std::max(1, h / 100), Vec3(0.9, 0.9, 0.9));
     }
     return sheet;
 }

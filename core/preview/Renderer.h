@@ -5,6 +5,8 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <string>
+#include <string_view>
 #include <vector>
 
 namespace vl::preview {
@@ -33,8 +35,13 @@ struct RenderOptions {
 // 1..8192, or a colour list of the wrong length.
 Image render(const MeshData& mesh, const RenderOptions& options);
 
-// Places images side by side in rows of `columns` (all must have the same size).
-Image contactSheet(const std::vector<Image>& images, int columns);
+// Places images side by side in rows of `columns` (all must have the same size); each gets its
+// label (if any) in its top-left corner.
+Image contactSheet(const std::vector<Image>& images, int columns,
+                   const std::vector<std::string>& labels = {});
+
+// Writes `text` (ASCII) with its top-left corner at (x, y), `scale` image pixels per font pixel.
+void drawLabel(Image& image, int x, int y, std::string_view text, int scale, const Vec3& colour);
 
 // Writes a PNG atomically (stb_image_write).
 void writePng(const std::filesystem::path& path, const Image& image);

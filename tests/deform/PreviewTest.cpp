@@ -70,6 +70,26 @@ TEST(Preview, WireframeDrawsEdges) {
     EXPECT_LT(preview::render(m, o).rgba[(32 * 65 + 32) * 4 + 1], 230);
 }
 
+TEST(Preview, ContactSheetLabelsEachCell) {
+    preview::RenderOptions o;
+    o.width = o.height = 50;
+    const auto im = preview::render(square(0, 1), o);
+    const auto plain = preview::contactSheet({im, im}, 2);
+    const auto labelled = preview::contactSheet({im, im}, 2, {"aa", "PP"});
+    // The label pixels are in the top-left corner of each cell; the rest is unchanged.
+    int changedLeft = 0, changedRight = 0;
+    for (int y = 0; y < 50; ++y)
+        for (int x = 0; x < 100; ++x)
+            if (std::memcmp(pixel(plain, x, y), pixel(labelled, x, y), 4) != 0) {
+                EXPECT_LT(y, 20);
+                EXPECT_LT(x % 50, 30);
+                ++(x < 50 ? changedLeft : changedRight);
+            }
+    EXPECT_GT(changedLeft, 5);
+    EXPECT_GT(changedRight, 5);
+    EXPECT_THROW(preview::contactSheet({im, im}, 2, {"one"}), InputError);
+}
+
 TEST(Preview, RejectsBadInput) {
     preview::RenderOptions o;
     EXPECT_THROW(preview::render(MeshData{}, o), InputError);
