@@ -1,4 +1,6 @@
+#include "core/deform/BundledFace.h"
 #include "core/io/MeshIO.h"
+#include "core/project/Project.h"
 #include "tests/app/CliRunner.h"
 
 #include <gtest/gtest.h>
@@ -44,6 +46,34 @@ TEST(CliRefine, WritesTheMeshAndAReport) {
     EXPECT_EQ(contour["parameters"]["jaw_open"], 0.8);
     EXPECT_EQ(contour["face"], "retarget");
     EXPECT_EQ(readMesh(dir / "c.obj").triangles.size(), contour["triangles"]);
+    fs::remove_all(dir);
+}
+
+TEST(CliRefine, UsesTheFaceOfAProject) {
+    const auto dir = fs::temp_directory_path() / "visemelab_cli_refine_project";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    Project project;
+    project.path = dir / "face.vlproj";
+    project.deformation.cascade = face::makeRetargetFace();
+    project.deformation.values = project.deformation.cascade.defaults();
+    project.deformation
+        .values[static_cast<std::size_t>(project.deformation.cascade.findParameter("jaw_open"))] = 0.5;
+    saveProject(project.path, project);
+    const auto r = test::runCli("refine --project " + project.path.string() + " --criterion contour --out " +
+                                (dir / "p.obj").string() + " --report " + (dir / "p.json").string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const auto report = readJson(dir / "p.json");
+    EXPECT_EQ(report["parameters"]["jaw_open"], 0.5);
+    EXPECT_EQ(report["face"], project.path.string());
+
+    Project empty; // no deformable face
+    empty.path = dir / "empty.vlproj";
+    saveProject(empty.path, empty);
+    const auto e =
+        test::runCli("refine --project " + empty.path.string() + " --out " + (dir / "e.obj").string());
+    EXPECT_EQ(e.exitCode, 3);
+    EXPECT_NE(e.output.find("no deformable face"), std::string::npos) << e.output;
     fs::remove_all(dir);
 }
 
