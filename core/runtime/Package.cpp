@@ -337,9 +337,11 @@ void Package::blend(const KeyWeight* weights, std::size_t count, float* out) con
     // value = offset + scale * q: fold every offset into one constant per axis, every scale into
     // one factor per key and axis, so the vertex loop is multiply-adds on the stored integers.
     float constant[3], factor[3];
-    for (int a = 0; a < 3; ++a) constant[a] = neutralQuant_.offset[a];
-    for (std::size_t i = 0; i < n; i += 3)
-        for (int a = 0; a < 3; ++a) out[i + a] = constant[a] + neutralQuant_.scale[a] * neutralQ_[i + a];
+    for (int a = 0; a < 3; ++a) {
+        constant[a] = neutralQuant_.offset[a];
+        factor[a] = neutralQuant_.scale[a];
+    }
+    dequantiseInto(neutralQ_.data(), n, constant, factor, false, out);
     for (std::size_t j = 0; j < count; ++j) {
         if (weights[j].key == kRestKey || weights[j].weight == 0.0f) continue;
         const Quantisation& qz = keyQuant_[weights[j].key];
@@ -347,9 +349,29 @@ void Package::blend(const KeyWeight* weights, std::size_t count, float* out) con
             constant[a] = weights[j].weight * qz.offset[a];
             factor[a] = weights[j].weight * qz.scale[a];
         }
-        const std::uint16_t* d = displacementsQ_.data() + n * weights[j].key;
-        for (std::size_t i = 0; i < n; i += 3)
-            for (int a = 0; a < 3; ++a) out[i + a] += constant[a] + factor[a] * d[i + a];
+        dequantiseInto(displacementsQ_.data() + n * weights[j].key, n, constant, factor, true, out);
+    }
+}
+
+// out[i] (+)= constant[i % 3] + factor[i % 3] * q[i]. Blocks of 12 values (4 vertices) repeat the
+// per-axis pattern exactly, so the inner loop has constant coefficients and vectorises.
+void Package::dequantiseInto(const std::uint16_t* q, std::size_t n, const float constant[3],
+                             const float factor[3], bool accumulate, float* out) {
+    constexpr std::size_t kBlock = 12;
+    float c[kBlock], f[kBlock];
+    for (std::size_t i = 0; i < kBlock; ++i) {
+        c[i] = constant[i % 3];
+        f[i] = factor[i % 3];
+    }
+    std::size_t i = 0;
+    if (accumulate) {
+        for (; i + kBlock <= n; i += kBlock)
+            for (std::size_t k = 0; k < kBlock; ++k) out[i + k] += c[k] + f[k] * static_cast<float>(q[i + k]);
+        for (; i < n; ++i) out[i] += c[i % 3] + f[i % 3] * static_cast<float>(q[i]);
+    } else {
+        for (; i + kBlock <= n; i += kBlock)
+            for (std::size_t k = 0; k < kBlock; ++k) out[i + k] = c[k] + f[k] * static_cast<float>(q[i + k]);
+        for (; i < n; ++i) out[i] = c[i % 3] + f[i % 3] * static_cast<float>(q[i]);
     }
 }
 

@@ -67,6 +67,8 @@ class Package {
     };
     friend struct PackageParser;
     void clear();
+    static void dequantiseInto(const std::uint16_t* q, std::size_t n, const float constant[3],
+                               const float factor[3], bool accumulate, float* out);
 
     std::uint32_t vertexCount_ = 0;
     std::uint32_t triangleCount_ = 0;
