@@ -463,7 +463,7 @@ void EditorUi::mainView(ImVec2 size) {
         std::vector<float> weights =
             playback_.playing ? playbackWeights(false) : visemeWeights(session.selectedViseme);
         style.color =
-            activePanel_ == Panel::Weights && showWeightsColours_ ? ColorMode::Scalar : ColorMode::Surface;
+            activePanel_ == Panel::Weights && showWeightsColours_ ? ColorMode::Scalar : surfaceColours();
         if (activePanel_ == Panel::Weights) weights.assign(weights.size(), 0.0f); // paint on the neutral
         events = mainView_.show(
             "main", size,

@@ -36,6 +36,61 @@ void EditorUi::exportPanel() {
             "Save project as", FileDialog::Mode::SaveFile, {".vlproj"},
             [this](const auto& path) { session.attempt("Save project", [&] { session.saveProject(path); }); },
             "project.vlproj");
+
+    sectionHeader("Runtime export (the reduced set)");
+    const Grouping* grouping = session.currentGrouping();
+    if (!session.visemes()) {
+        ImGui::TextDisabled("Load a viseme set first.");
+        return;
+    }
+    if (grouping)
+        ImGui::Text("%zu visemes -> %zu keys (m = %d)", session.visemeCount(), grouping->groups.size(),
+                    session.project().reduction.target);
+    else
+        ImGui::TextDisabled("No current reduction: the export runs it with the project's settings.");
+    struct Target {
+        ExportFormat format;
+        const char* label;
+        const char* help;
+        bool folder;
+        const char* defaultName;
+    };
+    const Target targets[] = {
+        {ExportFormat::Glb, "glTF binary (.glb)", "neutral + one morph target per merged viseme", false,
+         "face.glb"},
+        {ExportFormat::Runtime, "Runtime package", "compact little-endian package for the C++ runtime", false,
+         "face.vlrt"},
+        {ExportFormat::Vrml, "XfaceEd (VRML + .fdp)", "VRML97 meshes, face definition and phoneme dictionary",
+         true, ""},
+        {ExportFormat::Obj, "OBJ per key", "one OBJ file per merged viseme", true, ""},
+    };
+    for (const Target& target : targets) {
+        if (ImGui::Button(target.label, ImVec2(200, 0))) {
+            const ExportFormat format = target.format;
+            auto run = [this, format](const std::filesystem::path& out) {
+                session.attempt("Export", [&] { session.exportProject(format, out); });
+            };
+            if (target.folder)
+                fileDialog_.open(std::string("Export ") + target.label + ": choose a folder",
+                                 FileDialog::Mode::OpenFolder, {}, run);
+            else
+                fileDialog_.open(std::string("Export ") + target.label, FileDialog::Mode::SaveFile, {}, run,
+                                 target.defaultName);
+        }
+        ImGui::SameLine();
+        ImGui::TextDisabled("%s", target.help);
+    }
+
+    sectionHeader("Import");
+    if (ImGui::Button("Import glTF morph targets...", ImVec2(200, 0)))
+        guarded([this] {
+            fileDialog_.open("Import glTF", FileDialog::Mode::OpenFile, {".glb", ".gltf"},
+                             [this](const auto& path) {
+                                 session.attempt("Import glTF", [&] { session.importGltf(path); });
+                             });
+        });
+    ImGui::SameLine();
+    ImGui::TextDisabled("the targets become the visemes");
 }
 
 } // namespace vl::ui

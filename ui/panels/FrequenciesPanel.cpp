@@ -1,5 +1,7 @@
 // Frequencies panel: the editable phoneme frequency table with its phoneme -> viseme map (or direct
 // viseme frequencies), the resulting viseme frequencies live, CSV/JSON load and CSV save.
+#include "core/phonetics/PhonemeMaps.h"
+#include "core/phonetics/PhonemeTableIO.h"
 #include "ui/EditorUi.h"
 #include "ui/panels/PanelWidgets.h"
 
@@ -33,6 +35,28 @@ void EditorUi::frequenciesPanel() {
         "CSV lines 'name,frequency', or JSON {\"phonemes\": {...}, \"map\": {...}}. A phoneme table needs a "
         "map that covers every phoneme; errors name the file and line.");
 
+    sectionHeader("Phoneme frequencies");
+    if (ImGui::BeginCombo("##bundled-map", "Bundled en-us table with map...")) {
+        for (const BundledPhonemeMap& map : bundledPhonemeMaps(EditorSession::assetsDirectory()))
+            if (ImGui::Selectable(map.title.c_str()))
+                session.attempt("Phoneme map", [&] { session.useBundledPhonemeMap(map.id); });
+        ImGui::EndCombo();
+    }
+    helpMarker("The map's viseme names must be the names of the loaded visemes (the Oculus map fits the "
+               "sample face); otherwise the error lists what does not match and nothing changes.");
+    const bool counting = session.phonemeCountRunning();
+    if (counting) ImGui::BeginDisabled();
+    if (ImGui::Button("Count phonemes in a text file..."))
+        fileDialog_.open("Text corpus (espeak-ng, en-us)", FileDialog::Mode::OpenFile, {".txt", ".md", ""},
+                         [this](const auto& path) {
+                             session.attempt("Phoneme count", [&] { session.startPhonemeCount(path); });
+                         });
+    if (counting) {
+        ImGui::EndDisabled();
+        ImGui::ProgressBar(static_cast<float>(session.phonemeCountProgress()), ImVec2(-1, 0),
+                           "transcribing...");
+    }
+
     std::vector<double> frequencies;
     const bool ok = session.attempt("Frequencies", [&] { frequencies = session.visemeFrequencies(); });
     sectionHeader("Viseme frequencies (normalised)");
@@ -61,11 +85,13 @@ void EditorUi::frequenciesPanel() {
                 ImGui::PushID(static_cast<int>(i));
                 ImGui::TableNextRow();
                 ImGui::TableNextColumn();
-                ImGui::TextUnformatted(phoneme.c_str());
+                const std::string ipa = ipaOf(phoneme);
+                ImGui::AlignTextToFramePadding();
+                ImGui::Text("%s  %s", phoneme.c_str(), ipa.empty() ? "" : ("/" + ipa + "/").c_str());
                 ImGui::TableNextColumn();
                 float f = static_cast<float>(value);
                 ImGui::SetNextItemWidth(-1);
-                if (ImGui::DragFloat("##f", &f, 0.001f, 0.0f, 1e9f, "%.4f"))
+                if (ImGui::DragFloat("##f", &f, 1.0f, 0.0f, 1e9f, "%.6g"))
                     session.attempt("Phoneme frequency",
                                     [&] { session.setPhonemeFrequency(static_cast<int>(i), f); });
                 endEditOnRelease(session);
@@ -98,6 +124,7 @@ void EditorUi::frequenciesPanel() {
                 ImGui::PushID(static_cast<int>(i));
                 ImGui::TableNextRow();
                 ImGui::TableNextColumn();
+                ImGui::AlignTextToFramePadding();
                 ImGui::TextUnformatted(name.c_str());
                 ImGui::TableNextColumn();
                 float f = value ? static_cast<float>(*value) : 0.0f;

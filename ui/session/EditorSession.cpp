@@ -6,7 +6,11 @@
 #include "core/common/TextParsing.h"
 #include "core/deform/FaceDomain.h"
 #include "core/deform/Visemes.h"
+#include "core/export/Gltf.h"
 #include "core/io/MeshIO.h"
+#include "core/phonetics/EspeakTranscriber.h"
+#include "core/phonetics/PhonemeMaps.h"
+#include "core/phonetics/PhonemeTableIO.h"
 #include "core/project/ProjectRun.h"
 #include "core/reduce/Frequencies.h"
 #include "core/reduce/Weights.h"
@@ -170,7 +174,8 @@ void EditorSession::openProject(const std::filesystem::path& file) {
         model.parameters = next.project.deformation.values;
         model.domain = std::make_shared<const MeshData>(
             face::faceDomainMesh(kSampleResolution, face::DomainDensity::MouthFocused));
-        if (next.visemes && next.project.neutral.isEmbedded() && next.visemes->neutral.hasUVs())
+        // The face model defines the (u,v) face space: colour the visemes' regions by it.
+        if (next.visemes && next.visemes->neutral.hasUVs())
             next.visemeColours =
                 std::make_shared<const std::vector<Vec3>>(face::faceColours(next.visemes->neutral.uvs));
     }
@@ -181,33 +186,63 @@ void EditorSession::openProject(const std::filesystem::path& file) {
     info("Opened " + file.string());
 }
 
+Project EditorSession::projectSnapshot() const {
+    Project snapshot = project();
+    snapshot.editor.selectedViseme = visemes() && selectedViseme >= 0
+                                         ? visemes()->visemes[static_cast<std::size_t>(selectedViseme)].name
+                                         : "";
+    snapshot.reduction.result.reset();
+    if (currentGrouping()) {
+        ReductionResult last;
+        last.curve.assign(reductionCurve()->curve.begin(),
+                          reductionCurve()->curve.begin() + snapshot.reduction.target);
+        snapshot.reduction.result = std::move(last);
+    }
+    if (face().cascade) {
+        snapshot.deformation.cascade = *face().cascade;
+        snapshot.deformation.values = face().parameters;
+        if (snapshot.deformation.visemes.empty()) snapshot.deformation.visemes = oculusVisemes();
+    }
+    return snapshot;
+}
+
 void EditorSession::saveProject(const std::filesystem::path& file) {
     const std::filesystem::path target = file.empty() ? project().path : file;
     if (target.empty()) throwInputError("save", "the project has no file yet: use Save As");
-    Project toSave = project();
-    toSave.editor.selectedViseme = visemes() && selectedViseme >= 0
-                                       ? visemes()->visemes[static_cast<std::size_t>(selectedViseme)].name
-                                       : "";
-    toSave.reduction.result.reset();
-    if (face().cascade) {
-        toSave.deformation.cascade = *face().cascade;
-        toSave.deformation.values = face().parameters;
-        if (toSave.deformation.visemes.empty()) toSave.deformation.visemes = oculusVisemes();
-    }
-    if (const Grouping* grouping = currentGrouping()) {
-        ReductionResult last;
-        last.curve.assign(reductionCurve()->curve.begin(),
-                          reductionCurve()->curve.begin() + toSave.reduction.target);
-        (void)grouping;
-        toSave.reduction.result = std::move(last);
-    }
+    const Project toSave = projectSnapshot();
     vl::saveProject(target, toSave);
     // The saved file is the project's new home: record it without an undo step.
     EditorState next = state();
-    next.project = rebaseProject(project(), target);
-    next.project.reduction.result = toSave.reduction.result;
+    next.project = rebaseProject(toSave, target);
     history_.reset(std::move(next));
     info("Saved " + target.string());
+}
+
+std::vector<std::filesystem::path> EditorSession::exportProject(ExportFormat format,
+                                                                const std::filesystem::path& out) {
+    if (!visemes()) throwInputError("export", "load a viseme set first");
+    const ReducedModel model = projectReducedModel(projectSnapshot());
+    auto written = exportModel(model, format, out);
+    info(std::string("Exported ") + toString(format) + ": " + std::to_string(written.size()) +
+         " file(s) to " + out.string());
+    return written;
+}
+
+void EditorSession::importGltf(const std::filesystem::path& file) {
+    const VisemeSet imported = toVisemeSet(readGltf(file), file);
+    EditorState next;
+    next.project.neutral.embedded = imported.neutral;
+    for (const auto& viseme : imported.visemes) {
+        next.project.visemes.push_back({viseme.name, {}, viseme.positions});
+        next.project.frequencies.visemeFrequencies.entries.emplace_back(viseme.name, 1.0);
+    }
+    next.project.reduction.target = std::max(1, static_cast<int>(imported.size()) / 2);
+    next.visemes = std::make_shared<const VisemeSet>(imported);
+    validateInputs(next);
+    reductionTask_.cancel();
+    resetTo(std::move(next));
+    selectedViseme = -1;
+    info("Imported " + std::to_string(visemeCount()) + " morph targets from " + file.string());
 }
 
 void EditorSession::loadVisemeFolder(const std::filesystem::path& folder) {
@@ -485,6 +520,34 @@ void EditorSession::loadFrequencies(const std::filesystem::path& file) {
     info("Loaded frequencies from " + file.string());
 }
 
+void EditorSession::setFrequencySource(FrequencySource source, const std::string& actionName) {
+    EditorState next = state();
+    next.project.frequencies = std::move(source);
+    validateInputs(next);
+    commit(actionName, std::move(next));
+}
+
+void EditorSession::useBundledPhonemeMap(const std::string& mapId) {
+    const auto dir = assetsDirectory();
+    for (const BundledPhonemeMap& map : bundledPhonemeMaps(dir))
+        if (map.id == mapId)
+            return setFrequencySource(loadPhonemeFrequencySource(defaultPhonemeTablePath(dir), map.file),
+                                      "Phoneme table with map " + map.title);
+    throwInputError("phoneme map", "no bundled map '" + mapId + "'");
+}
+
+void EditorSession::startPhonemeCount(const std::filesystem::path& corpus, const std::string& voice) {
+    if (!visemes()) throwInputError("phoneme count", "load a viseme set first");
+    if (countTask_.running()) throwInputError("phoneme count", "a count is already running");
+    countCorpus_ = corpus;
+    countTask_.start("Counting phonemes", [corpus, voice](const auto& progress) {
+        auto transcriber = makeEspeakTranscriber(voice);
+        return countPhonemesInFile(corpus, *transcriber, [&](std::uint64_t done, std::uint64_t total) {
+            progress(total ? static_cast<double>(done) / static_cast<double>(total) : 0.0);
+        });
+    });
+}
+
 void EditorSession::saveFrequenciesCsv(const std::filesystem::path& file) const {
     const FrequencySource& source = project().frequencies;
     std::string text;
@@ -669,6 +732,29 @@ void EditorSession::startReduction() {
 }
 
 void EditorSession::poll() {
+    if (auto outcome = countTask_.take()) {
+        if (outcome->index() == 0) {
+            const PhonemeCountResult& counted = std::get<0>(*outcome);
+            attempt("Phoneme frequencies", [&] {
+                FrequencySource source;
+                source.phonemes = counted.counts;
+                if (project().frequencies.isPhonemeBased()) {
+                    source.map = project().frequencies.map;
+                } else {
+                    for (const BundledPhonemeMap& map : bundledPhonemeMaps(assetsDirectory()))
+                        if (map.id == "oculus")
+                            source.map = loadPhonemeFrequencySource(
+                                             defaultPhonemeTablePath(assetsDirectory()), map.file)
+                                             .map;
+                }
+                setFrequencySource(std::move(source),
+                                   "Phoneme frequencies from " + countCorpus_.filename().string());
+                info("Counted " + std::to_string(counted.phonemeTotal) + " phonemes");
+            });
+        } else {
+            error("Phoneme count: " + std::get<1>(*outcome));
+        }
+    }
     if (auto outcome = refinementTask_.take()) {
         if (outcome->index() == 0) {
             RefineOutcome& result = std::get<0>(*outcome);
@@ -708,6 +794,7 @@ void EditorSession::poll() {
 void EditorSession::finishBackgroundWork() {
     // poll() may start automatic re-runs; a few rounds settle them.
     for (int round = 0; round < 4; ++round) {
+        countTask_.wait();
         refinementTask_.wait();
         reductionTask_.wait();
         poll();

@@ -7,6 +7,8 @@
 #include "core/adaptive/Criteria.h"
 #include "core/deform/BundledFace.h"
 #include "core/deform/DeformationCascade.h"
+#include "core/export/Export.h"
+#include "core/phonetics/PhonemeCounting.h"
 #include "core/project/Project.h"
 #include "core/reduce/Reduction.h"
 #include "core/reduce/VisemeSet.h"
@@ -105,6 +107,12 @@ class EditorSession {
     void importViseme(const std::string& name, const std::filesystem::path& file);
     void removeViseme(int index);
     bool modified() const { return history_.modified(); }
+    // The project as it would be saved: face model and the current reduction result included.
+    Project projectSnapshot() const;
+    // Exports the reduced model (glb/runtime file, vrml/obj folder); returns the files written.
+    std::vector<std::filesystem::path> exportProject(ExportFormat format, const std::filesystem::path& out);
+    // The morph targets of a glTF/GLB file become the viseme set (a new project).
+    void importGltf(const std::filesystem::path& file);
 
     // --- frequencies -------------------------------------------------------------------------
     // Normalised viseme frequencies from the current table (throws InputError when invalid).
@@ -113,6 +121,15 @@ class EditorSession {
     void setPhonemeFrequency(int phoneme, double value); // phoneme mode
     void setPhonemeViseme(int phoneme, const std::string& viseme);
     void loadFrequencies(const std::filesystem::path& file);
+    // A phoneme table plus a map, e.g. the bundled en-us table and a bundled map (checked first).
+    void setFrequencySource(FrequencySource source, const std::string& actionName);
+    // The bundled American English table with the bundled map `mapId` ("oculus", "mpeg4", ...).
+    void useBundledPhonemeMap(const std::string& mapId);
+    // Counts the phonemes of a text file with espeak-ng on a worker thread; the counts replace the
+    // phoneme table (the current map is kept, or the bundled Oculus map is used).
+    void startPhonemeCount(const std::filesystem::path& corpus, const std::string& voice = "en-us");
+    bool phonemeCountRunning() const { return countTask_.running(); }
+    double phonemeCountProgress() const { return countTask_.progress(); }
     void saveFrequenciesCsv(const std::filesystem::path& file) const;
 
     // --- weights -----------------------------------------------------------------------------
@@ -217,6 +234,8 @@ class EditorSession {
         bool automatic = false;
     };
     BackgroundTask<RefineOutcome> refinementTask_;
+    BackgroundTask<PhonemeCountResult> countTask_;
+    std::filesystem::path countCorpus_;
     std::shared_ptr<AdaptiveWork> adaptive_;
     std::optional<RefinementReport> lastRefinement_;
     // Inputs of the last automatic re-adaptation.
