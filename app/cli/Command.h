@@ -30,5 +30,6 @@ void addVisemesCommand(CLI::App& app, CommandRunner& run);
 void addRenderCommand(CLI::App& app, CommandRunner& run);
 void addRefineCommand(CLI::App& app, CommandRunner& run);
 void addExportCommand(CLI::App& app, CommandRunner& run);
+void addProjectCommand(CLI::App& app, CommandRunner& run);
 
 } // namespace vl::cli

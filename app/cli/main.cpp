@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
     vl::cli::addRenderCommand(app, run);
     vl::cli::addRefineCommand(app, run);
     vl::cli::addExportCommand(app, run);
+    vl::cli::addProjectCommand(app, run);
 
     try {
         app.parse(argc, argv);

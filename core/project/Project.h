@@ -107,6 +107,11 @@ Project projectFromJsonText(std::string_view text, const std::filesystem::path& 
 // the folder of `newFile`, and path = newFile.
 Project rebaseProject(const Project& project, const std::filesystem::path& newFile);
 
+// How a project saved as `projectFile` refers to `file`: relative to the project's folder when both
+// are on the same root (e.g. "meshes/aa.obj", "../shared/aa.obj"), otherwise absolute.
+std::filesystem::path projectRelativePath(const std::filesystem::path& projectFile,
+                                          const std::filesystem::path& file);
+
 // Absolute (or working-directory-relative) location of a mesh file the project references.
 std::filesystem::path resolveProjectFile(const Project& project, const std::filesystem::path& file);
 

@@ -88,6 +88,14 @@ std::filesystem::path resolveProjectFile(const Project& project, const std::file
     return (folderOf(project.path) / file).lexically_normal();
 }
 
+std::filesystem::path projectRelativePath(const std::filesystem::path& projectFile,
+                                          const std::filesystem::path& file) {
+    const auto target = std::filesystem::absolute(file).lexically_normal();
+    const auto relative =
+        target.lexically_relative(std::filesystem::absolute(folderOf(projectFile)).lexically_normal());
+    return relative.empty() ? target : relative;
+}
+
 Project rebaseProject(const Project& project, const std::filesystem::path& newFile) {
     Project rebased = project;
     rebased.path = newFile;
@@ -95,10 +103,7 @@ Project rebaseProject(const Project& project, const std::filesystem::path& newFi
     const auto newFolder = std::filesystem::absolute(folderOf(newFile)).lexically_normal();
     if (oldFolder == newFolder) return rebased;
     const auto rebase = [&](std::filesystem::path& file) {
-        if (file.empty() || file.is_absolute()) return;
-        const auto target = (oldFolder / file).lexically_normal();
-        const auto relative = target.lexically_relative(newFolder);
-        file = relative.empty() ? target : relative;
+        if (!file.empty() && !file.is_absolute()) file = projectRelativePath(newFile, oldFolder / file);
     };
     rebase(rebased.neutral.file);
     for (auto& viseme : rebased.visemes) rebase(viseme.file);

@@ -1,0 +1,146 @@
+// `visemelab project new|check`: create a project file from meshes and tables, or validate one
+// (the file and the meshes it references) with the JSON path of the first problem.
+#include "app/cli/Command.h"
+#include "core/common/Error.h"
+#include "core/deform/BundledFace.h"
+#include "core/project/ProjectRun.h"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace vl::cli {
+
+namespace {
+
+struct NewProjectOptions {
+    std::string out;
+    std::string visemeDir;
+    std::string neutral;
+    std::string freqFile;
+    std::string phonemeFile;
+    std::string mapFile;
+    std::string weights = "uniform";
+    int target = 1;
+    std::string face;
+    std::string order;
+    bool reduce = false;
+};
+
+// Frequencies from the options: a viseme table, or a phoneme table plus a phoneme -> viseme map.
+FrequencySource frequenciesOf(const NewProjectOptions& o) {
+    if (!o.freqFile.empty()) return loadFrequencyFile(o.freqFile);
+    FrequencySource source;
+    if (o.phonemeFile.empty()) return source;
+    const FrequencySource table = loadFrequencyFile(o.phonemeFile);
+    // A plain two-column file reads as direct frequencies: here its names are phonemes.
+    source.phonemes = table.isPhonemeBased() ? table.phonemes : table.visemeFrequencies;
+    source.map = loadPhonemeMapFile(o.mapFile);
+    return source;
+}
+
+// The visemes in the order of the comma-separated `order` (which must name each exactly once).
+std::vector<ProjectViseme> reordered(std::vector<ProjectViseme> visemes, const std::string& order) {
+    if (order.empty()) return visemes;
+    std::vector<ProjectViseme> result;
+    std::size_t start = 0;
+    while (start <= order.size()) {
+        const auto end = std::min(order.find(',', start), order.size());
+        const std::string name = order.substr(start, end - start);
+        start = end + 1;
+        const auto it =
+            std::find_if(visemes.begin(), visemes.end(), [&](const auto& v) { return v.name == name; });
+        if (it == visemes.end())
+            throwInputError("--order", "'" + name + "' is not a viseme of the folder (or is repeated)");
+        result.push_back(std::move(*it));
+        visemes.erase(it);
+    }
+    if (!visemes.empty()) throwInputError("--order", "does not list '" + visemes.front().name + "'");
+    return result;
+}
+
+int runNew(const NewProjectOptions& o) {
+    if (!o.freqFile.empty() && !o.phonemeFile.empty()) throwUsage("give --freq-file or --phonemes, not both");
+    if (o.phonemeFile.empty() != o.mapFile.empty()) throwUsage("--phonemes and --map go together");
+    const std::filesystem::path out = o.out;
+    Project project;
+    project.path = out;
+
+    const auto files = listVisemeFolder(o.visemeDir, o.neutral);
+    std::filesystem::path neutral = o.neutral;
+    if (neutral.empty()) {
+        for (const char* ext : {".obj", ".ply", ".wrl"})
+            if (std::filesystem::exists(std::filesystem::path(o.visemeDir) / (std::string("neutral") + ext)))
+                neutral = std::filesystem::path(o.visemeDir) / (std::string("neutral") + ext);
+        if (neutral.empty())
+            throwUsage("no neutral.obj/.ply/.wrl in " + o.visemeDir + ": give --neutral FILE");
+    }
+    project.neutral.file = projectRelativePath(out, neutral);
+    for (const auto& [name, file] : files)
+        if (name != neutral.stem().string())
+            project.visemes.push_back({name, projectRelativePath(out, file), {}});
+
+    project.visemes = reordered(std::move(project.visemes), o.order);
+    project.frequencies = frequenciesOf(o);
+    const auto mode = weightModeFromString(o.weights);
+    if (!mode || *mode == WeightMode::Painted)
+        throwInputError("--weights", "expected uniform or area, got '" + o.weights + "'");
+    project.weights.mode = *mode;
+    project.reduction.target = o.target;
+
+    if (!o.face.empty()) {
+        project.deformation.cascade = face::makeFaceCascade(face::parseIndividual(o.face, "--face"));
+        project.deformation.values = project.deformation.cascade.defaults();
+        project.deformation.visemes = oculusVisemes();
+    }
+    if (o.reduce) storeReductionResult(project, reduceProject(project, loadProjectVisemeSet(project)));
+    saveProject(out, project);
+    std::printf("wrote %s: %zu visemes%s\n", out.string().c_str(), project.visemes.size(),
+                o.reduce ? (", reduced to " + std::to_string(o.target)).c_str() : "");
+    return kExitOk;
+}
+
+int runCheck(const std::string& file) {
+    const Project project = loadProject(file);
+    std::size_t vertices = 0;
+    if (project.neutral.isSet()) vertices = loadProjectVisemeSet(project).vertexCount();
+    std::printf("%s: valid project (version %d): %zu visemes, %zu vertices, %s frequencies, weights %s, "
+                "target %d%s%s\n",
+                file.c_str(), kProjectVersion, project.visemes.size(), vertices,
+                project.frequencies.isPhonemeBased() ? "phoneme" : "viseme", toString(project.weights.mode),
+                project.reduction.target, project.reduction.result ? ", with a reduction result" : "",
+                project.deformation.isSet() ? ", with a deformable face" : "");
+    return kExitOk;
+}
+
+} // namespace
+
+void addProjectCommand(CLI::App& app, CommandRunner& run) {
+    auto* cmd = app.add_subcommand("project", "Create or check a project file (.vlproj)");
+    cmd->require_subcommand(1, 1);
+
+    auto o = std::make_shared<NewProjectOptions>();
+    auto* create = cmd->add_subcommand("new", "Create a project from a folder of viseme meshes");
+    create->add_option("--out", o->out, "Project file to write")->required();
+    create
+        ->add_option("--visemes", o->visemeDir,
+                     "Folder of viseme meshes (sorted by name; neutral.* excluded)")
+        ->required();
+    create->add_option("--neutral", o->neutral,
+                       "Neutral mesh (default: neutral.obj/.ply/.wrl in the folder)");
+    create->add_option("--freq-file", o->freqFile, "Viseme frequencies (CSV or JSON)");
+    create->add_option("--phonemes", o->phonemeFile, "Phoneme frequency table (CSV or JSON), with --map");
+    create->add_option("--map", o->mapFile, "Phoneme -> viseme map (CSV or JSON)");
+    create->add_option("--weights", o->weights, "uniform | area")->capture_default_str();
+    create->add_option("--target", o->target, "Reduction target m")->capture_default_str();
+    create->add_option("--face", o->face, "Include a deformable face: bundled | retarget");
+    create->add_option("--order", o->order, "Viseme order, comma-separated (default: sorted by file name)");
+    create->add_flag("--reduce", o->reduce, "Run the reduction and store its result in the project");
+    create->callback([&run, o] { run = [o] { return runNew(*o); }; });
+
+    auto file = std::make_shared<std::string>();
+    auto* check = cmd->add_subcommand("check", "Validate a project file and read the meshes it references");
+    check->add_option("project", *file, "Project file (.vlproj)")->required();
+    check->callback([&run, file] { run = [file] { return runCheck(*file); }; });
+}
+
+} // namespace vl::cli
