@@ -17,7 +17,7 @@ std::vector<Vec3> faceColours(std::span<const Vec2> uvs) {
         c = mix(c, brow, browWeight(u, v));
         c = mix(c, nostril, nostrilWeight(u, v));
         c = mix(c, white, eyeWhiteWeight(u, v));
-        c = mix(c, iris, irisWeight(u, v));
+        c = mix(c, iris, 0.75 * irisWeight(u, v)); // soft: few vertices cover an iris
         colours.push_back(c);
     }
     return colours;

@@ -44,7 +44,7 @@ double eyeWhiteWeight(double u, double v) {
 
 double irisWeight(double u, double v) {
     const double du = std::abs(u - kMouthU) - kEyeU;
-    const double r = std::hypot(du / 0.021, (v - kEyeV) / 0.021);
+    const double r = std::hypot(du / 0.026, (v - kEyeV) / 0.026);
     return std::clamp(2.5 * (1.0 - r), 0.0, 1.0) * eyeWhiteWeight(u, v);
 }
 
@@ -81,6 +81,7 @@ double faceY(double v, const Proportions& p) {
     };
     double y = kScale * (integral(v) - integral(0.55));
     if (v < 0.12) y += kScale * 0.65 * (0.12 - v); // under the chin: y changes slowly
+    if (v < 0.05) y -= kScale * 1.2 * (0.05 - v);  // and turns down into the neck
     return y;
 }
 
