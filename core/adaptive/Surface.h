@@ -13,7 +13,8 @@ class Surface {
     // The base domain: uvs and triangles (positions are ignored). Triangles may be listed in either
     // orientation in (u,v) as long as all agree.
     virtual const MeshData& baseDomain() const = 0;
-    // The point of the surface at (u,v); must be deterministic (the mesh checks positions bit-exactly).
+    // The point of the surface at (u,v); must be deterministic (the mesh checks positions bit-exactly)
+    // and safe to call from several threads at once (AdaptiveMesh::resample runs in parallel).
     virtual Vec3 sample(const Vec2& uv) const = 0;
 };
 

@@ -1,6 +1,9 @@
+#include "core/adaptive/CascadeSurface.h"
 #include "core/deform/BundledFace.h"
+#include "core/deform/Visemes.h"
 #include "core/io/MeshIO.h"
 #include "core/project/Project.h"
+#include "core/reduce/VisemeSet.h"
 #include "tests/app/CliRunner.h"
 
 #include <gtest/gtest.h>
@@ -74,6 +77,29 @@ TEST(CliRefine, UsesTheFaceOfAProject) {
         test::runCli("refine --project " + empty.path.string() + " --out " + (dir / "e.obj").string());
     EXPECT_EQ(e.exitCode, 3);
     EXPECT_NE(e.output.find("no deformable face"), std::string::npos) << e.output;
+    fs::remove_all(dir);
+}
+
+TEST(CliVisemesAdaptive, WritesTheSetOnOneAdaptiveMesh) {
+    const auto dir = fs::temp_directory_path() / "visemelab_cli_visemes_adaptive";
+    fs::remove_all(dir);
+    const auto r = test::runCli(
+        "visemes --criterion contour --avg-error 0.08 --max-error 0.32 --decimals -1 --out " + dir.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const VisemeSet set = loadVisemeSet(dir / "neutral.obj", listVisemeFolder(dir, dir / "neutral.obj"));
+    EXPECT_EQ(set.size(), 15u);
+    // The same mesh as refining for neutral + every viseme directly.
+    const DeformationCascade cascade = face::makeBundledFace();
+    std::vector<std::vector<double>> poses{cascade.defaults()};
+    for (const auto& v : oculusVisemes()) poses.push_back(parameterVector(cascade, v));
+    CriterionSettings s;
+    s.kind = CriterionKind::Contour;
+    s.contour.averageError = 0.08;
+    s.contour.maximumError = 0.32;
+    const MeshData expected = refineFaceMesh(cascade, 10, s, poses);
+    EXPECT_EQ(set.neutral.triangles, expected.triangles);
+    EXPECT_EQ(set.neutral.uvs, expected.uvs);
+    EXPECT_EQ(readJson(dir / "visemes.json")["criterion"], "contour");
     fs::remove_all(dir);
 }
 
