@@ -2,6 +2,7 @@
 // reduction, paint, undo) and checks the resulting state; bad input must change nothing.
 #include "ui/session/EditorSession.h"
 #include "core/common/Error.h"
+#include "core/export/Export.h"
 #include "core/io/MeshIO.h"
 #include "core/paint/WeightBrush.h"
 
@@ -17,6 +18,13 @@ std::filesystem::path tempDir(const char* name) {
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     return dir;
+}
+
+// The face's own viseme set, with direct (uniform) viseme frequencies.
+void loadGeneratedSet(EditorSession& session) {
+    session.loadFace();
+    session.generateVisemesFromFace();
+    ASSERT_FALSE(session.project().frequencies.isPhonemeBased());
 }
 
 TEST(EditorSession, LoadsTheSampleAsAnInterpolableVisemeSet) {
@@ -57,7 +65,7 @@ TEST(EditorSession, ReductionRunsInTheBackgroundAndMatchesTheCoreReference) {
 TEST(EditorSession, ChangingAnInputInvalidatesTheCurveUntilTheNextRun) {
     EditorSession session;
     session.autoReduce = false;
-    session.loadSample();
+    loadGeneratedSet(session);
     session.startReduction();
     session.finishBackgroundWork();
     ASSERT_NE(session.reductionCurve(), nullptr);
@@ -164,7 +172,7 @@ TEST(EditorSession, NonInterpolableImportShowsTheCoreErrorAndChangesNothing) {
 
 TEST(EditorSession, NegativeFrequencyIsRefused) {
     EditorSession session;
-    session.loadSample();
+    loadGeneratedSet(session);
     const auto before = session.visemeFrequencies();
     EXPECT_THROW(session.setVisemeFrequency(0, -1.0), InputError);
     EXPECT_EQ(session.visemeFrequencies(), before);
@@ -181,17 +189,18 @@ TEST(EditorSession, PaintStrokeIsOneUndoStep) {
     for (int dab = 0; dab < 3; ++dab)
         applyBrushDab(set.neutral.positions, set.neutral.triangles, brush, set.neutral.positions[100],
                       weights);
+    const WeightMode before = session.project().weights.mode;
     session.setPaintedWeights(weights, "Paint stroke");
     EXPECT_EQ(session.project().weights.mode, WeightMode::Painted);
     EXPECT_EQ(session.weights(), weights);
     session.undo();
-    EXPECT_EQ(session.project().weights.mode, WeightMode::Uniform);
+    EXPECT_EQ(session.project().weights.mode, before);
 }
 
 TEST(EditorSession, SaveAndReopenProjectKeepsTheState) {
     const auto dir = tempDir("project");
     EditorSession session;
-    session.loadSample();
+    loadGeneratedSet(session);
     session.setTarget(7);
     session.setVisemeFrequency(3, 2.5);
     session.startReduction();
@@ -242,7 +251,6 @@ TEST(EditorSession, RefinementRunsInTheBackgroundAndIsUndoable) {
     settings.depth.depth = 3;
     session.setRefinementSettings(settings);
     session.startRefinement(RefineAction::Refine);
-    EXPECT_THROW(session.startRefinement(RefineAction::Refine), InputError); // one run at a time
     session.finishBackgroundWork();
     ASSERT_TRUE(session.lastRefinement().has_value());
     const MeshData& refined = *session.face().domain;
@@ -270,6 +278,71 @@ TEST(EditorSession, VisemesGeneratedOnARefinedMeshAreInterpolable) {
     session.startReduction();
     session.finishBackgroundWork();
     EXPECT_NE(session.reductionCurve(), nullptr);
+}
+
+} // namespace
+} // namespace vl::ui
+
+namespace vl::ui {
+namespace {
+
+TEST(EditorSession, ExportsTheReducedModelInEveryFormat) {
+    const auto dir = tempDir("export");
+    EditorSession session;
+    session.loadSample();
+    session.setTarget(6);
+    session.startReduction();
+    session.finishBackgroundWork();
+    const auto glb = session.exportProject(ExportFormat::Glb, dir / "face.glb");
+    ASSERT_FALSE(glb.empty());
+    EXPECT_TRUE(std::filesystem::exists(dir / "face.glb"));
+    EXPECT_FALSE(session.exportProject(ExportFormat::Runtime, dir / "face.vlrt").empty());
+    EXPECT_FALSE(session.exportProject(ExportFormat::Obj, dir / "obj").empty());
+    EXPECT_FALSE(session.exportProject(ExportFormat::Vrml, dir / "vrml").empty());
+    // The glb comes back as a viseme set with one morph target per group.
+    session.importGltf(dir / "face.glb");
+    EXPECT_EQ(session.visemeCount(), 6u);
+}
+
+TEST(EditorSession, BundledPhonemeMapDrivesTheVisemeFrequencies) {
+    EditorSession session;
+    session.loadFace();
+    session.generateVisemesFromFace(); // visemes named like the Oculus map
+    session.useBundledPhonemeMap("oculus");
+    ASSERT_TRUE(session.project().frequencies.isPhonemeBased());
+    const auto f = session.visemeFrequencies();
+    ASSERT_EQ(f.size(), session.visemeCount());
+    // Remapping a phoneme moves its frequency from one viseme to the other; undo restores it.
+    const auto& table = session.project().frequencies.phonemes.entries;
+    int aa = -1;
+    for (std::size_t i = 0; i < table.size(); ++i)
+        if (table[i].first == "AA") aa = static_cast<int>(i);
+    ASSERT_GE(aa, 0);
+    session.setPhonemeViseme(aa, "PP");
+    EXPECT_GT(session.visemeFrequencies()[static_cast<std::size_t>(session.visemes()->find("PP"))],
+              f[static_cast<std::size_t>(session.visemes()->find("PP"))]);
+    session.undo();
+    EXPECT_EQ(session.visemeFrequencies(), f);
+    EXPECT_THROW(session.setPhonemeViseme(aa, "no-such-viseme"), InputError);
+}
+
+TEST(EditorSession, CountsPhonemesOfATextFileInTheBackground) {
+    const auto dir = tempDir("corpus");
+    {
+        std::FILE* f = std::fopen((dir / "text.txt").string().c_str(), "w");
+        std::fputs("Hello world. The quick brown fox jumps over the lazy dog.\n", f);
+        std::fclose(f);
+    }
+    EditorSession session;
+    session.loadFace();
+    session.generateVisemesFromFace();
+    session.startPhonemeCount(dir / "text.txt");
+    session.finishBackgroundWork();
+    ASSERT_TRUE(session.project().frequencies.isPhonemeBased()) << session.messages().back().text;
+    double total = 0.0;
+    for (const auto& entry : session.project().frequencies.phonemes.entries) total += entry.second;
+    EXPECT_GT(total, 30.0);
+    EXPECT_TRUE(session.canUndo());
 }
 
 } // namespace
