@@ -41,14 +41,21 @@ int fuzzRuntimePackage(const std::uint8_t* data, std::size_t size) {
     // the fuzzer reaches the structural checks behind it.
     if (size >= runtime::kHeaderSize) {
         std::vector<std::uint8_t> repaired(data, data + size);
-        const std::uint32_t crc =
-            runtime::crc32(repaired.data() + runtime::kHeaderSize, size - runtime::kHeaderSize);
-        for (int i = 0; i < 4; ++i)
-            repaired[runtime::header::kPayloadCrc + static_cast<std::size_t>(i)] =
-                static_cast<std::uint8_t>(crc >> (8 * i));
+        repairPayloadCrc(repaired.data(), repaired.size());
         loaded |= loadAndAnimate(repaired.data(), repaired.size());
     }
     return loaded;
+}
+
+void repairPayloadCrc(std::uint8_t* data, std::size_t size) {
+    if (size < runtime::kHeaderSize) return;
+    const std::uint32_t crc = runtime::crc32(data + runtime::kHeaderSize, size - runtime::kHeaderSize);
+    for (std::size_t i = 0; i < 4; ++i)
+        data[runtime::header::kPayloadCrc + i] = static_cast<std::uint8_t>(crc >> (8 * i));
+}
+
+void repairPayloadCrc(std::string& bytes) {
+    repairPayloadCrc(reinterpret_cast<std::uint8_t*>(bytes.data()), bytes.size());
 }
 
 } // namespace vl::test

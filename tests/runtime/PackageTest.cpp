@@ -1,4 +1,6 @@
 #include "core/runtime/Package.h"
+#include "FuzzTarget.h"
+
 #include "core/export/RuntimePackageWriter.h"
 #include "core/runtime/Crc32.h"
 #include "core/runtime/PackageFormat.h"
@@ -159,12 +161,8 @@ TEST(RuntimePackage, RejectsEverySingleByteChange) {
     }
 }
 
-// Rewrites the CRC so a deliberately inconsistent payload reaches the structural checks.
 std::string withFixedCrc(std::string bytes) {
-    const auto* payload = bytesOf(bytes) + runtime::kHeaderSize;
-    const std::uint32_t crc = runtime::crc32(payload, bytes.size() - runtime::kHeaderSize);
-    for (int i = 0; i < 4; ++i)
-        bytes[runtime::header::kPayloadCrc + i] = static_cast<char>((crc >> (8 * i)) & 0xFF);
+    test::repairPayloadCrc(bytes);
     return bytes;
 }
 
