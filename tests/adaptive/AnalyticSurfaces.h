@@ -107,6 +107,35 @@ class BumpySurface : public Surface {
     double amplitude_;
 };
 
+// Applies `flips` random edge flips (where the quad is convex) to a domain: irregular vertex degrees.
+inline MeshData flipRandomEdges(MeshData d, int flips, unsigned seed) {
+    std::mt19937 rng(seed);
+    auto ccw = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+        const Vec2 e1 = d.uvs[b] - d.uvs[a], e2 = d.uvs[c] - d.uvs[a];
+        return e1[0] * e2[1] - e1[1] * e2[0] > 1e-9;
+    };
+    for (int done = 0, attempts = 0; done < flips && attempts < 100 * flips; ++attempts) {
+        const std::size_t t = rng() % d.triangles.size();
+        const int k = static_cast<int>(rng() % 3);
+        const auto a = d.triangles[t][k], b = d.triangles[t][(k + 1) % 3], c = d.triangles[t][(k + 2) % 3];
+        for (std::size_t u = 0; u < d.triangles.size(); ++u) {
+            const auto& o = d.triangles[u];
+            for (int j = 0; j < 3; ++j) {
+                if (o[j] != b || o[(j + 1) % 3] != a) continue;
+                const auto e = o[(j + 2) % 3];
+                if (ccw(c, a, e) && ccw(e, b, c)) {
+                    d.triangles[t] = {c, a, e};
+                    d.triangles[u] = {e, b, c};
+                    ++done;
+                }
+                j = 3;
+                u = d.triangles.size();
+            }
+        }
+    }
+    return d;
+}
+
 struct NamedDomain {
     std::string name;
     MeshData domain;
@@ -119,6 +148,7 @@ inline std::vector<NamedDomain> testDomains() {
         {"random", gridDomain(5, 5, Diagonals::Random, 0.3, false, 7)},
         {"hole", gridDomain(6, 6, Diagonals::Random, 0.2, true, 3)},
         {"fan7", fanDomain(7)},
+        {"flipped", flipRandomEdges(gridDomain(6, 6, Diagonals::Random, 0.3, false, 4), 40, 4)},
     };
 }
 

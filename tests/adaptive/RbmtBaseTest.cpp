@@ -61,6 +61,23 @@ TEST(RbmtBase, SplitConstructionMakesTwoOrFourTrianglesEach) {
     }
 }
 
+// Irregular triangulations (random flips of jittered grids, with and without a hole): the automatic
+// construction always yields blocks, usually without splitting anything.
+TEST(RbmtBase, IrregularDomainsAlwaysBecomeBlocks) {
+    int splitDomains = 0;
+    for (unsigned seed = 0; seed < 60; ++seed) {
+        SCOPED_TRACE(seed);
+        const MeshData grid = test::gridDomain(7, 6, test::Diagonals::Random, 0.3, seed % 3 == 0, seed);
+        const MeshData d = test::flipRandomEdges(grid, 40, seed);
+        EXPECT_NE(d.triangles, grid.triangles);
+        const RbmtBase base = makeRbmtBase(d);
+        EXPECT_TRUE(isUnionOfBasicBlocks(base));
+        EXPECT_NEAR(uvArea(base.uvs, base.triangles), uvArea(d.uvs, d.triangles), 1e-12);
+        splitDomains += base.splitEdges > 0;
+    }
+    EXPECT_LE(splitDomains, 6); // the pairing steps find blocks for (nearly) all of them
+}
+
 TEST(RbmtBase, AcceptsClockwiseDomainsAndDropsUnusedVertices) {
     MeshData d = test::gridDomain(2, 2, test::Diagonals::Same);
     for (auto& t : d.triangles) std::swap(t[1], t[2]);
