@@ -1,10 +1,8 @@
 #include "core/project/Project.h"
+#include "core/project/ProjectCompare.h"
 
 namespace vl {
 
-namespace {
-
-// The core's plain structs have no comparison operators of their own; these compare every field.
 bool sameMesh(const MeshData& a, const MeshData& b) {
     return a.positions == b.positions && a.uvs == b.uvs && a.triangles == b.triangles;
 }
@@ -71,8 +69,6 @@ bool sameResult(const std::optional<ReductionResult>& a, const std::optional<Red
         if (a->curve[p].cost != b->curve[p].cost || a->curve[p].groups != b->curve[p].groups) return false;
     return true;
 }
-
-} // namespace
 
 int Project::findViseme(std::string_view name) const {
     for (std::size_t i = 0; i < visemes.size(); ++i)

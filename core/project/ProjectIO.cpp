@@ -55,7 +55,7 @@ Project loadProject(const std::filesystem::path& file) {
         return projectFromJsonText(text, file, true);
     } catch (const InputError& e) {
         const std::string message = e.what();
-        if (message.starts_with(file.string())) throw; // JSON syntax errors name the file themselves
+        if (message.starts_with(file.string() + ": ")) throw; // JSON syntax errors name the file themselves
         rethrowWithPrefix(e, file.string() + ": ");
     }
 }

@@ -160,7 +160,7 @@ TEST(SampleProject, LoadsAndReduces) {
     const ReduceOutcome outcome = reduceProject(project, set);
     EXPECT_EQ(outcome.result.curve.size(), static_cast<std::size_t>(project.reduction.target));
     EXPECT_EQ(outcome.reduced.size(), static_cast<std::size_t>(project.reduction.target));
-    // The stored result is the one the reduction gives today.
+    // The stored result is the one the reduction gives today (else: scripts/make-sample-project.sh).
     ASSERT_TRUE(project.reduction.result);
     ASSERT_EQ(project.reduction.result->curve.size(), outcome.result.curve.size());
     for (std::size_t p = 0; p < outcome.result.curve.size(); ++p) {
@@ -202,7 +202,7 @@ TEST(ProjectCli, NewAndCheck) {
     // Same state as the committed sample (paths differ: they are relative to another folder).
     const Project made = loadProject(file);
     const Project committed = loadProject(assets / "sample" / "sample.vlproj");
-    EXPECT_TRUE(rebaseProject(made, committed.path) == committed) << "regenerate assets/sample/sample.vlproj";
+    EXPECT_TRUE(rebaseProject(made, committed.path) == committed) << "run scripts/make-sample-project.sh";
 
     ASSERT_EQ(runCli("project check \"" + file.string() + "\"", dir / "check.txt"), 0);
     EXPECT_NE(readFileToString(dir / "check.txt").find("valid project (version 1): 15 visemes"),
