@@ -5,16 +5,20 @@
 // throughput (frames per second of a phoneme animation over all keys, linear and cubic).
 //
 // Data sets (each skipped with a message when its files are absent):
-//  - sample: assets/sample (neutral.* + the viseme meshes of the bundled face), n -> 10;
+//  - sample: the bundled face's project assets/sample/sample.vlproj (its 16 visemes with its
+//    phoneme frequencies and weights), n -> 10;
 //  - synthetic: a 39 x 39 grid (1,521 vertices, 2,888 triangles: the paper's 3,000-triangle head)
 //    with 16 random smooth visemes, always available;
 //  - ict: ICT FaceKit (26,719 vertices, 52,220 triangles) from ../shared/data/ict-facekit-mouth:
 //    its 7 mouth shapes plus 9 pairwise blends = 16 visemes, -> 10.
-// Frequencies are equal (they change which visemes merge, not the runtime's costs); weights uniform.
+// For synthetic and ict, frequencies are equal (they change which visemes merge, not the runtime's
+// costs) and weights uniform.
+#include "core/export/Export.h"
 #include "core/export/KeyMeshFiles.h"
 #include "core/export/ReducedModel.h"
 #include "core/export/RuntimePackageWriter.h"
 #include "core/io/MeshIO.h"
+#include "core/project/Project.h"
 #include "core/reduce/Frequencies.h"
 #include "core/reduce/Reduction.h"
 #include "core/reduce/VisemeSet.h"
@@ -49,14 +53,13 @@ struct Figures {
 };
 std::vector<Figures> gFigures;
 
-std::optional<VisemeSet> sampleSet() {
-    const fs::path dir = fs::path(VISEMELAB_ASSETS_DIR) / "sample";
-    if (!fs::is_directory(dir)) return std::nullopt;
-    for (const char* ext : {".obj", ".ply", ".wrl"})
-        if (fs::exists(dir / (std::string("neutral") + ext)))
-            return loadVisemeSet(dir / (std::string("neutral") + ext),
-                                 listVisemeFolder(dir, dir / (std::string("neutral") + ext)));
-    return std::nullopt;
+std::optional<Project> sampleProject() {
+    const fs::path file = fs::path(VISEMELAB_ASSETS_DIR) / "sample" / "sample.vlproj";
+    if (!fs::exists(file)) return std::nullopt;
+    Project project = loadProject(file);
+    project.reduction.target = kTarget;
+    project.reduction.result.reset();
+    return project;
 }
 
 VisemeSet syntheticSet() {
@@ -114,8 +117,10 @@ std::optional<VisemeSet> ictSet() {
     return set;
 }
 
+// Bytes malloc has handed out, including the large blocks it maps separately.
 std::size_t heapInUse() {
-    return mallinfo2().uordblks;
+    const struct mallinfo2 info = mallinfo2();
+    return info.uordblks + info.hblkhd;
 }
 
 void measure(const Variant& v) {
@@ -176,17 +181,22 @@ void benchEvaluate(benchmark::State& state, Variant v, runtime::Interpolation in
         benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
 
-void prepare(const std::string& name, const VisemeSet& set, const fs::path& work,
-             std::vector<Variant>& variants) {
+// Equal frequencies, uniform weights, n -> kTarget.
+std::pair<ReducedModel, ReducedModel> fullAndReduced(const VisemeSet& set) {
     const std::vector<double> frequencies(set.size(), 1.0 / static_cast<double>(set.size()));
     FrequencySource source; // visemes stand for themselves as phonemes
     std::vector<std::vector<Vec3>> shapes;
     for (const Viseme& v : set.visemes) shapes.push_back(v.positions);
     const std::vector<double> weights(set.vertexCount(), 1.0);
-    const int target = std::min<int>(kTarget, static_cast<int>(set.size()) - 1);
-    const ReductionResult result = reduceVisemes({shapes, frequencies, weights, target});
-    const ReducedModel full = unreducedModel(set, frequencies, source);
-    const ReducedModel reduced = buildReducedModel(set, frequencies, result.groupOf(), source);
+    const ReductionResult result = reduceVisemes({shapes, frequencies, weights, kTarget});
+    return {unreducedModel(set, frequencies, source),
+            buildReducedModel(set, frequencies, result.groupOf(), source)};
+}
+
+void prepare(const std::string& name, const std::pair<ReducedModel, ReducedModel>& models,
+             const fs::path& work, std::vector<Variant>& variants) {
+    const ReducedModel& full = models.first;
+    const ReducedModel& reduced = models.second;
     for (const auto& [kind, model] : {std::pair{"full", &full}, std::pair{"reduced", &reduced}}) {
         const fs::path vrml = work / (name + "_" + kind + "_vrml");
         writeKeyMeshFiles(vrml, *model, ".wrl");
@@ -210,13 +220,13 @@ int main(int argc, char** argv) {
     const fs::path work = fs::temp_directory_path() / "visemelab_bench_runtime";
     fs::create_directories(work);
     std::vector<Variant> variants;
-    if (const auto sample = sampleSet())
-        prepare("sample", *sample, work, variants);
+    if (const auto sample = sampleProject())
+        prepare("sample", {projectReducedModel(*sample, true), projectReducedModel(*sample)}, work, variants);
     else
         std::fprintf(stderr, "bench_runtime: assets/sample not present: skipping the sample face\n");
-    prepare("synthetic", syntheticSet(), work, variants);
+    prepare("synthetic", fullAndReduced(syntheticSet()), work, variants);
     if (const auto ict = ictSet())
-        prepare("ict", *ict, work, variants);
+        prepare("ict", fullAndReduced(*ict), work, variants);
     else
         std::fprintf(stderr,
                      "bench_runtime: ../shared/data/ict-facekit-mouth not present: skipping ICT FaceKit\n");
