@@ -75,6 +75,12 @@ void applyStartOptions(const EditorOptions& options, EditorSession& session, Edi
         session.applyVisemePreset(options.preset);
     }
     if (!options.refine.empty()) session.startRefinement(RefineAction::Refine);
+    if (!options.field.empty()) {
+        if (!session.face().cascade) session.loadFace();
+        if (!ui.selectField(options.field))
+            throwInputError("--field", "no analytic field named '" + options.field + "'");
+    }
+    if (options.play >= 0.0) ui.startPlayback(options.play, options.sequence);
 }
 
 } // namespace

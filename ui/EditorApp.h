@@ -11,10 +11,13 @@ struct EditorOptions {
     bool sample = false;              // load the bundled sample at start
     std::filesystem::path screenshot; // non-empty: render `frames` frames, save a PNG, exit
     int frames = 6;
-    std::string panel;  // panel to show (Visemes, Frequencies, Weights, ...)
-    std::string viseme; // viseme to select
-    std::string preset; // viseme preset applied to the deformable face
-    std::string refine; // run a refinement with this criterion (depth, normals, contour)
+    std::string panel;    // panel to show (Visemes, Frequencies, Weights, ...)
+    std::string viseme;   // viseme to select
+    std::string preset;   // viseme preset applied to the deformable face
+    std::string field;    // deformation field (stage name) to select
+    double play = -1.0;   // >= 0: start the playback at this time (seconds)
+    std::string sequence; // playback sequence (phonemes or viseme names)
+    std::string refine;   // run a refinement with this criterion (depth, normals, contour)
     int width = 1600;
     int height = 1000;
 };

@@ -64,6 +64,24 @@ void EditorUi::selectPanel(Panel panel) {
     panelSelectPending_ = true;
 }
 
+bool EditorUi::selectField(const std::string& stageName) {
+    const auto& cascade = session.face().cascade;
+    if (!cascade) return false;
+    for (std::size_t s = 0; s < cascade->stages.size(); ++s)
+        if (cascade->stages[s].name == stageName && !cascade->stages[s].field.influences.empty()) {
+            selectedStage_ = static_cast<int>(s);
+            selectedInfluence_ = 0;
+            return true;
+        }
+    return false;
+}
+
+void EditorUi::startPlayback(double time, std::string sequence) {
+    playback_.playing = true;
+    playback_.time = time;
+    playback_.sequence = std::move(sequence);
+}
+
 void EditorUi::requestQuit() {
     guarded([this] { quitConfirmed_ = true; });
 }
@@ -453,6 +471,18 @@ void EditorUi::mainView(ImVec2 size) {
         events = mainView_.show("main", size, [&](const glm::mat4& view, const glm::mat4& projection) {
             faceMesh_.draw(shader_, q, view, projection, style);
         });
+        const auto& cascade = session.face().cascade;
+        if (activePanel_ == Panel::Deformation && cascade && selectedStage_ >= 0 &&
+            selectedStage_ < static_cast<int>(cascade->stages.size()) &&
+            selectedInfluence_ <
+                static_cast<int>(
+                    cascade->stages[static_cast<std::size_t>(selectedStage_)].field.influences.size())) {
+            // A (u,v) inset in the view's lower right corner.
+            const float side = std::min(300.0f, 0.35f * (events.imageMax.y - events.imageMin.y));
+            ImGui::SetCursorScreenPos(
+                ImVec2(events.imageMax.x - side - 16.0f, events.imageMax.y - side - 16.0f));
+            uvView(selectedStage_, selectedInfluence_, side);
+        }
         if (faceMesh_.empty())
             emptyViewHint(events.imageMin, events.imageMax,
                           "No face loaded: use \"Load bundled face\" in the panel");

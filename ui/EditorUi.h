@@ -48,6 +48,10 @@ class EditorUi {
     // Builds the whole interface for one frame (between ImGui::NewFrame and ImGui::Render).
     void frame();
     void selectPanel(Panel panel);
+    // Selects the first analytic region of the cascade stage with this name (Deformation panel).
+    bool selectField(const std::string& stageName);
+    // Starts the phoneme-sequence playback at `time` seconds.
+    void startPlayback(double time, std::string sequence = {});
     Panel activePanel() const { return activePanel_; }
     // Frames every 3D view on its model (key F).
     void frameAll();
@@ -75,7 +79,7 @@ class EditorUi {
     void refinementPanel();
     void reductionPanel();
     void exportPanel();
-    void uvView(int stage, int influence);
+    void uvView(int stage, int influence, float side);
 
     void mainView(ImVec2 size);
     void comparisonViews(ImVec2 size);

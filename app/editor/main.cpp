@@ -17,6 +17,9 @@ int main(int argc, char** argv) {
         "Panel to show: Visemes, Frequencies, Weights, Deformation, Refinement, Reduction, Export");
     app.add_option("--viseme", options.viseme, "Viseme to select");
     app.add_option("--preset", options.preset, "Viseme preset applied to the deformable face");
+    app.add_option("--field", options.field, "Deformation field (stage name) to select");
+    app.add_option("--play", options.play, "Start the playback at this time in seconds");
+    app.add_option("--sequence", options.sequence, "Playback sequence: phonemes or viseme names");
     app.add_option("--refine", options.refine,
                    "Refine the face with this criterion: depth, normals, contour");
     app.add_option(

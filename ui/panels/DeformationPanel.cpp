@@ -136,7 +136,7 @@ void EditorUi::deformationPanel() {
             if (changed)
                 session.attempt("Field",
                                 [&] { session.setInfluence(selectedStage_, selectedInfluence_, field); });
-            uvView(selectedStage_, selectedInfluence_);
+            ImGui::TextDisabled("The region is drawn on the face and in the (u,v) inset of the view.");
         }
     }
 
@@ -146,14 +146,15 @@ void EditorUi::deformationPanel() {
         guarded([this] { session.attempt("Generate visemes", [&] { session.generateVisemesFromFace(); }); });
 }
 
-void EditorUi::uvView(int stage, int influence) {
+void EditorUi::uvView(int stage, int influence, float side) {
     const FaceModel& model = session.face();
     const InfluenceField& field = model.cascade->stages[static_cast<std::size_t>(stage)]
                                       .field.influences[static_cast<std::size_t>(influence)];
-    const float side = std::min(ImGui::GetContentRegionAvail().x, 260.0f);
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     ImGui::InvisibleButton("##uv", ImVec2(side, side));
     ImDrawList* draw = ImGui::GetWindowDrawList();
+    draw->AddRect(ImVec2(origin.x - 1, origin.y - 1), ImVec2(origin.x + side + 1, origin.y + side + 1),
+                  IM_COL32(120, 125, 140, 255));
     // v grows upwards in the view, as on the face.
     auto toScreen = [&](double u, double v) {
         return ImVec2(origin.x + static_cast<float>(u) * side, origin.y + static_cast<float>(1.0 - v) * side);
@@ -191,7 +192,8 @@ void EditorUi::uvView(int stage, int influence) {
         session.attempt("Field", [&] { session.setInfluence(stage, influence, moved); });
     }
     if (ImGui::IsItemDeactivated()) session.endEdit();
-    ImGui::TextDisabled("(u,v) view: drag to move the centre");
+    draw->AddText(ImVec2(origin.x + 6, origin.y + 4), IM_COL32(220, 220, 230, 255),
+                  "(u,v): drag to move the centre");
 }
 
 } // namespace vl::ui
