@@ -112,3 +112,21 @@ TEST_F(ProjectMigration, Version0ErrorsNameTheirPlace) {
 
 } // namespace
 } // namespace vl
+
+namespace vl {
+namespace {
+
+TEST(ProjectFile, MissingEmptyOrForeignFilesAreRefused) {
+    test::ScratchDir dir("files");
+    EXPECT_INPUT_ERROR(loadProject(dir / "none.vlproj"), (dir / "none.vlproj").string() + ": file not found");
+    test::writeText(dir / "empty.vlproj", "");
+    EXPECT_INPUT_ERROR(loadProject(dir / "empty.vlproj"), (dir / "empty.vlproj").string() + ": invalid JSON");
+    test::writeText(dir / "mesh.vlproj", "v 0 0 0\nf 1 2 3\n");
+    EXPECT_INPUT_ERROR(loadProject(dir / "mesh.vlproj"), "invalid JSON: parse error at line 1, column 1");
+    test::writeText(dir / "other.vlproj", R"({"asset": {"version": "2.0"}})");
+    EXPECT_INPUT_ERROR(loadProject(dir / "other.vlproj"),
+                       (dir / "other.vlproj").string() + ": /format: missing field");
+}
+
+} // namespace
+} // namespace vl
