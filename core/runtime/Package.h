@@ -1,9 +1,10 @@
 #pragma once
 // The device-side reader of a VisemeLab runtime package (docs/runtime-format.md). Dependency-free
-// C++20 (standard library only), no exceptions thrown on bad input: every load validates magic,
-// version, sizes, offsets, counts, CRC-32 and indices, and returns false with a message instead of
-// reading out of bounds. The loaded package keeps positions in the file's representation (float32
-// or 16-bit quantised), so its resident memory is about the size of the file.
+// C++17 (standard library only; tests/runtime compiles it as C++17 too), no exceptions thrown on
+// bad input: every load validates magic, version, sizes, offsets, counts, CRC-32 and indices, and
+// returns false with a message instead of reading out of bounds. The loaded package keeps
+// positions in the file's representation (float32 or 16-bit quantised), so its resident memory is
+// about the size of the file.
 #include <cstddef>
 #include <cstdint>
 #include <string>
