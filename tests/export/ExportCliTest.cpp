@@ -17,7 +17,10 @@ namespace {
 class ExportCli : public ::testing::Test {
   protected:
     void SetUp() override {
-        dir = std::filesystem::temp_directory_path() / "visemelab_export_cli_test";
+        // One folder per test: ctest runs the tests of this fixture in parallel.
+        dir = std::filesystem::temp_directory_path() /
+              (std::string("visemelab_export_cli_") +
+               ::testing::UnitTest::GetInstance()->current_test_info()->name());
         std::filesystem::remove_all(dir);
         std::filesystem::create_directories(dir / "meshes");
         const ReducedModel shapes = test::randomModel(8, 6, 4, true, 91, 0.1);
