@@ -1,14 +1,17 @@
 // `visemelab visemes`: writes the interpolable viseme set of a bundled deformable face (neutral +
-// the 15 Oculus visemes as OBJ) and visemes.json with the names and parameter vectors.
+// the 15 Oculus visemes, or those of --viseme-file, as OBJ) and visemes.json with the names and
+// parameter vectors.
 #include "app/cli/Command.h"
 #include "app/cli/CriterionOptions.h"
 #include "core/adaptive/CascadeSurface.h"
 #include "core/common/AtomicFile.h"
 #include "core/common/Error.h"
+#include "core/common/TextParsing.h"
 #include "core/deform/BundledFace.h"
 #include "core/deform/FaceDomain.h"
 #include "core/deform/Visemes.h"
 #include "core/io/MeshIO.h"
+#include "core/project/JsonRead.h"
 
 #include <nlohmann/json.hpp>
 
@@ -27,7 +30,39 @@ struct VisemesOptions {
     std::string density = "mouth";
     CriterionOptions adaptive; // --criterion given: adaptive refinement instead of the grid
     int decimals = 6;
+    std::string visemeFile; // empty: the 15 Oculus visemes
 };
+
+// Viseme parameter vectors from a JSON file in the format visemes.json is written in:
+// {"visemes": [{"name": "aa", "parameters": {"jaw_open": 1, ...}}, ...]} (other keys are ignored, so
+// an edited visemes.json reads back). Unknown parameters and out-of-range values name the JSON path.
+std::vector<VisemeParameters> readVisemeFile(const std::filesystem::path& path,
+                                             const DeformationCascade& face) {
+    const Json document = parseJsonStrict(readFileToString(path), path.string());
+    const JsonNode root(document, path.string() + ":");
+    if (!document.is_object() || !root.has("visemes"))
+        throwInputError(path.string(), "expected an object with a \"visemes\" array");
+    std::vector<VisemeParameters> visemes;
+    for (const JsonNode& entry : root["visemes"].elements()) {
+        entry.expectObject();
+        entry.allowOnly({"name", "file", "parameters"});
+        VisemeParameters v;
+        v.name = entry["name"].nonEmptyString();
+        if (entry.has("parameters"))
+            for (const auto& [name, value] : entry["parameters"].members()) {
+                const int k = face.findParameter(name);
+                if (k < 0) value.fail("unknown parameter '" + name + "'");
+                const auto& p = face.parameters[static_cast<std::size_t>(k)];
+                const double x = value.number();
+                if (x < p.min || x > p.max)
+                    value.fail("value " + formatDouble(x) + " is outside [" + formatDouble(p.min) + ", " +
+                               formatDouble(p.max) + "]");
+                v.values.emplace_back(name, x);
+            }
+        visemes.push_back(std::move(v));
+    }
+    return visemes;
+}
 
 // Rounds coordinates to `decimals` decimal places (file size: short numbers); < 0 keeps them exact.
 void roundCoordinates(VisemeSet& set, int decimals) {
@@ -44,11 +79,12 @@ void roundCoordinates(VisemeSet& set, int decimals) {
 
 // The (u,v) mesh every viseme is generated on. One place, so other ways of building it (adaptive
 // refinement criteria) plug in here.
-MeshData buildVisemeMesh(const VisemesOptions& o, const DeformationCascade& face) {
+MeshData buildVisemeMesh(const VisemesOptions& o, const DeformationCascade& face,
+                         const std::vector<VisemeParameters>& visemes) {
     if (!o.adaptive.criterion.empty()) {
         // Refined until the criterion holds for the neutral face and every viseme (one shared mesh).
         std::vector<std::vector<double>> poses{face.defaults()};
-        for (const auto& v : oculusVisemes()) poses.push_back(parameterVector(face, v));
+        for (const auto& v : visemes) poses.push_back(parameterVector(face, v));
         return refineFaceMesh(face, o.adaptive.baseResolution, criterionSettings(o.adaptive), poses);
     }
     face::DomainDensity density;
@@ -87,8 +123,8 @@ nlohmann::json describe(const VisemesOptions& o, const DeformationCascade& face,
 int runVisemes(const VisemesOptions& o) {
     const auto individual = face::parseIndividual(o.face, "--face");
     const DeformationCascade cascade = face::makeFaceCascade(individual);
-    const MeshData uvMesh = buildVisemeMesh(o, cascade);
-    const auto visemes = oculusVisemes();
+    const auto visemes = o.visemeFile.empty() ? oculusVisemes() : readVisemeFile(o.visemeFile, cascade);
+    const MeshData uvMesh = buildVisemeMesh(o, cascade, visemes);
     if (o.decimals > 15) throwInputError("--decimals", "must be at most 15 (or negative for exact values)");
     VisemeSet set = generateVisemeSet(cascade, uvMesh, visemes);
     roundCoordinates(set, o.decimals);
@@ -119,6 +155,9 @@ void addVisemesCommand(CLI::App& app, CommandRunner& run) {
                     "Grid line spacing: uniform, or mouth (denser at mouth and eyes)")
         ->capture_default_str();
     addCriterionOptions(cmd, options->adaptive);
+    cmd->add_option(
+        "--viseme-file", options->visemeFile,
+        "JSON with the visemes' parameter vectors (the format of visemes.json; default: Oculus 15)");
     cmd->add_option("--decimals", options->decimals,
                     "Round coordinates to this many decimals (centimetres; negative: exact doubles)")
         ->capture_default_str();

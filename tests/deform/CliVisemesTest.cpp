@@ -44,6 +44,39 @@ TEST(CliVisemes, WritesAnInterpolableSetAndItsParameterVectors) {
     fs::remove_all(dir);
 }
 
+TEST(CliVisemes, ReadsEditedParameterVectors) {
+    const auto dir = freshDir("cli_viseme_file");
+    fs::create_directories(dir);
+    const auto file = dir / "mine.json";
+    std::ofstream(file) << R"({"visemes": [{"name": "open", "parameters": {"jaw_open": 0.5}},
+                                           {"name": "smile", "parameters": {"zygomatic_l": 1, "zygomatic_r": 1}}]})";
+    const auto r = test::runCli("visemes --resolution 12 --viseme-file " + file.string() + " --out " +
+                                (dir / "out").string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_TRUE(fs::exists(dir / "out" / "open.obj"));
+    EXPECT_TRUE(fs::exists(dir / "out" / "smile.obj"));
+    EXPECT_FALSE(fs::exists(dir / "out" / "aa.obj"));
+    // The written visemes.json reads back as a viseme file.
+    const auto again =
+        test::runCli("visemes --resolution 12 --viseme-file " + (dir / "out" / "visemes.json").string() +
+                     " --out " + (dir / "again").string());
+    ASSERT_EQ(again.exitCode, 0) << again.output;
+    EXPECT_EQ(readMesh(dir / "again" / "smile.obj").positions, readMesh(dir / "out" / "smile.obj").positions);
+
+    std::ofstream(file) << R"({"visemes": [{"name": "open", "parameters": {"jaw": 0.5}}, {"name": "b"}]})";
+    const auto bad =
+        test::runCli("visemes --viseme-file " + file.string() + " --out " + (dir / "bad").string());
+    EXPECT_EQ(bad.exitCode, 3);
+    EXPECT_NE(bad.output.find("/visemes/0/parameters/jaw: unknown parameter 'jaw'"), std::string::npos)
+        << bad.output;
+    std::ofstream(file) << R"({"visemes": [{"name": "open", "parameters": {"jaw_open": 2}}, {"name": "b"}]})";
+    const auto range =
+        test::runCli("visemes --viseme-file " + file.string() + " --out " + (dir / "bad").string());
+    EXPECT_EQ(range.exitCode, 3);
+    EXPECT_NE(range.output.find("jaw_open: value 2 is outside [0, 1]"), std::string::npos) << range.output;
+    fs::remove_all(dir);
+}
+
 TEST(CliVisemes, RejectsBadOptions) {
     EXPECT_EQ(test::runCli("visemes --face alien --out /tmp/x").exitCode, 3);
     EXPECT_EQ(test::runCli("visemes --resolution 3 --out /tmp/x").exitCode, 3);
