@@ -10,6 +10,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <unistd.h>
 
 namespace vl {
 namespace {
@@ -17,7 +18,8 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path freshDir(const std::string& name) {
-    const auto dir = fs::temp_directory_path() / ("visemelab_" + name);
+    // The process id keeps concurrent runs (several build folders, ctest -j) apart.
+    const auto dir = fs::temp_directory_path() / ("visemelab_" + name + "_" + std::to_string(::getpid()));
     fs::remove_all(dir);
     return dir;
 }

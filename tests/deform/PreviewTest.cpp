@@ -6,6 +6,8 @@
 
 #include <cstring>
 #include <filesystem>
+#include <string>
+#include <unistd.h>
 
 namespace vl {
 namespace {
@@ -108,7 +110,8 @@ TEST(Preview, WritesAPngThatReadsBack) {
     const auto sheet = preview::contactSheet({im, im, im}, 2);
     EXPECT_EQ(sheet.width, 80);
     EXPECT_EQ(sheet.height, 60);
-    const auto path = std::filesystem::temp_directory_path() / "visemelab_preview_test.png";
+    const auto path = std::filesystem::temp_directory_path() /
+                      ("visemelab_preview_test_" + std::to_string(::getpid()) + ".png");
     preview::writePng(path, sheet);
     int w = 0, h = 0, n = 0;
     unsigned char* data = stbi_load(path.c_str(), &w, &h, &n, 4);
