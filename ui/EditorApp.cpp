@@ -12,6 +12,7 @@
 #include <imgui.h>
 #include <stb_image_write.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <stdexcept>
 #include <string>
@@ -80,12 +81,13 @@ void applyStartOptions(const EditorOptions& options, EditorSession& session, Edi
         if (!ui.selectField(options.field))
             throwInputError("--field", "no analytic field named '" + options.field + "'");
     }
+    ui.setWireframe(options.wireframe);
     if (options.play >= 0.0) ui.startPlayback(options.play, options.sequence);
 }
 
 } // namespace
 
-void saveBackBufferPng(const std::filesystem::path& file, int width, int height) {
+void saveBackBufferPng(const std::filesystem::path& file, int width, int height, int bitsPerChannel) {
     std::vector<unsigned char> pixels(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3);
     glReadBuffer(GL_BACK);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
@@ -96,6 +98,13 @@ void saveBackBufferPng(const std::filesystem::path& file, int width, int height)
         std::copy_n(pixels.begin() +
                         static_cast<std::ptrdiff_t>(static_cast<std::size_t>(height - 1 - y) * row),
                     row, flipped.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(y) * row));
+    // Fewer levels per channel compress far better (documentation pictures); 8 keeps every value.
+    if (bitsPerChannel < 8) {
+        const int drop = 8 - std::clamp(bitsPerChannel, 1, 8);
+        for (unsigned char& c : flipped)
+            c = static_cast<unsigned char>(((c >> drop) << drop) | ((c >> drop) << drop) >> (8 - drop));
+    }
+    stbi_write_png_compression_level = 9;
     if (!stbi_write_png(file.string().c_str(), width, height, 3, flipped.data(), static_cast<int>(row)))
         throw std::runtime_error(file.string() + ": cannot write the PNG");
 }
@@ -150,7 +159,7 @@ int runEditor(const EditorOptions& options) {
                 glClear(GL_COLOR_BUFFER_BIT);
                 ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
                 if (screenshotMode && frame + 1 >= options.frames) {
-                    saveBackBufferPng(options.screenshot, width, height);
+                    saveBackBufferPng(options.screenshot, width, height, options.screenshotBits);
                     std::printf("%s\n", options.screenshot.string().c_str());
                     break;
                 }

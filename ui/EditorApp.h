@@ -11,13 +11,15 @@ struct EditorOptions {
     bool sample = false;              // load the bundled sample at start
     std::filesystem::path screenshot; // non-empty: render `frames` frames, save a PNG, exit
     int frames = 6;
-    std::string panel;    // panel to show (Visemes, Frequencies, Weights, ...)
-    std::string viseme;   // viseme to select
-    std::string preset;   // viseme preset applied to the deformable face
-    std::string field;    // deformation field (stage name) to select
-    double play = -1.0;   // >= 0: start the playback at this time (seconds)
-    std::string sequence; // playback sequence (phonemes or viseme names)
-    std::string refine;   // run a refinement with this criterion (depth, normals, contour)
+    int screenshotBits = 8; // < 8: fewer colour levels, much smaller files
+    std::string panel;      // panel to show (Visemes, Frequencies, Weights, ...)
+    std::string viseme;     // viseme to select
+    std::string preset;     // viseme preset applied to the deformable face
+    std::string field;      // deformation field (stage name) to select
+    double play = -1.0;     // >= 0: start the playback at this time (seconds)
+    std::string sequence;   // playback sequence (phonemes or viseme names)
+    bool wireframe = true;  // wireframe overlay at start
+    std::string refine;     // run a refinement with this criterion (depth, normals, contour)
     int width = 1600;
     int height = 1000;
 };
@@ -25,8 +27,9 @@ struct EditorOptions {
 // Returns the process exit code: 0 ok, 1 no display / GL failure, 3 invalid input.
 int runEditor(const EditorOptions& options);
 
-// Reads the back buffer (before the swap) and writes it as a PNG, rows flipped to top-down.
+// Reads the back buffer (before the swap) and writes it as a PNG, rows flipped to top-down, with
+// `bitsPerChannel` significant bits per colour channel.
 // Throws std::runtime_error when the file cannot be written.
-void saveBackBufferPng(const std::filesystem::path& file, int width, int height);
+void saveBackBufferPng(const std::filesystem::path& file, int width, int height, int bitsPerChannel = 8);
 
 } // namespace vl::ui

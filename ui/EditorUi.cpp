@@ -12,6 +12,9 @@
 namespace vl::ui {
 namespace {
 
+// Tab labels are short so all seven fit; the full names are used by --panel and the View menu.
+constexpr const char* kPanelLabels[] = {"Visemes", "Freq.",  "Weights", "Deform",
+                                        "Refine",  "Reduce", "Export"};
 constexpr const char* kPanelNames[] = {"Visemes",    "Frequencies", "Weights", "Deformation",
                                        "Refinement", "Reduction",   "Export"};
 
@@ -163,7 +166,7 @@ void EditorUi::frame() {
     menuBar();
     const float menuHeight = ImGui::GetFrameHeight();
     const float statusHeight = ImGui::GetFrameHeight() + 8.0f;
-    const float sideWidth = std::clamp(io.DisplaySize.x * 0.36f, 400.0f, 640.0f);
+    const float sideWidth = std::clamp(io.DisplaySize.x * 0.36f, 480.0f, 640.0f);
     const float bodyHeight = std::max(1.0f, io.DisplaySize.y - menuHeight - statusHeight);
     sidePanel(menuHeight, sideWidth, bodyHeight);
     views(sideWidth, menuHeight, std::max(1.0f, io.DisplaySize.x - sideWidth), bodyHeight);
@@ -305,7 +308,7 @@ void EditorUi::sidePanel(float top, float width, float height) {
             const auto panel = static_cast<Panel>(i);
             const ImGuiTabItemFlags flags =
                 panelSelectPending_ && activePanel_ == panel ? ImGuiTabItemFlags_SetSelected : 0;
-            if (ImGui::BeginTabItem(kPanelNames[i], nullptr, flags)) {
+            if (ImGui::BeginTabItem(kPanelLabels[i], nullptr, flags)) {
                 if (!panelSelectPending_) activePanel_ = panel;
                 ImGui::BeginChild("##panel-body");
                 switch (panel) {

@@ -48,6 +48,7 @@ class EditorUi {
     // Builds the whole interface for one frame (between ImGui::NewFrame and ImGui::Render).
     void frame();
     void selectPanel(Panel panel);
+    void setWireframe(bool on) { wireframe_ = on; }
     // Selects the first analytic region of the cascade stage with this name (Deformation panel).
     bool selectField(const std::string& stageName);
     // Starts the phoneme-sequence playback at `time` seconds.

@@ -17,6 +17,11 @@ int main(int argc, char** argv) {
         "Panel to show: Visemes, Frequencies, Weights, Deformation, Refinement, Reduction, Export");
     app.add_option("--viseme", options.viseme, "Viseme to select");
     app.add_option("--preset", options.preset, "Viseme preset applied to the deformable face");
+    app.add_option("--screenshot-bits", options.screenshotBits,
+                   "Significant bits per colour channel in the screenshot (smaller files)")
+        ->check(CLI::Range(1, 8));
+    bool noWireframe = false;
+    app.add_flag("--no-wireframe", noWireframe, "Start without the wireframe overlay (key W toggles it)");
     app.add_option("--field", options.field, "Deformation field (stage name) to select");
     app.add_option("--play", options.play, "Start the playback at this time in seconds");
     app.add_option("--sequence", options.sequence, "Playback sequence: phonemes or viseme names");
@@ -36,5 +41,6 @@ int main(int argc, char** argv) {
         const int code = app.exit(e);
         return code == 0 ? 0 : 2;
     }
+    options.wireframe = !noWireframe;
     return vl::ui::runEditor(options);
 }
