@@ -152,10 +152,12 @@ TEST(CliReduce, InvalidInputExitsWith3AndNamesTheProblem) {
 }
 
 TEST(CliReduce, ReducesTheBundledSample) {
-    if (!fs::exists(kSample / "neutral.obj")) GTEST_SKIP() << "bundled sample not generated yet: " << kSample;
     TempDir dir("visemelab_cli_sample");
-    const auto r = test::runCli("reduce --visemes " + kSample.string() +
-                                " --weights area --target 10 --out " + (dir.path / "out").string());
+    const fs::path phonemes = fs::path(VISEMELAB_ASSETS_DIR) / "phonemes";
+    const auto r = test::runCli("reduce --visemes " + kSample.string() + " --freq-file " +
+                                (phonemes / "en-us_frequencies.csv").string() + " --map " +
+                                (phonemes / "map_sample_face.csv").string() + " --weights area --target 10 --out " +
+                                (dir.path / "out").string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
     const auto report = readJson(dir.path / "out" / "report.json");
     EXPECT_EQ(report["m"], 10);
