@@ -54,6 +54,7 @@ void setupFontsAndStyle() {
 void applyStartOptions(const EditorOptions& options, EditorSession& session, EditorUi& ui) {
     if (!options.project.empty()) session.openProject(options.project);
     if (options.sample) session.loadSample();
+    if (!options.visemeFolder.empty()) session.loadVisemeFolder(options.visemeFolder);
     if (!options.panel.empty()) {
         const auto panel = panelFromName(options.panel);
         if (!panel) throwInputError("--panel", "unknown panel '" + options.panel + "'");

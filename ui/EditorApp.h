@@ -7,9 +7,10 @@
 namespace vl::ui {
 
 struct EditorOptions {
-    std::filesystem::path project;    // open this project at start
-    bool sample = false;              // load the bundled sample at start
-    std::filesystem::path screenshot; // non-empty: render `frames` frames, save a PNG, exit
+    std::filesystem::path project;      // open this project at start
+    bool sample = false;                // load the bundled sample at start
+    std::filesystem::path visemeFolder; // load a folder of meshes at start
+    std::filesystem::path screenshot;   // non-empty: render `frames` frames, save a PNG, exit
     int frames = 6;
     int screenshotBits = 8; // < 8: fewer colour levels, much smaller files
     std::string panel;      // panel to show (Visemes, Frequencies, Weights, ...)

@@ -38,6 +38,27 @@ void viewLabel(const ImVec2& min, const std::string& text) {
     draw->AddText(ImVec2(min.x + 12, min.y + 10), IM_COL32(235, 235, 240, 255), text.c_str());
 }
 
+// The colour ramp of shaders/mesh.frag as a bar in the lower left corner of a view.
+void colourLegend(const ImVec2& min, const ImVec2& max, const char* low, const char* high) {
+    static const ImU32 stops[] = {IM_COL32(46, 61, 133, 255), IM_COL32(38, 133, 235, 255),
+                                  IM_COL32(26, 217, 153, 255), IM_COL32(242, 217, 51, 255),
+                                  IM_COL32(204, 31, 13, 255)};
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    const float width = 200.0f, height = 12.0f;
+    const ImVec2 origin(min.x + 16.0f, max.y - 36.0f);
+    for (int i = 0; i < 4; ++i) {
+        const float x0 = origin.x + width * static_cast<float>(i) / 4.0f;
+        const float x1 = origin.x + width * static_cast<float>(i + 1) / 4.0f;
+        draw->AddRectFilledMultiColor(ImVec2(x0, origin.y), ImVec2(x1, origin.y + height), stops[i],
+                                      stops[i + 1], stops[i + 1], stops[i]);
+    }
+    draw->AddRect(origin, ImVec2(origin.x + width, origin.y + height), IM_COL32(20, 20, 24, 255));
+    draw->AddText(ImVec2(origin.x, origin.y + height + 2.0f), IM_COL32(220, 220, 230, 255), low);
+    const float highWidth = ImGui::CalcTextSize(high).x;
+    draw->AddText(ImVec2(origin.x + width - highWidth, origin.y + height + 2.0f),
+                  IM_COL32(220, 220, 230, 255), high);
+}
+
 } // namespace
 
 const char* panelName(Panel panel) {
@@ -510,6 +531,7 @@ void EditorUi::mainView(ImVec2 size) {
                 "No viseme set: File > Load sample face (Ctrl+L), or open a project or a viseme folder");
         } else if (activePanel_ == Panel::Weights) {
             label = std::string("Weights: ") + toString(session.project().weights.mode);
+            if (showWeightsColours_) colourLegend(events.imageMin, events.imageMax, "0", "largest weight");
         } else if (playback_.playing) {
             label = "Playback (full set)";
         } else {
@@ -569,6 +591,8 @@ void EditorUi::comparisonViews(ImVec2 size) {
             if (grouping) mergedMesh_.draw(shader_, after, view, projection, errors);
         });
     if (session.visemes()) viewLabel(right.imageMin, afterLabel);
+    if (grouping && !playback_.playing)
+        colourLegend(right.imageMin, right.imageMax, "0", "largest error (all visemes)");
     // One camera for both views: the one the user is moving wins.
     if (right.hovered || right.leftDown)
         beforeView_.camera = afterView_.camera;

@@ -110,6 +110,25 @@ TEST(EditorScreenshot, DeformationPanelShowsTheFace) {
     EXPECT_GT(skinFraction(image, 900, 300, 1300, 700), 0.3);
 }
 
+TEST(EditorScreenshot, LargeRealMeshFolderLoadsAndReduces) {
+    if (!haveXvfbRun())
+        GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth): GUI smoke test skipped";
+    const std::filesystem::path folder = VISEMELAB_SHARED_DATA_DIR "/ict-facekit-mouth";
+    if (!std::filesystem::exists(folder / "generic_neutral_mesh.obj"))
+        GTEST_SKIP() << folder << " is not available: large-mesh smoke test skipped";
+    const Image image =
+        screenshot("--visemes \"" + folder.string() + "\" --panel Reduction --viseme mouthPucker", "ict");
+    ASSERT_EQ(image.width, 1600);
+    const int side = 576, half = (1600 - side) / 2;
+    EXPECT_GT(skinFraction(image, side + half / 4, 300, side + 3 * half / 4, 700), 0.3);
+    // The merged view is drawn in error colours: mostly blue, with warmer colours around the mouth.
+    int blue = 0;
+    for (int y = 300; y < 700; ++y)
+        for (int x = side + half + half / 4; x < side + half + 3 * half / 4; ++x)
+            if (image.at(x, y)[2] > image.at(x, y)[0] + 40) ++blue;
+    EXPECT_GT(blue, 20000);
+}
+
 TEST(EditorScreenshot, BadStartOptionFailsWithInvalidInput) {
     if (!haveXvfbRun()) GTEST_SKIP() << "xvfb-run is not installed: GUI smoke test skipped";
     const std::string command = "xvfb-run -a -s \"-screen 0 1600x1000x24\" \"" VISEMELAB_EDITOR

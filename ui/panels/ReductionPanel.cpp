@@ -81,9 +81,15 @@ void EditorUi::reductionPanel() {
             double total = 0.0;
             bool first = true;
             for (int member : grouping->groups[g]) {
-                if (!first) ImGui::SameLine(0.0f, 6.0f);
-                first = false;
                 const std::string& name = set->visemes[static_cast<std::size_t>(member)].name;
+                // Wrap the member buttons at the column's edge.
+                const float width =
+                    ImGui::CalcTextSize(name.c_str()).x + 2.0f * ImGui::GetStyle().FramePadding.x;
+                if (!first && ImGui::GetItemRectMax().x + 6.0f + width <
+                                  ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x -
+                                      ImGui::GetStyle().ItemSpacing.x)
+                    ImGui::SameLine(0.0f, 6.0f);
+                first = false;
                 ImGui::PushID(member);
                 if (ImGui::SmallButton(name.c_str())) session.selectedViseme = member;
                 ImGui::PopID();

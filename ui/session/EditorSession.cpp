@@ -4,6 +4,7 @@
 #include "core/common/AtomicFile.h"
 #include "core/common/Error.h"
 #include "core/common/TextParsing.h"
+#include "core/deform/CascadeSampler.h"
 #include "core/deform/FaceDomain.h"
 #include "core/deform/Visemes.h"
 #include "core/export/Gltf.h"
@@ -400,18 +401,30 @@ const FaceSamples& EditorSession::faceSamples() {
     }
     if (samplesCascade_ == model.cascade.get() && samplesDomain_ == model.domain.get()) return samples_;
     const auto& uvs = model.domain->uvs;
-    const std::size_t k = model.cascade->parameters.size();
+    const DeformationCascade& cascade = *model.cascade;
+    const std::size_t k = cascade.parameters.size();
+    // The cascade is linear in q: sample it at q = 0 and at each unit vector e_k. The core's
+    // sampler (fields sampled once, sparse sums) does it when 0 and 1 are valid values of every
+    // parameter; otherwise the per-point evaluation does.
+    const bool unitVectorsValid =
+        std::all_of(cascade.parameters.begin(), cascade.parameters.end(),
+                    [](const DeformParameter& p) { return p.min <= 0.0 && p.max >= 1.0; });
     std::vector<double> q(k, 0.0);
+    auto evaluateAll = [&](const CascadeSampler* sampler) {
+        if (sampler) return sampler->evaluate(q);
+        std::vector<Vec3> points;
+        points.reserve(uvs.size());
+        for (const Vec2& uv : uvs) points.push_back(cascade.evaluateUnchecked(uv[0], uv[1], q));
+        return points;
+    };
+    std::optional<CascadeSampler> sampler;
+    if (unitVectorsValid) sampler.emplace(cascade, uvs);
     FaceSamples out;
-    out.rest.reserve(uvs.size());
-    for (const Vec2& uv : uvs) out.rest.push_back(model.cascade->evaluateUnchecked(uv[0], uv[1], q));
+    out.rest = evaluateAll(sampler ? &*sampler : nullptr);
     for (std::size_t p = 0; p < k; ++p) {
         q.assign(k, 0.0);
         q[p] = 1.0;
-        std::vector<Vec3> target;
-        target.reserve(uvs.size());
-        for (const Vec2& uv : uvs) target.push_back(model.cascade->evaluateUnchecked(uv[0], uv[1], q));
-        out.targets.push_back(std::move(target));
+        out.targets.push_back(evaluateAll(sampler ? &*sampler : nullptr));
     }
     out.colours = face::faceColours(uvs);
     samples_ = std::move(out);
