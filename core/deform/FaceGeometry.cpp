@@ -31,9 +31,7 @@ Proportions proportionsOf(Individual who) {
 }
 
 double lipWeight(double u, double v) {
-    const double upper = bump(u, v, kMouthU, kUpperLipV, 0.085, 0.016);
-    const double lower = bump(u, v, kMouthU, kLowerLipV, 0.08, 0.019);
-    return std::min(1.0, 1.6 * std::max(upper, lower));
+    return std::min(1.0, 1.6 * std::max(upperLipBump(u, v), lowerLipBump(u, v)));
 }
 
 double eyeWhiteWeight(double u, double v) {
@@ -128,14 +126,14 @@ double featureDepth(double u, double v, const Proportions& p) {
     z += noseHeight(u, v, p);
     // Lips: the dental arch pushes the mouth region out; two vermilion rolls on it.
     z += 1.3 * bump(u, v, kMouthU, kMouthV, 0.16, 0.11);
-    z += 0.5 * p.lipFullness * bump(u, v, kMouthU, kUpperLipV, 0.085, 0.017);
-    z += 0.55 * p.lipFullness * bump(u, v, kMouthU, kLowerLipV, 0.08, 0.02);
+    z += 0.5 * p.lipFullness * upperLipBump(u, v);
+    z += 0.55 * p.lipFullness * lowerLipBump(u, v);
     z += 0.2 * bump(u, v, kMouthU, 0.352, 0.012, 0.02); // philtrum
     z -= 0.45 * bump(u, v, kMouthU, 0.222, 0.07, 0.02); // mentolabial sulcus
     z += 0.9 * p.chin * bump(u, v, kMouthU, 0.16, 0.085, 0.055);
     for (const double side : {-1.0, 1.0}) {
         const double eu = kMouthU + side * kEyeU;
-        // Eye socket, eyeball (a spherical cap) and the upper lid's fold.
+        // Eye socket, eyeball (a rounded cap that meets the socket smoothly) and the lids' folds.
         z -= 1.5 * p.eyeDepth * bump(u, v, eu, kEyeV + 0.004, 0.08, 0.06);
         const double a = (u - eu) / 0.062, b = (v - kEyeV) / 0.045;
         z += 1.15 * std::pow(std::max(0.0, 1.0 - a * a - b * b), 1.2); // smooth rim, no crease

@@ -1,6 +1,7 @@
 #pragma once
 // Internal to the bundled face: the analytic shapes behind its geometry image and preview colours.
 #include "core/deform/BundledFace.h"
+#include "core/deform/FaceDomain.h"
 
 #include <cmath>
 
@@ -38,7 +39,14 @@ constexpr double kNasionV = 0.615;
 constexpr double kUpperLipV = 0.333; // centre of the upper vermilion
 constexpr double kLowerLipV = 0.268; // centre of the lower vermilion
 
-// Weight in [0,1] of the lips' vermilion at (u,v) (shape and colour share it).
+// The two vermilion rolls (height profile of the lips, before fullness) and, from them, the weight
+// in [0,1] of lip colour at (u,v).
+inline double upperLipBump(double u, double v) {
+    return bump(u, v, kMouthU, kUpperLipV, 0.085, 0.017);
+}
+inline double lowerLipBump(double u, double v) {
+    return bump(u, v, kMouthU, kLowerLipV, 0.08, 0.02);
+}
 double lipWeight(double u, double v);
 // Weight of the visible eyeball (between the lids) and of the iris, for colours.
 double eyeWhiteWeight(double u, double v);
