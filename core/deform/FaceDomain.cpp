@@ -72,12 +72,17 @@ MeshData faceDomainMesh(int resolution, DomainDensity density) {
     if (resolution < 10 || resolution > 4096)
         throwInputError("face domain", "resolution " + std::to_string(resolution) + " is outside 10..4096");
     const bool focused = density == DomainDensity::MouthFocused;
+    // Relative line density: high at the mouth and eyes, low on the sides of the head and the top
+    // of the forehead.
     const Density du = [focused](double u) {
-        return focused ? 1.0 + 1.0 * bump(u, kMouthU, 0.2) + 0.9 * bump(std::abs(u - kMouthU), 0.135, 0.05)
+        return focused ? 0.5 + 0.5 * bump(u, kMouthU, 0.3) + 1.0 * bump(u, kMouthU, 0.2) +
+                             1.4 * bump(std::abs(u - kMouthU), 0.135, 0.05)
                        : 1.0;
     };
     const Density dv = [focused](double v) {
-        return focused ? 1.0 + 2.5 * bump(v, kMouthV, 0.09) + 1.4 * bump(v, 0.585, 0.05) : 1.0;
+        return focused ? 0.6 + 0.4 * bump(v, 0.45, 0.3) + 2.5 * bump(v, kMouthV, 0.09) +
+                             2.0 * bump(v, 0.585, 0.05)
+                       : 1.0;
     };
     const auto us =
         gridLines({0.0, kMouthU - kMouthHalfWidth, kMouthU, kMouthU + kMouthHalfWidth, 1.0}, resolution, du);
