@@ -83,7 +83,25 @@ void applyStartOptions(const EditorOptions& options, EditorSession& session, Edi
             throwInputError("--field", "no analytic field named '" + options.field + "'");
     }
     ui.setWireframe(options.wireframe);
+    if (!options.brush.empty()) {
+        const std::string modes[] = {"add", "subtract", "smooth"};
+        const auto it = std::find(std::begin(modes), std::end(modes), options.brush);
+        if (it == std::end(modes))
+            throwInputError("--brush", "expected add, subtract or smooth, got '" + options.brush + "'");
+        ui.enableBrush(static_cast<int>(it - std::begin(modes)));
+    }
     if (options.play >= 0.0) ui.startPlayback(options.play, options.sequence);
+}
+
+// Replaces the mouse state for this frame by a straight left-button drag: pressed from frame 1,
+// moving until two frames before the last, released after (used to test painting end to end).
+void scriptedDrag(const EditorOptions& options, int frame) {
+    ImGuiIO& io = ImGui::GetIO();
+    const int last = std::max(options.frames - 3, 2);
+    const float t = std::clamp(static_cast<float>(frame - 1) / static_cast<float>(last - 1), 0.0f, 1.0f);
+    io.MousePos = ImVec2(options.drag[0] + t * (options.drag[2] - options.drag[0]),
+                         options.drag[1] + t * (options.drag[3] - options.drag[1]));
+    io.MouseDown[0] = frame >= 1 && frame <= last;
 }
 
 } // namespace
@@ -150,6 +168,7 @@ int runEditor(const EditorOptions& options) {
                 if (screenshotMode) session.finishBackgroundWork(); // deterministic pictures
                 ImGui_ImplOpenGL3_NewFrame();
                 ImGui_ImplGlfw_NewFrame();
+                if (options.drag.size() == 4) scriptedDrag(options, frame);
                 ImGui::NewFrame();
                 ui.frame();
                 ImGui::Render();

@@ -75,33 +75,55 @@ void EditorUi::paint(const ViewportEvents& events) {
         strokeStart_ =
             painted.size() == set->vertexCount() ? painted : std::vector<double>(set->vertexCount(), 1.0);
         strokeWeights_ = strokeStart_;
+        lastDab_.reset();
+    }
+    if (!events.hovered && !strokeActive_) return;
+    const Ray ray = mainView_.camera.rayThrough(events.ndc.x, events.ndc.y, events.aspect);
+    const auto hit = intersectRay(set->neutral.positions, set->neutral.triangles,
+                                  Vec3(ray.origin.x, ray.origin.y, ray.origin.z),
+                                  Vec3(ray.direction.x, ray.direction.y, ray.direction.z));
+    if (hit && events.hovered) {
+        // Brush outline: the radius at the hit point, projected to the screen.
+        const glm::mat4 viewProjection = mainView_.camera.projection(events.aspect) * mainView_.camera.view();
+        const glm::mat4 view = mainView_.camera.view();
+        const glm::vec3 right(view[0][0], view[1][0], view[2][0]);
+        const glm::vec3 centre(static_cast<float>(hit->point[0]), static_cast<float>(hit->point[1]),
+                               static_cast<float>(hit->point[2]));
+        auto toScreen = [&](const glm::vec3& p) {
+            const glm::vec4 clip = viewProjection * glm::vec4(p, 1.0f);
+            return ImVec2(events.imageMin.x +
+                              (clip.x / clip.w * 0.5f + 0.5f) * (events.imageMax.x - events.imageMin.x),
+                          events.imageMin.y +
+                              (0.5f - clip.y / clip.w * 0.5f) * (events.imageMax.y - events.imageMin.y));
+        };
+        const ImVec2 c = toScreen(centre);
+        const ImVec2 edge = toScreen(centre + right * brush_.radius);
+        ImGui::GetWindowDrawList()->AddCircle(c, std::abs(edge.x - c.x), IM_COL32(255, 255, 255, 200), 48,
+                                              1.5f);
     }
     if (!strokeActive_) return;
-    if (events.leftDown && events.hovered) {
-        const Ray ray = mainView_.camera.rayThrough(events.ndc.x, events.ndc.y, events.aspect);
-        const Vec3 origin(ray.origin.x, ray.origin.y, ray.origin.z);
-        const Vec3 direction(ray.direction.x, ray.direction.y, ray.direction.z);
-        if (const auto hit =
-                intersectRay(set->neutral.positions, set->neutral.triangles, origin, direction)) {
-            Vec3 lo, hi;
-            bounds(set->neutral.positions, lo, hi);
-            WeightBrush brush;
-            brush.radius = brush_.radius;
-            brush.strength =
-                std::clamp(static_cast<double>(brush_.strength) * 10.0 * ImGui::GetIO().DeltaTime, 0.0, 1.0);
-            brush.falloff = static_cast<Falloff>(brush_.falloff);
-            brush.mode = static_cast<BrushMode>(brush_.mode);
-            brush.symmetric = brush_.symmetric;
-            brush.mirrorX = 0.5 * (lo[0] + hi[0]);
-            session.attempt("Paint", [&] {
-                applyBrushDab(set->neutral.positions, set->neutral.triangles, brush, hit->point,
-                              strokeWeights_);
-            });
-            weightsKey_.clear();
-        }
+    // Dabs are spaced along the stroke (a quarter radius apart), so painting does not depend on
+    // the frame rate.
+    const bool farEnough = !lastDab_ || (hit && (hit->point - *lastDab_).norm() >= 0.25 * brush_.radius);
+    if (events.leftDown && hit && farEnough) {
+        Vec3 lo, hi;
+        bounds(set->neutral.positions, lo, hi);
+        WeightBrush brush;
+        brush.radius = brush_.radius;
+        brush.strength = brush_.strength;
+        brush.falloff = static_cast<Falloff>(brush_.falloff);
+        brush.mode = static_cast<BrushMode>(brush_.mode);
+        brush.symmetric = brush_.symmetric;
+        brush.mirrorX = 0.5 * (lo[0] + hi[0]);
+        session.attempt("Paint", [&] {
+            applyBrushDab(set->neutral.positions, set->neutral.triangles, brush, hit->point, strokeWeights_);
+        });
+        lastDab_ = hit->point;
+        weightsKey_.clear();
     }
     if (events.leftReleased) {
         strokeActive_ = false;
+        lastDab_.reset();
         if (strokeWeights_ != strokeStart_)
             session.attempt("Paint stroke",
                             [&] { session.setPaintedWeights(strokeWeights_, "Paint stroke"); });

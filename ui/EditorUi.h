@@ -49,6 +49,11 @@ class EditorUi {
     void frame();
     void selectPanel(Panel panel);
     void setWireframe(bool on) { wireframe_ = on; }
+    // Turns painting on with this operation (0 add, 1 subtract, 2 smooth).
+    void enableBrush(int operation) {
+        brush_.enabled = true;
+        brush_.mode = operation;
+    }
     // Selects the first analytic region of the cascade stage with this name (Deformation panel).
     bool selectField(const std::string& stageName);
     // Starts the phoneme-sequence playback at `time` seconds.
@@ -119,6 +124,7 @@ class EditorUi {
     bool strokeActive_ = false;
     std::vector<double> strokeStart_;
     std::vector<double> strokeWeights_;
+    std::optional<Vec3> lastDab_;
     Playback playback_;
     FileDialog fileDialog_;
     std::function<void()> pendingGuarded_;

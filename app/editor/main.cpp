@@ -22,6 +22,9 @@ int main(int argc, char** argv) {
     app.add_option("--screenshot-bits", options.screenshotBits,
                    "Significant bits per colour channel in the screenshot (smaller files)")
         ->check(CLI::Range(1, 8));
+    app.add_option("--brush", options.brush, "Paint in the Weights panel: add, subtract or smooth");
+    app.add_option("--drag", options.drag, "Left-button drag over the frames: x0 y0 x1 y1 (window pixels)")
+        ->expected(4);
     bool noWireframe = false;
     app.add_flag("--no-wireframe", noWireframe, "Start without the wireframe overlay (key W toggles it)");
     app.add_option("--field", options.field, "Deformation field (stage name) to select");
