@@ -219,7 +219,7 @@ void EditorUi::shortcuts() {
             guarded([this] {
                 fileDialog_.open("Open project", FileDialog::Mode::OpenFile, {".vlproj", ".json"},
                                  [this](const auto& path) {
-                                     session.attempt("Open project", [&] { session.openProject(path); });
+                                     session.attempt("Open project", [&] { session.startOpenProject(path); });
                                  });
             });
         }
@@ -253,7 +253,7 @@ void EditorUi::menuBar() {
             guarded([this] {
                 fileDialog_.open("Open project", FileDialog::Mode::OpenFile, {".vlproj", ".json"},
                                  [this](const auto& path) {
-                                     session.attempt("Open project", [&] { session.openProject(path); });
+                                     session.attempt("Open project", [&] { session.startOpenProject(path); });
                                  });
             });
         if (ImGui::MenuItem("Save project", "Ctrl+S", false, !session.project().path.empty()))
@@ -270,10 +270,10 @@ void EditorUi::menuBar() {
             guarded([this] { session.attempt("Load sample", [&] { session.loadSample(); }); });
         if (ImGui::MenuItem("Open viseme folder..."))
             guarded([this] {
-                fileDialog_.open("Open viseme folder", FileDialog::Mode::OpenFolder, {},
-                                 [this](const auto& path) {
-                                     session.attempt("Open folder", [&] { session.loadVisemeFolder(path); });
-                                 });
+                fileDialog_.open(
+                    "Open viseme folder", FileDialog::Mode::OpenFolder, {}, [this](const auto& path) {
+                        session.attempt("Open folder", [&] { session.startLoadVisemeFolder(path); });
+                    });
             });
         ImGui::Separator();
         if (ImGui::MenuItem("Quit")) requestQuit();
@@ -407,6 +407,15 @@ void EditorUi::statusBar(float height) {
                 " vertices, " + std::to_string(set->neutral.triangles.size()) + " triangles";
     }
     ImGui::TextUnformatted(stats.c_str());
+    if (session.loading()) {
+        ImGui::SameLine();
+        ImGui::ProgressBar(-1.0f * static_cast<float>(ImGui::GetTime()), ImVec2(200, 0),
+                           session.loadingLabel().c_str());
+    }
+    if (session.refinementRunning()) {
+        ImGui::SameLine();
+        ImGui::ProgressBar(-1.0f * static_cast<float>(ImGui::GetTime()), ImVec2(120, 0), "refining");
+    }
     if (session.reductionRunning()) {
         ImGui::SameLine();
         ImGui::ProgressBar(static_cast<float>(session.reductionProgress()), ImVec2(160, 0), "reducing");

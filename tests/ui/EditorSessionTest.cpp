@@ -347,3 +347,24 @@ TEST(EditorSession, CountsPhonemesOfATextFileInTheBackground) {
 
 } // namespace
 } // namespace vl::ui
+
+namespace vl::ui {
+namespace {
+
+TEST(EditorSession, OpensProjectsAndFoldersOnAWorkerThread) {
+    EditorSession session;
+    session.startOpenProject(EditorSession::assetsDirectory() / "sample" / "sample.vlproj");
+    session.finishBackgroundWork();
+    ASSERT_NE(session.visemes(), nullptr);
+    EXPECT_EQ(session.visemeCount(), 15u);
+    EXPECT_FALSE(session.modified());
+    // A failing load reports the error and keeps the open document.
+    const VisemeSet* before = session.visemes();
+    session.startLoadVisemeFolder(std::filesystem::temp_directory_path() / "visemelab-no-such-folder");
+    session.finishBackgroundWork();
+    EXPECT_EQ(session.visemes(), before);
+    EXPECT_EQ(session.messages().back().kind, StatusMessage::Kind::Error);
+}
+
+} // namespace
+} // namespace vl::ui

@@ -15,7 +15,7 @@ void EditorUi::exportPanel() {
         guarded([this] {
             fileDialog_.open("Open project", FileDialog::Mode::OpenFile, {".vlproj", ".json"},
                              [this](const auto& path) {
-                                 session.attempt("Open project", [&] { session.openProject(path); });
+                                 session.attempt("Open project", [&] { session.startOpenProject(path); });
                              });
         });
     ImGui::SameLine();

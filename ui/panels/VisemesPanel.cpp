@@ -19,7 +19,7 @@ void EditorUi::visemesPanel() {
         guarded([this] {
             fileDialog_.open("Open viseme folder", FileDialog::Mode::OpenFolder, {},
                              [this](const auto& path) {
-                                 session.attempt("Open folder", [&] { session.loadVisemeFolder(path); });
+                                 session.attempt("Open folder", [&] { session.startLoadVisemeFolder(path); });
                              });
         });
 

@@ -164,7 +164,7 @@ void EditorSession::newProject() {
     info("New project");
 }
 
-void EditorSession::openProject(const std::filesystem::path& file) {
+EditorState EditorSession::projectState(const std::filesystem::path& file) {
     EditorState next;
     next.project = loadProject(file);
     if (next.project.neutral.isSet())
@@ -181,10 +181,36 @@ void EditorSession::openProject(const std::filesystem::path& file) {
                 std::make_shared<const std::vector<Vec3>>(face::faceColours(next.visemes->neutral.uvs));
     }
     validateInputs(next);
+    return next;
+}
+
+void EditorSession::adopt(EditorState next, const std::string& message) {
     reductionTask_.cancel();
     resetTo(std::move(next));
     selectedViseme = visemes() ? visemes()->find(project().editor.selectedViseme) : -1;
-    info("Opened " + file.string());
+    info(message);
+}
+
+void EditorSession::openProject(const std::filesystem::path& file) {
+    adopt(projectState(file), "Opened " + file.string());
+}
+
+void EditorSession::startLoading(std::string label, std::function<EditorState()> load, std::string message) {
+    if (loadTask_.running()) throwInputError(label, "another file is still loading");
+    loadMessage_ = std::move(message);
+    loadTask_.start(std::move(label), [load = std::move(load)](const auto&) { return load(); });
+}
+
+void EditorSession::startOpenProject(const std::filesystem::path& file) {
+    startLoading(
+        "Opening " + file.filename().string(), [file] { return projectState(file); },
+        "Opened " + file.string());
+}
+
+void EditorSession::startLoadVisemeFolder(const std::filesystem::path& folder) {
+    startLoading(
+        "Loading " + folder.filename().string(), [folder] { return folderState(folder); },
+        "Loaded the visemes of " + folder.string());
 }
 
 Project EditorSession::projectSnapshot() const {
@@ -246,7 +272,7 @@ void EditorSession::importGltf(const std::filesystem::path& file) {
     info("Imported " + std::to_string(visemeCount()) + " morph targets from " + file.string());
 }
 
-void EditorSession::loadVisemeFolder(const std::filesystem::path& folder) {
+EditorState EditorSession::folderState(const std::filesystem::path& folder) {
     auto files = listVisemeFolder(folder);
     auto neutral = std::find_if(files.begin(), files.end(), [](const auto& entry) {
         return lowercase(entry.first).find("neutral") != std::string::npos;
@@ -264,10 +290,14 @@ void EditorSession::loadVisemeFolder(const std::filesystem::path& folder) {
     next.project.reduction.target = std::max(1, static_cast<int>(set->size()) / 2);
     next.visemes = std::move(set);
     validateInputs(next);
-    reductionTask_.cancel();
-    resetTo(std::move(next));
-    selectedViseme = -1;
-    info("Loaded " + std::to_string(visemeCount()) + " visemes from " + folder.string());
+    return next;
+}
+
+void EditorSession::loadVisemeFolder(const std::filesystem::path& folder) {
+    EditorState next = folderState(folder);
+    const std::string message =
+        "Loaded " + std::to_string(next.visemes->size()) + " visemes from " + folder.string();
+    adopt(std::move(next), message);
 }
 
 std::filesystem::path EditorSession::assetsDirectory() {
@@ -745,6 +775,12 @@ void EditorSession::startReduction() {
 }
 
 void EditorSession::poll() {
+    if (auto outcome = loadTask_.take()) {
+        if (outcome->index() == 0)
+            adopt(std::move(std::get<0>(*outcome)), loadMessage_);
+        else
+            error(loadTask_.label() + ": " + std::get<1>(*outcome));
+    }
     if (auto outcome = countTask_.take()) {
         if (outcome->index() == 0) {
             const PhonemeCountResult& counted = std::get<0>(*outcome);
@@ -807,6 +843,7 @@ void EditorSession::poll() {
 void EditorSession::finishBackgroundWork() {
     // poll() may start automatic re-runs; a few rounds settle them.
     for (int round = 0; round < 4; ++round) {
+        loadTask_.wait();
         countTask_.wait();
         refinementTask_.wait();
         reductionTask_.wait();

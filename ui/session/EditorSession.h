@@ -95,6 +95,12 @@ class EditorSession {
     // --- files -------------------------------------------------------------------------------
     void newProject();
     void openProject(const std::filesystem::path& file);
+    // The same on a worker thread (the window stays responsive while large meshes load); the
+    // result replaces the document in poll(), an error becomes a message and changes nothing.
+    void startOpenProject(const std::filesystem::path& file);
+    void startLoadVisemeFolder(const std::filesystem::path& folder);
+    bool loading() const { return loadTask_.running(); }
+    std::string loadingLabel() const { return loadTask_.label(); }
     // Saves to `file`, or to the project's own path when empty (throws InputError when it has none).
     void saveProject(const std::filesystem::path& file = {});
     // A folder of meshes: the one whose name contains "neutral" is the neutral, the others are
@@ -212,6 +218,12 @@ class EditorSession {
     void commit(std::string name, EditorState next, std::string mergeKey = {});
     void noteChange(const EditorState& before, const EditorState& after);
     void resetTo(EditorState state);
+    // The document a project file or a mesh folder describes, loaded and checked (any thread).
+    static EditorState projectState(const std::filesystem::path& file);
+    static EditorState folderState(const std::filesystem::path& folder);
+    // Replaces the document by a loaded one (a fresh history).
+    void adopt(EditorState next, const std::string& message);
+    void startLoading(std::string label, std::function<EditorState()> load, std::string message);
     static FaceModel makeFaceModel(face::Individual individual, int resolution);
     // Generates the face's visemes into `next` as a fresh project (embedded meshes).
     static void setVisemesFromFace(EditorState& next);
@@ -235,6 +247,8 @@ class EditorSession {
     };
     BackgroundTask<RefineOutcome> refinementTask_;
     BackgroundTask<PhonemeCountResult> countTask_;
+    BackgroundTask<EditorState> loadTask_;
+    std::string loadMessage_;
     std::filesystem::path countCorpus_;
     std::shared_ptr<AdaptiveWork> adaptive_;
     std::optional<RefinementReport> lastRefinement_;
