@@ -72,6 +72,10 @@ void applyStartOptions(const EditorOptions& options, EditorSession& session, Edi
         settings.kind = parseCriterionKind(options.refine, "--refine");
         session.setRefinementSettings(settings);
     }
+    if (!options.individual.empty()) {
+        if (!session.face().cascade) session.loadFace();
+        session.setIndividual(face::parseIndividual(options.individual, "--individual"));
+    }
     if (!options.preset.empty()) {
         if (!session.face().cascade) session.loadFace();
         session.applyVisemePreset(options.preset);

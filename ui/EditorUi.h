@@ -132,6 +132,7 @@ class EditorUi {
     bool quitConfirmed_ = false;
     bool framePending_ = true;
     std::string importName_;
+    std::string importError_; // the core's message for the last failed import, shown in the panel
 };
 
 } // namespace vl::ui

@@ -27,6 +27,7 @@ int main(int argc, char** argv) {
         ->expected(4);
     bool noWireframe = false;
     app.add_flag("--no-wireframe", noWireframe, "Start without the wireframe overlay (key W toggles it)");
+    app.add_option("--individual", options.individual, "Base geometry of the face: bundled or retarget");
     app.add_option("--field", options.field, "Deformation field (stage name) to select");
     app.add_option("--play", options.play, "Start the playback at this time in seconds");
     app.add_option("--sequence", options.sequence, "Playback sequence: phonemes or viseme names");

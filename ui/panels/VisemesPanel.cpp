@@ -42,10 +42,18 @@ void EditorUi::visemesPanel() {
             fileDialog_.open(
                 "Import viseme " + importName_, FileDialog::Mode::OpenFile, {".obj", ".ply", ".wrl", ".vrml"},
                 [this](const auto& path) {
+                    importError_.clear();
                     if (session.attempt("Import", [&] { session.importViseme(importName_, path); }))
                         importName_.clear();
+                    else
+                        importError_ = session.messages().back().text;
                 });
         }
+    }
+    if (!importError_.empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
+        ImGui::TextWrapped("%s", importError_.c_str());
+        ImGui::PopStyleColor();
     }
     helpMarker("The mesh must have the neutral's vertex count and triangles (same order); otherwise the "
                "core's error names the first mismatch and nothing changes.");

@@ -418,7 +418,20 @@ void EditorSession::generateVisemesFromFace() {
     EditorState next = state();
     setVisemesFromFace(next);
     next.project.path = project().path;
-    commit("Generate visemes from face", std::move(next));
+    // Keep the frequency table, weight mode and target when they still fit the new set (the
+    // visemes keep their names; painted weights do not survive a new mesh).
+    EditorState kept = next;
+    kept.project.frequencies = project().frequencies;
+    if (project().weights.mode != WeightMode::Painted) kept.project.weights.mode = project().weights.mode;
+    if (project().reduction.target <= static_cast<int>(next.visemes->size()))
+        kept.project.reduction.target = project().reduction.target;
+    bool keep = true;
+    try {
+        validateInputs(kept);
+    } catch (const InputError&) {
+        keep = false;
+    }
+    commit("Generate visemes from face", keep ? std::move(kept) : std::move(next));
     info("Generated " + std::to_string(visemeCount()) + " visemes from the face");
 }
 
