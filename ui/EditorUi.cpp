@@ -501,15 +501,24 @@ void EditorUi::mainView(ImVec2 size) {
         std::vector<float> q;
         for (double v : session.face().parameters) q.push_back(static_cast<float>(v));
         style.color = showFieldInfluence_ && selectedStage_ >= 0 ? ColorMode::Scalar : ColorMode::VertexColor;
-        events = mainView_.show("main", size, [&](const glm::mat4& view, const glm::mat4& projection) {
-            faceMesh_.draw(shader_, q, view, projection, style);
-        });
         const auto& cascade = session.face().cascade;
-        if (activePanel_ == Panel::Deformation && cascade && selectedStage_ >= 0 &&
+        const bool inset =
+            activePanel_ == Panel::Deformation && cascade && selectedStage_ >= 0 &&
             selectedStage_ < static_cast<int>(cascade->stages.size()) &&
             selectedInfluence_ <
                 static_cast<int>(
-                    cascade->stages[static_cast<std::size_t>(selectedStage_)].field.influences.size())) {
+                    cascade->stages[static_cast<std::size_t>(selectedStage_)].field.influences.size());
+        if (inset) {
+            // The (u,v) inset (drawn below) takes its own mouse drags.
+            const ImVec2 at = ImGui::GetCursorScreenPos();
+            const float side = std::min(300.0f, 0.35f * size.y);
+            mainView_.excludeFromDrags(ImVec2(at.x + size.x - side - 16.0f, at.y + size.y - side - 16.0f),
+                                       ImVec2(at.x + size.x - 16.0f, at.y + size.y - 16.0f));
+        }
+        events = mainView_.show("main", size, [&](const glm::mat4& view, const glm::mat4& projection) {
+            faceMesh_.draw(shader_, q, view, projection, style);
+        });
+        if (inset) {
             // A (u,v) inset in the view's lower right corner.
             const float side = std::min(300.0f, 0.35f * (events.imageMax.y - events.imageMin.y));
             ImGui::SetCursorScreenPos(

@@ -50,6 +50,14 @@ void EditorUi::visemesPanel() {
                 });
         }
     }
+    ImGui::SameLine();
+    if (ImGui::Button("glTF..."))
+        guarded([this] {
+            fileDialog_.open("Import glTF morph targets", FileDialog::Mode::OpenFile, {".glb", ".gltf"},
+                             [this](const auto& path) {
+                                 session.attempt("Import glTF", [&] { session.importGltf(path); });
+                             });
+        });
     if (!importError_.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
         ImGui::TextWrapped("%s", importError_.c_str());

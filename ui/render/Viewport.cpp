@@ -85,7 +85,11 @@ ViewportEvents Viewport::show(const char* id, ImVec2 size, const SceneFn& scene,
                  ImVec2(1, 0));
     events.imageMin = ImGui::GetItemRectMin();
     events.imageMax = ImGui::GetItemRectMax();
-    events.hovered = ImGui::IsItemHovered();
+    const ImVec2 mousePos = ImGui::GetIO().MousePos;
+    const bool overExcluded = mousePos.x >= excludedMin_.x && mousePos.x < excludedMax_.x &&
+                              mousePos.y >= excludedMin_.y && mousePos.y < excludedMax_.y;
+    excludedMin_ = excludedMax_ = ImVec2(0, 0);
+    events.hovered = ImGui::IsItemHovered() && !overExcluded;
     ImGui::PopID();
 
     const ImGuiIO& io = ImGui::GetIO();

@@ -34,6 +34,13 @@ class Viewport {
     // `leftDragOrbits` is false the left button is left to the caller (e.g. painting).
     ViewportEvents show(const char* id, ImVec2 size, const SceneFn& scene, bool leftDragOrbits = true);
 
+    // Clicks inside this screen rectangle (an overlay such as the (u,v) inset) start no camera drag;
+    // it applies to the next show() only.
+    void excludeFromDrags(ImVec2 min, ImVec2 max) {
+        excludedMin_ = min;
+        excludedMax_ = max;
+    }
+
     OrbitCamera camera;
     glm::vec3 background{0.16f, 0.17f, 0.20f};
 
@@ -45,6 +52,7 @@ class Viewport {
     GLuint msaaFbo_ = 0, msaaColor_ = 0, msaaDepth_ = 0;
     GLuint resolveFbo_ = 0, resolveTexture_ = 0;
     bool leftDragActive_ = false, otherDragActive_ = false;
+    ImVec2 excludedMin_{0, 0}, excludedMax_{0, 0};
 };
 
 } // namespace vl::ui
