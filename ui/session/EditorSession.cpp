@@ -33,6 +33,12 @@ std::vector<std::string> visemeNames(const VisemeSet* set) {
     return names;
 }
 
+// Embedded viseme positions are held by the state's VisemeSet; the project copy keeps names only.
+void stripEmbeddedPositions(Project& project) {
+    for (ProjectViseme& viseme : project.visemes)
+        if (viseme.isEmbedded()) viseme.positions.clear();
+}
+
 bool sameCriterion(const CriterionSettings& a, const CriterionSettings& b) {
     return a.kind == b.kind && a.maxDepth == b.maxDepth && a.depth.depth == b.depth.depth &&
            a.normals.dihedralAngleDeg == b.normals.dihedralAngleDeg &&
@@ -181,6 +187,7 @@ EditorState EditorSession::projectState(const std::filesystem::path& file) {
                 std::make_shared<const std::vector<Vec3>>(face::faceColours(next.visemes->neutral.uvs));
     }
     validateInputs(next);
+    stripEmbeddedPositions(next.project);
     return next;
 }
 
@@ -215,6 +222,12 @@ void EditorSession::startLoadVisemeFolder(const std::filesystem::path& folder) {
 
 Project EditorSession::projectSnapshot() const {
     Project snapshot = project();
+    // Embedded viseme positions are kept once, in the shared viseme set (undo steps stay small).
+    if (visemes())
+        for (ProjectViseme& viseme : snapshot.visemes)
+            if (viseme.isEmbedded())
+                if (const int i = visemes()->find(viseme.name); i >= 0)
+                    viseme.positions = visemes()->visemes[static_cast<std::size_t>(i)].positions;
     snapshot.editor.selectedViseme = visemes() && selectedViseme >= 0
                                          ? visemes()->visemes[static_cast<std::size_t>(selectedViseme)].name
                                          : "";
@@ -241,6 +254,7 @@ void EditorSession::saveProject(const std::filesystem::path& file) {
     // The saved file is the project's new home: record it without an undo step.
     EditorState next = state();
     next.project = rebaseProject(toSave, target);
+    stripEmbeddedPositions(next.project);
     history_.reset(std::move(next));
     info("Saved " + target.string());
 }
@@ -260,7 +274,7 @@ void EditorSession::importGltf(const std::filesystem::path& file) {
     EditorState next;
     next.project.neutral.embedded = imported.neutral;
     for (const auto& viseme : imported.visemes) {
-        next.project.visemes.push_back({viseme.name, {}, viseme.positions});
+        next.project.visemes.push_back({viseme.name, {}, {}}); // embedded: positions live in next.visemes
         next.project.frequencies.visemeFrequencies.entries.emplace_back(viseme.name, 1.0);
     }
     next.project.reduction.target = std::max(1, static_cast<int>(imported.size()) / 2);
@@ -339,7 +353,7 @@ void EditorSession::setVisemesFromFace(EditorState& next) {
     next.project = Project{};
     next.project.neutral.embedded = set->neutral;
     for (const auto& viseme : set->visemes) {
-        next.project.visemes.push_back({viseme.name, {}, viseme.positions});
+        next.project.visemes.push_back({viseme.name, {}, {}}); // embedded: positions live in next.visemes
         next.project.frequencies.visemeFrequencies.entries.emplace_back(viseme.name, 1.0);
     }
     next.project.reduction.target = std::max(1, static_cast<int>(set->size()) * 2 / 3);
