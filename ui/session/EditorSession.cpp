@@ -1,5 +1,7 @@
 #include "ui/session/EditorSession.h"
 
+#include "core/project/ProjectCompare.h"
+
 #include "core/adaptive/CascadeSurface.h"
 #include "core/common/AtomicFile.h"
 #include "core/common/Error.h"
@@ -37,15 +39,6 @@ std::vector<std::string> visemeNames(const VisemeSet* set) {
 void stripEmbeddedPositions(Project& project) {
     for (ProjectViseme& viseme : project.visemes)
         if (viseme.isEmbedded()) viseme.positions.clear();
-}
-
-bool sameCriterion(const CriterionSettings& a, const CriterionSettings& b) {
-    return a.kind == b.kind && a.maxDepth == b.maxDepth && a.depth.depth == b.depth.depth &&
-           a.normals.dihedralAngleDeg == b.normals.dihedralAngleDeg &&
-           a.normals.normalAngleDeg == b.normals.normalAngleDeg &&
-           a.contour.averageError == b.contour.averageError &&
-           a.contour.maximumError == b.contour.maximumError &&
-           a.contour.samplesPerSide == b.contour.samplesPerSide;
 }
 
 bool sameTable(const FrequencyTable& a, const FrequencyTable& b) {
@@ -850,7 +843,7 @@ void EditorSession::poll() {
     }
     if (autoRefine && face().cascade && !refinementTask_.running() &&
         (autoCascade_ != face().cascade.get() || autoParameters_ != face().parameters ||
-         !sameCriterion(autoSettings_, project().refinement)))
+         !sameRefinement(autoSettings_, project().refinement)))
         attempt("Refinement", [this] { startRefinementTask(RefineAction::Adapt, true); });
     if (auto outcome = reductionTask_.take()) {
         if (outcome->index() == 0) {
