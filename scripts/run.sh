@@ -4,8 +4,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 ./scripts/build.sh
 bin=build/release/app
-if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ] && [ -x "$bin/visemelab-editor" ]; then
-  exec "$bin/visemelab-editor" --project assets/sample/sample.vlproj
+if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ] && [ -x build/release/ui/visemelab-editor ]; then
+  exec build/release/ui/visemelab-editor --project assets/sample/sample.vlproj
 fi
 out=out/sample-reduction
 echo "No display: running the headless pipeline on the bundled sample (15 visemes -> 10)."
