@@ -48,16 +48,12 @@ std::filesystem::path findNeutralIn(const std::filesystem::path& dir) {
 }
 
 VisemeSet loadSet(const ReduceOptions& o) {
-    if (!o.visemeDir.empty() && !o.visemes.empty())
-        throwInputError("--visemes", "use either --visemes DIR or --viseme NAME=FILE, not both");
     std::filesystem::path neutral = o.neutral;
     std::vector<std::pair<std::string, std::filesystem::path>> files;
     if (!o.visemeDir.empty()) {
         if (neutral.empty()) neutral = findNeutralIn(o.visemeDir);
         files = listVisemeFolder(o.visemeDir, neutral);
     } else {
-        if (neutral.empty())
-            throwInputError("--neutral", "a neutral mesh is required (or use --visemes DIR)");
         for (const auto& v : o.visemes) files.emplace_back(splitAssignment(v, "--viseme"));
     }
     return loadVisemeSet(neutral, files);
@@ -65,8 +61,6 @@ VisemeSet loadSet(const ReduceOptions& o) {
 
 FrequencySource loadFrequencies(const ReduceOptions& o, const VisemeSet& set) {
     FrequencySource source;
-    if (!o.freqFile.empty() && !o.freqs.empty())
-        throwInputError("--freq", "use either --freq NAME=F or --freq-file FILE, not both");
     if (!o.freqFile.empty()) {
         source = loadFrequencyFile(o.freqFile);
     } else if (!o.freqs.empty()) {
@@ -98,8 +92,7 @@ ReduceSettings loadSettings(const ReduceOptions& o) {
     settings.target = o.target;
     if (const auto mode = weightModeFromString(o.weights)) {
         settings.weightMode = *mode;
-        if (*mode == WeightMode::Painted)
-            throwInputError("--weights", "painted weights need a file: --weights FILE");
+        if (*mode == WeightMode::Painted) throwUsage("painted weights need a file: --weights FILE");
     } else {
         settings.weightMode = WeightMode::Painted;
         settings.paintedWeights = loadWeightsFile(o.weights);
@@ -118,20 +111,33 @@ struct ReduceInputs {
     ReduceSettings settings;
 };
 
+// Flag combinations are checked before any file is read, so they always give exit code 2.
+void checkFlagCombinations(const ReduceOptions& o) {
+    if (!o.visemeDir.empty() && !o.visemes.empty())
+        throwUsage("use either --visemes DIR or --viseme NAME=FILE, not both");
+    if (!o.freqFile.empty() && !o.freqs.empty())
+        throwUsage("use either --freq NAME=F or --freq-file FILE, not both");
+    if (o.project.empty() && o.target == kTargetNotGiven)
+        throwUsage("--target M is required (or --project FILE)");
+    if (o.project.empty() && o.neutral.empty() && o.visemeDir.empty())
+        throwUsage("a neutral mesh is required: --neutral FILE (or --visemes DIR)");
+    if (!o.project.empty() && (!o.neutral.empty() || !o.visemes.empty() || !o.visemeDir.empty()))
+        throwUsage("--project already names the meshes; drop --neutral/--viseme/--visemes");
+}
+
 ReduceInputs loadInputs(const ReduceOptions& o, bool weightsGiven) {
+    checkFlagCombinations(o);
     ReduceInputs in;
     if (o.project.empty()) {
-        if (o.target == kTargetNotGiven) throwUsage("--target M is required (or --project FILE)");
         in.set = loadSet(o);
         in.frequencies = loadFrequencies(o, in.set);
         in.settings = loadSettings(o);
         return in;
     }
-    if (!o.neutral.empty() || !o.visemes.empty() || !o.visemeDir.empty())
-        throwUsage("--project already names the meshes; drop --neutral/--viseme/--visemes");
     const Project project = loadProject(o.project);
     in.set = loadProjectVisemeSet(project);
-    in.frequencies = (o.freqFile.empty() && o.freqs.empty()) ? project.frequencies : loadFrequencies(o, in.set);
+    in.frequencies =
+        (o.freqFile.empty() && o.freqs.empty()) ? project.frequencies : loadFrequencies(o, in.set);
     in.settings = weightsGiven ? loadSettings(o) : projectReduceSettings(project);
     in.settings.target = o.target != kTargetNotGiven ? o.target : project.reduction.target;
     return in;
@@ -185,9 +191,10 @@ void addReduceCommand(CLI::App& app, CommandRunner& run) {
     cmd->add_option("--map", options->mapFile,
                     "Phoneme -> viseme map (CSV phoneme,viseme or JSON); makes --freq-file a phoneme table");
     auto* weights = cmd->add_option("--weights", options->weights,
-                    "Vertex weights: uniform, area, or a file of painted weights")
-        ->capture_default_str();
-    cmd->add_option("--target,-m", options->target, "Number of merged meshes m (1..n); required without --project");
+                                    "Vertex weights: uniform, area, or a file of painted weights")
+                        ->capture_default_str();
+    cmd->add_option("--target,-m", options->target,
+                    "Number of merged meshes m (1..n); required without --project");
     cmd->add_option("--out", options->outDir, "Output folder")->capture_default_str();
     cmd->add_option("--report", options->report, "JSON report path (default OUT/report.json)");
     cmd->callback([&run, options, weights] {

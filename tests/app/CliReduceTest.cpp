@@ -91,7 +91,8 @@ TEST(CliReduce, ReadsAProjectFileAndLetsFlagsOverrideIt) {
     Project project;
     project.path = dir.path / "p.vlproj"; // relative mesh paths below resolve against its folder
     project.neutral.file = "neutral.obj";
-    for (const char* name : {"a", "b", "c"}) project.visemes.push_back({name, std::string(name) + ".obj", {}});
+    for (const char* name : {"a", "b", "c"})
+        project.visemes.push_back({name, std::string(name) + ".obj", {}});
     project.frequencies.visemeFrequencies.entries = {{"a", 1}, {"b", 1}, {"c", 2}};
     project.weights.mode = WeightMode::Area;
     project.reduction.target = 2;
@@ -105,13 +106,15 @@ TEST(CliReduce, ReadsAProjectFileAndLetsFlagsOverrideIt) {
     EXPECT_EQ(report["weights"], "area");
     EXPECT_EQ(report["groups"], nlohmann::json::parse(R"([["a","b"],["c"]])"));
 
-    r = test::runCli("reduce --project " + (dir.path / "p.vlproj").string() + " -m 1 --weights uniform --out " + out.string());
+    r = test::runCli("reduce --project " + (dir.path / "p.vlproj").string() +
+                     " -m 1 --weights uniform --out " + out.string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
     report = readJson(out / "report.json");
     EXPECT_EQ(report["m"], 1);
     EXPECT_EQ(report["weights"], "uniform");
 
-    r = test::runCli("reduce --project " + (dir.path / "p.vlproj").string() + " --visemes " + dir.path.string());
+    r = test::runCli("reduce --project " + (dir.path / "p.vlproj").string() + " --visemes " +
+                     dir.path.string());
     EXPECT_EQ(r.exitCode, 2) << r.output;
     r = test::runCli("reduce --project " + (dir.path / "missing.vlproj").string());
     EXPECT_EQ(r.exitCode, 3) << r.output;
@@ -123,6 +126,9 @@ TEST(CliReduce, UsageErrorsExitWith2) {
     EXPECT_EQ(test::runCli("reduce --visemes x").exitCode, 2); // --target missing
     EXPECT_EQ(test::runCli("reduce --target notanumber").exitCode, 2);
     EXPECT_EQ(test::runCli("reduce --help").exitCode, 0);
+    EXPECT_EQ(test::runCli("reduce -m 2").exitCode, 2); // no meshes named
+    EXPECT_EQ(test::runCli("reduce -m 2 --visemes a --viseme b=c.obj").exitCode, 2);
+    EXPECT_EQ(test::runCli("reduce -m 2 --visemes a --freq a=1 --freq-file f.csv").exitCode, 2);
 }
 
 TEST(CliReduce, InvalidInputExitsWith3AndNamesTheProblem) {
@@ -156,8 +162,8 @@ TEST(CliReduce, ReducesTheBundledSample) {
     const fs::path phonemes = fs::path(VISEMELAB_ASSETS_DIR) / "phonemes";
     const auto r = test::runCli("reduce --visemes " + kSample.string() + " --freq-file " +
                                 (phonemes / "en-us_frequencies.csv").string() + " --map " +
-                                (phonemes / "map_sample_face.csv").string() + " --weights area --target 10 --out " +
-                                (dir.path / "out").string());
+                                (phonemes / "map_sample_face.csv").string() +
+                                " --weights area --target 10 --out " + (dir.path / "out").string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
     const auto report = readJson(dir.path / "out" / "report.json");
     EXPECT_EQ(report["m"], 10);
