@@ -2,6 +2,7 @@
 
 #include "core/common/Error.h"
 #include "core/deform/BundledFace.h"
+#include "core/project/BuiltinGeometry.h"
 
 #include <map>
 #include <mutex>
@@ -33,6 +34,16 @@ std::optional<face::Individual> builtinOf(const SampledField& grid) {
         if (builtinGeometry(who, grid.width).samples == grid.samples) return who;
     return std::nullopt;
 }
+
+} // namespace
+
+std::optional<face::Individual> builtinIndividualOf(const DeformationCascade& cascade) {
+    for (auto stage = cascade.stages.rbegin(); stage != cascade.stages.rend(); ++stage)
+        if (stage->kind == StageKind::Constant) return builtinOf(stage->field.sampled);
+    return std::nullopt;
+}
+
+namespace {
 
 Json pair(const Vec2& v) {
     return Json::array({v[0], v[1]});

@@ -4,6 +4,7 @@
 
 #include "core/common/AtomicFile.h"
 #include "core/deform/BundledFace.h"
+#include "core/project/BuiltinGeometry.h"
 #include "core/project/JsonRead.h"
 
 namespace vl {
@@ -145,6 +146,20 @@ TEST_F(DeformValidation, SampledGrids) {
     stage(0)["field"]["sampled"] = Json{{"builtin", "retarget"}, {"width", 9}, {"height", 9}};
     EXPECT_EQ(load().deformation.cascade.stages[0].field.sampled.samples,
               face::makeFaceGeometry(face::Individual::Retarget, 9).samples);
+}
+
+TEST(DeformJson, TheRetargetingChoiceIsReadBackFromTheSavedBaseGeometry) {
+    ScratchDir dir("individual");
+    for (const auto who : {face::Individual::Bundled, face::Individual::Retarget}) {
+        const Project p = faceProject(dir / "face.vlproj", face::makeFaceCascade(who));
+        saveProject(p.path, p);
+        EXPECT_EQ(builtinIndividualOf(loadProject(p.path).deformation.cascade), who);
+    }
+    // Any other base geometry is no built-in individual.
+    DeformationCascade custom = face::makeBundledFace();
+    custom.stages[0].field.sampled.samples[0][2] += 1.0;
+    EXPECT_EQ(builtinIndividualOf(custom), std::nullopt);
+    EXPECT_EQ(builtinIndividualOf(DeformationCascade{}), std::nullopt);
 }
 
 TEST_F(DeformValidation, InfluenceRegions) {

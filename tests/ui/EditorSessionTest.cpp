@@ -220,6 +220,26 @@ TEST(EditorSession, SaveAndReopenProjectKeepsTheState) {
     EXPECT_EQ(reopened.project().reduction.result->best().groups, session.currentGrouping()->groups);
 }
 
+TEST(EditorSession, ReopenedProjectKeepsTheRetargetingChoice) {
+    const auto dir = tempDir("retarget");
+    EditorSession session;
+    session.autoReduce = false;
+    session.loadFace();
+    session.setIndividual(face::Individual::Retarget);
+    session.saveProject(dir / "retarget.vlproj");
+
+    EditorSession reopened;
+    reopened.openProject(dir / "retarget.vlproj");
+    ASSERT_NE(reopened.face().cascade, nullptr);
+    EXPECT_EQ(reopened.face().individual, face::Individual::Retarget);
+    // The loaded geometry is the retargeted one, and going back to the bundled face is one edit.
+    EXPECT_EQ(reopened.face().cascade->stages[0].field.sampled.samples,
+              session.face().cascade->stages[0].field.sampled.samples);
+    reopened.setIndividual(face::Individual::Bundled);
+    EXPECT_EQ(reopened.face().cascade->stages[0].field.sampled.samples,
+              face::makeBundledFace().stages[0].field.sampled.samples);
+}
+
 TEST(EditorSession, BrokenProjectFileIsReportedAndTheOpenProjectStays) {
     const auto dir = tempDir("broken-project");
     {

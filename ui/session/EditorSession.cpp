@@ -1,5 +1,6 @@
 #include "ui/session/EditorSession.h"
 
+#include "core/project/BuiltinGeometry.h"
 #include "core/project/ProjectCompare.h"
 
 #include "core/adaptive/CascadeSurface.h"
@@ -171,6 +172,8 @@ EditorState EditorSession::projectState(const std::filesystem::path& file) {
     if (next.project.deformation.isSet()) {
         FaceModel& model = next.face;
         model.cascade = std::make_shared<const DeformationCascade>(next.project.deformation.cascade);
+        // The retargeting choice is the base geometry the project saved (a built-in reference).
+        model.individual = builtinIndividualOf(*model.cascade).value_or(face::Individual::Bundled);
         model.parameters = next.project.deformation.values;
         model.domain = std::make_shared<const MeshData>(
             face::faceDomainMesh(kSampleResolution, face::DomainDensity::MouthFocused));
