@@ -228,16 +228,16 @@ void EditorUi::shortcuts() {
                 fileDialog_.open(
                     "Save project as", FileDialog::Mode::SaveFile, {".vlproj"},
                     [this](const auto& path) {
-                        session.attempt("Save project", [&] { session.saveProject(path); });
+                        session.attempt("Save project", [&] { session.startSaveProject(path); });
                     },
                     "project.vlproj");
             else
-                session.attempt("Save project", [&] { session.saveProject(); });
+                session.attempt("Save project", [&] { session.startSaveProject(); });
         }
         if (ImGui::IsKeyPressed(GLFW_KEY_Z, false)) io.KeyShift ? session.redo() : session.undo();
         if (ImGui::IsKeyPressed(GLFW_KEY_Y, false)) session.redo();
         if (ImGui::IsKeyPressed(GLFW_KEY_L, false))
-            guarded([this] { session.attempt("Load sample", [&] { session.loadSample(); }); });
+            guarded([this] { session.attempt("Load sample", [&] { session.startLoadSample(); }); });
     } else if (ImGui::IsKeyPressed(GLFW_KEY_F, false)) {
         frameAll();
     } else if (ImGui::IsKeyPressed(GLFW_KEY_W, false)) {
@@ -257,17 +257,17 @@ void EditorUi::menuBar() {
                                  });
             });
         if (ImGui::MenuItem("Save project", "Ctrl+S", false, !session.project().path.empty()))
-            session.attempt("Save project", [&] { session.saveProject(); });
+            session.attempt("Save project", [&] { session.startSaveProject(); });
         if (ImGui::MenuItem("Save project as...", "Ctrl+Shift+S"))
             fileDialog_.open(
                 "Save project as", FileDialog::Mode::SaveFile, {".vlproj"},
                 [this](const auto& path) {
-                    session.attempt("Save project", [&] { session.saveProject(path); });
+                    session.attempt("Save project", [&] { session.startSaveProject(path); });
                 },
                 "project.vlproj");
         ImGui::Separator();
         if (ImGui::MenuItem("Load sample face", "Ctrl+L"))
-            guarded([this] { session.attempt("Load sample", [&] { session.loadSample(); }); });
+            guarded([this] { session.attempt("Load sample", [&] { session.startLoadSample(); }); });
         if (ImGui::MenuItem("Open viseme folder..."))
             guarded([this] {
                 fileDialog_.open(
@@ -412,6 +412,13 @@ void EditorUi::statusBar(float height) {
         ImGui::ProgressBar(-1.0f * static_cast<float>(ImGui::GetTime()), ImVec2(200, 0),
                            session.loadingLabel().c_str());
     }
+    // File work runs on workers too: an indeterminate bar each while it lasts.
+    for (const auto& [running, label] : {std::pair{session.saving(), session.savingLabel()},
+                                         std::pair{session.exporting(), session.exportingLabel()}}) {
+        if (!running) continue;
+        ImGui::SameLine();
+        ImGui::ProgressBar(-1.0f * static_cast<float>(ImGui::GetTime()), ImVec2(200, 0), label.c_str());
+    }
     if (session.refinementRunning()) {
         ImGui::SameLine();
         ImGui::ProgressBar(-1.0f * static_cast<float>(ImGui::GetTime()), ImVec2(120, 0), "refining");
@@ -454,13 +461,12 @@ void EditorUi::unsavedChangesPopup() {
         ImGui::CloseCurrentPopup();
         auto action = std::move(pendingGuarded_);
         if (hasPath) {
-            if (session.attempt("Save project", [&] { session.saveProject(); }) && action) action();
+            session.attempt("Save project", [&] { session.startSaveProject({}, action); });
         } else {
             fileDialog_.open(
                 "Save project as", FileDialog::Mode::SaveFile, {".vlproj"},
                 [this, action](const auto& path) {
-                    if (session.attempt("Save project", [&] { session.saveProject(path); }) && action)
-                        action();
+                    session.attempt("Save project", [&] { session.startSaveProject(path, action); });
                 },
                 "project.vlproj");
         }

@@ -27,6 +27,13 @@ void loadGeneratedSet(EditorSession& session) {
     ASSERT_FALSE(session.project().frequencies.isPhonemeBased());
 }
 
+// The same with target m and no automatic reduction (no curve until something runs one).
+void loadUnreducedSet(EditorSession& session, int m) {
+    session.autoReduce = false;
+    loadGeneratedSet(session);
+    session.setTarget(m);
+}
+
 TEST(EditorSession, LoadsTheSampleAsAnInterpolableVisemeSet) {
     EditorSession session;
     session.loadSample();
@@ -384,6 +391,95 @@ TEST(EditorSession, OpensProjectsAndFoldersOnAWorkerThread) {
     session.finishBackgroundWork();
     EXPECT_EQ(session.visemes(), before);
     EXPECT_EQ(session.messages().back().kind, StatusMessage::Kind::Error);
+}
+
+} // namespace
+} // namespace vl::ui
+
+namespace vl::ui {
+namespace {
+
+TEST(EditorSession, SavesOnAWorkerThreadTheStateOfTheRequest) {
+    const auto dir = tempDir("background-save");
+    EditorSession session;
+    loadUnreducedSet(session, 7);
+    session.startSaveProject(dir / "p.vlproj");
+    session.setTarget(3); // after the request: not in the file, and still unsaved
+    session.finishBackgroundWork();
+    EXPECT_FALSE(session.saving());
+    EXPECT_TRUE(session.modified());
+    EXPECT_EQ(session.project().reduction.target, 3);
+    EXPECT_TRUE(session.canUndo());
+    EditorSession reopened;
+    reopened.openProject(dir / "p.vlproj");
+    EXPECT_EQ(reopened.project().reduction.target, 7);
+
+    // Without edits in between, the saved state is recorded and the held-back action runs.
+    bool ran = false;
+    session.startSaveProject(dir / "q.vlproj", [&] { ran = true; });
+    session.finishBackgroundWork();
+    EXPECT_TRUE(ran);
+    EXPECT_FALSE(session.modified());
+    EXPECT_EQ(session.project().path, dir / "q.vlproj");
+    EXPECT_EQ(loadProject(dir / "q.vlproj").reduction.target, 3);
+}
+
+TEST(EditorSession, FailedBackgroundSaveIsReportedAndChangesNothing) {
+    const auto dir = tempDir("background-save-error");
+    EditorSession session;
+    loadUnreducedSet(session, 5);
+    bool ran = false;
+    {
+        std::FILE* f = std::fopen((dir / "a-file").string().c_str(), "w");
+        std::fclose(f);
+    }
+    session.startSaveProject(dir / "a-file" / "p.vlproj", [&] { ran = true; }); // not a folder
+    session.finishBackgroundWork();
+    EXPECT_FALSE(ran);
+    EXPECT_TRUE(session.modified());
+    EXPECT_TRUE(session.project().path.empty());
+    EXPECT_EQ(session.undoName(), "Target m = 5");
+    ASSERT_FALSE(session.messages().empty());
+    EXPECT_EQ(session.messages().back().kind, StatusMessage::Kind::Error);
+    EXPECT_NE(session.messages().back().text.find("p.vlproj"), std::string::npos)
+        << session.messages().back().text;
+    // Without a file name there is nothing to save to: refused at once.
+    EXPECT_THROW(session.startSaveProject(), InputError);
+}
+
+TEST(EditorSession, ExportsOnAWorkerThreadWithAFreshReduction) {
+    const auto dir = tempDir("background-export");
+    EditorSession session;
+    loadUnreducedSet(session, 5);
+    ASSERT_EQ(session.reductionCurve(), nullptr); // the export runs the reduction itself
+    session.startExport(ExportFormat::Glb, dir / "face.glb");
+    session.setTarget(9); // after the request: the export keeps m = 5
+    session.finishBackgroundWork();
+    EXPECT_FALSE(session.exporting());
+    ASSERT_EQ(session.messages().back().kind, StatusMessage::Kind::Info) << session.messages().back().text;
+    EditorSession check;
+    check.importGltf(dir / "face.glb");
+    EXPECT_EQ(check.visemeCount(), 5u);
+    // A failing export is a message and changes nothing.
+    const std::uint64_t generation = session.inputsGeneration();
+    session.startExport(ExportFormat::Glb, dir / "face.glb" / "face.glb"); // a file is no folder
+    session.finishBackgroundWork();
+    EXPECT_EQ(session.messages().back().kind, StatusMessage::Kind::Error);
+    EXPECT_EQ(session.inputsGeneration(), generation);
+    EXPECT_EQ(session.project().reduction.target, 9);
+}
+
+TEST(EditorSession, LoadsTheSampleOnAWorkerThread) {
+    EditorSession session;
+    loadUnreducedSet(session, 3);
+    session.startLoadSample();
+    EXPECT_EQ(session.project().reduction.target, 3); // the open document stays until it is loaded
+    session.finishBackgroundWork();
+    ASSERT_NE(session.visemes(), nullptr);
+    EXPECT_EQ(session.visemeCount(), 15u);
+    EXPECT_FALSE(session.modified());
+    EXPECT_FALSE(session.canUndo());
+    EXPECT_NE(session.messages().back().text.find("sample"), std::string::npos);
 }
 
 } // namespace

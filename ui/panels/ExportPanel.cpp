@@ -24,17 +24,19 @@ void EditorUi::exportPanel() {
             fileDialog_.open(
                 "Save project as", FileDialog::Mode::SaveFile, {".vlproj"},
                 [this](const auto& path) {
-                    session.attempt("Save project", [&] { session.saveProject(path); });
+                    session.attempt("Save project", [&] { session.startSaveProject(path); });
                 },
                 "project.vlproj");
         else
-            session.attempt("Save project", [&] { session.saveProject(); });
+            session.attempt("Save project", [&] { session.startSaveProject(); });
     }
     ImGui::SameLine();
     if (ImGui::Button("Save as..."))
         fileDialog_.open(
             "Save project as", FileDialog::Mode::SaveFile, {".vlproj"},
-            [this](const auto& path) { session.attempt("Save project", [&] { session.saveProject(path); }); },
+            [this](const auto& path) {
+                session.attempt("Save project", [&] { session.startSaveProject(path); });
+            },
             "project.vlproj");
 
     sectionHeader("Runtime export (the reduced set)");
@@ -68,7 +70,7 @@ void EditorUi::exportPanel() {
         if (ImGui::Button(target.label, ImVec2(200, 0))) {
             const ExportFormat format = target.format;
             auto run = [this, format](const std::filesystem::path& out) {
-                session.attempt("Export", [&] { session.exportProject(format, out); });
+                session.attempt("Export", [&] { session.startExport(format, out); });
             };
             if (target.folder)
                 fileDialog_.open(std::string("Export ") + target.label + ": choose a folder",

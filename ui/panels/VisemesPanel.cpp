@@ -13,7 +13,7 @@ namespace vl::ui {
 
 void EditorUi::visemesPanel() {
     if (ImGui::Button("Load sample face"))
-        guarded([this] { session.attempt("Load sample", [&] { session.loadSample(); }); });
+        guarded([this] { session.attempt("Load sample", [&] { session.startLoadSample(); }); });
     ImGui::SameLine();
     if (ImGui::Button("Open viseme folder..."))
         guarded([this] {

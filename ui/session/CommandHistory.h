@@ -4,6 +4,7 @@
 // immutable pointers, so a commit copies little. Consecutive commits with the same merge key
 // (the drags of one slider) collapse into one undo step.
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
@@ -13,7 +14,7 @@ namespace vl::ui {
 template <class State> class CommandHistory {
   public:
     explicit CommandHistory(State initial, std::size_t limit = 200) : limit_(limit) {
-        entries_.push_back({"Initial state", std::move(initial), {}});
+        entries_.push_back({"Initial state", std::move(initial), {}, nextId_++});
     }
 
     const State& current() const { return entries_[index_].state; }
@@ -24,8 +25,9 @@ template <class State> class CommandHistory {
             !mergeKey.empty() && index_ > 0 && entries_[index_].mergeKey == mergeKey && savedIndex_ != index_;
         if (merge) {
             entries_[index_].state = std::move(state);
+            entries_[index_].id = nextId_++;
         } else {
-            entries_.push_back({std::move(name), std::move(state), std::move(mergeKey)});
+            entries_.push_back({std::move(name), std::move(state), std::move(mergeKey), nextId_++});
             ++index_;
         }
         if (entries_.size() > limit_) {
@@ -55,13 +57,16 @@ template <class State> class CommandHistory {
     // Starts over with `state` as the only entry, marked as saved (after open or new).
     void reset(State state) {
         entries_.clear();
-        entries_.push_back({"Initial state", std::move(state), {}});
+        entries_.push_back({"Initial state", std::move(state), {}, nextId_++});
         index_ = 0;
         savedIndex_ = 0;
     }
     void markSaved() { savedIndex_ = index_; }
     bool modified() const { return savedIndex_ != index_; }
     std::size_t size() const { return entries_.size(); }
+    // Identifies the current document state: it changes with every commit, undo, redo and reset,
+    // but not with amend (derived data), so a background save can tell whether it is still current.
+    std::uint64_t currentId() const { return entries_[index_].id; }
 
   private:
     static constexpr std::size_t kNever = static_cast<std::size_t>(-1);
@@ -69,11 +74,13 @@ template <class State> class CommandHistory {
         std::string name;
         State state;
         std::string mergeKey;
+        std::uint64_t id = 0;
     };
     std::vector<Entry> entries_;
     std::size_t index_ = 0;
     std::size_t savedIndex_ = 0;
     std::size_t limit_;
+    std::uint64_t nextId_ = 1;
 };
 
 } // namespace vl::ui

@@ -75,6 +75,12 @@ void validateInputs(const EditorState& state) {
     computeWeights(state.project.weights.mode, state.visemes->neutral, state.project.weights.painted);
 }
 
+std::string exportMessage(ExportFormat format, const std::vector<std::filesystem::path>& written,
+                          const std::filesystem::path& out) {
+    return std::string("Exported ") + toString(format) + ": " + std::to_string(written.size()) +
+           " file(s) to " + out.string();
+}
+
 } // namespace
 
 // The adaptive mesh and its surface live between refinement runs (the paper's dynamic mesh): only
@@ -198,22 +204,25 @@ void EditorSession::openProject(const std::filesystem::path& file) {
     adopt(projectState(file), "Opened " + file.string());
 }
 
-void EditorSession::startLoading(std::string label, std::function<EditorState()> load, std::string message) {
+void EditorSession::startLoading(std::string label, std::function<EditorState()> load,
+                                 std::function<std::string(const EditorState&)> describe) {
     if (loadTask_.running()) throwInputError(label, "another file is still loading");
-    loadMessage_ = std::move(message);
+    describeLoad_ = std::move(describe);
     loadTask_.start(std::move(label), [load = std::move(load)](const auto&) { return load(); });
 }
 
 void EditorSession::startOpenProject(const std::filesystem::path& file) {
     startLoading(
         "Opening " + file.filename().string(), [file] { return projectState(file); },
-        "Opened " + file.string());
+        [file](const EditorState&) { return "Opened " + file.string(); });
 }
 
 void EditorSession::startLoadVisemeFolder(const std::filesystem::path& folder) {
     startLoading(
         "Loading " + folder.filename().string(), [folder] { return folderState(folder); },
-        "Loaded the visemes of " + folder.string());
+        [folder](const EditorState& next) {
+            return "Loaded " + std::to_string(next.visemes->size()) + " visemes from " + folder.string();
+        });
 }
 
 Project EditorSession::projectSnapshot() const {
@@ -242,27 +251,70 @@ Project EditorSession::projectSnapshot() const {
     return snapshot;
 }
 
-void EditorSession::saveProject(const std::filesystem::path& file) {
+std::filesystem::path EditorSession::saveTarget(const std::filesystem::path& file) const {
     const std::filesystem::path target = file.empty() ? project().path : file;
     if (target.empty()) throwInputError("save", "the project has no file yet: use Save As");
-    const Project toSave = projectSnapshot();
-    vl::saveProject(target, toSave);
+    return target;
+}
+
+Project EditorSession::writeProject(const std::filesystem::path& target, const Project& snapshot) {
+    vl::saveProject(target, snapshot);
+    Project saved = rebaseProject(snapshot, target);
+    stripEmbeddedPositions(saved);
+    return saved;
+}
+
+void EditorSession::recordSaved(const std::filesystem::path& target, Project saved, std::uint64_t savedId) {
+    if (history_.currentId() != savedId) {
+        // Edits (or another document) arrived while the file was written: they stay unsaved.
+        info("Saved " + target.string() + " (changes made while saving are not in it)");
+        return;
+    }
     // The saved file is the project's new home: record it without an undo step.
     EditorState next = state();
-    next.project = rebaseProject(toSave, target);
-    stripEmbeddedPositions(next.project);
+    next.project = std::move(saved);
     history_.reset(std::move(next));
     info("Saved " + target.string());
+}
+
+void EditorSession::saveProject(const std::filesystem::path& file) {
+    const std::filesystem::path target = saveTarget(file);
+    recordSaved(target, writeProject(target, projectSnapshot()), history_.currentId());
+}
+
+void EditorSession::startSaveProject(const std::filesystem::path& file, std::function<void()> then) {
+    const std::filesystem::path target = saveTarget(file);
+    if (saveTask_.running()) throwInputError("save", "a save is still running");
+    saveRequestId_ = history_.currentId();
+    afterSave_ = std::move(then);
+    saveTask_.start("Saving " + target.filename().string(),
+                    [target, snapshot = projectSnapshot()](const auto&) {
+                        return SaveOutcome{target, writeProject(target, snapshot)};
+                    });
+}
+
+std::vector<std::filesystem::path> EditorSession::writeExport(const Project& snapshot, ExportFormat format,
+                                                              const std::filesystem::path& out) {
+    return exportModel(projectReducedModel(snapshot), format, out);
 }
 
 std::vector<std::filesystem::path> EditorSession::exportProject(ExportFormat format,
                                                                 const std::filesystem::path& out) {
     if (!visemes()) throwInputError("export", "load a viseme set first");
-    const ReducedModel model = projectReducedModel(projectSnapshot());
-    auto written = exportModel(model, format, out);
-    info(std::string("Exported ") + toString(format) + ": " + std::to_string(written.size()) +
-         " file(s) to " + out.string());
+    auto written = writeExport(projectSnapshot(), format, out);
+    info(exportMessage(format, written, out));
     return written;
+}
+
+void EditorSession::startExport(ExportFormat format, const std::filesystem::path& out) {
+    if (!visemes()) throwInputError("export", "load a viseme set first");
+    if (exportTask_.running()) throwInputError("export", "an export is still running");
+    exportFormat_ = format;
+    exportOut_ = out;
+    exportTask_.start(std::string("Exporting ") + toString(format),
+                      [format, out, snapshot = projectSnapshot()](const auto&) {
+                          return writeExport(snapshot, format, out);
+                      });
 }
 
 void EditorSession::importGltf(const std::filesystem::path& file) {
@@ -315,19 +367,30 @@ std::filesystem::path EditorSession::assetsDirectory() {
     return VISEMELAB_ASSETS_DIR;
 }
 
-void EditorSession::loadSample() {
+EditorState EditorSession::sampleState() {
     const std::filesystem::path dir = assetsDirectory();
     for (const char* name : {"sample/sample.vlproj", "sample.vlproj"})
-        if (std::filesystem::exists(dir / name)) return openProject(dir / name);
+        if (std::filesystem::exists(dir / name)) return projectState(dir / name);
     // The sample is the bundled deformable face and its 15 Oculus visemes.
     EditorState next;
     next.face = makeFaceModel(face::Individual::Bundled, kSampleResolution);
     setVisemesFromFace(next);
-    reductionTask_.cancel();
-    resetTo(std::move(next));
-    selectedViseme = -1;
-    info("Loaded the sample: bundled face with " + std::to_string(visemeCount()) + " visemes, " +
-         std::to_string(visemes()->vertexCount()) + " vertices");
+    return next;
+}
+
+std::string EditorSession::describeSample(const EditorState& sample) {
+    return "Loaded the sample: " + std::to_string(sample.visemes->size()) + " visemes, " +
+           std::to_string(sample.visemes->vertexCount()) + " vertices";
+}
+
+void EditorSession::loadSample() {
+    EditorState next = sampleState();
+    const std::string message = describeSample(next);
+    adopt(std::move(next), message);
+}
+
+void EditorSession::startLoadSample() {
+    startLoading("Loading the sample", sampleState, describeSample);
 }
 
 // --- deformable face -------------------------------------------------------------------------
@@ -799,10 +862,29 @@ void EditorSession::startReduction() {
 
 void EditorSession::poll() {
     if (auto outcome = loadTask_.take()) {
-        if (outcome->index() == 0)
-            adopt(std::move(std::get<0>(*outcome)), loadMessage_);
-        else
+        if (outcome->index() == 0) {
+            const std::string message = describeLoad_(std::get<0>(*outcome));
+            adopt(std::move(std::get<0>(*outcome)), message);
+        } else {
             error(loadTask_.label() + ": " + std::get<1>(*outcome));
+        }
+    }
+    if (auto outcome = saveTask_.take()) {
+        auto then = std::exchange(afterSave_, nullptr);
+        if (outcome->index() == 0) {
+            SaveOutcome& saved = std::get<0>(*outcome);
+            recordSaved(saved.target, std::move(saved.saved), saveRequestId_);
+            if (then && !modified()) then();
+        } else {
+            error(saveTask_.label() + ": " + std::get<1>(*outcome));
+        }
+    }
+    if (auto outcome = exportTask_.take()) {
+        if (outcome->index() == 0) {
+            info(exportMessage(exportFormat_, std::get<0>(*outcome), exportOut_));
+        } else {
+            error(exportTask_.label() + ": " + std::get<1>(*outcome));
+        }
     }
     if (auto outcome = countTask_.take()) {
         if (outcome->index() == 0) {
@@ -867,6 +949,8 @@ void EditorSession::finishBackgroundWork() {
     // poll() may start automatic re-runs; a few rounds settle them.
     for (int round = 0; round < 4; ++round) {
         loadTask_.wait();
+        saveTask_.wait();
+        exportTask_.wait();
         countTask_.wait();
         refinementTask_.wait();
         reductionTask_.wait();

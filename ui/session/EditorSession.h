@@ -103,11 +103,18 @@ class EditorSession {
     std::string loadingLabel() const { return loadTask_.label(); }
     // Saves to `file`, or to the project's own path when empty (throws InputError when it has none).
     void saveProject(const std::filesystem::path& file = {});
+    // The same on a worker thread: the project is snapshotted now (later edits are not in the file).
+    // poll() records the saved file (when nothing was edited meanwhile) and then runs `then` (the
+    // action the unsaved-changes prompt held back); a failed save is a message and changes nothing.
+    void startSaveProject(const std::filesystem::path& file = {}, std::function<void()> then = {});
+    bool saving() const { return saveTask_.running(); }
+    std::string savingLabel() const { return saveTask_.label(); }
     // A folder of meshes: the one whose name contains "neutral" is the neutral, the others are
     // visemes sorted by name; frequencies start uniform.
     void loadVisemeFolder(const std::filesystem::path& folder);
     // The bundled sample (assets/), whatever form the core ships it in.
     void loadSample();
+    void startLoadSample(); // the same on a worker thread, like startOpenProject
     static std::filesystem::path assetsDirectory();
     // Adds one viseme mesh; throws the core's interpolability error and changes nothing on failure.
     void importViseme(const std::string& name, const std::filesystem::path& file);
@@ -117,6 +124,11 @@ class EditorSession {
     Project projectSnapshot() const;
     // Exports the reduced model (glb/runtime file, vrml/obj folder); returns the files written.
     std::vector<std::filesystem::path> exportProject(ExportFormat format, const std::filesystem::path& out);
+    // The same on a worker thread (it may run a fresh reduction) from a snapshot taken now; the
+    // result or the error is a message in poll().
+    void startExport(ExportFormat format, const std::filesystem::path& out);
+    bool exporting() const { return exportTask_.running(); }
+    std::string exportingLabel() const { return exportTask_.label(); }
     // The morph targets of a glTF/GLB file become the viseme set (a new project).
     void importGltf(const std::filesystem::path& file);
 
@@ -223,7 +235,18 @@ class EditorSession {
     static EditorState folderState(const std::filesystem::path& folder);
     // Replaces the document by a loaded one (a fresh history).
     void adopt(EditorState next, const std::string& message);
-    void startLoading(std::string label, std::function<EditorState()> load, std::string message);
+    void startLoading(std::string label, std::function<EditorState()> load,
+                      std::function<std::string(const EditorState&)> describe);
+    static EditorState sampleState();
+    static std::string describeSample(const EditorState& sample);
+    // The target of a save request (throws InputError when there is none).
+    std::filesystem::path saveTarget(const std::filesystem::path& file) const;
+    // Writes a snapshot (any thread); returns it rebased on `target`, as the document records it.
+    static Project writeProject(const std::filesystem::path& target, const Project& snapshot);
+    // Records a finished save of the state `savedId` (see CommandHistory::currentId).
+    void recordSaved(const std::filesystem::path& target, Project saved, std::uint64_t savedId);
+    static std::vector<std::filesystem::path> writeExport(const Project& snapshot, ExportFormat format,
+                                                          const std::filesystem::path& out);
     static FaceModel makeFaceModel(face::Individual individual, int resolution);
     // Generates the face's visemes into `next` as a fresh project (embedded meshes).
     static void setVisemesFromFace(EditorState& next);
@@ -248,7 +271,17 @@ class EditorSession {
     BackgroundTask<RefineOutcome> refinementTask_;
     BackgroundTask<PhonemeCountResult> countTask_;
     BackgroundTask<EditorState> loadTask_;
-    std::string loadMessage_;
+    std::function<std::string(const EditorState&)> describeLoad_;
+    struct SaveOutcome {
+        std::filesystem::path target;
+        Project saved;
+    };
+    BackgroundTask<SaveOutcome> saveTask_;
+    std::uint64_t saveRequestId_ = 0;
+    std::function<void()> afterSave_;
+    BackgroundTask<std::vector<std::filesystem::path>> exportTask_;
+    ExportFormat exportFormat_ = ExportFormat::Glb;
+    std::filesystem::path exportOut_;
     std::filesystem::path countCorpus_;
     std::shared_ptr<AdaptiveWork> adaptive_;
     std::optional<RefinementReport> lastRefinement_;
