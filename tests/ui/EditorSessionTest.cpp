@@ -8,7 +8,10 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <cmath>
 #include <filesystem>
+#include <thread>
 
 namespace vl::ui {
 namespace {
@@ -480,6 +483,91 @@ TEST(EditorSession, LoadsTheSampleOnAWorkerThread) {
     EXPECT_FALSE(session.modified());
     EXPECT_FALSE(session.canUndo());
     EXPECT_NE(session.messages().back().text.find("sample"), std::string::npos);
+}
+
+} // namespace
+} // namespace vl::ui
+
+namespace vl::ui {
+namespace {
+
+// Whether the face's display mesh is an adaptation for the parameters q (its positions are the
+// cascade evaluated at its (u,v) for q).
+bool meshShowsParameters(const FaceModel& face, const std::vector<double>& q) {
+    const MeshData& mesh = *face.domain;
+    if (mesh.positions.size() != mesh.uvs.size()) return false;
+    for (std::size_t i = 0; i < mesh.uvs.size(); ++i) {
+        const Vec3 expected = face.cascade->evaluate(mesh.uvs[i][0], mesh.uvs[i][1], q);
+        for (int c = 0; c < 3; ++c)
+            if (std::abs(mesh.positions[i][c] - expected[c]) > 1e-9) return false;
+    }
+    return true;
+}
+
+void waitForRefinement(const EditorSession& session) {
+    while (session.refinementRunning()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+}
+
+TEST(EditorSession, AutomaticReAdaptationIsDerivedStateAndNeverAnUndoStep) {
+    EditorSession session;
+    session.autoReduce = false;
+    session.autoRefine = true;
+    session.loadFace();
+    const std::vector<double> q0 = session.face().parameters;
+    session.finishBackgroundWork();
+    ASSERT_TRUE(session.lastRefinement().has_value());
+    EXPECT_TRUE(meshShowsParameters(session.face(), q0));
+    EXPECT_EQ(session.undoName(), "Load face");
+
+    const int jaw = session.face().cascade->findParameter("jaw_open");
+    ASSERT_GE(jaw, 0);
+    session.setParameter(jaw, 1.0);
+    session.endEdit();
+    const std::vector<double> q1 = session.face().parameters;
+    session.finishBackgroundWork();
+    EXPECT_TRUE(meshShowsParameters(session.face(), q1));
+    EXPECT_EQ(session.undoName(), "Set jaw_open"); // no step of its own
+    EXPECT_FALSE(session.canRedo());
+
+    // Undo while the re-adaptation for q1 still runs: its result must not land on the q0 step.
+    session.setParameter(jaw, 0.5);
+    session.endEdit();
+    const std::vector<double> qHalf = session.face().parameters;
+    session.poll(); // starts the re-adaptation for qHalf
+    ASSERT_TRUE(session.refinementRunning());
+    session.undo();
+    waitForRefinement(session);
+    session.poll();
+    EXPECT_EQ(session.face().parameters, q1);
+    EXPECT_FALSE(meshShowsParameters(session.face(), qHalf));
+    session.finishBackgroundWork();
+    EXPECT_TRUE(meshShowsParameters(session.face(), q1)); // re-adapted to the restored values
+    EXPECT_EQ(session.undoName(), "Set jaw_open");
+    EXPECT_EQ(session.redoName(), "Set jaw_open");
+
+    // Undo of the slider change restores q0 and the mesh follows; redo brings q1 back.
+    session.undo();
+    EXPECT_EQ(session.face().parameters, q0);
+    EXPECT_TRUE(meshShowsParameters(session.face(), q0)); // the step kept its own mesh
+    session.finishBackgroundWork();
+    EXPECT_TRUE(meshShowsParameters(session.face(), q0));
+    EXPECT_EQ(session.undoName(), "Load face");
+    session.redo();
+    EXPECT_EQ(session.face().parameters, q1);
+    EXPECT_TRUE(meshShowsParameters(session.face(), q1));
+    session.finishBackgroundWork();
+    EXPECT_TRUE(meshShowsParameters(session.face(), q1));
+    session.redo();
+    EXPECT_EQ(session.face().parameters, qHalf);
+    session.finishBackgroundWork();
+    EXPECT_TRUE(meshShowsParameters(session.face(), qHalf));
+    EXPECT_FALSE(session.canRedo());
+    // Three steps in all: load, two slider changes.
+    for (const char* name : {"Set jaw_open", "Set jaw_open", "Load face"}) {
+        EXPECT_EQ(session.undoName(), name);
+        session.undo();
+    }
+    EXPECT_FALSE(session.canUndo());
 }
 
 } // namespace

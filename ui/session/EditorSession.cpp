@@ -747,7 +747,7 @@ void EditorSession::startRefinementTask(RefineAction action, bool automatic) {
             poses.push_back(parameterVector(*cascade, viseme));
     if (!adaptive_) adaptive_ = std::make_shared<AdaptiveWork>();
     if (automatic) {
-        autoCascade_ = cascade.get();
+        autoCascade_ = cascade;
         autoParameters_ = q;
         autoSettings_ = settings;
     }
@@ -912,23 +912,28 @@ void EditorSession::poll() {
     if (auto outcome = refinementTask_.take()) {
         if (outcome->index() == 0) {
             RefineOutcome& result = std::get<0>(*outcome);
-            lastRefinement_ = result.report;
-            if (face().cascade) {
+            if (!result.automatic) {
+                lastRefinement_ = result.report;
+                if (face().cascade) {
+                    EditorState next = state();
+                    next.face.domain = result.domain;
+                    commit("Refinement: " + result.report.action, std::move(next));
+                }
+            } else if (face().cascade && autoInputsCurrent()) {
+                // Automatic re-adaptation is derived state: the mesh of the current step, for that
+                // step's own cascade, parameters and thresholds, never an undo step of its own. A
+                // result for other inputs (an undo or an edit arrived meanwhile) is dropped; the
+                // check below re-adapts to the current inputs.
+                lastRefinement_ = result.report;
                 EditorState next = state();
                 next.face.domain = result.domain;
-                // Automatic re-adaptation follows other edits: it is not an undo step of its own.
-                if (result.automatic)
-                    history_.amend(std::move(next));
-                else
-                    commit("Refinement: " + result.report.action, std::move(next));
+                history_.amend(std::move(next));
             }
         } else {
             error("Refinement: " + std::get<1>(*outcome));
         }
     }
-    if (autoRefine && face().cascade && !refinementTask_.running() &&
-        (autoCascade_ != face().cascade.get() || autoParameters_ != face().parameters ||
-         !sameRefinement(autoSettings_, project().refinement)))
+    if (autoRefine && face().cascade && !refinementTask_.running() && !autoInputsCurrent())
         attempt("Refinement", [this] { startRefinementTask(RefineAction::Adapt, true); });
     if (auto outcome = reductionTask_.take()) {
         if (outcome->index() == 0) {
@@ -943,6 +948,11 @@ void EditorSession::poll() {
     if (autoReduce && n >= 2 && n <= kMaxExactVisemes && !reductionCurve() && !failedOnThese &&
         !reductionTask_.running())
         attempt("Reduction", [this] { startReduction(); });
+}
+
+bool EditorSession::autoInputsCurrent() const {
+    return autoCascade_ == face().cascade && autoParameters_ == face().parameters &&
+           sameRefinement(autoSettings_, project().refinement);
 }
 
 void EditorSession::finishBackgroundWork() {

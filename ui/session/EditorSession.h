@@ -285,10 +285,13 @@ class EditorSession {
     std::filesystem::path countCorpus_;
     std::shared_ptr<AdaptiveWork> adaptive_;
     std::optional<RefinementReport> lastRefinement_;
-    // Inputs of the last automatic re-adaptation.
-    const DeformationCascade* autoCascade_ = nullptr;
+    // Inputs of the last automatic re-adaptation (held, so a freed cascade's address is never reused
+    // for a match).
+    std::shared_ptr<const DeformationCascade> autoCascade_;
     std::vector<double> autoParameters_;
     CriterionSettings autoSettings_;
+    // Whether the current state has the inputs of the last automatic re-adaptation.
+    bool autoInputsCurrent() const;
     void startRefinementTask(RefineAction action, bool automatic);
     // faceSamples() cache.
     const DeformationCascade* samplesCascade_ = nullptr;
