@@ -406,10 +406,12 @@ TEST(EditorSession, SavesOnAWorkerThreadTheStateOfTheRequest) {
     const auto dir = tempDir("background-save");
     EditorSession session;
     loadUnreducedSet(session, 7);
-    session.startSaveProject(dir / "p.vlproj");
+    bool ranEarly = false;
+    session.startSaveProject(dir / "p.vlproj", [&] { ranEarly = true; });
     session.setTarget(3); // after the request: not in the file, and still unsaved
     session.finishBackgroundWork();
     EXPECT_FALSE(session.saving());
+    EXPECT_FALSE(ranEarly); // the guarded action waits for a save of the current document
     EXPECT_TRUE(session.modified());
     EXPECT_EQ(session.project().reduction.target, 3);
     EXPECT_TRUE(session.canUndo());

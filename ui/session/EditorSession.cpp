@@ -264,17 +264,18 @@ Project EditorSession::writeProject(const std::filesystem::path& target, const P
     return saved;
 }
 
-void EditorSession::recordSaved(const std::filesystem::path& target, Project saved, std::uint64_t savedId) {
+bool EditorSession::recordSaved(const std::filesystem::path& target, Project saved, std::uint64_t savedId) {
     if (history_.currentId() != savedId) {
         // Edits (or another document) arrived while the file was written: they stay unsaved.
         info("Saved " + target.string() + " (changes made while saving are not in it)");
-        return;
+        return false;
     }
     // The saved file is the project's new home: record it without an undo step.
     EditorState next = state();
     next.project = std::move(saved);
     history_.reset(std::move(next));
     info("Saved " + target.string());
+    return true;
 }
 
 void EditorSession::saveProject(const std::filesystem::path& file) {
@@ -873,8 +874,8 @@ void EditorSession::poll() {
         auto then = std::exchange(afterSave_, nullptr);
         if (outcome->index() == 0) {
             SaveOutcome& saved = std::get<0>(*outcome);
-            recordSaved(saved.target, std::move(saved.saved), saveRequestId_);
-            if (then && !modified()) then();
+            // The held-back action (quit, open) runs only when the document it guarded is saved.
+            if (recordSaved(saved.target, std::move(saved.saved), saveRequestId_) && then) then();
         } else {
             error(saveTask_.label() + ": " + std::get<1>(*outcome));
         }

@@ -243,8 +243,9 @@ class EditorSession {
     std::filesystem::path saveTarget(const std::filesystem::path& file) const;
     // Writes a snapshot (any thread); returns it rebased on `target`, as the document records it.
     static Project writeProject(const std::filesystem::path& target, const Project& snapshot);
-    // Records a finished save of the state `savedId` (see CommandHistory::currentId).
-    void recordSaved(const std::filesystem::path& target, Project saved, std::uint64_t savedId);
+    // Records a finished save of the state `savedId` (see CommandHistory::currentId); false when the
+    // document changed meanwhile (it stays unsaved).
+    bool recordSaved(const std::filesystem::path& target, Project saved, std::uint64_t savedId);
     static std::vector<std::filesystem::path> writeExport(const Project& snapshot, ExportFormat format,
                                                           const std::filesystem::path& out);
     static FaceModel makeFaceModel(face::Individual individual, int resolution);
