@@ -110,6 +110,19 @@ void EditorUi::requestQuit() {
     guarded([this] { quitConfirmed_ = true; });
 }
 
+void EditorUi::saveProject(bool askForFile, std::function<void()> then) {
+    if (!askForFile && !session.project().path.empty()) {
+        session.attempt("Save project", [&] { session.startSaveProject({}, std::move(then)); });
+        return;
+    }
+    fileDialog_.open(
+        "Save project as", FileDialog::Mode::SaveFile, {".vlproj"},
+        [this, then](const auto& path) {
+            session.attempt("Save project", [&] { session.startSaveProject(path, then); });
+        },
+        "project.vlproj");
+}
+
 void EditorUi::guarded(std::function<void()> action) {
     if (!session.modified()) {
         action();
@@ -223,17 +236,7 @@ void EditorUi::shortcuts() {
                                  });
             });
         }
-        if (ImGui::IsKeyPressed(GLFW_KEY_S, false)) {
-            if (io.KeyShift || session.project().path.empty())
-                fileDialog_.open(
-                    "Save project as", FileDialog::Mode::SaveFile, {".vlproj"},
-                    [this](const auto& path) {
-                        session.attempt("Save project", [&] { session.startSaveProject(path); });
-                    },
-                    "project.vlproj");
-            else
-                session.attempt("Save project", [&] { session.startSaveProject(); });
-        }
+        if (ImGui::IsKeyPressed(GLFW_KEY_S, false)) saveProject(io.KeyShift);
         if (ImGui::IsKeyPressed(GLFW_KEY_Z, false)) io.KeyShift ? session.redo() : session.undo();
         if (ImGui::IsKeyPressed(GLFW_KEY_Y, false)) session.redo();
         if (ImGui::IsKeyPressed(GLFW_KEY_L, false))
@@ -257,14 +260,8 @@ void EditorUi::menuBar() {
                                  });
             });
         if (ImGui::MenuItem("Save project", "Ctrl+S", false, !session.project().path.empty()))
-            session.attempt("Save project", [&] { session.startSaveProject(); });
-        if (ImGui::MenuItem("Save project as...", "Ctrl+Shift+S"))
-            fileDialog_.open(
-                "Save project as", FileDialog::Mode::SaveFile, {".vlproj"},
-                [this](const auto& path) {
-                    session.attempt("Save project", [&] { session.startSaveProject(path); });
-                },
-                "project.vlproj");
+            saveProject(false);
+        if (ImGui::MenuItem("Save project as...", "Ctrl+Shift+S")) saveProject(true);
         ImGui::Separator();
         if (ImGui::MenuItem("Load sample face", "Ctrl+L"))
             guarded([this] { session.attempt("Load sample", [&] { session.startLoadSample(); }); });
@@ -459,17 +456,7 @@ void EditorUi::unsavedChangesPopup() {
     const bool hasPath = !session.project().path.empty();
     if (ImGui::Button(hasPath ? "Save" : "Save as...", ImVec2(110, 0))) {
         ImGui::CloseCurrentPopup();
-        auto action = std::move(pendingGuarded_);
-        if (hasPath) {
-            session.attempt("Save project", [&] { session.startSaveProject({}, action); });
-        } else {
-            fileDialog_.open(
-                "Save project as", FileDialog::Mode::SaveFile, {".vlproj"},
-                [this, action](const auto& path) {
-                    session.attempt("Save project", [&] { session.startSaveProject(path, action); });
-                },
-                "project.vlproj");
-        }
+        saveProject(false, std::move(pendingGuarded_));
     }
     ImGui::SameLine();
     if (ImGui::Button("Discard changes", ImVec2(130, 0))) {

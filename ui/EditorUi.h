@@ -98,6 +98,9 @@ class EditorUi {
 
     // Asks for confirmation first when there are unsaved changes.
     void guarded(std::function<void()> action);
+    // Saves the project in the background; asks for a file first when `askForFile` or it has none.
+    // `then` runs once the save has recorded the document (used by the unsaved-changes prompt).
+    void saveProject(bool askForFile, std::function<void()> then = {});
 
     GLFWwindow* window_;
     GlShader shader_;

@@ -19,25 +19,9 @@ void EditorUi::exportPanel() {
                              });
         });
     ImGui::SameLine();
-    if (ImGui::Button("Save")) {
-        if (project.path.empty())
-            fileDialog_.open(
-                "Save project as", FileDialog::Mode::SaveFile, {".vlproj"},
-                [this](const auto& path) {
-                    session.attempt("Save project", [&] { session.startSaveProject(path); });
-                },
-                "project.vlproj");
-        else
-            session.attempt("Save project", [&] { session.startSaveProject(); });
-    }
+    if (ImGui::Button("Save")) saveProject(false);
     ImGui::SameLine();
-    if (ImGui::Button("Save as..."))
-        fileDialog_.open(
-            "Save project as", FileDialog::Mode::SaveFile, {".vlproj"},
-            [this](const auto& path) {
-                session.attempt("Save project", [&] { session.startSaveProject(path); });
-            },
-            "project.vlproj");
+    if (ImGui::Button("Save as...")) saveProject(true);
 
     sectionHeader("Runtime export (the reduced set)");
     const Grouping* grouping = session.currentGrouping();
