@@ -17,7 +17,7 @@ constexpr int kExitInvalidInput = 3;
 
 // A combination of flags that CLI11 cannot check by itself; main prints it and exits with 2.
 class UsageError : public std::runtime_error {
-public:
+  public:
     using std::runtime_error::runtime_error;
 };
 [[noreturn]] inline void throwUsage(const std::string& message) {

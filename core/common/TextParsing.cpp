@@ -13,9 +13,12 @@ double parseFiniteDouble(std::string_view token, std::string_view where) {
     const char* end = token.data() + token.size();
     if (begin != end && *begin == '+') ++begin; // from_chars rejects a leading '+', files use it
     const auto [ptr, ec] = std::from_chars(begin, end, value);
-    if (ec == std::errc::result_out_of_range) throwInputError(where, "number out of range '" + std::string(token) + "'");
-    if (ec != std::errc() || ptr != end) throwInputError(where, "expected a number, found '" + std::string(token) + "'");
-    if (!std::isfinite(value)) throwInputError(where, "non-finite number '" + std::string(token) + "' (NaN or Inf)");
+    if (ec == std::errc::result_out_of_range)
+        throwInputError(where, "number out of range '" + std::string(token) + "'");
+    if (ec != std::errc() || ptr != end)
+        throwInputError(where, "expected a number, found '" + std::string(token) + "'");
+    if (!std::isfinite(value))
+        throwInputError(where, "non-finite number '" + std::string(token) + "' (NaN or Inf)");
     return value;
 }
 
@@ -25,8 +28,10 @@ std::int64_t parseInteger(std::string_view token, std::string_view where) {
     const char* end = token.data() + token.size();
     if (begin != end && *begin == '+') ++begin;
     const auto [ptr, ec] = std::from_chars(begin, end, value);
-    if (ec == std::errc::result_out_of_range) throwInputError(where, "integer out of range '" + std::string(token) + "'");
-    if (ec != std::errc() || ptr != end) throwInputError(where, "expected an integer, found '" + std::string(token) + "'");
+    if (ec == std::errc::result_out_of_range)
+        throwInputError(where, "integer out of range '" + std::string(token) + "'");
+    if (ec != std::errc() || ptr != end)
+        throwInputError(where, "expected an integer, found '" + std::string(token) + "'");
     return value;
 }
 

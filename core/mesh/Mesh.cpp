@@ -21,9 +21,11 @@ TriMesh toTriMesh(const MeshData& data, std::string_view where) {
         const auto& t = data.triangles[f];
         if (t[0] >= n || t[1] >= n || t[2] >= n)
             throwInputError(where, "triangle " + std::to_string(f) + " has a vertex index out of range");
-        const auto fh = mesh.add_face(mesh.vertex_handle(t[0]), mesh.vertex_handle(t[1]), mesh.vertex_handle(t[2]));
+        const auto fh =
+            mesh.add_face(mesh.vertex_handle(t[0]), mesh.vertex_handle(t[1]), mesh.vertex_handle(t[2]));
         if (!fh.is_valid())
-            throwInputError(where, "triangle " + std::to_string(f) + " is degenerate or makes the mesh non-manifold");
+            throwInputError(where, "triangle " + std::to_string(f) +
+                                       " is degenerate or makes the mesh non-manifold");
     }
     return mesh;
 }

@@ -43,7 +43,11 @@ void BM_Reduce(benchmark::State& state) {
 } // namespace
 
 BENCHMARK(BM_Reduce)->Args({16, 10, 1500})->Unit(benchmark::kMillisecond)->MinTime(1.0);
-BENCHMARK(BM_Reduce)->Args({12, 8, 1500})->Args({14, 8, 1500})->Args({18, 10, 1500})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Reduce)
+    ->Args({12, 8, 1500})
+    ->Args({14, 8, 1500})
+    ->Args({18, 10, 1500})
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Reduce)->Args({20, 10, 1500})->Unit(benchmark::kMillisecond)->Iterations(1);
 
 BENCHMARK_MAIN();
