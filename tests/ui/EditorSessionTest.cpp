@@ -1,6 +1,7 @@
 // Drives the editor's session the way the panels do (load the sample, move a slider, run a
 // reduction, paint, undo) and checks the resulting state; bad input must change nothing.
 #include "ui/session/EditorSession.h"
+#include "core/common/AtomicFile.h"
 #include "core/common/Error.h"
 #include "core/export/Export.h"
 #include "core/io/MeshIO.h"
@@ -252,11 +253,8 @@ TEST(EditorSession, ReopenedProjectKeepsTheRetargetingChoice) {
 
 TEST(EditorSession, BrokenProjectFileIsReportedAndTheOpenProjectStays) {
     const auto dir = tempDir("broken-project");
-    {
-        std::FILE* f = std::fopen((dir / "bad.vlproj").string().c_str(), "w");
-        std::fputs("{ \"format\": \"visemelab-project\", \"version\": 1, \"visemes\": 3 }", f);
-        std::fclose(f);
-    }
+    writeFileAtomically(dir / "bad.vlproj",
+                        "{ \"format\": \"visemelab-project\", \"version\": 1, \"visemes\": 3 }");
     EditorSession session;
     session.loadSample();
     const VisemeSet* before = session.visemes();
@@ -358,11 +356,7 @@ TEST(EditorSession, BundledPhonemeMapDrivesTheVisemeFrequencies) {
 
 TEST(EditorSession, CountsPhonemesOfATextFileInTheBackground) {
     const auto dir = tempDir("corpus");
-    {
-        std::FILE* f = std::fopen((dir / "text.txt").string().c_str(), "w");
-        std::fputs("Hello world. The quick brown fox jumps over the lazy dog.\n", f);
-        std::fclose(f);
-    }
+    writeFileAtomically(dir / "text.txt", "Hello world. The quick brown fox jumps over the lazy dog.\n");
     EditorSession session;
     session.loadFace();
     session.generateVisemesFromFace();
@@ -434,10 +428,7 @@ TEST(EditorSession, FailedBackgroundSaveIsReportedAndChangesNothing) {
     EditorSession session;
     loadUnreducedSet(session, 5);
     bool ran = false;
-    {
-        std::FILE* f = std::fopen((dir / "a-file").string().c_str(), "w");
-        std::fclose(f);
-    }
+    writeFileAtomically(dir / "a-file", "");
     session.startSaveProject(dir / "a-file" / "p.vlproj", [&] { ran = true; }); // not a folder
     session.finishBackgroundWork();
     EXPECT_FALSE(ran);
