@@ -183,6 +183,7 @@ void EditorUi::syncGpu() {
 // --- frame -----------------------------------------------------------------------------------
 
 void EditorUi::frame() {
+    session.beginFrame();
     session.poll();
     if (playback_.playing) playback_.time += ImGui::GetIO().DeltaTime;
     syncGpu();

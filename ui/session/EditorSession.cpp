@@ -109,33 +109,38 @@ void EditorSession::noteChange(const EditorState& before, const EditorState& aft
     }
 }
 
+std::shared_ptr<const EditorState> EditorSession::retireCurrent() {
+    frameStates_.push_back(history_.currentShared());
+    return frameStates_.back();
+}
+
 void EditorSession::commit(std::string name, EditorState next, std::string mergeKey) {
-    const EditorState before = state();
+    const auto before = retireCurrent();
     history_.commit(std::move(name), std::move(next), std::move(mergeKey));
-    noteChange(before, state());
+    noteChange(*before, state());
 }
 
 void EditorSession::resetTo(EditorState next) {
-    const EditorState before = state();
+    const auto before = retireCurrent();
     history_.reset(std::move(next));
-    noteChange(before, state());
+    noteChange(*before, state());
     ++inputsGeneration_; // a new document never reuses an old curve
 }
 
 void EditorSession::undo() {
     if (!canUndo()) return;
     const std::string name = history_.undoName();
-    const EditorState before = state();
+    const auto before = retireCurrent();
     history_.undo();
-    noteChange(before, state());
+    noteChange(*before, state());
     info("Undo: " + name);
 }
 
 void EditorSession::redo() {
     if (!canRedo()) return;
-    const EditorState before = state();
+    const auto before = retireCurrent();
     history_.redo();
-    noteChange(before, state());
+    noteChange(*before, state());
     info("Redo: " + history_.undoName());
 }
 
@@ -273,6 +278,7 @@ bool EditorSession::recordSaved(const std::filesystem::path& target, Project sav
     // The saved file is the project's new home: record it without an undo step.
     EditorState next = state();
     next.project = std::move(saved);
+    retireCurrent();
     history_.reset(std::move(next));
     info("Saved " + target.string());
     return true;
@@ -928,6 +934,7 @@ void EditorSession::poll() {
                 lastRefinement_ = result.report;
                 EditorState next = state();
                 next.face.domain = result.domain;
+                retireCurrent();
                 history_.amend(std::move(next));
             }
         } else {
