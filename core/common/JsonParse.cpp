@@ -133,6 +133,9 @@ void checkJsonNesting(std::string_view text, std::string_view source, std::size_
 }
 
 Json parseJsonStrict(std::string_view text, std::string_view source) {
+    if (text.size() > limits::kMaxJsonBytes)
+        throwInputError(source, "JSON document too large (" + std::to_string(text.size()) +
+                                    " bytes; the limit is " + std::to_string(limits::kMaxJsonBytes) + ")");
     checkJsonNesting(text, source, limits::kMaxJsonDepth);
     PathTracker tracker(source);
     const Json::parser_callback_t callback = [&tracker](int, Json::parse_event_t event, Json& parsed) {
@@ -156,6 +159,9 @@ Json parseJsonStrict(std::string_view text, std::string_view source) {
             quote == std::string::npos ? "" : message.substr(quote + 1, message.rfind('\'') - quote - 1);
         throwInputError(std::string(source) + ": " + tracker.currentPath(),
                         "number out of range: " + literal);
+    } catch (const std::bad_alloc&) {
+        throwInputError(source, "not enough memory to read this JSON document (" +
+                                    std::to_string(text.size()) + " bytes)");
     }
 }
 

@@ -6,13 +6,20 @@
 
 namespace vl::limits {
 
+// No input file larger than this is read (a 40 M-vertex OBJ is about 1 GiB).
+inline constexpr std::size_t kMaxInputFileBytes = std::size_t{1} << 30;
+
+// A JSON document of this many bytes builds a DOM of several GiB; none of ours comes close (a project
+// embedding a 26 k-vertex head and 16 visemes is about 16 MB).
+inline constexpr std::size_t kMaxJsonBytes = std::size_t{256} << 20;
+
 // Objects and arrays nested deeper than this are refused before any JSON document is built
 // (a project nests about 8 levels; nlohmann's copy and dump recurse once per level).
 inline constexpr std::size_t kMaxJsonDepth = 64;
 
-// VRML `USE` of a Coordinate or TextureCoordinate node copies its points again. The points copied
-// by USE may total at most this factor times the points written in the file, or
-// kMinUseExpansionBudget values, whichever is larger, so a small file cannot expand into gigabytes.
+// VRML `USE` of a Coordinate or TextureCoordinate node copies its points again. The numbers copied
+// by USE may total at most this factor times the file's tokens, or kVrmlMinUseExpansionBudget,
+// whichever is larger, so a small file cannot expand into gigabytes (433 KB once gave 60 M vertices).
 inline constexpr std::size_t kVrmlUseExpansionFactor = 8;
 inline constexpr std::size_t kVrmlMinUseExpansionBudget = std::size_t{1} << 22; // numbers (doubles)
 
