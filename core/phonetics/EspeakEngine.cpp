@@ -34,7 +34,11 @@ std::string selectVoice(const std::string& voice) {
     static std::string current;
     static std::string currentLanguage;
     if (voice == current) return currentLanguage;
-    if (espeak_SetVoiceByName(voice.c_str()) != EE_OK)
+    // A voice file name ("en-us", "gmw/en") or, failing that, a language code: British English is
+    // the voice "en" whose language is "en-gb".
+    espeak_VOICE byLanguage{};
+    byLanguage.languages = voice.c_str();
+    if (espeak_SetVoiceByName(voice.c_str()) != EE_OK && espeak_SetVoiceByProperties(&byLanguage) != EE_OK)
         throwInputError("voice '" + voice + "'",
                         "espeak-ng has no such voice (language codes such as en-us, en-gb, de, fr work)");
     const espeak_VOICE* selected = espeak_GetCurrentVoice();

@@ -116,6 +116,12 @@ TEST(EspeakTranscriber, OtherLanguagesGiveIpa) {
     EXPECT_EQ(join(german->transcribe("Haus")), "h aʊ s");
 }
 
+TEST(EspeakTranscriber, VoicesByLanguageCode) {
+    // British English is espeak-ng's voice "en", language code "en-gb": both names work.
+    EXPECT_EQ(join(makeEspeakTranscriber("en-gb")->transcribe("house")), "HH AW S");
+    EXPECT_EQ(join(makeEspeakTranscriber("en")->transcribe("house")), "HH AW S");
+}
+
 TEST(EspeakTranscriber, UnknownVoiceIsAnInputErrorNamingIt) {
     try {
         makeEspeakTranscriber("xx-nonexistent");
