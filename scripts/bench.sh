@@ -24,3 +24,4 @@ t = json.load(open(sys.argv[1]))["timing_ms"]
 print("  last run: load %.1f ms, reduce %.1f ms, write %.1f ms" % (t["load"], t["reduce"], t["write"]))
 PY
 rm -rf "$out"
+./scripts/bench-say.sh
