@@ -1,4 +1,4 @@
-// visemelab: the headless pipeline (reduce, refine, visemes, export, freq).
+// visemelab: the headless pipeline (reduce, refine, visemes, export, freq, project, avatar).
 #include "app/cli/Command.h"
 #include "core/common/Error.h"
 
@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
     vl::cli::addRefineCommand(app, run);
     vl::cli::addExportCommand(app, run);
     vl::cli::addProjectCommand(app, run);
+    vl::cli::addAvatarCommand(app, run);
 
     try {
         app.parse(argc, argv);
