@@ -96,6 +96,7 @@ ReduceSettings loadSettings(const ReduceOptions& o) {
     } else {
         settings.weightMode = WeightMode::Painted;
         settings.paintedWeights = loadWeightsFile(o.weights);
+        settings.paintedWeightsSource = o.weights;
     }
     return settings;
 }

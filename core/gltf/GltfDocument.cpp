@@ -2,7 +2,8 @@
 
 #include "core/common/AtomicFile.h"
 #include "core/common/Error.h"
-#include "core/common/JsonNesting.h"
+#include "core/common/JsonParse.h"
+#include "core/common/Limits.h"
 #include "core/gltf/GlbContainer.h"
 
 #include <cctype>
@@ -195,6 +196,8 @@ std::string GltfDocument::readExternal(const std::string& uri, std::string_view 
         fail(element, "URI " + quoted + " leads outside the glTF file's folder (symlink)");
     const auto size = std::filesystem::file_size(path, ec);
     if (ec) fail(element, "cannot read " + quoted);
+    if (std::min<std::uintmax_t>(size, maxBytes) > limits::kMaxInputFileBytes)
+        fail(element, quoted + " is larger than " + std::to_string(limits::kMaxInputFileBytes >> 20) + " MiB");
     const std::size_t wanted = std::min<std::uintmax_t>(size, maxBytes);
     std::string bytes(wanted, '\0');
     std::ifstream in(path, std::ios::binary);
@@ -215,12 +218,7 @@ GltfDocument parseGltfDocument(std::string bytes, std::string_view source,
         chunks = splitGlb(*file, source);
         jsonText = chunks.json;
     }
-    checkJsonNesting(jsonText, kMaxJsonDepth, source);
-    try {
-        doc.json = nlohmann::ordered_json::parse(jsonText);
-    } catch (const nlohmann::json::exception& e) {
-        doc.fail("", std::string("not a glTF file (JSON): ") + e.what());
-    }
+    doc.json = parseJsonStrict(jsonText, source); // nesting limited before any parser recurses
     if (!doc.json.is_object()) doc.fail("", "the JSON document is not an object");
     if (!doc.json.contains("asset") || !doc.json["asset"].is_object() ||
         !doc.json["asset"].contains("version"))

@@ -4,8 +4,8 @@
 // typed parse of the same document, and the bytes of every buffer.
 //
 // Reading is hardened against hostile files before any parser or allocation sees them:
-// - JSON nesting is limited (kMaxJsonDepth) by a scan before nlohmann or tinygltf parse it
-//   (tinygltf recurses per level of extras);
+// - JSON nesting is limited (limits::kMaxJsonDepth) by a scan before nlohmann or tinygltf parse
+//   it (tinygltf recurses per level of extras), duplicate keys and 1e999 refused (core/common/JsonParse);
 // - GLB header and chunk lengths are checked against the bytes present;
 // - buffers are loaded by VisemeLab, not tinygltf: the GLB BIN chunk, base64 data URIs, or files
 //   whose URI is relative and stays inside the glTF file's folder (no absolute paths, no "..", no
@@ -24,8 +24,6 @@
 #include <vector>
 
 namespace vl {
-
-inline constexpr std::size_t kMaxJsonDepth = 64;
 
 struct GltfBuffer {
     std::shared_ptr<const std::string> storage; // owns the bytes (file, BIN chunk or decoded URI)

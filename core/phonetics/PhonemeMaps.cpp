@@ -4,14 +4,18 @@
 #include "core/phonetics/Arpabet.h"
 
 #include <algorithm>
+#include <unordered_set>
 
 namespace vl {
 
 namespace {
 
+// At most 30 names, then how many more: a message stays readable for a table of any length.
 std::string joinList(const std::vector<std::string>& names) {
+    constexpr std::size_t kShown = 30;
     std::string text;
-    for (const auto& name : names) text += (text.empty() ? "" : ", ") + name;
+    for (std::size_t i = 0; i < names.size() && i < kShown; ++i) text += (i == 0 ? "" : ", ") + names[i];
+    if (names.size() > kShown) text += " and " + std::to_string(names.size() - kShown) + " more";
     return text;
 }
 
@@ -19,9 +23,11 @@ std::string joinList(const std::vector<std::string>& names) {
 
 void checkMapCovers(const PhonemeVisemeMap& map, std::span<const std::string> phonemes,
                     std::string_view where) {
+    std::unordered_set<std::string_view> mapped;
+    for (const auto& entry : map.entries) mapped.insert(entry.first);
     std::vector<std::string> unmapped;
     for (const auto& phoneme : phonemes)
-        if (!map.visemeOf(phoneme)) unmapped.push_back(phoneme);
+        if (!mapped.contains(phoneme)) unmapped.push_back(phoneme);
     if (!unmapped.empty())
         throwInputError(where, std::to_string(unmapped.size()) + " phoneme" +
                                    (unmapped.size() == 1 ? "" : "s") +
@@ -30,10 +36,10 @@ void checkMapCovers(const PhonemeVisemeMap& map, std::span<const std::string> ph
 
 void checkMapVisemes(const PhonemeVisemeMap& map, std::span<const std::string> visemeNames,
                      std::string_view where) {
+    const std::unordered_set<std::string_view> known(visemeNames.begin(), visemeNames.end());
     std::vector<std::string> unknown;
     for (const auto& viseme : mapVisemeNames(map))
-        if (std::find(visemeNames.begin(), visemeNames.end(), viseme) == visemeNames.end())
-            unknown.push_back(viseme);
+        if (!known.contains(viseme)) unknown.push_back(viseme);
     if (!unknown.empty())
         throwInputError(where, "the map names visemes that are not in the viseme set: " + joinList(unknown) +
                                    " (the set has " + joinList({visemeNames.begin(), visemeNames.end()}) +
@@ -51,8 +57,9 @@ void checkArpabetMap(const PhonemeVisemeMap& map, std::string_view where) {
 
 std::vector<std::string> mapVisemeNames(const PhonemeVisemeMap& map) {
     std::vector<std::string> names;
+    std::unordered_set<std::string_view> seen;
     for (const auto& [phoneme, viseme] : map.entries)
-        if (std::find(names.begin(), names.end(), viseme) == names.end()) names.push_back(viseme);
+        if (seen.insert(viseme).second) names.push_back(viseme);
     return names;
 }
 

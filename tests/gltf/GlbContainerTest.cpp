@@ -1,6 +1,5 @@
 #include "core/gltf/GlbContainer.h"
 #include "core/common/Error.h"
-#include "core/common/JsonNesting.h"
 #include "tests/gltf/GltfTestSupport.h"
 
 #include <gtest/gtest.h>
@@ -30,15 +29,6 @@ TEST(GlbContainer, LengthsBeyondTheFileAreErrorsNamingTheField) {
     version[4] = 1;
     test::expectInputError([&] { splitGlb(version, "v1.glb"); }, {"v1.glb", "version 1"});
     test::expectInputError([&] { splitGlb("glTF", "tiny.glb"); }, {"tiny.glb", "too short"});
-}
-
-TEST(JsonNesting, CountsBracketsOutsideStrings) {
-    EXPECT_EQ(jsonNestingDepth("{\"a\":[1,[2]],\"b\":\"[[[[\"}"), 3u);
-    EXPECT_EQ(jsonNestingDepth("\"\\\"[[\""), 0u);
-    EXPECT_EQ(jsonNestingDepth(std::string(100000, '[')), 100000u);
-    EXPECT_NO_THROW(checkJsonNesting("[[[]]]", 3, "x.json"));
-    test::expectInputError([] { checkJsonNesting("[[[[]]]]", 3, "x.json"); },
-                           {"x.json", "deeper than 3", "byte 3"});
 }
 
 } // namespace
