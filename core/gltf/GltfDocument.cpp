@@ -197,7 +197,8 @@ std::string GltfDocument::readExternal(const std::string& uri, std::string_view 
     const auto size = std::filesystem::file_size(path, ec);
     if (ec) fail(element, "cannot read " + quoted);
     if (std::min<std::uintmax_t>(size, maxBytes) > limits::kMaxInputFileBytes)
-        fail(element, quoted + " is larger than " + std::to_string(limits::kMaxInputFileBytes >> 20) + " MiB");
+        fail(element,
+             quoted + " is larger than " + std::to_string(limits::kMaxInputFileBytes >> 20) + " MiB");
     const std::size_t wanted = std::min<std::uintmax_t>(size, maxBytes);
     std::string bytes(wanted, '\0');
     std::ifstream in(path, std::ios::binary);

@@ -61,5 +61,65 @@ TEST_F(AvatarCli, BadFilesExitWith3NamingFileAndElementAndUsageErrorsWith2) {
     EXPECT_EQ(test::runCli("avatar").exitCode, 2);
 }
 
+TEST_F(AvatarCli, ReduceWritesTheAvatarAndAReportWithTheKeysOfReduce) {
+    const auto r = test::runCli("avatar reduce " + path("rpm.glb") + " --target 6 --out " + path("out.glb") +
+                                " --report " + path("report.json") + " --weights area");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("Reduced 15 visemes to 6"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("bundled en-us phoneme table + map oculus"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("viseme_sil has frequency 0"), std::string::npos) << r.output;
+    const auto report = nlohmann::json::parse(readFileToString(dir / "report.json"));
+    for (const char* key :
+         {"n", "m", "weights", "cost", "groups", "cost_curve", "timing_ms", "meshes", "avatar"})
+        EXPECT_TRUE(report.contains(key)) << key;
+    EXPECT_EQ(report["n"], 15);
+    EXPECT_EQ(report["m"], 6);
+    EXPECT_EQ(report["weights"], "area");
+    EXPECT_EQ(report["meshes"].size(), 4u);
+    EXPECT_EQ(report["phoneme_to_key"].size(), 39u); // the ARPAbet phonemes of the Oculus map
+    const AvatarScan out = scanAvatar(loadGltfDocument(dir / "out.glb"), {});
+    EXPECT_EQ(out.visemes.size(), 15u); // --names original: every viseme name is still there
+
+    // Merged names with a cap that fits; a cap that does not fit is refused with exit 3.
+    const auto merged = test::runCli("avatar reduce " + path("rpm.glb") +
+                                     " -m 4 --names merged --max-targets 10 --out " + path("merged.glb"));
+    ASSERT_EQ(merged.exitCode, 0) << merged.output;
+    const auto capped =
+        test::runCli("avatar reduce " + path("rpm.glb") + " -m 4 --max-targets 8 --out " + path("x.glb"));
+    EXPECT_EQ(capped.exitCode, 3) << capped.output;
+    EXPECT_NE(capped.output.find("--names merged"), std::string::npos) << capped.output;
+    EXPECT_FALSE(std::filesystem::exists(dir / "x.glb"));
+
+    // VRoid names need a pattern; frequencies then default to equal.
+    const auto vroid = test::runCli("avatar reduce " + path("vroid.vrm") +
+                                    " -m 3 --targets 'Fcl_MTH_[AIUEO]' --out " + path("vroid_out.vrm"));
+    ASSERT_EQ(vroid.exitCode, 0) << vroid.output;
+    EXPECT_NE(vroid.output.find("frequencies: equal"), std::string::npos) << vroid.output;
+    const auto none = test::runCli("avatar reduce " + path("vroid.vrm") + " -m 3 --out " + path("v.vrm"));
+    EXPECT_EQ(none.exitCode, 3) << none.output;
+    EXPECT_NE(none.output.find("needs at least 2 visemes"), std::string::npos) << none.output;
+}
+
+TEST_F(AvatarCli, ReduceRefusesToOverwriteItsInputAndChecksItsFlags) {
+    const std::string before = readFileToString(dir / "rpm.glb");
+    for (const std::string& args :
+         {"-m 6 --out " + path("rpm.glb"), "-m 6 --out " + path("o.glb") + " --report " + path("rpm.glb"),
+          "-m 6 --out " + path("o.gltf"), "-m 6 --out " + path("o.glb") + " --names short",
+          "-m 6 --out " + path("o.glb") + " --weights painted", "--out " + path("o.glb")}) {
+        const auto r = test::runCli("avatar reduce " + path("rpm.glb") + " " + args);
+        EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.output;
+    }
+    EXPECT_EQ(readFileToString(dir / "rpm.glb"), before);
+    // A frequency table in the bundled files' spelling applies to Ready Player Me's names.
+    writeFileAtomically(dir / "freq.csv",
+                        "viseme,frequency\nsil,5\nPP,1\nFF,1\nTH,1\nDD,1\nkk,1\nCH,1\nSS,1\nnn,1\n"
+                        "RR,1\naa,3\nE,2\nih,2\noh,1\nou,1\n");
+    const auto r = test::runCli("avatar reduce " + path("rpm.glb") + " -m 5 --freq-file " + path("freq.csv") +
+                                " --out " + path("f.glb"));
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    const auto bad = test::runCli("avatar reduce " + path("rpm.glb") + " -m 16 --out " + path("f.glb"));
+    EXPECT_EQ(bad.exitCode, 3) << bad.output;
+}
+
 } // namespace
 } // namespace vl

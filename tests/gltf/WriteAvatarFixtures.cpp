@@ -1,12 +1,34 @@
 // Writes the avatar fixtures (tests/gltf/AvatarFixtures.h) into a folder: for the Khronos validator
 // test, the avatar CLI tests, the benchmark (--bench: a 30,000-vertex avatar) and manual checks.
 #include "core/common/AtomicFile.h"
+#include "core/gltf/AvatarReduce.h"
+#include "core/gltf/GltfDocument.h"
 #include "tests/gltf/AvatarFixtures.h"
 
 #include <cstdio>
 #include <cstring>
 #include <exception>
 #include <filesystem>
+
+namespace {
+
+// <stem>_original.glb and <stem>_merged.glb: the avatar reduced to m keys in both name modes.
+void writeReductions(const std::filesystem::path& dir, const std::string& stem, const std::string& glb, int m,
+                     const std::string& pattern) {
+    const vl::GltfDocument doc = vl::parseGltfDocument(glb, stem, {});
+    const vl::AvatarScan scan = vl::scanAvatar(doc, {pattern});
+    vl::ReduceSettings settings;
+    settings.target = m;
+    settings.weightMode = vl::WeightMode::Area;
+    for (vl::AvatarNames names : {vl::AvatarNames::Original, vl::AvatarNames::Merged}) {
+        vl::AvatarWriteOptions write;
+        write.names = names;
+        const auto r = vl::reduceAvatar(doc, scan, vl::uniformFrequencies(scan), settings, write);
+        vl::writeFileAtomically(dir / (stem + "_" + vl::toString(names) + ".glb"), r.glb);
+    }
+}
+
+} // namespace
 
 int main(int argc, char** argv) {
     if (argc < 2) {
@@ -25,10 +47,16 @@ int main(int argc, char** argv) {
         for (const auto& [name, storage] : kinds) {
             vl::test::AvatarFixtureOptions options;
             options.storage = storage;
-            vl::writeFileAtomically(dir / (std::string(name) + ".glb"), vl::test::rpmLikeAvatar(options));
+            const std::string glb = vl::test::rpmLikeAvatar(options);
+            vl::writeFileAtomically(dir / (std::string(name) + ".glb"), glb);
+            writeReductions(dir, std::string(name) + "_reduced", glb, 6, "");
         }
-        vl::writeFileAtomically(dir / "vroid_vrm0.glb", vl::test::vroidLikeAvatar(false));
-        vl::writeFileAtomically(dir / "vroid_vrm1.glb", vl::test::vroidLikeAvatar(true));
+        for (bool vrm1 : {false, true}) {
+            const std::string stem = vrm1 ? "vroid_vrm1" : "vroid_vrm0",
+                              glb = vl::test::vroidLikeAvatar(vrm1);
+            vl::writeFileAtomically(dir / (stem + ".glb"), glb);
+            writeReductions(dir, stem + "_reduced", glb, 3, "Fcl_MTH_[AIUEO]");
+        }
         if (argc > 2 && std::strcmp(argv[2], "--bench") == 0) {
             // About 30,000 vertices on the 4 meshes that carry the 15 visemes.
             vl::test::AvatarFixtureOptions options;
