@@ -54,7 +54,10 @@ std::vector<std::filesystem::path> exportModel(const ReducedModel& model, Export
 }
 
 ReducedModel projectReducedModel(const Project& project, bool unreduced) {
-    const VisemeSet set = loadProjectVisemeSet(project);
+    return projectReducedModel(project, loadProjectVisemeSet(project), unreduced);
+}
+
+ReducedModel projectReducedModel(const Project& project, const VisemeSet& set, bool unreduced) {
     std::vector<std::string> names;
     for (const Viseme& v : set.visemes) names.push_back(v.name);
     if (unreduced)

@@ -33,6 +33,8 @@ std::vector<std::filesystem::path> exportModel(const ReducedModel& model, Export
 // result when it matches the viseme count and target, else by a fresh exact reduction with the
 // project's settings. `unreduced` exports every original viseme as its own key instead.
 ReducedModel projectReducedModel(const Project& project, bool unreduced = false);
+// The same with the project's meshes already loaded (loadProjectVisemeSet).
+ReducedModel projectReducedModel(const Project& project, const VisemeSet& set, bool unreduced = false);
 
 // A model (e.g. an imported glTF) as a viseme set: the keys become the visemes.
 VisemeSet toVisemeSet(const ReducedModel& model, const std::filesystem::path& source);
