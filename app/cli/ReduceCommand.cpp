@@ -1,6 +1,7 @@
 // `visemelab reduce`: load a viseme set, reduce it to m merged meshes, write meshes, mapping and report.
 #include "app/cli/Command.h"
 #include "app/cli/Progress.h"
+#include "app/cli/WeightsOption.h"
 #include "core/common/AtomicFile.h"
 #include "core/common/Error.h"
 #include "core/common/TextParsing.h"
@@ -90,14 +91,7 @@ FrequencySource loadFrequencies(const ReduceOptions& o, const VisemeSet& set) {
 ReduceSettings loadSettings(const ReduceOptions& o) {
     ReduceSettings settings;
     settings.target = o.target;
-    if (const auto mode = weightModeFromString(o.weights)) {
-        settings.weightMode = *mode;
-        if (*mode == WeightMode::Painted) throwUsage("painted weights need a file: --weights FILE");
-    } else {
-        settings.weightMode = WeightMode::Painted;
-        settings.paintedWeights = loadWeightsFile(o.weights);
-        settings.paintedWeightsSource = o.weights;
-    }
+    applyWeightsOption(o.weights, settings);
     return settings;
 }
 
