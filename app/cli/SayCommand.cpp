@@ -28,6 +28,7 @@ struct SayOptions {
     std::string out;
     std::string wav;
     std::string glb;
+    std::string map;
     std::string voice = "en-us";
     int rate = 175;
     double fps = 60;
@@ -87,10 +88,12 @@ Utterance speak(const SayOptions& o, SpeechSynthesizer& synthesizer, WavStreamWr
 }
 
 std::vector<TrackErrorCurvePoint> errorCurve(const SayOptions& o, const Project& project,
-                                             const Utterance& utterance, const PlaybackSettings& settings) {
+                                             const Utterance& utterance, const PlaybackSettings& settings,
+                                             const PhonemeVisemeMap* map) {
     ProgressLine progress("error curve");
     std::vector<TrackErrorCurvePoint> points;
-    for (const auto& p : projectErrorCurve(project, utterance.phonemes, settings, o.fps, progress.callback()))
+    for (const auto& p :
+         projectErrorCurve(project, utterance.phonemes, settings, o.fps, progress.callback(), map))
         points.push_back({p.m, p.cost, p.error.mean, p.error.max, p.error.relative});
     return points;
 }
@@ -120,7 +123,9 @@ int runSay(const SayOptions& o) {
     checkOutputs(o);
 
     const Project project = loadProject(o.project);
-    const SpeechFaces faces = projectSpeechFaces(project);
+    std::optional<PhonemeVisemeMap> map;
+    if (!o.map.empty()) map = loadPhonemeMapFile(o.map);
+    const SpeechFaces faces = projectSpeechFaces(project, map ? &*map : nullptr);
     auto synthesizer = makeEspeakSynthesizer({o.voice, o.rate});
     std::optional<WavStreamWriter> wav;
     if (!o.wav.empty()) wav.emplace(o.wav, synthesizer->sampleRate());
@@ -145,7 +150,8 @@ int runSay(const SayOptions& o) {
     track.reducedCues = reduced.cues();
     track.phonemes = utterance.phonemes;
     track.error = TrackError{error.mean, error.max, error.maxTime, error.relative, error.frames};
-    if (o.curve || !o.textFile.empty()) track.errorCurve = errorCurve(o, project, utterance, settings);
+    if (o.curve || !o.textFile.empty())
+        track.errorCurve = errorCurve(o, project, utterance, settings, map ? &*map : nullptr);
 
     if (wav) wav->finish();
     if (!o.glb.empty()) {
@@ -179,6 +185,9 @@ void addSayCommand(CLI::App& app, CommandRunner& run) {
     cmd->add_option("--project", o->project, "Project (.vlproj) with a phoneme -> viseme map")->required();
     cmd->add_option("--out", o->out, "Track JSON to write (Rhubarb layout + reducedCues, phonemes, error)")
         ->required();
+    cmd->add_option("--map", o->map,
+                    "Phoneme -> viseme map (CSV/JSON) to use instead of the project's, e.g. for a project "
+                    "with frequencies per viseme");
     cmd->add_option("--wav", o->wav, "Write the speech audio (16-bit mono WAV)");
     cmd->add_option("--glb", o->glb,
                     "Write the reduced face with the speech as a glTF morph weight animation");

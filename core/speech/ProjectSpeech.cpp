@@ -4,17 +4,19 @@
 #include "core/export/Export.h"
 #include "core/project/ProjectRun.h"
 
+#include <algorithm>
+
 namespace vl {
 
 namespace {
 
-void requirePhonemeMap(const Project& project) {
-    if (!project.frequencies.isPhonemeBased())
+void requirePhonemeMap(const Project& project, const PhonemeVisemeMap* map) {
+    if (!map && !project.frequencies.isPhonemeBased())
         throwInputError(project.path.empty() ? std::string("project")
                                              : project.path.string() + ": /frequencies",
-                        "speech needs phoneme frequencies with a phoneme -> viseme map; this project gives "
-                        "frequencies per viseme (set them from a phoneme table and a map, e.g. "
-                        "assets/phonemes/map_oculus.csv)");
+                        "speech needs a phoneme -> viseme map; this project gives frequencies per viseme "
+                        "(give a map, e.g. assets/phonemes/map_oculus.csv, or set the frequencies from a "
+                        "phoneme table and a map)");
 }
 
 std::vector<int> groupOfGrouping(const Grouping& grouping, std::size_t visemes) {
@@ -27,12 +29,35 @@ std::vector<int> groupOfGrouping(const Grouping& grouping, std::size_t visemes) 
 
 } // namespace
 
-SpeechFaces projectSpeechFaces(const Project& project) {
-    requirePhonemeMap(project);
+void setPhonemeMap(ReducedModel& model, const PhonemeVisemeMap& map, std::string_view where) {
+    std::vector<std::pair<std::string, int>> phonemeToKey;
+    std::string missing;
+    for (const auto& [phoneme, viseme] : map.entries) {
+        const auto key = std::find_if(model.keys.begin(), model.keys.end(), [&](const KeyMesh& k) {
+            return std::find(k.members.begin(), k.members.end(), viseme) != k.members.end();
+        });
+        if (key == model.keys.end()) {
+            if (missing.find("'" + viseme + "'") == std::string::npos)
+                missing += (missing.empty() ? "'" : ", '") + viseme + "'";
+            continue;
+        }
+        phonemeToKey.emplace_back(phoneme, static_cast<int>(key - model.keys.begin()));
+    }
+    if (!missing.empty())
+        throwInputError(where, "the map names visemes the project does not have: " + missing);
+    model.phonemeToKey = std::move(phonemeToKey);
+}
+
+SpeechFaces projectSpeechFaces(const Project& project, const PhonemeVisemeMap* map) {
+    requirePhonemeMap(project, map);
     const VisemeSet set = loadProjectVisemeSet(project);
     SpeechFaces faces;
     faces.full = projectReducedModel(project, set, true);
     faces.reduced = projectReducedModel(project, set, false);
+    if (map) {
+        setPhonemeMap(faces.full, *map, "phoneme map");
+        setPhonemeMap(faces.reduced, *map, "phoneme map");
+    }
     faces.weights = computeWeights(project.weights.mode, set.neutral, project.weights.painted,
                                    project.path.string() + ": /weights");
     return faces;
@@ -40,8 +65,9 @@ SpeechFaces projectSpeechFaces(const Project& project) {
 
 std::vector<ErrorCurvePoint> projectErrorCurve(const Project& project, std::span<const TimedPhoneme> phonemes,
                                                const PlaybackSettings& settings, double fps,
-                                               const ProgressCallback& progress) {
-    requirePhonemeMap(project);
+                                               const ProgressCallback& progress,
+                                               const PhonemeVisemeMap* map) {
+    requirePhonemeMap(project, map);
     const VisemeSet set = loadProjectVisemeSet(project);
     Project everyTarget = project;
     everyTarget.reduction.target = static_cast<int>(set.size());

@@ -78,4 +78,21 @@ TEST(ProjectSpeech, PerVisemeFrequenciesAreRefusedWithAReason) {
     } catch (const InputError& e) {
         EXPECT_NE(std::string(e.what()).find("phoneme -> viseme map"), std::string::npos) << e.what();
     }
+    // With a map given, it speaks; a map naming visemes the project lacks is refused, naming them.
+    const auto assets = std::filesystem::path(VISEMELAB_ASSETS_DIR) / "phonemes";
+    const PhonemeVisemeMap oculus = loadPhonemeMapFile(assets / "map_oculus.csv");
+    const SpeechFaces faces = projectSpeechFaces(project, &oculus);
+    const Utterance u = makeEspeakSynthesizer()->synthesize("Bob, if you please.");
+    const FaceTrack full(faces.full, u.phonemes, {}, "full");
+    EXPECT_EQ(full.cues().front().value, "sil");
+    EXPECT_NE(
+        std::find_if(full.cues().begin(), full.cues().end(), [](const Cue& c) { return c.value == "PP"; }),
+        full.cues().end());
+    const PhonemeVisemeMap rhubarb = loadPhonemeMapFile(assets / "map_rhubarb.csv");
+    try {
+        projectSpeechFaces(project, &rhubarb);
+        FAIL() << "expected InputError";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("does not have: 'X', 'D'"), std::string::npos) << e.what();
+    }
 }
