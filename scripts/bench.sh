@@ -58,3 +58,5 @@ print("  reduce / inspect (median wall): %.2f" % (statistics.median(reduce[0]) /
 PY
   rm -rf "$avatar"
 fi
+
+./scripts/bench-say.sh
