@@ -174,7 +174,10 @@ TEST(GltfHardening, NodeCyclesAndSharedChildrenAreRefused) {
 
 class ExternalFiles : public ::testing::Test {
   protected:
-    std::filesystem::path dir = std::filesystem::temp_directory_path() / "visemelab_gltf_uris";
+    // One folder per test: ctest runs the tests of this fixture in parallel.
+    std::filesystem::path dir = std::filesystem::temp_directory_path() /
+                                (std::string("visemelab_gltf_uris_") +
+                                 ::testing::UnitTest::GetInstance()->current_test_info()->name());
     std::filesystem::path folder = dir / "avatar";
     GlbChunks chunks;
     std::string glb;
