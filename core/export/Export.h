@@ -23,8 +23,9 @@ struct ExportOptions {
     std::string faceName = "face"; // vrml: <faceName>.fdp / .dic
 };
 
-// glb and runtime write the file `out`; vrml and obj write into the folder `out` (created).
-// Returns the paths written.
+// glb and runtime write the file `out` and <stem>.mapping.json beside it; vrml and obj write into
+// the folder `out` (created), mapping.json included (core/export/MappingJson.h: every original
+// viseme and phoneme -> key). Returns the paths written.
 std::vector<std::filesystem::path> exportModel(const ReducedModel& model, ExportFormat format,
                                                const std::filesystem::path& out,
                                                const ExportOptions& options = {});

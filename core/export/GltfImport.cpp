@@ -72,10 +72,9 @@ void readExtras(const tinygltf::Value& extras, ReducedModel& model, std::string_
 
 } // namespace
 
-ReducedModel parseGltf(std::string_view bytes, std::string_view source, bool /*binary: detected*/,
-                       const std::filesystem::path& baseDir) {
-    // The hardened reader of core/gltf: limits, URI confinement, meshopt/Draco/sparse/quantised data.
-    const GltfDocument gltf = parseGltfDocument(std::string(bytes), source, baseDir);
+namespace {
+
+ReducedModel parse(const GltfDocument& gltf, std::string_view source) {
     if (gltf.model.meshes.empty()) gltf.fail("", "the glTF file has no mesh");
     std::size_t meshIndex = 0;
     for (std::size_t m = 0; m < gltf.model.meshes.size(); ++m)
@@ -164,6 +163,19 @@ ReducedModel parseGltf(std::string_view bytes, std::string_view source, bool /*b
         if (key.members.empty()) key.members.push_back(key.name);
     validateReducedModel(model, source);
     return model;
+}
+
+} // namespace
+
+ReducedModel parseGltf(std::string_view bytes, std::string_view source, bool /*binary: detected*/,
+                       const std::filesystem::path& baseDir) {
+    // The hardened reader of core/gltf: limits, URI confinement, meshopt/Draco/sparse/quantised data.
+    const GltfDocument gltf = parseGltfDocument(std::string(bytes), source, baseDir);
+    try {
+        return parse(gltf, source);
+    } catch (const nlohmann::json::exception& e) { // a JSON value of a type tinygltf let through
+        gltf.fail("", std::string("malformed glTF JSON: ") + e.what());
+    }
 }
 
 ReducedModel readGltf(const std::filesystem::path& path) {

@@ -117,7 +117,9 @@ std::string visemeJoinKey(std::string_view targetName) {
     return key;
 }
 
-AvatarScan scanAvatar(const GltfDocument& doc, const AvatarSelection& selection) {
+namespace {
+
+AvatarScan scan(const GltfDocument& doc, const AvatarSelection& selection) {
     AvatarScan scan;
     scan.source = doc.source;
     scan.selection =
@@ -295,6 +297,16 @@ AvatarScan scanAvatar(const GltfDocument& doc, const AvatarSelection& selection)
         scan.set.visemes.push_back({scan.visemes[i], doc.source, std::move(deltas[i])});
     }
     return scan;
+}
+
+} // namespace
+
+AvatarScan scanAvatar(const GltfDocument& doc, const AvatarSelection& selection) {
+    try {
+        return scan(doc, selection);
+    } catch (const nlohmann::json::exception& e) { // a JSON value of a type tinygltf let through
+        doc.fail("", std::string("malformed glTF JSON: ") + e.what());
+    }
 }
 
 } // namespace vl

@@ -233,9 +233,11 @@ const char* toString(AvatarNames names) {
     return names == AvatarNames::Original ? "original" : "merged";
 }
 
-std::string writeReducedAvatar(const GltfDocument& doc, const AvatarScan& scan, const ReducedModel& model,
-                               const std::vector<int>& groupOf, const std::vector<double>& frequencies,
-                               const AvatarWriteOptions& options, AvatarWriteSummary* summary) {
+namespace {
+
+std::string write(const GltfDocument& doc, const AvatarScan& scan, const ReducedModel& model,
+                  const std::vector<int>& groupOf, const std::vector<double>& frequencies,
+                  const AvatarWriteOptions& options, AvatarWriteSummary* summary) {
     if (groupOf.size() != scan.visemes.size() || frequencies.size() != scan.visemes.size())
         throwInputError("avatar writer", "the grouping does not match the avatar's visemes");
     const Grouping grouping(groupOf, frequencies, model.keys.size());
@@ -327,6 +329,18 @@ std::string writeReducedAvatar(const GltfDocument& doc, const AvatarScan& scan, 
     s.binaryBytesBefore = stats.binaryBytesBefore;
     s.binaryBytesAfter = stats.binaryBytesAfter;
     return glb;
+}
+
+} // namespace
+
+std::string writeReducedAvatar(const GltfDocument& doc, const AvatarScan& scan, const ReducedModel& model,
+                               const std::vector<int>& groupOf, const std::vector<double>& frequencies,
+                               const AvatarWriteOptions& options, AvatarWriteSummary* summary) {
+    try {
+        return write(doc, scan, model, groupOf, frequencies, options, summary);
+    } catch (const nlohmann::json::exception& e) { // a JSON value of a type tinygltf let through
+        doc.fail("", std::string("malformed glTF JSON: ") + e.what());
+    }
 }
 
 } // namespace vl

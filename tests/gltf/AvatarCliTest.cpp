@@ -13,7 +13,10 @@ namespace {
 
 class AvatarCli : public ::testing::Test {
   protected:
-    std::filesystem::path dir = std::filesystem::temp_directory_path() / "visemelab_avatar_cli";
+    // One folder per test: ctest runs the tests of this fixture in parallel.
+    std::filesystem::path dir = std::filesystem::temp_directory_path() /
+                                (std::string("visemelab_avatar_cli_") +
+                                 ::testing::UnitTest::GetInstance()->current_test_info()->name());
     void SetUp() override {
         std::filesystem::remove_all(dir);
         std::filesystem::create_directories(dir);
