@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <unistd.h>
 
 using namespace vl;
@@ -103,4 +104,19 @@ TEST_F(SayCli, UsageAndDataErrorsGetTheirExitCodes) {
     EXPECT_EQ(result.exitCode, 3) << result.output;
     EXPECT_NE(result.output.find("blob.txt: binary file"), std::string::npos) << result.output;
     EXPECT_FALSE(std::filesystem::exists(dir / "t.json"));
+}
+
+// espeak-ng (and the audio libraries it pulls in) is loaded on first use only: commands that never
+// speak do not load it. glibc's loader lists every library it opens under LD_DEBUG=files.
+TEST_F(SayCli, OnlySpeechLoadsEspeak) {
+    ::setenv("LD_DEBUG", "files", 1);
+    const auto exported =
+        test::runCli("export " + sampleProject() + " --format glb --out " + quoted(dir / "a.glb"));
+    const auto said =
+        test::runCli("say hi --project " + sampleProject() + " --out " + quoted(dir / "t.json"));
+    ::unsetenv("LD_DEBUG");
+    ASSERT_EQ(exported.exitCode, 0) << exported.output;
+    ASSERT_EQ(said.exitCode, 0) << said.output;
+    EXPECT_EQ(exported.output.find("libespeak-ng"), std::string::npos);
+    EXPECT_NE(said.output.find("libespeak-ng"), std::string::npos);
 }
