@@ -3,6 +3,7 @@
 #include "core/common/Error.h"
 #include "ui/EditorUi.h"
 #include "ui/session/EditorSession.h"
+#include "ui/widgets/GuiProbe.h"
 
 #include <epoxy/gl.h>
 #define GLFW_INCLUDE_NONE
@@ -165,6 +166,7 @@ int runEditor(const EditorOptions& options) {
         EditorSession session;
         try {
             EditorUi ui(session, window);
+            if (!options.probe.empty()) probe::enable(options.probe);
             applyStartOptions(options, session, ui);
             const bool screenshotMode = !options.screenshot.empty();
             for (int frame = 0; !glfwWindowShouldClose(window) || !ui.quitConfirmed(); ++frame) {
@@ -175,6 +177,7 @@ int runEditor(const EditorOptions& options) {
                 if (options.drag.size() == 4) scriptedDrag(options, frame);
                 ImGui::NewFrame();
                 ui.frame();
+                if (probe::enabled()) probe::endFrame(ui.probeSummary());
                 ImGui::Render();
                 int width = 0, height = 0;
                 glfwGetFramebufferSize(window, &width, &height);

@@ -1,6 +1,7 @@
 #include "ui/EditorUi.h"
 
 #include "core/common/Error.h"
+#include "ui/widgets/Controls.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -108,6 +109,31 @@ void EditorUi::startPlayback(double time, std::string sequence) {
 
 void EditorUi::requestQuit() {
     guarded([this] { quitConfirmed_ = true; });
+}
+
+nlohmann::json EditorUi::probeSummary() const {
+    static const char* const kCriteria[] = {"depth", "normals", "contour"};
+    const Project& project = session.project();
+    nlohmann::json messages = nlohmann::json::array();
+    for (const StatusMessage& message : session.messages())
+        messages.push_back({{"error", message.kind == StatusMessage::Kind::Error}, {"text", message.text}});
+    return {{"panel", panelName(activePanel_)},
+            {"document_id", session.documentId()},
+            {"undo", session.undoName()},
+            {"redo", session.redoName()},
+            {"modified", session.modified()},
+            {"messages", std::move(messages)},
+            {"busy", session.loading() || session.saving() || session.exporting() ||
+                         session.refinementRunning() || session.reductionRunning() ||
+                         session.phonemeCountRunning()},
+            {"visemes", project.visemes.size()},
+            {"selected_viseme", session.selectedViseme},
+            {"target", project.reduction.target},
+            {"criterion", kCriteria[static_cast<int>(project.refinement.kind)]},
+            {"file_dialog_open", fileDialog_.isOpen()},
+            {"brush", brush_.enabled},
+            {"wireframe", wireframe_},
+            {"playing", playback_.playing}};
 }
 
 void EditorUi::saveProject(bool askForFile, std::function<void()> then) {
@@ -251,22 +277,22 @@ void EditorUi::shortcuts() {
 
 void EditorUi::menuBar() {
     if (!ImGui::BeginMainMenuBar()) return;
-    if (ImGui::BeginMenu("File")) {
-        if (ImGui::MenuItem("New project")) guarded([this] { session.newProject(); });
-        if (ImGui::MenuItem("Open project...", "Ctrl+O"))
+    if (ctl::BeginMenu("File")) {
+        if (ctl::MenuItem("New project")) guarded([this] { session.newProject(); });
+        if (ctl::MenuItem("Open project...", "Ctrl+O"))
             guarded([this] {
                 fileDialog_.open("Open project", FileDialog::Mode::OpenFile, {".vlproj", ".json"},
                                  [this](const auto& path) {
                                      session.attempt("Open project", [&] { session.startOpenProject(path); });
                                  });
             });
-        if (ImGui::MenuItem("Save project", "Ctrl+S", false, !session.project().path.empty()))
+        if (ctl::MenuItem("Save project", "Ctrl+S", false, !session.project().path.empty()))
             saveProject(false);
-        if (ImGui::MenuItem("Save project as...", "Ctrl+Shift+S")) saveProject(true);
+        if (ctl::MenuItem("Save project as...", "Ctrl+Shift+S")) saveProject(true);
         ImGui::Separator();
-        if (ImGui::MenuItem("Load sample face", "Ctrl+L"))
+        if (ctl::MenuItem("Load sample face", "Ctrl+L"))
             guarded([this] { session.attempt("Load sample", [&] { session.startLoadSample(); }); });
-        if (ImGui::MenuItem("Open viseme folder..."))
+        if (ctl::MenuItem("Open viseme folder..."))
             guarded([this] {
                 fileDialog_.open(
                     "Open viseme folder", FileDialog::Mode::OpenFolder, {}, [this](const auto& path) {
@@ -274,26 +300,26 @@ void EditorUi::menuBar() {
                     });
             });
         ImGui::Separator();
-        if (ImGui::MenuItem("Quit")) requestQuit();
+        if (ctl::MenuItem("Quit")) requestQuit();
         ImGui::EndMenu();
     }
-    if (ImGui::BeginMenu("Edit")) {
+    if (ctl::BeginMenu("Edit")) {
         const std::string undo = "Undo " + session.undoName();
         const std::string redo = "Redo " + session.redoName();
-        if (ImGui::MenuItem(undo.c_str(), "Ctrl+Z", false, session.canUndo())) session.undo();
-        if (ImGui::MenuItem(redo.c_str(), "Ctrl+Y", false, session.canRedo())) session.redo();
+        if (ctl::MenuItem(undo.c_str(), "Ctrl+Z", false, session.canUndo())) session.undo();
+        if (ctl::MenuItem(redo.c_str(), "Ctrl+Y", false, session.canRedo())) session.redo();
         ImGui::EndMenu();
     }
-    if (ImGui::BeginMenu("View")) {
-        if (ImGui::MenuItem("Frame model", "F")) frameAll();
-        ImGui::MenuItem("Wireframe overlay", "W", &wireframe_);
+    if (ctl::BeginMenu("View")) {
+        if (ctl::MenuItem("Frame model", "F")) frameAll();
+        ctl::MenuItem("Wireframe overlay", "W", &wireframe_);
         ImGui::Separator();
         for (int i = 0; i < static_cast<int>(Panel::Count); ++i)
-            if (ImGui::MenuItem(kPanelNames[i], nullptr, activePanel_ == static_cast<Panel>(i)))
+            if (ctl::MenuItem(kPanelNames[i], nullptr, activePanel_ == static_cast<Panel>(i)))
                 selectPanel(static_cast<Panel>(i));
         ImGui::EndMenu();
     }
-    if (ImGui::BeginMenu("Help")) {
+    if (ctl::BeginMenu("Help")) {
         ImGui::TextUnformatted("VisemeLab editor");
         ImGui::Separator();
         ImGui::TextUnformatted("Left drag: orbit    Right/middle drag: pan    Wheel: zoom");
@@ -327,7 +353,7 @@ void EditorUi::sidePanel(float top, float width, float height) {
             const auto panel = static_cast<Panel>(i);
             const ImGuiTabItemFlags flags =
                 panelSelectPending_ && activePanel_ == panel ? ImGuiTabItemFlags_SetSelected : 0;
-            if (ImGui::BeginTabItem(kPanelLabels[i], nullptr, flags)) {
+            if (ctl::BeginTabItem(kPanelLabels[i], nullptr, flags)) {
                 if (!panelSelectPending_) activePanel_ = panel;
                 ImGui::BeginChild("##panel-body");
                 switch (panel) {
@@ -455,17 +481,17 @@ void EditorUi::unsavedChangesPopup() {
     if (!ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
     ImGui::TextUnformatted("The project has unsaved changes.");
     const bool hasPath = !session.project().path.empty();
-    if (ImGui::Button(hasPath ? "Save" : "Save as...", ImVec2(110, 0))) {
+    if (ctl::Button(hasPath ? "Save" : "Save as...", ImVec2(110, 0))) {
         ImGui::CloseCurrentPopup();
         saveProject(false, std::move(pendingGuarded_));
     }
     ImGui::SameLine();
-    if (ImGui::Button("Discard changes", ImVec2(130, 0))) {
+    if (ctl::Button("Discard changes", ImVec2(130, 0))) {
         ImGui::CloseCurrentPopup();
         if (auto action = std::move(pendingGuarded_)) action();
     }
     ImGui::SameLine();
-    if (ImGui::Button("Cancel", ImVec2(90, 0))) {
+    if (ctl::Button("Cancel", ImVec2(90, 0))) {
         pendingGuarded_ = nullptr;
         ImGui::CloseCurrentPopup();
     }

@@ -8,6 +8,8 @@
 #include "ui/session/EditorSession.h"
 #include "ui/widgets/FileDialog.h"
 
+#include <nlohmann/json.hpp>
+
 #include <optional>
 #include <string>
 #include <string_view>
@@ -64,6 +66,8 @@ class EditorUi {
     // True when the user asked to quit and either nothing is unsaved or they confirmed.
     bool quitConfirmed() const { return quitConfirmed_; }
     void requestQuit();
+    // What a GUI test checks after a click (see GuiProbe.h): panel, undo history, messages, tasks.
+    nlohmann::json probeSummary() const;
 
     EditorSession& session;
 

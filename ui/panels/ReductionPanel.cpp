@@ -2,6 +2,7 @@
 // of a phoneme sequence with the full and the reduced set (the views show both side by side).
 #include "ui/EditorUi.h"
 #include "ui/panels/PanelWidgets.h"
+#include "ui/widgets/Controls.h"
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
@@ -21,11 +22,11 @@ void EditorUi::reductionPanel() {
     int m = session.project().reduction.target;
     sectionHeader("Target");
     ImGui::SetNextItemWidth(-90);
-    if (ImGui::SliderInt("groups m", &m, 1, n)) session.attempt("Target", [&] { session.setTarget(m); });
+    if (ctl::SliderInt("groups m", &m, 1, n)) session.attempt("Target", [&] { session.setTarget(m); });
     endEditOnRelease(session);
-    ImGui::Checkbox("Re-run automatically", &session.autoReduce);
+    ctl::Checkbox("Re-run automatically", &session.autoReduce);
     ImGui::SameLine();
-    if (ImGui::Button("Run now")) session.attempt("Reduction", [&] { session.startReduction(); });
+    if (ctl::Button("Run now")) session.attempt("Reduction", [&] { session.startReduction(); });
     if (session.reductionRunning())
         ImGui::ProgressBar(static_cast<float>(session.reductionProgress()), ImVec2(-1, 0), "reducing...");
 
@@ -91,7 +92,7 @@ void EditorUi::reductionPanel() {
                     ImGui::SameLine(0.0f, 6.0f);
                 first = false;
                 ImGui::PushID(member);
-                if (ImGui::SmallButton(name.c_str())) session.selectedViseme = member;
+                if (ctl::SmallButton(name.c_str())) session.selectedViseme = member;
                 ImGui::PopID();
                 if (static_cast<std::size_t>(member) < frequencies.size())
                     total += frequencies[static_cast<std::size_t>(member)];
@@ -104,9 +105,9 @@ void EditorUi::reductionPanel() {
 
     sectionHeader("Compare");
     const int selected = std::max(session.selectedViseme, 0);
-    if (ImGui::BeginCombo("viseme", set->visemes[static_cast<std::size_t>(selected)].name.c_str())) {
+    if (ctl::BeginCombo("viseme", set->visemes[static_cast<std::size_t>(selected)].name.c_str())) {
         for (int i = 0; i < n; ++i)
-            if (ImGui::Selectable(set->visemes[static_cast<std::size_t>(i)].name.c_str(), i == selected))
+            if (ctl::Selectable(set->visemes[static_cast<std::size_t>(i)].name.c_str(), i == selected))
                 session.selectedViseme = i;
         ImGui::EndCombo();
     }
@@ -114,13 +115,13 @@ void EditorUi::reductionPanel() {
 
     sectionHeader("Playback");
     ImGui::SetNextItemWidth(-1);
-    ImGui::InputTextWithHint("##sequence", "phonemes or visemes, e.g. PP aa E RR (empty: all visemes)",
-                             &playback_.sequence);
+    ctl::InputTextWithHint("##sequence", "phonemes or visemes, e.g. PP aa E RR (empty: all visemes)",
+                           &playback_.sequence);
     float speed = static_cast<float>(playback_.secondsPerKey);
     ImGui::SetNextItemWidth(160);
-    if (ImGui::SliderFloat("s per key", &speed, 0.05f, 1.0f, "%.2f")) playback_.secondsPerKey = speed;
+    if (ctl::SliderFloat("s per key", &speed, 0.05f, 1.0f, "%.2f")) playback_.secondsPerKey = speed;
     ImGui::SameLine();
-    if (ImGui::Button(playback_.playing ? "Stop" : "Play", ImVec2(70, 0))) {
+    if (ctl::Button(playback_.playing ? "Stop" : "Play", ImVec2(70, 0))) {
         playback_.playing = !playback_.playing;
         playback_.time = 0.0;
     }

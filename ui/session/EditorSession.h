@@ -215,6 +215,8 @@ class EditorSession {
     void redo();
     // Ends the current slider drag so the next change is a separate undo step.
     void endEdit() { history_.closeMerge(); }
+    // Identifies the current document state: changes with every edit, undo and redo.
+    std::uint64_t documentId() const { return history_.currentId(); }
 
     // --- messages ----------------------------------------------------------------------------
     void info(std::string text);
