@@ -38,16 +38,18 @@ TEST(EditorClicks, RefineTabCriterionRadiosSwitchTheCriterion) {
     REQUIRE_GUI_TOOLS();
     GuiDriver gui({"--sample", "--panel", "Refinement"});
     gui.waitIdle();
-    ASSERT_EQ(gui.document()["criterion"], "depth");
-    for (const char* criterion : {"normals", "contour error", "depth", "contour error", "normals"}) {
+    for (const char* criterion : {"normals", "contour error", "depth", "contour error", "normals", "depth"}) {
+        const std::string expected = std::string(criterion) == "contour error" ? "contour" : criterion;
+        const bool switches = gui.document()["criterion"] != expected;
         const auto before = documentId(gui);
         gui.click(gui.control(criterion, "radio"));
         EXPECT_ALIVE(gui);
         gui.waitIdle();
-        const std::string expected = std::string(criterion) == "contour error" ? "contour" : criterion;
-        EXPECT_EQ(gui.document()["criterion"], expected);
-        EXPECT_NE(documentId(gui), before) << criterion;
-        EXPECT_EQ(gui.document()["undo"], "Refinement thresholds") << gui.document().dump();
+        EXPECT_EQ(gui.document()["criterion"].get<std::string>(), expected);
+        if (switches) {
+            EXPECT_NE(documentId(gui), before) << criterion;
+            EXPECT_EQ(gui.document()["undo"], "Refinement thresholds") << gui.document().dump();
+        }
     }
     EXPECT_FALSE(hasError(gui)) << gui.document()["messages"].dump();
 }

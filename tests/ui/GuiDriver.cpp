@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -202,9 +203,9 @@ const nlohmann::json& GuiDriver::waitFrames(int frames) {
 
 const nlohmann::json& GuiDriver::waitIdle(double seconds) {
     const auto deadline = Clock::now() + std::chrono::duration<double>(seconds);
-    waitFrames(2);
-    while (document().value("busy", false) && Clock::now() < deadline) waitFrames(2);
-    return waitFrames(2);
+    waitFrames(1);
+    while (document().value("busy", false) && Clock::now() < deadline) waitFrames(1);
+    return waitFrames(1);
 }
 
 std::optional<nlohmann::json> GuiDriver::find(const std::string& text, const std::string& kind,
@@ -230,9 +231,31 @@ void GuiDriver::xdotool(const std::string& arguments) {
     if (std::system(command.c_str()) != 0) throw std::runtime_error("xdotool failed: " + command);
 }
 
+template <class Predicate> void GuiDriver::waitUntil(const Predicate& seen, const std::string& what) {
+    const auto deadline = Clock::now() + std::chrono::seconds(30);
+    waitFrames(1);
+    while (!seen(report_["input"])) {
+        if (Clock::now() > deadline) throw std::runtime_error("the editor never saw " + what);
+        waitFrames(1);
+    }
+}
+
 void GuiDriver::moveTo(double x, double y) {
-    xdotool("mousemove --window " + window_ + " " + std::to_string(static_cast<int>(x)) + " " +
-            std::to_string(static_cast<int>(y)));
+    const int ix = static_cast<int>(x), iy = static_cast<int>(y);
+    xdotool("mousemove --window " + window_ + " " + std::to_string(ix) + " " + std::to_string(iy));
+    waitUntil(
+        [&](const nlohmann::json& input) {
+            return std::abs(input["x"].get<double>() - ix) < 1.0 &&
+                   std::abs(input["y"].get<double>() - iy) < 1.0;
+        },
+        "the mouse at " + std::to_string(ix) + "," + std::to_string(iy));
+}
+
+void GuiDriver::press(int button, bool down) {
+    xdotool(std::string(down ? "mousedown " : "mouseup ") + std::to_string(button));
+    const int index = button == 1 ? 0 : button == 3 ? 1 : 2;
+    waitUntil([&](const nlohmann::json& input) { return input["buttons"][index].get<bool>() == down; },
+              std::string("button ") + std::to_string(button) + (down ? " down" : " up"));
 }
 
 void GuiDriver::click(const nlohmann::json& control, double fx, double fy) {
@@ -243,45 +266,43 @@ void GuiDriver::click(const nlohmann::json& control, double fx, double fy) {
 // A human click: move, let the editor see the hover, press, hold a little, release.
 void GuiDriver::clickAt(double x, double y, int button) {
     moveTo(x, y);
-    waitFrames(2);
-    xdotool("mousedown " + std::to_string(button));
-    waitFrames(2);
-    xdotool("mouseup " + std::to_string(button));
-    waitFrames(3);
+    press(button, true);
+    press(button, false);
+    waitFrames(1);
 }
 
 void GuiDriver::drag(double x0, double y0, double x1, double y1, int steps) {
     moveTo(x0, y0);
-    waitFrames(2);
-    xdotool("mousedown 1");
-    waitFrames(2);
+    waitFrames(1);
+    press(1, true);
     for (int i = 1; i <= steps; ++i) {
         const double t = static_cast<double>(i) / steps;
         moveTo(x0 + t * (x1 - x0), y0 + t * (y1 - y0));
-        waitFrames(1);
     }
-    xdotool("mouseup 1");
-    waitFrames(3);
+    press(1, false);
+    waitFrames(2);
 }
 
+// Wheel notches are not held state: each is given a few frames to arrive.
 void GuiDriver::scroll(double x, double y, int notches) {
     moveTo(x, y);
-    waitFrames(1);
     const int button = notches > 0 ? 5 : 4;
     for (int i = 0; i < std::abs(notches); ++i) {
         xdotool("click " + std::to_string(button));
-        waitFrames(1);
+        waitFrames(2);
     }
     waitFrames(2);
 }
 
-// Held for two frames as a person does: ImGui 1.86 samples key state once per frame, so a press
-// and release inside one frame (xdotool key) would be missed.
+// Held until the editor saw it, as a person holds a key: ImGui 1.86 samples key state once per
+// frame, so a press and release inside one frame (xdotool key) would be missed.
 void GuiDriver::key(const std::string& keys) {
     xdotool("keydown " + keys);
-    waitFrames(2);
+    waitUntil([](const nlohmann::json& input) { return input["keys_down"].get<int>() > 0; }, "key " + keys);
     xdotool("keyup " + keys);
-    waitFrames(3);
+    waitUntil([](const nlohmann::json& input) { return input["keys_down"].get<int>() == 0; },
+              "key " + keys + " released");
+    waitFrames(2);
 }
 
 void GuiDriver::type(const std::string& text) {

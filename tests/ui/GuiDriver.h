@@ -58,6 +58,9 @@ class GuiDriver {
 
   private:
     void xdotool(const std::string& arguments);
+    // Waits (up to 30 s) until the editor's report satisfies `seen`: the event has arrived.
+    template <class Predicate> void waitUntil(const Predicate& seen, const std::string& what);
+    void press(int button, bool down);
     void moveTo(double x, double y);
 
     pid_t xvfb_ = -1, editor_ = -1;

@@ -122,7 +122,16 @@ void endFrame(const nlohmann::json& document) {
     nlohmann::json duplicates = std::move(probe.duplicates);
     probe.duplicates.clear();
     const ImGuiContext& g = *ImGui::GetCurrentContext();
+    // The input this frame saw: a test waits for its events to arrive before the next one (the X
+    // server and the editor may lag behind xdotool on a loaded machine).
+    int keysDown = 0;
+    for (const bool down : g.IO.KeysDown) keysDown += down ? 1 : 0;
+    const nlohmann::json input = {{"x", g.IO.MousePos.x},
+                                  {"y", g.IO.MousePos.y},
+                                  {"buttons", {g.IO.MouseDown[0], g.IO.MouseDown[1], g.IO.MouseDown[2]}},
+                                  {"keys_down", keysDown}};
     const nlohmann::json out = {{"frame", ++probe.frame},
+                                {"input", input},
                                 {"popup_open", !g.OpenPopupStack.empty()},
                                 {"active_control", g.ActiveId != 0},
                                 {"controls", std::move(controls)},
