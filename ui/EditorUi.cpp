@@ -1,6 +1,7 @@
 #include "ui/EditorUi.h"
 
 #include "core/common/Error.h"
+#include "core/inspect/DistanceUnits.h"
 #include "ui/widgets/Controls.h"
 
 #define GLFW_INCLUDE_NONE
@@ -9,6 +10,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 
 namespace vl::ui {
 namespace {
@@ -55,9 +57,12 @@ void colourLegend(const ImVec2& min, const ImVec2& max, const char* low, const c
     }
     draw->AddRect(origin, ImVec2(origin.x + width, origin.y + height), IM_COL32(20, 20, 24, 255));
     draw->AddText(ImVec2(origin.x, origin.y + height + 2.0f), IM_COL32(220, 220, 230, 255), low);
+    // Right-aligned under the bar's end, but never over the low label.
     const float highWidth = ImGui::CalcTextSize(high).x;
-    draw->AddText(ImVec2(origin.x + width - highWidth, origin.y + height + 2.0f),
-                  IM_COL32(220, 220, 230, 255), high);
+    const float lowWidth = ImGui::CalcTextSize(low).x;
+    draw->AddText(
+        ImVec2(std::max(origin.x + width - highWidth, origin.x + lowWidth + 12.0f), origin.y + height + 2.0f),
+        IM_COL32(220, 220, 230, 255), high);
 }
 
 } // namespace
@@ -109,6 +114,17 @@ void EditorUi::startPlayback(double time, std::string sequence) {
 
 void EditorUi::requestQuit() {
     guarded([this] { quitConfirmed_ = true; });
+}
+
+double EditorUi::millimetresPerModelUnit() const {
+    static const LengthUnit kChosen[] = {LengthUnit::Metre, LengthUnit::Centimetre, LengthUnit::Millimetre,
+                                         LengthUnit::Inch};
+    if (costView_.unit >= 1 && costView_.unit <= 4) return millimetresPer(kChosen[costView_.unit - 1]);
+    Vec3 lo, hi;
+    const VisemeSet* set = session.visemes();
+    if (!set || !bounds(set->neutral.positions, lo, hi)) return millimetresPer(LengthUnit::Metre);
+    const double extent = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
+    return millimetresPer(guessLengthUnit(extent));
 }
 
 nlohmann::json EditorUi::probeSummary() const {
@@ -630,7 +646,14 @@ void EditorUi::comparisonViews(ImVec2 size) {
         });
     if (session.visemes()) viewLabel(right.imageMin, afterLabel);
     if (grouping && !playback_.playing)
-        colourLegend(right.imageMin, right.imageMax, "0", "largest error (all visemes)");
+        colourLegend(right.imageMin, right.imageMax, "0 mm",
+                     [&] {
+                         char text[64];
+                         std::snprintf(text, sizeof text, "%.3g mm (largest, all visemes)",
+                                       errorLegendMax_ * millimetresPerModelUnit());
+                         return std::string(text);
+                     }()
+                         .c_str());
     // One camera for both views: the one the user is moving wins.
     if (right.hovered || right.leftDown)
         beforeView_.camera = afterView_.camera;

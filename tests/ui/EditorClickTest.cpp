@@ -241,5 +241,25 @@ TEST(EditorClicks, EveryMenuItem) {
     }
 }
 
+// The cost plot: a click on the curve picks m (undoable), the axis options redraw it.
+TEST(EditorClicks, CostPlotClickChoosesTheTarget) {
+    REQUIRE_GUI_TOOLS();
+    GuiDriver gui({"--sample", "--panel", "Reduction"});
+    gui.waitIdle();
+    const int n = gui.document()["visemes"].get<int>();
+    ASSERT_NE(gui.document()["target"].get<int>(), n);
+    gui.click(gui.control("##cost", "button"), 0.985, 0.5); // the right end: p = n
+    gui.waitIdle();
+    EXPECT_ALIVE(gui);
+    EXPECT_EQ(gui.document()["target"].get<int>(), n);
+    EXPECT_EQ(gui.document()["undo"], "Target m = " + std::to_string(n)) << gui.document().dump();
+    for (const char* option : {"log scale", "% of p = 1", "log scale", "% of p = 1"}) {
+        gui.click(gui.control(option, "checkbox"));
+        EXPECT_ALIVE(gui);
+    }
+    gui.key("ctrl+z");
+    EXPECT_NE(gui.document()["target"].get<int>(), n);
+}
+
 } // namespace
 } // namespace vl::test
