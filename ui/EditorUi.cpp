@@ -138,6 +138,7 @@ nlohmann::json EditorUi::probeSummary() const {
             {"undo", session.undoName()},
             {"redo", session.redoName()},
             {"modified", session.modified()},
+            {"project_path", project.path.string()},
             {"messages", std::move(messages)},
             {"busy", session.loading() || session.saving() || session.exporting() ||
                          session.refinementRunning() || session.reductionRunning() ||

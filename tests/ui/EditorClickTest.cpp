@@ -6,6 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <map>
 #include <optional>
 #include <set>
@@ -259,6 +262,32 @@ TEST(EditorClicks, CostPlotClickChoosesTheTarget) {
     }
     gui.key("ctrl+z");
     EXPECT_NE(gui.document()["target"].get<int>(), n);
+}
+
+std::string fileBytes(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+// The bundled sample is read-only: after an edit, Ctrl+S asks where to save (an untitled document)
+// and the files under assets/sample are byte for byte what they were.
+TEST(EditorClicks, SaveOnTheSampleAsksForAFileAndLeavesTheAssetsAlone) {
+    REQUIRE_GUI_TOOLS();
+    const std::filesystem::path sample =
+        std::filesystem::path(VISEMELAB_ASSETS_DIR) / "sample" / "sample.vlproj";
+    const std::string before = fileBytes(sample);
+    GuiDriver gui({"--sample", "--panel", "Reduction"});
+    gui.waitIdle();
+    EXPECT_EQ(gui.document()["project_path"], "");
+    gui.click(gui.control("groups m", "slider"), 0.9);
+    gui.waitIdle();
+    ASSERT_TRUE(gui.document()["modified"].get<bool>());
+    gui.key("ctrl+s");
+    EXPECT_TRUE(gui.document()["file_dialog_open"].get<bool>());
+    gui.click(gui.control("Cancel", "button"));
+    EXPECT_ALIVE(gui);
+    gui.waitIdle();
+    EXPECT_EQ(fileBytes(sample), before);
 }
 
 } // namespace

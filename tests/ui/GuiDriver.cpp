@@ -4,7 +4,7 @@
 
 #include <fcntl.h>
 #include <signal.h>
-#include <spawn.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -30,29 +30,41 @@ bool onPath(const char* tool) {
     return std::system((std::string("command -v ") + tool + " > /dev/null 2>&1").c_str()) == 0;
 }
 
-// Starts `argv` on X display `display`, stdout and stderr appended to `output`.
-pid_t spawn(const std::vector<std::string>& argv, const std::string& display,
-            const std::filesystem::path& output) {
-    std::vector<char*> args;
+// Starts `argv` (environment `environment`), stdout and stderr appended to `output`, optionally
+// writing to the inherited descriptor `keepOpen`. The child gets SIGKILL when the test process dies
+// (an interrupted test never leaves an editor spinning on a core).
+pid_t spawn(const std::vector<std::string>& argv, const std::vector<std::string>& environment,
+            const std::filesystem::path& output, int keepOpen = -1) {
+    std::vector<char*> args, envp;
     for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
     args.push_back(nullptr);
+    for (const std::string& e : environment) envp.push_back(const_cast<char*>(e.c_str()));
+    envp.push_back(nullptr);
+    const pid_t parent = getpid();
+    const pid_t pid = fork();
+    if (pid < 0) throw std::runtime_error("cannot start " + argv[0]);
+    if (pid == 0) {
+        // Only async-signal-safe calls between fork and exec.
+        prctl(PR_SET_PDEATHSIG, SIGKILL);
+        if (getppid() != parent) _exit(127);
+        const int fd = open(output.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
+        if (fd >= 0) {
+            dup2(fd, 1);
+            dup2(fd, 2);
+            if (fd != keepOpen) close(fd);
+        }
+        execve(argv[0].c_str(), args.data(), envp.data());
+        _exit(127);
+    }
+    return pid;
+}
+
+std::vector<std::string> environmentWithDisplay(const std::string& display) {
     std::vector<std::string> environment;
     for (char** e = environ; *e; ++e)
         if (std::string_view(*e).substr(0, 8) != "DISPLAY=") environment.emplace_back(*e);
-    environment.push_back("DISPLAY=" + display);
-    std::vector<char*> envp;
-    for (std::string& e : environment) envp.push_back(e.data());
-    envp.push_back(nullptr);
-
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, 1, output.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
-    posix_spawn_file_actions_addopen(&actions, 2, output.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
-    pid_t pid = -1;
-    const int rc = posix_spawn(&pid, argv[0].c_str(), &actions, nullptr, args.data(), envp.data());
-    posix_spawn_file_actions_destroy(&actions);
-    if (rc != 0) throw std::runtime_error("cannot start " + argv[0]);
-    return pid;
+    if (!display.empty()) environment.push_back("DISPLAY=" + display);
+    return environment;
 }
 
 std::string which(const char* tool) {
@@ -104,20 +116,10 @@ GuiDriver::GuiDriver(const std::vector<std::string>& arguments, int width, int h
     int fds[2];
     if (pipe(fds) != 0) throw std::runtime_error("pipe");
     {
-        posix_spawn_file_actions_t actions;
-        posix_spawn_file_actions_init(&actions);
-        posix_spawn_file_actions_addclose(&actions, fds[0]);
-        posix_spawn_file_actions_addopen(&actions, 2, (folder_ / "xvfb.log").c_str(), O_WRONLY | O_CREAT,
-                                         0644);
-        const std::string xvfb = which("Xvfb"), fd = std::to_string(fds[1]);
         const std::string screen = std::to_string(width) + "x" + std::to_string(height) + "x24";
-        std::vector<std::string> argv = {xvfb, "-displayfd", fd, "-screen", "0", screen, "-nolisten", "tcp"};
-        std::vector<char*> args;
-        for (std::string& a : argv) args.push_back(a.data());
-        args.push_back(nullptr);
-        if (posix_spawn(&xvfb_, xvfb.c_str(), &actions, nullptr, args.data(), environ) != 0)
-            throw std::runtime_error("cannot start Xvfb");
-        posix_spawn_file_actions_destroy(&actions);
+        xvfb_ = spawn(
+            {which("Xvfb"), "-displayfd", std::to_string(fds[1]), "-screen", "0", screen, "-nolisten", "tcp"},
+            environmentWithDisplay({}), folder_ / "xvfb.log", fds[1]);
     }
     close(fds[1]);
     std::string number;
@@ -131,7 +133,7 @@ GuiDriver::GuiDriver(const std::vector<std::string>& arguments, int width, int h
                                      probeFile_.string(),   "--size",
                                      std::to_string(width), std::to_string(height)};
     argv.insert(argv.end(), arguments.begin(), arguments.end());
-    editor_ = spawn(argv, display_, logFile_);
+    editor_ = spawn(argv, environmentWithDisplay(display_), logFile_);
 
     // The window id: xdotool sends events relative to it.
     waitFrames(2);

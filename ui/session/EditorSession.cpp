@@ -195,7 +195,28 @@ EditorState EditorSession::projectState(const std::filesystem::path& file) {
     }
     validateInputs(next);
     stripEmbeddedPositions(next.project);
+    if (isBundled(file)) untitle(next.project);
     return next;
+}
+
+bool EditorSession::isBundled(const std::filesystem::path& file) {
+    std::error_code error;
+    const auto assets = std::filesystem::weakly_canonical(assetsDirectory(), error);
+    const auto canonical = std::filesystem::weakly_canonical(file, error);
+    if (error) return false;
+    const auto relative = canonical.lexically_relative(assets);
+    return !relative.empty() && *relative.begin() != "..";
+}
+
+// Bundled files are read-only: the document keeps its meshes (absolute paths) but has no file of
+// its own, so Save asks where to write and nothing is ever written under assets/.
+void EditorSession::untitle(Project& project) {
+    auto absolute = [&](std::filesystem::path& file) {
+        if (!file.empty()) file = std::filesystem::absolute(resolveProjectFile(project, file));
+    };
+    absolute(project.neutral.file);
+    for (ProjectViseme& viseme : project.visemes) absolute(viseme.file);
+    project.path.clear();
 }
 
 void EditorSession::adopt(EditorState next, const std::string& message) {

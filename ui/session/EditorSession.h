@@ -244,6 +244,9 @@ class EditorSession {
     void startLoading(std::string label, std::function<EditorState()> load,
                       std::function<std::string(const EditorState&)> describe);
     static EditorState sampleState();
+    // True when `file` lies inside the bundled assets folder (never written by the editor).
+    static bool isBundled(const std::filesystem::path& file);
+    static void untitle(Project& project);
     static std::string describeSample(const EditorState& sample);
     // The target of a save request (throws InputError when there is none).
     std::filesystem::path saveTarget(const std::filesystem::path& file) const;
