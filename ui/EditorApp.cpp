@@ -167,8 +167,15 @@ int runEditor(const EditorOptions& options) {
         try {
             EditorUi ui(session, window);
             if (!options.probe.empty()) probe::enable(options.probe);
-            applyStartOptions(options, session, ui);
             const bool screenshotMode = !options.screenshot.empty();
+            try {
+                applyStartOptions(options, session, ui);
+            } catch (const InputError& e) {
+                // A script asking for a picture must fail; a person gets the editor with the error
+                // shown (what was applied before the bad option stays).
+                if (screenshotMode) throw;
+                session.error(std::string("Start options: ") + e.what());
+            }
             for (int frame = 0; !glfwWindowShouldClose(window) || !ui.quitConfirmed(); ++frame) {
                 glfwPollEvents();
                 if (screenshotMode) session.finishBackgroundWork(); // deterministic pictures

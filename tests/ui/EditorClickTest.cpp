@@ -10,10 +10,12 @@
 #include <fstream>
 #include <iterator>
 #include <map>
+
 #include <optional>
 #include <set>
 #include <string>
 #include <tuple>
+#include <unistd.h>
 
 namespace vl::test {
 namespace {
@@ -288,6 +290,25 @@ TEST(EditorClicks, SaveOnTheSampleAsksForAFileAndLeavesTheAssetsAlone) {
     EXPECT_ALIVE(gui);
     gui.waitIdle();
     EXPECT_EQ(fileBytes(sample), before);
+}
+
+// A broken project given at start opens the editor with the error shown (naming the file), not an exit.
+TEST(EditorClicks, BadStartProjectIsShownNotFatal) {
+    REQUIRE_GUI_TOOLS();
+    const auto file =
+        std::filesystem::temp_directory_path() / ("visemelab-broken-" + std::to_string(getpid()) + ".vlproj");
+    std::ofstream(file) << "{\"format\": \"visemelab-project\", \"version\": 1, \"visemes\": [1, 2";
+    GuiDriver gui({"--project", file.string(), "--panel", "Nosuch"});
+    gui.waitFrames(3);
+    EXPECT_ALIVE(gui);
+    bool named = false;
+    for (const auto& message : gui.document()["messages"])
+        named |= message["error"].get<bool>() &&
+                 message["text"].get<std::string>().find(file.filename().string()) != std::string::npos;
+    EXPECT_TRUE(named) << gui.document()["messages"].dump();
+    gui.click(gui.control("Visemes", "tab"));
+    EXPECT_ALIVE(gui);
+    std::filesystem::remove(file);
 }
 
 } // namespace
