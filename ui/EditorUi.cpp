@@ -474,6 +474,7 @@ void EditorUi::statusBar(float height) {
         const ImVec4 colour = last.kind == StatusMessage::Kind::Error ? ImVec4(1.0f, 0.45f, 0.4f, 1.0f)
                                                                       : ImVec4(0.75f, 0.85f, 0.75f, 1.0f);
         ImGui::TextColored(colour, "%s", last.text.c_str());
+        probe::recordArea(last.text.c_str(), "status");
         if (ImGui::IsItemHovered()) {
             ImGui::BeginTooltip();
             const auto& all = session.messages();
