@@ -195,7 +195,10 @@ TEST(EditorClicks, PaintingWeightsWithARealDrag) {
     REQUIRE_GUI_TOOLS();
     GuiDriver gui({"--sample", "--panel", "Weights"});
     gui.waitIdle();
-    gui.click(gui.control("painted", "radio"));
+    // The first stroke in area mode starts from the area weights shown (not from all ones, which
+    // would swallow an "add" stroke) and makes the weights painted.
+    gui.click(gui.control("area (rho2)", "radio"));
+    ASSERT_EQ(gui.document()["weight_mode"], "area");
     gui.click(gui.control("Paint (left drag on the mesh; Alt + drag orbits)", "checkbox"));
     ASSERT_TRUE(gui.document()["brush"].get<bool>());
     const auto before = documentId(gui);
@@ -206,8 +209,19 @@ TEST(EditorClicks, PaintingWeightsWithARealDrag) {
     EXPECT_ALIVE(gui);
     EXPECT_NE(documentId(gui), before);
     EXPECT_EQ(gui.document()["undo"], "Paint stroke") << gui.document().dump();
+    EXPECT_EQ(gui.document()["weight_mode"], "painted");
     gui.key("ctrl+z");
     EXPECT_NE(gui.document()["undo"], "Paint stroke");
+    EXPECT_EQ(gui.document()["weight_mode"], "area");
+    // Switching to painted keeps the area weights shown; an "add" stroke raises them.
+    gui.click(gui.control("painted", "radio"));
+    ASSERT_EQ(gui.document()["weight_mode"], "painted");
+    const double mean = gui.document()["painted_mean"].get<double>();
+    EXPECT_GT(mean, 0.0);
+    EXPECT_LT(mean, 1.0);
+    gui.drag(cx - 60, cy - 20, cx + 60, cy, 12);
+    EXPECT_EQ(gui.document()["undo"], "Paint stroke") << gui.document().dump();
+    EXPECT_GT(gui.document()["painted_mean"].get<double>(), mean);
 }
 
 // The menus: every item of File, Edit and View (dialogs they open are cancelled; Quit is last and
