@@ -24,6 +24,7 @@ struct ReductionProblem {
 struct Grouping {
     double cost = 0.0;                    // optimal rho_f for this number of groups
     std::vector<std::vector<int>> groups; // member indices, each ascending; groups ordered by first member
+    bool operator==(const Grouping&) const = default;
 };
 
 struct ReductionResult {
@@ -31,6 +32,7 @@ struct ReductionResult {
     const Grouping& best() const { return curve.back(); }
     // groupOf[i]: index of the group viseme i belongs to in best().
     std::vector<int> groupOf() const;
+    bool operator==(const ReductionResult&) const = default;
 };
 
 // Progress in [0,1]; called from the calling thread only.

@@ -22,7 +22,7 @@ void EditorUi::reductionPanel() {
         return;
     }
     const int n = static_cast<int>(set->size());
-    int m = session.project().reduction.target;
+    int m = session.document().target;
     sectionHeader("Target");
     ImGui::SetNextItemWidth(-90);
     if (ctl::SliderInt("groups m", &m, 1, n)) session.attempt("Target", [&] { session.setTarget(m); });

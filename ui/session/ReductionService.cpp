@@ -1,0 +1,72 @@
+#include "ui/session/ReductionService.h"
+
+#include "core/common/Error.h"
+
+namespace vl::ui {
+
+void ReductionService::track(const Document& document, bool fresh) {
+    if (fresh || !sameReductionInputs(tracked_, document)) ++revision_;
+    tracked_ = document;
+}
+
+const ReductionResult* ReductionService::curve() const {
+    return curve_.result && curve_.revision == revision_ ? curve_.result.get() : nullptr;
+}
+
+const Grouping* ReductionService::grouping(int m) const {
+    const ReductionResult* current = curve();
+    if (!current || m < 1 || m > static_cast<int>(current->curve.size())) return nullptr;
+    return &current->curve[static_cast<std::size_t>(m - 1)];
+}
+
+const std::vector<std::vector<Vec3>>& ReductionService::mergedShapes(const Document& document) {
+    const Grouping* groups = grouping(document.target);
+    if (!groups || !document.visemes) {
+        merged_.clear();
+        mergedRevision_ = 0;
+        return merged_;
+    }
+    if (mergedRevision_ != revision_ || mergedGroups_ != document.target) {
+        std::vector<std::vector<Vec3>> shapes;
+        for (const auto& viseme : document.visemes->visemes) shapes.push_back(viseme.positions);
+        const std::vector<double> frequencies = documentFrequencies(document);
+        merged_.clear();
+        for (const auto& group : groups->groups) merged_.push_back(mergeGroup(shapes, frequencies, group));
+        mergedRevision_ = revision_;
+        mergedGroups_ = document.target;
+    }
+    return merged_;
+}
+
+void ReductionService::start(const Document& document) {
+    if (document.visemeCount() < 2) throwInputError("reduction", "load a viseme set with at least 2 visemes");
+    track(document);
+    if (complete(document.visemeCount())) return;
+    if (task_.running() && runningRevision_ == revision_) return;
+    const int n = static_cast<int>(document.visemeCount());
+    if (n > kMaxExactVisemes)
+        throwInputError("reduction", "exact reduction handles at most " + std::to_string(kMaxExactVisemes) +
+                                         " visemes, the set has " + std::to_string(n));
+    // The worker holds the document's immutable meshes and its own copies of the rest.
+    auto set = document.visemes;
+    auto frequencies = std::make_shared<std::vector<double>>(documentFrequencies(document));
+    auto weights = std::make_shared<std::vector<double>>(documentWeights(document));
+    runningRevision_ = revision_;
+    task_.start("Reducing " + std::to_string(n) + " visemes",
+                [set, frequencies, weights, n](const auto& progress) {
+                    std::vector<std::vector<Vec3>> shapes;
+                    for (const auto& viseme : set->visemes) shapes.push_back(viseme.positions);
+                    ReductionProblem problem{shapes, *frequencies, *weights, n};
+                    return std::make_shared<const ReductionResult>(reduceVisemes(problem, progress));
+                });
+}
+
+std::optional<std::string> ReductionService::poll() {
+    auto outcome = task_.take();
+    if (!outcome) return std::nullopt;
+    if (outcome->index() == 1) return std::get<1>(*outcome);
+    if (runningRevision_ == revision_) curve_ = {std::get<0>(*outcome), runningRevision_};
+    return std::nullopt;
+}
+
+} // namespace vl::ui
