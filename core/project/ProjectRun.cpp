@@ -58,7 +58,13 @@ VisemeSet loadProjectVisemeSet(const Project& project) {
 }
 
 ReduceSettings projectReduceSettings(const Project& project) {
-    return {project.weights.mode, project.weights.painted, project.reduction.target};
+    ReduceSettings settings;
+    settings.weightMode = project.weights.mode;
+    settings.paintedWeights = project.weights.painted;
+    settings.target = project.reduction.target;
+    settings.constraints = project.reduction.constraints;
+    settings.constraintsSource = "/reduction/constraints";
+    return settings;
 }
 
 ReduceOutcome reduceProject(const Project& project, const VisemeSet& set, const ProgressCallback& progress) {

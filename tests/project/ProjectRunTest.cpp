@@ -147,6 +147,27 @@ TEST_F(ProjectRun, ReductionInputErrors) {
                        "/visemes: a reduction needs at least 2 visemes, found 1");
 }
 
+TEST_F(ProjectRun, ConstraintsOfTheProjectAreHonoured) {
+    const VisemeSet set = loadProjectVisemeSet(project);
+    Project p = project;
+    p.reduction.target = 3;
+    p.reduction.constraints.pinned = {p.visemes[0].name};
+    p.reduction.constraints.together = {{p.visemes[1].name, p.visemes[4].name}};
+    const ReduceOutcome outcome = reduceProject(p, set);
+    const auto groupOf = outcome.result.groupOf();
+    EXPECT_EQ(outcome.result.best().groups[static_cast<std::size_t>(groupOf[0])], std::vector<int>{0});
+    EXPECT_EQ(groupOf[1], groupOf[4]);
+    EXPECT_TRUE(outcome.result.best().optimal);
+    p.reduction.target = 5;
+    EXPECT_INPUT_ERROR(reduceProject(p, set),
+                       "/reduction/constraints: no grouping into 5 groups satisfies the "
+                       "constraints: the 'together' constraints leave 4 separable units");
+    p.reduction.target = 3;
+    p.reduction.constraints.together.emplace_back(p.visemes[0].name, p.visemes[2].name);
+    EXPECT_INPUT_ERROR(reduceProject(p, set),
+                       "/reduction/constraints: '" + p.visemes[0].name + "' is pinned");
+}
+
 // The bundled sample project: loads, its meshes are interpolable and its reduction runs.
 TEST(SampleProject, LoadsAndReduces) {
     const std::filesystem::path file =
