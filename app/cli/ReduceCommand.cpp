@@ -117,6 +117,7 @@ ReduceSettings loadSettings(const ReduceOptions& o) {
     } else {
         settings.weightMode = WeightMode::Painted;
         settings.paintedWeights = loadWeightsFile(o.weights);
+        settings.paintedWeightsSource = o.weights;
     }
     return settings;
 }
@@ -180,8 +181,9 @@ ReduceInputs loadInputs(const ReduceOptions& o, bool weightsGiven) {
     in.settings = weightsGiven ? loadSettings(o) : projectReduceSettings(project);
     in.settings.target = o.target != kTargetNotGiven ? o.target : project.reduction.target;
     if (weightsGiven) { // the project's constraints apply whatever the weights
-        in.settings.constraints = project.reduction.constraints;
-        in.settings.constraintsSource = "/reduction/constraints";
+        const ReduceSettings fromProject = projectReduceSettings(project);
+        in.settings.constraints = fromProject.constraints;
+        in.settings.constraintsSource = fromProject.constraintsSource;
     }
     applySolverFlags(o, in.settings);
     return in;

@@ -4,6 +4,7 @@
 
 #include <cstdio>
 #include <exception>
+#include <new>
 
 int main(int argc, char** argv) {
     CLI::App app{"VisemeLab: optimal viseme reduction and adaptive deformable faces"};
@@ -30,6 +31,10 @@ int main(int argc, char** argv) {
         return vl::cli::kExitUsage;
     } catch (const vl::InputError& e) {
         std::fprintf(stderr, "visemelab: error: %s\n", e.what());
+        return vl::cli::kExitInvalidInput;
+    } catch (const std::bad_alloc&) {
+        // Readers bound memory by their input's size; this is a machine short of memory for it.
+        std::fprintf(stderr, "visemelab: error: out of memory (the input is too large for this machine)\n");
         return vl::cli::kExitInvalidInput;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "visemelab: internal error: %s\n", e.what());

@@ -10,6 +10,7 @@
 
 #include <cctype>
 #include <set>
+#include <unordered_set>
 
 namespace vl {
 namespace {
@@ -80,6 +81,8 @@ MeshData readEntityMeshes(const FdpEntity& entity, const std::filesystem::path& 
         } catch (const InputError& e) {
             throwInputError(where, e.what());
         }
+        // An entity may list the same mesh many times: its parts together obey the viseme set limit.
+        checkVisemeSetSize(0, mesh.positions.size(), where);
     }
     return mesh;
 }
@@ -169,6 +172,9 @@ std::string formatFdp(const ReducedModel& model) {
 
 PhonemeVisemeMap parseXfaceDictionary(std::string_view text, std::string_view source, std::string* language) {
     PhonemeVisemeMap map;
+    map.origin = source;
+    std::unordered_set<std::string_view> listed; // linear-time duplicate check
+    text = stripUtf8Bom(text); // a file of only a byte order mark is empty, not the language "\xEF\xBB\xBF"
     std::size_t lineNumber = 0, start = 0;
     bool haveLanguage = false;
     while (start <= text.size()) {
@@ -186,12 +192,13 @@ PhonemeVisemeMap parseXfaceDictionary(std::string_view text, std::string_view so
             continue;
         }
         if (tokens.size() != 2) throwInputError(fileLine(source, lineNumber), "expected 'phoneme viseme'");
-        if (map.visemeOf(tokens[0]))
+        if (!listed.insert(tokens[0]).second)
             throwInputError(fileLine(source, lineNumber),
                             "phoneme '" + std::string(tokens[0]) + "' is listed twice");
         map.entries.emplace_back(std::string(tokens[0]), std::string(tokens[1]));
     }
     if (!haveLanguage) throwInputError(source, "empty phoneme dictionary");
+    if (map.entries.empty()) throwInputError(source, "no 'phoneme viseme' lines after the language line");
     return map;
 }
 
@@ -230,10 +237,16 @@ XfaceFace loadXfaceFace(const std::filesystem::path& fdpPath) {
     XfaceFace face;
     face.set.neutral = readEntityMeshes(*neutral, fdpPath);
     face.set.neutralSource = fdpPath.parent_path() / neutral->meshFiles.front();
+    std::size_t visemeCount = 0;
+    for (const FdpEntity& e : doc.entities) visemeCount += e.category == "Viseme" ? 1 : 0;
+    // Checked before reading: entities naming the same big mesh again and again must not exhaust memory.
+    checkVisemeSetSize(visemeCount, face.set.vertexCount(), fdpPath.string());
+    std::unordered_set<std::string_view> aliases;
     for (const FdpEntity& e : doc.entities) {
         if (e.category != "Viseme") continue;
         const std::string where = fileLine(fdpPath.string(), static_cast<std::size_t>(e.line));
-        if (face.set.find(e.alias) >= 0) throwInputError(where, "viseme '" + e.alias + "' is defined twice");
+        if (!aliases.insert(e.alias).second)
+            throwInputError(where, "viseme '" + e.alias + "' is defined twice");
         const MeshData mesh = readEntityMeshes(e, fdpPath);
         checkInterpolable(face.set.neutral, face.set.neutralSource.string(), mesh,
                           where + ": entity '" + e.alias + "'");

@@ -38,13 +38,19 @@ MeshData readMesh(const std::filesystem::path& path) {
     const MeshFormat format = meshFormatFromPath(path);
     const std::string bytes = readFileToString(path);
     const std::string source = path.string();
-    switch (format) {
-    case MeshFormat::Obj:
-        return parseObj(bytes, source);
-    case MeshFormat::Ply:
-        return parsePly(bytes, source);
-    case MeshFormat::Vrml:
-        return parseVrml(bytes, source);
+    try {
+        switch (format) {
+        case MeshFormat::Obj:
+            return parseObj(bytes, source);
+        case MeshFormat::Ply:
+            return parsePly(bytes, source);
+        case MeshFormat::Vrml:
+            return parseVrml(bytes, source);
+        }
+    } catch (const std::bad_alloc&) {
+        // Memory grows linearly with the file's size; a machine short of it still gets the file's name.
+        throwInputError(source,
+                        "not enough memory to read this mesh (" + std::to_string(bytes.size()) + " bytes)");
     }
     throwInputError(source, "unknown mesh format");
 }

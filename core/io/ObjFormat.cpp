@@ -133,8 +133,13 @@ class ObjParser {
             corners_.push_back(v);
             if (!textureToken.empty()) {
                 const std::int64_t t = resolveIndex(textureToken, texCoords_.size(), true);
-                if (v >= cornerUV_.size()) cornerUV_.resize(v + std::size_t{1}, -1);
-                if (cornerUV_[v] < 0) cornerUV_[v] = t; // first corner wins at UV seams
+                if (v < mesh_.positions.size()) {
+                    // Grown only to vertices that exist: a huge index in a tiny file allocates nothing.
+                    if (v >= cornerUV_.size()) cornerUV_.resize(mesh_.positions.size(), -1);
+                    if (cornerUV_[v] < 0) cornerUV_[v] = t; // first corner wins at UV seams
+                } else {
+                    forwardUV_.push_back({v, t});
+                }
             }
         }
         const std::string problem = meshio::appendPolygonFan(corners_, faceCount_++, 1, mesh_.triangles);
@@ -152,6 +157,10 @@ class ObjParser {
         }
         meshio::requireVerticesAndFaces(mesh_, source_);
         cornerUV_.resize(mesh_.positions.size(), -1);
+        // Corners naming a vertex before its `v` line come before every other corner of that vertex
+        // in file order, so the earliest of them wins: assign them last, latest first.
+        for (auto it = forwardUV_.rbegin(); it != forwardUV_.rend(); ++it)
+            cornerUV_[it->vertex] = it->texCoord;
         mesh_.uvs = meshio::uvsFromFirstCorners(cornerUV_, texCoords_);
         return std::move(mesh_);
     }
@@ -165,6 +174,12 @@ class ObjParser {
     std::vector<std::int64_t> cornerUV_; // per vertex (grown on use): first corner's texture coordinate or -1
     std::vector<std::uint32_t> corners_;
     std::vector<ForwardReference> forward_;
+    // Texture coordinates of corners whose vertex is defined further down (range-checked in finish()).
+    struct ForwardUV {
+        std::uint32_t vertex;
+        std::int64_t texCoord;
+    };
+    std::vector<ForwardUV> forwardUV_;
 };
 
 } // namespace

@@ -2,6 +2,7 @@
 // tokens for IndexedFaceSet nodes (wherever they are nested) and for DEF'd Coordinate and
 // TextureCoordinate nodes that a later `USE` may name, and skips everything else.
 #include "core/common/Error.h"
+#include "core/common/Limits.h"
 #include "core/io/MeshIO.h"
 #include "core/io/MeshIOSupport.h"
 #include "core/io/VrmlTokenizer.h"
@@ -72,6 +73,9 @@ class VrmlParser {
         return i_ + ahead < tokens_.size() ? tokens_[i_ + ahead].text : std::string_view{};
     }
     std::string whereLine(std::size_t line) const { return fileLine(source_, line); }
+    std::size_t useBudget() const {
+        return std::max(limits::kVrmlMinUseExpansionBudget, limits::kVrmlUseExpansionFactor * tokens_.size());
+    }
     std::string here() const { return whereLine(i_ < tokens_.size() ? tokens_[i_].line : lastLine()); }
     std::size_t lastLine() const { return tokens_.empty() ? 1 : tokens_.back().line; }
 
@@ -178,6 +182,14 @@ class VrmlParser {
                 throwInputError(whereLine(name.line), "'" + std::string(name.text) + "' is a " +
                                                           std::string(it->second.type) + ", not a " +
                                                           std::string(type));
+            // Each USE copies the points again: a small file must not expand into gigabytes.
+            usedValues_ += it->second.values.size();
+            if (usedValues_ > useBudget())
+                throwInputError(
+                    whereLine(name.line),
+                    "USE of '" + std::string(name.text) + "' would copy " + std::to_string(usedValues_) +
+                        " numbers in total by USE, more than the limit of " + std::to_string(useBudget()) +
+                        " for this file (" + std::to_string(limits::kVrmlUseExpansionFactor) + " per token)");
             return it->second.values;
         }
         std::string defName;
@@ -303,6 +315,7 @@ class VrmlParser {
     std::vector<VrmlToken> tokens_;
     std::size_t i_ = 0;
     std::map<std::string, PointNode> defs_;
+    std::size_t usedValues_ = 0; // numbers copied by USE so far
     std::size_t faceSets_ = 0;
     std::size_t faceCount_ = 0;
     MeshData mesh_;

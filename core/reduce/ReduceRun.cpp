@@ -29,7 +29,8 @@ ReduceOutcome runReduction(const VisemeSet& set, const FrequencySource& frequenc
     ReduceOutcome out;
     for (const auto& v : set.visemes) out.visemeNames.push_back(v.name);
     out.frequencies = visemeFrequencies(frequencies, out.visemeNames);
-    out.weights = computeWeights(settings.weightMode, set.neutral, settings.paintedWeights);
+    out.weights = computeWeights(settings.weightMode, set.neutral, settings.paintedWeights,
+                                 settings.paintedWeightsSource);
 
     std::vector<std::span<const Vec3>> rows; // a view of the set's positions: no copy of the shapes
     for (const auto& v : set.visemes) rows.emplace_back(v.positions);

@@ -112,5 +112,26 @@ TEST(Xface, DictionaryInXfaceFormat) {
     EXPECT_THROW(parseXfaceDictionary("", "x.dic"), InputError);
 }
 
+TEST(Xface, DictionaryOfOnlyAByteOrderMarkIsRejected) {
+    const auto errorOf = [](std::string_view text) {
+        try {
+            parseXfaceDictionary(text, "bom.dic");
+        } catch (const InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    // Was accepted: the mark became the language and the dictionary was empty.
+    EXPECT_EQ(errorOf("\xEF\xBB\xBF"), "bom.dic: empty phoneme dictionary");
+    EXPECT_EQ(errorOf("\xEF\xBB\xBF\n\n"), "bom.dic: empty phoneme dictionary");
+    EXPECT_EQ(errorOf("english\n"), "bom.dic: no 'phoneme viseme' lines after the language line");
+    std::string language;
+    const PhonemeVisemeMap map = parseXfaceDictionary("\xEF\xBB\xBF"
+                                                      "english\nAA aa\n",
+                                                      "bom.dic", &language);
+    EXPECT_EQ(language, "english");
+    EXPECT_EQ(map.entries.size(), 1u);
+}
+
 } // namespace
 } // namespace vl
