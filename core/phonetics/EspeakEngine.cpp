@@ -2,7 +2,7 @@
 
 #include "core/common/Error.h"
 
-#include <espeak-ng/speak_lib.h>
+#include "core/phonetics/EspeakApi.h"
 
 #include <stdexcept>
 
@@ -20,8 +20,8 @@ int ensureInitialised() {
     // synthesis reports each phoneme with its sample position (the synthesiser's timing);
     // espeak_TextToPhonemes is unaffected.
     constexpr int kBufferMs = 200; // audio handed to the synthesis callback per call
-    sampleRate = espeak_Initialize(AUDIO_OUTPUT_SYNCHRONOUS, kBufferMs, nullptr,
-                                   espeakINITIALIZE_DONT_EXIT | espeakINITIALIZE_PHONEME_EVENTS);
+    sampleRate = espeak::api().Initialize(AUDIO_OUTPUT_SYNCHRONOUS, kBufferMs, nullptr,
+                                          espeakINITIALIZE_DONT_EXIT | espeakINITIALIZE_PHONEME_EVENTS);
     if (sampleRate <= 0) {
         sampleRate = 0;
         throw std::runtime_error(
@@ -38,10 +38,11 @@ std::string selectVoice(const std::string& voice) {
     // the voice "en" whose language is "en-gb".
     espeak_VOICE byLanguage{};
     byLanguage.languages = voice.c_str();
-    if (espeak_SetVoiceByName(voice.c_str()) != EE_OK && espeak_SetVoiceByProperties(&byLanguage) != EE_OK)
+    if (espeak::api().SetVoiceByName(voice.c_str()) != EE_OK &&
+        espeak::api().SetVoiceByProperties(&byLanguage) != EE_OK)
         throwInputError("voice '" + voice + "'",
                         "espeak-ng has no such voice (language codes such as en-us, en-gb, de, fr work)");
-    const espeak_VOICE* selected = espeak_GetCurrentVoice();
+    const espeak_VOICE* selected = espeak::api().GetCurrentVoice();
     current = voice;
     currentLanguage = selected && selected->languages ? std::string(selected->languages + 1) : voice;
     return currentLanguage;

@@ -1,10 +1,9 @@
 #include "core/phonetics/EspeakSynthesizer.h"
 
 #include "core/common/Error.h"
+#include "core/phonetics/EspeakApi.h"
 #include "core/phonetics/EspeakEngine.h"
 #include "core/phonetics/EspeakTiming.h"
-
-#include <espeak-ng/speak_lib.h>
 
 #include <algorithm>
 #include <cstring>
@@ -80,11 +79,11 @@ class EspeakSynthesizer final : public SpeechSynthesizer {
         {
             std::lock_guard lock(espeak::engineMutex());
             espeak::selectVoice(voice_.voice);
-            espeak_SetParameter(espeakRATE, voice_.wordsPerMinute, 0);
-            espeak_SetSynthCallback(onSynthesis);
+            espeak::api().SetParameter(espeakRATE, voice_.wordsPerMinute, 0);
+            espeak::api().SetSynthCallback(onSynthesis);
             currentRun = &run;
-            const espeak_ERROR status = espeak_Synth(input.c_str(), input.size() + 1, 0, POS_CHARACTER, 0,
-                                                     espeakCHARS_UTF8, nullptr, nullptr);
+            const espeak_ERROR status = espeak::api().Synth(input.c_str(), input.size() + 1, 0, POS_CHARACTER,
+                                                            0, espeakCHARS_UTF8, nullptr, nullptr);
             currentRun = nullptr;
             if (run.failure) std::rethrow_exception(run.failure);
             if (status != EE_OK) throw std::runtime_error("espeak-ng synthesis failed");

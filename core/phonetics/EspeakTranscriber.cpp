@@ -1,10 +1,9 @@
 #include "core/phonetics/EspeakTranscriber.h"
 
 #include "core/common/Error.h"
+#include "core/phonetics/EspeakApi.h"
 #include "core/phonetics/EspeakEngine.h"
 #include "core/phonetics/EspeakMnemonics.h"
-
-#include <espeak-ng/speak_lib.h>
 
 #include <algorithm>
 #include <cctype>
@@ -56,7 +55,7 @@ class EspeakTranscriber final : public PhonemeTranscriber {
         // The returned buffer is reused by the next call, so each clause is parsed right away.
         // Every clause but the last ended at punctuation or a blank line, where speech pauses.
         while (cursor) {
-            const char* clause = espeak_TextToPhonemes(&cursor, espeakCHARS_UTF8, mode);
+            const char* clause = espeak::api().TextToPhonemes(&cursor, espeakCHARS_UTF8, mode);
             if (clause && *clause) {
                 if (notation_ == PhonemeNotation::Arpabet) {
                     appendArpabetForEspeakClause(clause, kSeparator, phonemes, skipped_);
@@ -92,7 +91,7 @@ std::vector<std::string> espeakVoiceNames() {
     espeak::ensureInitialised();
     std::set<std::string> names;
     // `languages` is a priority byte followed by the language code.
-    for (const espeak_VOICE** voice = espeak_ListVoices(nullptr); voice && *voice; ++voice)
+    for (const espeak_VOICE** voice = espeak::api().ListVoices(nullptr); voice && *voice; ++voice)
         if ((*voice)->languages && (*voice)->languages[1]) names.insert((*voice)->languages + 1);
     return {names.begin(), names.end()};
 }

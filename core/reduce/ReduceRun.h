@@ -16,7 +16,7 @@ struct ReduceSettings {
     WeightMode weightMode = WeightMode::Uniform;
     std::vector<double> paintedWeights; // used when weightMode == Painted
     int target = 1;
-    std::string paintedWeightsSource = "weights"; // the weights' file or JSON path, for messages
+    std::string paintedWeightsSource = "weights";  // the weights' file or JSON path, for messages
     ConstraintNames constraints{};                 // by viseme name
     std::string constraintsSource = "constraints"; // where errors about them point (a flag, a JSON path)
     ReductionOptions options{};                    // solver, time limit

@@ -17,6 +17,7 @@ struct TimedPhoneme {
     std::string phoneme; // ARPAbet (English voices), IPA (others), or kSilencePhoneme
     double start = 0.0;  // seconds from the start of the audio
     double end = 0.0;
+    bool operator==(const TimedPhoneme&) const = default;
 };
 
 struct Utterance {
