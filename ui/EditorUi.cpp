@@ -149,6 +149,8 @@ nlohmann::json EditorUi::probeSummary() const {
             {"visemes", document.visemeCount()},
             {"selected_viseme", session.selectedViseme},
             {"target", document.target},
+            {"constraints", document.constraints.pinned.size() + document.constraints.apart.size() +
+                                document.constraints.together.size()},
             {"criterion", kCriteria[static_cast<int>(document.refinement.kind)]},
             {"file_dialog_open", fileDialog_.isOpen()},
             {"brush", brush_.enabled},

@@ -70,6 +70,11 @@ Document removeViseme(const Document& document, int index) {
     next.visemeFiles.erase(next.visemeFiles.begin() + index);
     auto& direct = next.frequencies.visemeFrequencies.entries;
     std::erase_if(direct, [&](const auto& entry) { return entry.first == name; });
+    // Constraints that name it go with it.
+    std::erase(next.constraints.pinned, name);
+    const auto namesIt = [&](const auto& pair) { return pair.first == name || pair.second == name; };
+    std::erase_if(next.constraints.apart, namesIt);
+    std::erase_if(next.constraints.together, namesIt);
     next.target = std::min(next.target, static_cast<int>(next.visemes->size()));
     return checked(std::move(next));
 }
@@ -252,6 +257,12 @@ Document setTarget(const Document& document, int m) {
         throwInputError("target", "m must be in 1.." + std::to_string(n) + ", got " + std::to_string(m));
     Document next = document;
     next.target = m;
+    return checked(std::move(next));
+}
+
+Document setConstraints(const Document& document, ConstraintNames constraints) {
+    Document next = document;
+    next.constraints = std::move(constraints);
     return checked(std::move(next));
 }
 

@@ -46,5 +46,7 @@ Document generateVisemesFromFace(const Document& document);
 // --- refinement and reduction -----------------------------------------------------------------
 Document setRefinementSettings(const Document& document, const CriterionSettings& settings);
 Document setTarget(const Document& document, int m);
+// Pins, apart and together pairs by viseme name (checked: known names, no contradictions).
+Document setConstraints(const Document& document, ConstraintNames constraints);
 
 } // namespace vl::edit

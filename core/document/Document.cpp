@@ -13,7 +13,8 @@ const std::vector<double>& DocumentWeights::paintedOrEmpty() const {
 }
 
 bool sameReductionInputs(const Document& a, const Document& b) {
-    return a.visemes == b.visemes && a.frequencies == b.frequencies && a.weights == b.weights;
+    return a.visemes == b.visemes && a.frequencies == b.frequencies && a.weights == b.weights &&
+           a.constraints == b.constraints;
 }
 
 std::vector<std::string> visemeNames(const Document& document) {
@@ -40,6 +41,8 @@ void validateDocument(const Document& document) {
         throwInputError("document", "one mesh source per viseme expected");
     documentFrequencies(document);
     documentWeights(document);
+    const std::vector<std::string> names = visemeNames(document);
+    constraintUnits(resolveConstraints(document.constraints, names), static_cast<int>(names.size()), names);
     const int n = static_cast<int>(document.visemes->size());
     if (document.target < 1 || document.target > n)
         throwInputError("target",
@@ -75,6 +78,7 @@ LoadedProject documentFromProject(const Project& project) {
         document.weights.painted = std::make_shared<const std::vector<double>>(project.weights.painted);
     document.refinement = project.refinement;
     document.target = project.reduction.target;
+    document.constraints = project.reduction.constraints;
     if (project.deformation.isSet()) {
         FaceModel& model = document.face;
         model.cascade = std::make_shared<const DeformationCascade>(project.deformation.cascade);
@@ -112,6 +116,7 @@ Project projectFromDocument(const Document& document, const std::optional<Reduct
     project.weights.painted = document.weights.paintedOrEmpty();
     project.refinement = document.refinement;
     project.reduction.target = document.target;
+    project.reduction.constraints = document.constraints;
     project.reduction.result = reduction;
     if (const FaceModel& face = document.face; face.cascade) {
         project.deformation.cascade = *face.cascade;

@@ -15,6 +15,7 @@
 #include "core/project/Project.h"
 #include "core/reduce/Frequencies.h"
 #include "core/reduce/Reduction.h"
+#include "core/reduce/ReductionConstraints.h"
 #include "core/reduce/VisemeSet.h"
 #include "core/reduce/Weights.h"
 
@@ -63,14 +64,15 @@ struct Document {
     DocumentWeights weights;
     FaceModel face;
     CriterionSettings refinement;
-    int target = 1; // m, the number of merged visemes the reduction keeps
+    int target = 1;              // m, the number of merged visemes the reduction keeps
+    ConstraintNames constraints; // pins, apart and together pairs, by viseme name
 
     std::size_t visemeCount() const { return visemes ? visemes->size() : 0; }
     bool operator==(const Document&) const = default;
 };
 
-// The inputs of the reduction (meshes, frequencies, weights): documents with equal inputs share
-// one reduction curve, whatever else differs.
+// The inputs of the reduction (meshes, frequencies, weights, constraints): documents with equal
+// inputs share one reduction curve, whatever else differs.
 bool sameReductionInputs(const Document& a, const Document& b);
 
 // Viseme names in set order (empty without a set).

@@ -519,6 +519,11 @@ void EditorSession::setTarget(int m) {
     commit("Target m = " + std::to_string(m), edit::setTarget(document(), m), "target");
 }
 
+void EditorSession::setConstraints(ConstraintNames constraints) {
+    if (constraints == document().constraints) return;
+    commit("Constraints", edit::setConstraints(document(), std::move(constraints)));
+}
+
 void EditorSession::collectRefinement() {
     auto outcome = refinement_.take();
     if (!outcome) return;
@@ -591,7 +596,7 @@ void EditorSession::poll() {
         attempt("Refinement", [this] { refinement_.start(document(), RefineAction::Adapt, true); });
     if (auto failure = reduction_.poll()) error("Reduction: " + *failure);
     const int n = static_cast<int>(visemeCount());
-    if (autoReduce && n >= 2 && n <= kMaxExactVisemes && !reduction_.complete(visemeCount()) &&
+    if (autoReduce && n >= 2 && n <= kMaxReductionVisemes && !reduction_.complete(document()) &&
         !reduction_.failedOnCurrentInputs() && !reduction_.running())
         attempt("Reduction", [this] { startReduction(); });
 }

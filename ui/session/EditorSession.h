@@ -146,6 +146,8 @@ class EditorSession {
 
     // --- reduction ---------------------------------------------------------------------------
     void setTarget(int m);
+    // Pins, apart and together pairs by viseme name (validated; saved in the project).
+    void setConstraints(ConstraintNames constraints);
     // Starts the reduction of the current inputs on a worker thread (no-op when already current).
     void startReduction() { reduction_.start(document()); }
     bool reductionRunning() const { return reduction_.running(); }

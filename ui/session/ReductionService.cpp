@@ -2,6 +2,8 @@
 
 #include "core/common/Error.h"
 
+#include <algorithm>
+
 namespace vl::ui {
 
 void ReductionService::track(const Document& document, bool fresh) {
@@ -38,26 +40,46 @@ const std::vector<std::vector<Vec3>>& ReductionService::mergedShapes(const Docum
     return merged_;
 }
 
+std::size_t ReductionService::curveLength(const Document& document) {
+    const std::vector<std::string> names = visemeNames(document);
+    const int n = static_cast<int>(names.size());
+    try {
+        return static_cast<std::size_t>(std::min(
+            n, constraintUnits(resolveConstraints(document.constraints, names), n, names).maxGroups));
+    } catch (const InputError&) {
+        return names.size();
+    }
+}
+
 void ReductionService::start(const Document& document) {
     if (document.visemeCount() < 2) throwInputError("reduction", "load a viseme set with at least 2 visemes");
     track(document);
-    if (complete(document.visemeCount())) return;
+    if (complete(document)) return;
     if (task_.running() && runningRevision_ == revision_) return;
     const int n = static_cast<int>(document.visemeCount());
-    if (n > kMaxExactVisemes)
-        throwInputError("reduction", "exact reduction handles at most " + std::to_string(kMaxExactVisemes) +
+    if (n > kMaxReductionVisemes)
+        throwInputError("reduction", "the reduction handles at most " + std::to_string(kMaxReductionVisemes) +
                                          " visemes, the set has " + std::to_string(n));
-    // The worker holds the document's immutable meshes and its own copies of the rest.
+    const std::vector<std::string> names = visemeNames(document);
+    const ReductionConstraints constraints = resolveConstraints(document.constraints, names);
+    const int groups = static_cast<int>(curveLength(document));
+    // Large sets: branch and bound reports the best grouping found and its proven gap when the time
+    // is up, instead of keeping the designer waiting.
+    ReductionOptions options;
+    if (n > kMaxExactVisemes) options.timeLimitSeconds = kLargeSetSeconds;
+    // The worker holds the document's immutable meshes (viewed, not copied) and its own copies of
+    // the rest.
     auto set = document.visemes;
     auto frequencies = std::make_shared<std::vector<double>>(documentFrequencies(document));
     auto weights = std::make_shared<std::vector<double>>(documentWeights(document));
     runningRevision_ = revision_;
     task_.start("Reducing " + std::to_string(n) + " visemes",
-                [set, frequencies, weights, n](const auto& progress) {
-                    std::vector<std::vector<Vec3>> shapes;
-                    for (const auto& viseme : set->visemes) shapes.push_back(viseme.positions);
-                    ReductionProblem problem{shapes, *frequencies, *weights, n};
-                    return std::make_shared<const ReductionResult>(reduceVisemes(problem, progress));
+                [set, frequencies, weights, groups, constraints, options](const auto& progress) {
+                    std::vector<std::span<const Vec3>> rows;
+                    for (const auto& viseme : set->visemes) rows.emplace_back(viseme.positions);
+                    const ReductionProblem problem{ShapeView(std::span<const std::span<const Vec3>>(rows)),
+                                                   *frequencies, *weights, groups, constraints};
+                    return std::make_shared<const ReductionResult>(reduceVisemes(problem, options, progress));
                 });
 }
 

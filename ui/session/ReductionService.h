@@ -41,7 +41,14 @@ class ReductionService {
     // The curve if it is up to date with the inputs, else null. A seeded curve may stop before
     // p = n (a project records p = 1..m); complete() tells whether it reaches n.
     const ReductionResult* curve() const;
-    bool complete(std::size_t n) const { return curve() && curve()->curve.size() >= n; }
+    bool complete(const Document& document) const {
+        return curve() && curve()->curve.size() >= curveLength(document);
+    }
+    // Entries of a full curve: p = 1..n, or up to the most groups the constraints allow.
+    static std::size_t curveLength(const Document& document);
+    // Time a reduction of more than kMaxExactVisemes visemes may take before it reports the best
+    // grouping found with its gap.
+    static constexpr double kLargeSetSeconds = 10.0;
     // The grouping into m groups from the current curve, or null.
     const Grouping* grouping(int m) const;
     // Merged shape of each group of grouping(document.target) (frequency-weighted means, eq. 19).
