@@ -17,7 +17,9 @@ namespace {
 bool visemeCombo(const char* label, const VisemeSet& set, int& choice) {
     choice = std::clamp(choice, 0, static_cast<int>(set.size()) - 1);
     bool changed = false;
-    if (ctl::BeginCombo(label, set.visemes[static_cast<std::size_t>(choice)].name.c_str())) {
+    // Every viseme visible at once (up to the screen's height), not an 8-row scrolled list.
+    if (ctl::BeginCombo(label, set.visemes[static_cast<std::size_t>(choice)].name.c_str(),
+                        ImGuiComboFlags_HeightLargest)) {
         for (int i = 0; i < static_cast<int>(set.size()); ++i)
             if (ctl::Selectable(set.visemes[static_cast<std::size_t>(i)].name.c_str(), i == choice)) {
                 choice = i;
