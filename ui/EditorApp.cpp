@@ -114,6 +114,12 @@ void applyStartOptions(const EditorOptions& options, EditorSession& session, Edi
         ui.enableBrush(static_cast<int>(it - std::begin(modes)));
     });
     if (options.play >= 0.0) ui.startPlayback(options.play, options.sequence);
+    step(!options.say.empty(), [&] {
+        SpeechSettings speech = session.document().speech;
+        speech.text = options.say;
+        session.setSpeech(speech);
+        ui.startSay(std::max(options.sayAt, 0.0), options.sayAt >= 0.0);
+    });
 }
 
 // Replaces the mouse state for this frame by a straight left-button drag: pressed from frame 1,

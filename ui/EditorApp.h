@@ -21,6 +21,8 @@ struct EditorOptions {
     std::string field;           // deformation field (stage name) to select
     double play = -1.0;          // >= 0: start the playback at this time (seconds)
     std::string sequence;        // playback sequence (phonemes or viseme names)
+    std::string say;             // text the Reduction panel's Say speaks at start
+    double sayAt = -1.0;         // >= 0: show the speech paused at this time (seconds)
     std::string brush;           // add, subtract or smooth: paint in the Weights panel
     std::vector<float> drag;     // x0 y0 x1 y1: a left-button drag over the frames (window pixels)
     bool wireframe = true;       // wireframe overlay at start

@@ -1,4 +1,5 @@
-// Per-frame interaction of the editor's views: playback of phoneme sequences, weight painting and
+// Per-frame interaction of the editor's views: the speech clock (Say and typed sequences played
+// through the runtime's keyframe evaluator, in sync with the audio), weight painting and
 // the per-vertex scalars (weights, merge errors, field influence) shown through the colour map.
 #include "ui/EditorUi.h"
 
@@ -10,7 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
+#include <utility>
 
 namespace vl::ui {
 namespace {
@@ -28,42 +29,60 @@ double maxOf(const std::vector<double>& values) {
 
 } // namespace
 
-std::vector<int> EditorUi::playbackKeys() const {
-    std::vector<int> keys;
-    const VisemeSet* set = session.visemes();
-    if (!set) return keys;
-    std::istringstream tokens(playback_.sequence);
-    std::string token;
-    while (tokens >> token) {
-        const std::string* viaMap = session.document().frequencies.map.visemeOf(token);
-        const int index = set->find(viaMap ? *viaMap : token);
-        if (index >= 0) keys.push_back(index);
-    }
-    if (keys.empty())
-        for (std::size_t i = 0; i < set->size(); ++i) keys.push_back(static_cast<int>(i));
-    return keys;
+void EditorUi::playSpeech(double from) {
+    const auto& clip = session.speechClip();
+    if (!clip) return;
+    say_.time = std::clamp(from, 0.0, clip->duration());
+    if (say_.time >= clip->duration()) say_.time = 0.0; // Play at the end starts again
+    say_.playing = true;
+    say_.shown = true;
+    if (say_.audio) audio_.play(say_.audio, clip->sampleRate, say_.time);
 }
 
-std::vector<float> EditorUi::playbackWeights(bool reduced) const {
-    const std::vector<int> keys = playbackKeys();
-    const Grouping* grouping = session.currentGrouping();
-    std::vector<float> weights(reduced ? (grouping ? grouping->groups.size() : 0) : session.visemeCount(),
-                               0.0f);
-    if (keys.empty() || weights.empty()) return weights;
-    const double t = playback_.time / playback_.secondsPerKey;
-    const auto k = static_cast<std::size_t>(std::floor(t)) % keys.size();
-    const double a = t - std::floor(t);
-    const float blend = static_cast<float>(a * a * (3.0 - 2.0 * a)); // ease between keys
-    auto slot = [&](int viseme) -> float& {
-        if (!reduced) return weights[static_cast<std::size_t>(viseme)];
-        for (std::size_t g = 0; g < grouping->groups.size(); ++g)
-            for (int member : grouping->groups[g])
-                if (member == viseme) return weights[g];
-        return weights[0];
-    };
-    slot(keys[k]) += 1.0f - blend;
-    slot(keys[(k + 1) % keys.size()]) += blend;
-    return weights;
+void EditorUi::pauseSpeech() {
+    say_.playing = false;
+    audio_.stop();
+}
+
+void EditorUi::advanceSpeech() {
+    const auto& clip = session.speechClip();
+    if (!clip) return;
+    if (clip->id != say_.clip) { // a new clip: show it from its start (or where a start option says)
+        say_.clip = clip->id;
+        say_.audio = clip->samples.empty() ? nullptr
+                                           : std::make_shared<const std::vector<std::int16_t>>(clip->samples);
+        const double start = say_.startAt.value_or(0.0);
+        say_.startAt.reset();
+        if (std::exchange(say_.startPaused, false)) {
+            pauseSpeech();
+            say_.time = std::clamp(start, 0.0, clip->duration());
+            say_.shown = true;
+        } else {
+            playSpeech(start);
+        }
+        return;
+    }
+    if (!say_.playing) return;
+    // The sound is the clock while it plays; otherwise (no device, a typed sequence) the frames.
+    if (audio_.playing())
+        say_.time = audio_.position();
+    else
+        say_.time += ImGui::GetIO().DeltaTime;
+    if (say_.time >= clip->duration()) {
+        if (clip->loops) {
+            say_.time = std::fmod(say_.time, clip->duration());
+        } else {
+            say_.time = clip->duration();
+            pauseSpeech();
+        }
+    }
+}
+
+std::vector<float> EditorUi::speechWeights(bool reduced) {
+    const SpeechPlayback* playback = session.speechPlayback();
+    if (!playback) return {};
+    const std::optional<FaceTrack>& track = reduced ? playback->reduced : playback->full;
+    return track ? track->keyWeights(say_.time) : std::vector<float>{};
 }
 
 void EditorUi::paint(const ViewportEvents& events) {

@@ -107,9 +107,15 @@ bool EditorUi::selectField(const std::string& stageName) {
 }
 
 void EditorUi::startPlayback(double time, std::string sequence) {
-    playback_.playing = true;
-    playback_.time = time;
-    playback_.sequence = std::move(sequence);
+    say_.sequence = std::move(sequence);
+    if (session.attempt("Playback", [&] { session.playSequence(say_.sequence, say_.secondsPerKey); }))
+        say_.startAt = time;
+}
+
+void EditorUi::startSay(double time, bool pause) {
+    if (!session.attempt("Say", [&] { session.say(); })) return;
+    say_.startAt = time;
+    say_.startPaused = pause;
 }
 
 void EditorUi::requestQuit() {
@@ -127,7 +133,7 @@ double EditorUi::millimetresPerModelUnit() const {
     return millimetresPer(guessLengthUnit(extent));
 }
 
-nlohmann::json EditorUi::probeSummary() const {
+nlohmann::json EditorUi::probeSummary() {
     static const char* const kCriteria[] = {"depth", "normals", "contour"};
     const Document& document = session.document();
     nlohmann::json messages = nlohmann::json::array();
@@ -145,7 +151,7 @@ nlohmann::json EditorUi::probeSummary() const {
             {"messages", std::move(messages)},
             {"busy", session.loading() || session.saving() || session.exporting() ||
                          session.refinementRunning() || session.reductionRunning() ||
-                         session.phonemeCountRunning()},
+                         session.phonemeCountRunning() || session.speaking()},
             {"visemes", document.visemeCount()},
             {"selected_viseme", session.selectedViseme},
             {"target", document.target},
@@ -157,7 +163,8 @@ nlohmann::json EditorUi::probeSummary() const {
             {"weight_mode", toString(document.weights.mode)},
             {"painted_mean", painted.empty() ? 0.0 : paintedSum / static_cast<double>(painted.size())},
             {"wireframe", wireframe_},
-            {"playing", playback_.playing}};
+            {"playing", say_.playing},
+            {"say", sayProbe()}};
 }
 
 void EditorUi::saveProject(bool askForFile, std::function<void()> then) {
@@ -235,7 +242,7 @@ void EditorUi::syncGpu() {
 void EditorUi::frame() {
     session.beginFrame();
     session.poll();
-    if (playback_.playing) playback_.time += ImGui::GetIO().DeltaTime;
+    advanceSpeech();
     syncGpu();
     if (framePending_) {
         frameAll();
@@ -577,7 +584,8 @@ void EditorUi::mainView(ImVec2 size) {
                     std::string(face::individualName(session.face().individual)) + ")";
     } else {
         std::vector<float> weights =
-            playback_.playing ? playbackWeights(false) : visemeWeights(session.selectedViseme);
+            speechShown() ? speechWeights(false) : visemeWeights(session.selectedViseme);
+        if (weights.size() != session.visemeCount()) weights = visemeWeights(-1);
         style.color =
             activePanel_ == Panel::Weights && showWeightsColours_ ? ColorMode::Scalar : surfaceColours();
         if (activePanel_ == Panel::Weights) weights.assign(weights.size(), 0.0f); // paint on the neutral
@@ -594,8 +602,8 @@ void EditorUi::mainView(ImVec2 size) {
         } else if (activePanel_ == Panel::Weights) {
             label = std::string("Weights: ") + toString(session.document().weights.mode);
             if (showWeightsColours_) colourLegend(events.imageMin, events.imageMax, "0", "largest weight");
-        } else if (playback_.playing) {
-            label = "Playback (full set)";
+        } else if (speechShown()) {
+            label = session.speechClip()->label + " (full set)";
         } else {
             const int s = session.selectedViseme;
             label =
@@ -607,16 +615,40 @@ void EditorUi::mainView(ImVec2 size) {
 }
 
 void EditorUi::comparisonViews(ImVec2 size) {
-    const ImVec2 half(std::floor(size.x * 0.5f) - 1.0f, size.y);
+    // With a clip shown, the timeline takes the bottom of the views.
+    const bool speech = speechShown();
+    const float timelineHeight = speech ? std::min(230.0f, 0.32f * size.y) : 0.0f;
+    const ImVec2 half(std::floor(size.x * 0.5f) - 1.0f, size.y - timelineHeight);
     const int selected = std::max(session.selectedViseme, 0);
     const Grouping* grouping = session.currentGrouping();
-    std::vector<float> before = playback_.playing ? playbackWeights(false) : visemeWeights(selected);
+    const SpeechPlayback* playback = speech ? session.speechPlayback() : nullptr;
+    std::vector<float> before = speech ? speechWeights(false) : visemeWeights(selected);
+    if (before.size() != session.visemeCount()) before = visemeWeights(-1); // no track: the neutral
     std::vector<float> after;
     std::string afterLabel = "Reduced set: waiting for the reduction";
+    std::string beforeLabel =
+        session.visemes() && !speech
+            ? "Original " + session.visemes()->visemes[static_cast<std::size_t>(selected)].name
+            : "";
+    if (speech) {
+        beforeLabel = "Full set (" + std::to_string(session.visemeCount()) +
+                      " visemes)"; // the Say section names the clip
+        if (playback && !playback->problem.empty()) beforeLabel = "Cannot play: " + playback->problem;
+    }
     if (grouping && session.visemes()) {
-        if (playback_.playing) {
-            after = playbackWeights(true);
-            afterLabel = "Playback (reduced set, m = " + std::to_string(grouping->groups.size()) + ")";
+        if (speech) {
+            after = speechWeights(true);
+            if (after.size() != grouping->groups.size()) after.assign(grouping->groups.size(), 0.0f);
+            afterLabel = "Reduced set (m = " + std::to_string(grouping->groups.size()) + ")";
+            if (playback && playback->error) {
+                const auto& frames = playback->error->frames;
+                const auto frame = static_cast<std::size_t>(std::lround(say_.time * playback->error->fps));
+                char text[96];
+                std::snprintf(text, sizeof text, ", error now %.3g (mean %.3g)",
+                              frames.empty() ? 0.0 : frames[std::min(frame, frames.size() - 1)],
+                              playback->error->mean);
+                afterLabel += text;
+            }
         } else {
             const std::vector<int> groupOf = [&] {
                 std::vector<int> g(session.visemeCount(), 0);
@@ -635,16 +667,13 @@ void EditorUi::comparisonViews(ImVec2 size) {
     plain.wireframe = wireframe_;
     plain.color = surfaceColours();
     DrawStyle errors = plain;
-    if (!playback_.playing) errors.color = ColorMode::Scalar;
+    if (!speech) errors.color = ColorMode::Scalar;
     const ViewportEvents left =
         beforeView_.show("before", half, [&](const glm::mat4& view, const glm::mat4& projection) {
             visemeMesh_.draw(shader_, before, view, projection, plain);
         });
     if (session.visemes())
-        viewLabel(left.imageMin,
-                  playback_.playing
-                      ? "Playback (full set)"
-                      : "Original " + session.visemes()->visemes[static_cast<std::size_t>(selected)].name);
+        viewLabel(left.imageMin, beforeLabel);
     else
         emptyViewHint(left.imageMin, left.imageMax, "No viseme set loaded");
     ImGui::SameLine(0.0f, 2.0f);
@@ -653,7 +682,7 @@ void EditorUi::comparisonViews(ImVec2 size) {
             if (grouping) mergedMesh_.draw(shader_, after, view, projection, errors);
         });
     if (session.visemes()) viewLabel(right.imageMin, afterLabel);
-    if (grouping && !playback_.playing)
+    if (grouping && !speech)
         colourLegend(right.imageMin, right.imageMax, "0 mm",
                      [&] {
                          char text[64];
@@ -667,6 +696,10 @@ void EditorUi::comparisonViews(ImVec2 size) {
         beforeView_.camera = afterView_.camera;
     else
         afterView_.camera = beforeView_.camera;
+    if (speech) {
+        ImGui::SetCursorScreenPos(ImVec2(left.imageMin.x, left.imageMax.y + 2.0f));
+        sayTimeline(ImVec2(size.x, timelineHeight - 2.0f));
+    }
 }
 
 } // namespace vl::ui

@@ -2,6 +2,7 @@
 // The editor window's contents: menu bar, fixed side panel with one tab per task, the 3D views and
 // the status bar. Everything the user does goes through EditorSession; this class only draws and
 // keeps GPU copies of the session's meshes up to date.
+#include "ui/audio/AudioPlayer.h"
 #include "ui/render/GlShader.h"
 #include "ui/render/GpuMesh.h"
 #include "ui/render/Viewport.h"
@@ -36,13 +37,6 @@ struct BrushSettings {
     bool enabled = false;
 };
 
-struct Playback {
-    bool playing = false;
-    double time = 0.0;           // seconds since start
-    double secondsPerKey = 0.18; // one viseme per key
-    std::string sequence;        // phonemes or viseme names, space separated; empty = all visemes
-};
-
 class EditorUi {
   public:
     EditorUi(EditorSession& session, GLFWwindow* window);
@@ -60,6 +54,9 @@ class EditorUi {
     bool selectField(const std::string& stageName);
     // Starts the phoneme-sequence playback at `time` seconds.
     void startPlayback(double time, std::string sequence = {});
+    // Says the document's speech text (Say button) and, once spoken, shows it at `time` seconds,
+    // paused when `pause` (screenshots of a moment mid-sentence).
+    void startSay(double time = 0.0, bool pause = false);
     Panel activePanel() const { return activePanel_; }
     // Frames every 3D view on its model (key F).
     void frameAll();
@@ -67,7 +64,7 @@ class EditorUi {
     bool quitConfirmed() const { return quitConfirmed_; }
     void requestQuit();
     // What a GUI test checks after a click (see GuiProbe.h): panel, undo history, messages, tasks.
-    nlohmann::json probeSummary() const;
+    nlohmann::json probeSummary();
 
     EditorSession& session;
 
@@ -95,8 +92,6 @@ class EditorUi {
     void comparisonViews(ImVec2 size);
     std::vector<float> visemeWeights(int viseme) const;
     ColorMode surfaceColours() const; // face colours for visemes generated from the face model
-    std::vector<float> playbackWeights(bool reduced) const;
-    std::vector<int> playbackKeys() const;
     void paint(const ViewportEvents& events);
     void updateScalars();
 
@@ -132,7 +127,6 @@ class EditorUi {
     std::vector<double> strokeStart_;
     std::vector<double> strokeWeights_;
     std::optional<Vec3> lastDab_;
-    Playback playback_;
     FileDialog fileDialog_;
     std::function<void()> pendingGuarded_;
     bool openUnsavedPopup_ = false;
@@ -152,6 +146,31 @@ class EditorUi {
     double errorLegendMax_ = 0.0; // largest weighted distance of the error colours, model units
     // Millimetres per model unit: the chosen unit, or the guess from the neutral mesh's size.
     double millimetresPerModelUnit() const;
+    // --- Say (issue 11): speech played on the full and the reduced faces. The text, voice and rate
+    // are document state (session.setSpeech); what is below is view state.
+    struct SayView {
+        double time = 0.0;             // seconds into the clip
+        bool playing = false;          // the clock runs (audio or frame time)
+        bool shown = false;            // the views show the clip, not the compared viseme
+        std::uint64_t clip = 0;        // id of the clip this state belongs to
+        std::optional<double> startAt; // a new clip starts here (start options)
+        bool startPaused = false;
+        std::string draft;           // the text box; committed on Say or when the box is left
+        std::string syncedText;      // the document's text the draft was last synced with
+        float secondsPerKey = 0.18f; // typed sequences
+        std::string sequence;        // typed sequence: phonemes or viseme names
+        std::shared_ptr<const std::vector<std::int16_t>> audio; // the clip's samples for the player
+    } say_;
+    AudioPlayer audio_;
+    void saySection();             // the Reduction panel's Say controls (panels/SaySection.cpp)
+    void sayTimeline(ImVec2 size); // phonemes, both cue rows, the error plot; scrubbing
+    void advanceSpeech();          // once per frame: adopt a new clip, run the clock
+    void playSpeech(double from);
+    void pauseSpeech();
+    bool speechShown() const { return say_.shown && session.speechClip() != nullptr; }
+    // Key weights of the full (visemes) or reduced (groups) face at the playhead; empty when none.
+    std::vector<float> speechWeights(bool reduced);
+    nlohmann::json sayProbe();
     std::string importName_;
     std::string importError_; // the core's message for the last failed import, shown in the panel
 };

@@ -32,6 +32,9 @@ int main(int argc, char** argv) {
     app.add_option("--field", options.field, "Deformation field (stage name) to select");
     app.add_option("--play", options.play, "Start the playback at this time in seconds");
     app.add_option("--sequence", options.sequence, "Playback sequence: phonemes or viseme names");
+    app.add_option("--say", options.say, "Say this text (Reduction panel) once the project is loaded");
+    app.add_option("--say-at", options.sayAt, "Show the speech paused at this time in seconds (screenshots)")
+        ->check(CLI::NonNegativeNumber);
     app.add_option("--refine", options.refine,
                    "Refine the face with this criterion: depth, normals, contour");
     app.add_option("--probe", options.probe,

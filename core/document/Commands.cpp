@@ -266,4 +266,11 @@ Document setConstraints(const Document& document, ConstraintNames constraints) {
     return checked(std::move(next));
 }
 
+Document setSpeech(const Document& document, SpeechSettings speech) {
+    checkSpeechSettings(speech, "speech");
+    Document next = document;
+    next.speech = std::move(speech);
+    return next;
+}
+
 } // namespace vl::edit

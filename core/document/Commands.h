@@ -49,4 +49,9 @@ Document setTarget(const Document& document, int m);
 // Pins, apart and together pairs by viseme name (checked: known names, no contradictions).
 Document setConstraints(const Document& document, ConstraintNames constraints);
 
+// --- speech ------------------------------------------------------------------------------------
+// What the Say panel speaks (checkSpeechSettings; whether espeak-ng knows the voice is checked when
+// it speaks).
+Document setSpeech(const Document& document, SpeechSettings speech);
+
 } // namespace vl::edit

@@ -79,6 +79,7 @@ LoadedProject documentFromProject(const Project& project) {
     document.refinement = project.refinement;
     document.target = project.reduction.target;
     document.constraints = project.reduction.constraints;
+    document.speech = project.speech;
     if (project.deformation.isSet()) {
         FaceModel& model = document.face;
         model.cascade = std::make_shared<const DeformationCascade>(project.deformation.cascade);
@@ -117,6 +118,7 @@ Project projectFromDocument(const Document& document, const std::optional<Reduct
     project.refinement = document.refinement;
     project.reduction.target = document.target;
     project.reduction.constraints = document.constraints;
+    project.speech = document.speech;
     project.reduction.result = reduction;
     if (const FaceModel& face = document.face; face.cascade) {
         project.deformation.cascade = *face.cascade;

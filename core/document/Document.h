@@ -66,6 +66,7 @@ struct Document {
     CriterionSettings refinement;
     int target = 1;              // m, the number of merged visemes the reduction keeps
     ConstraintNames constraints; // pins, apart and together pairs, by viseme name
+    SpeechSettings speech;       // what the Say panel speaks (text, voice, rate)
 
     std::size_t visemeCount() const { return visemes ? visemes->size() : 0; }
     bool operator==(const Document&) const = default;

@@ -9,6 +9,7 @@
 #include "core/reduce/Frequencies.h"
 #include "core/reduce/Reduction.h"
 #include "core/reduce/Weights.h"
+#include "core/speech/SpeechSettings.h"
 
 #include <filesystem>
 #include <optional>
@@ -81,6 +82,7 @@ struct Project {
     ProjectDeformation deformation;
     CriterionSettings refinement; // adaptive mesh: criterion and the thresholds of every criterion
     ProjectReduction reduction;
+    SpeechSettings speech; // what the editor's Say speaks; the file's "speech" section (optional)
     ProjectEditorState editor;
 
     int findViseme(std::string_view name) const; // index or -1

@@ -176,13 +176,14 @@ Json projectToJson(const Project& project) {
     root["deformation"] = deformationToJson(project.deformation);
     root["refinement"] = refinementToJson(project.refinement);
     root["reduction"] = reductionToJson(project.reduction, names);
+    if (!project.speech.isDefault()) root["speech"] = speechToJson(project.speech);
     root["editor"] = Json{{"selectedViseme", project.editor.selectedViseme}};
     return root;
 }
 
 Project projectFromJson(const JsonNode& root, const ProjectReadContext& context) {
     root.allowOnly({"format", "version", "neutral", "visemes", "frequencies", "weights", "deformation",
-                    "refinement", "reduction", "editor"});
+                    "refinement", "reduction", "speech", "editor"});
     Project project;
     project.neutral = neutralFromJson(root["neutral"], context);
 
@@ -203,6 +204,7 @@ Project projectFromJson(const JsonNode& root, const ProjectReadContext& context)
     if (root.has("deformation")) project.deformation = deformationFromJson(root["deformation"]);
     if (root.has("refinement")) project.refinement = refinementFromJson(root["refinement"]);
     if (root.has("reduction")) project.reduction = reductionFromJson(root["reduction"], names);
+    if (root.has("speech")) project.speech = speechFromJson(root["speech"]);
     if (root.has("editor")) {
         const JsonNode editor = root["editor"];
         editor.allowOnly({"selectedViseme"});

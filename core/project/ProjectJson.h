@@ -37,6 +37,10 @@ ConstraintNames constraintsFromJson(const JsonNode& node, const std::vector<std:
 Json reductionToJson(const ProjectReduction& reduction, const std::vector<std::string>& visemeNames);
 ProjectReduction reductionFromJson(const JsonNode& node, const std::vector<std::string>& visemeNames);
 
+// The optional "speech" section (written only when it differs from the defaults).
+Json speechToJson(const SpeechSettings& speech);
+SpeechSettings speechFromJson(const JsonNode& node);
+
 // Version handling: the version of a document, and the upgrade of an older one to the current layout.
 int projectVersionOf(const JsonNode& root); // checks "format" too; refuses newer versions
 Json migrateProjectJson(const JsonNode& root, int fromVersion);

@@ -1,10 +1,12 @@
 // GUI smoke test: the editor renders under Xvfb (xvfb-run) and saves a screenshot that shows the
 // interface and a face, for several panels. Skips with a message when xvfb-run is not installed.
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 #include <stb_image.h>
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 #include <string>
 
@@ -102,6 +104,61 @@ TEST(EditorScreenshot, ReductionPanelShowsBeforeAndAfter) {
             if (std::abs(p[0] - 41) + std::abs(p[1] - 43) + std::abs(p[2] - 51) > 40) ++nonBackground;
         }
     EXPECT_GT(nonBackground, 20000);
+}
+
+// Issue 11: Say under Xvfb, pictures taken mid-sentence (the speech paused at a time): both faces
+// and the timeline under them, and the probe says which phoneme the picture shows.
+TEST(EditorScreenshot, SayMidSentenceShowsBothFacesAndTheTimeline) {
+    if (!haveXvfbRun())
+        GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth): GUI smoke test skipped";
+    const auto probe = std::filesystem::temp_directory_path() / "visemelab-editor-say-probe.json";
+    const auto sayAt = [&](const char* time, const char* name) {
+        std::filesystem::remove(probe);
+        Image image = screenshot(std::string("--sample --panel Reduction --say 'Hello world. Four poor fire "
+                                             "fighters.' --say-at ") +
+                                     time + " --probe '" + probe.string() + "'",
+                                 name, 6);
+        std::ifstream in(probe);
+        const nlohmann::json report = nlohmann::json::parse(in);
+        return std::pair{std::move(image), report["document"]["say"]};
+    };
+    const auto [open, openSay] = sayAt("0.45", "say-open");
+    const auto [closed, closedSay] = sayAt("1.38", "say-closed");
+    for (const auto* say : {&openSay, &closedSay}) {
+        EXPECT_TRUE((*say)["shown"].get<bool>()) << say->dump();
+        EXPECT_FALSE((*say)["playing"].get<bool>());
+        EXPECT_NE((*say)["phoneme"], "sil") << "not mid-sentence: " << say->dump();
+        EXPECT_EQ((*say)["problem"], "");
+        EXPECT_GT((*say)["error_max"].get<double>(), 0.0);
+    }
+    EXPECT_DOUBLE_EQ(openSay["time"].get<double>(), 0.45);
+    EXPECT_DOUBLE_EQ(closedSay["time"].get<double>(), 1.38);
+    const int side = 576, half = (1600 - side) / 2, timelineTop = 1000 - 30 - 230;
+    for (const Image* image : {&open, &closed}) {
+        ASSERT_EQ(image->width, 1600);
+        // Full set on the left, reduced set on the right, both faces in the views above the timeline.
+        EXPECT_GT(skinFraction(*image, side + half / 4, 250, side + 3 * half / 4, 600), 0.3);
+        EXPECT_GT(skinFraction(*image, side + half + half / 4, 250, side + half + 3 * half / 4, 600), 0.3);
+        // The timeline: coloured phoneme and cue segments and the error plot.
+        int timelineColours = 0;
+        std::vector<bool> seen(1 << 15, false);
+        for (int y = timelineTop; y < 1000 - 40; ++y)
+            for (int x = side + 100; x < 1590; ++x) {
+                const unsigned char* p = image->at(x, y);
+                const int key = (p[0] >> 3) << 10 | (p[1] >> 3) << 5 | (p[2] >> 3);
+                if (!seen[static_cast<std::size_t>(key)])
+                    seen[static_cast<std::size_t>(key)] = true, ++timelineColours;
+            }
+        EXPECT_GT(timelineColours, 30);
+    }
+    // Two moments of the sentence: the mouth moved.
+    int changed = 0;
+    for (int y = 250; y < timelineTop; ++y)
+        for (int x = side; x < 1600; ++x) {
+            const unsigned char *a = open.at(x, y), *b = closed.at(x, y);
+            changed += std::abs(a[0] - b[0]) + std::abs(a[1] - b[1]) + std::abs(a[2] - b[2]) > 30;
+        }
+    EXPECT_GT(changed, 500);
 }
 
 TEST(EditorScreenshot, DeformationPanelShowsTheFace) {

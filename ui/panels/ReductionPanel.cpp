@@ -1,5 +1,5 @@
-// Reduction panel: target m, the optimal cost for every p with m marked, the groups, and playback
-// of a phoneme sequence with the full and the reduced set (the views show both side by side).
+// Reduction panel: target m, the optimal cost for every p with m marked, the groups, the compared
+// viseme, and Say (panels/SaySection.cpp): speech on the full and the reduced set side by side.
 #include "core/inspect/DistanceUnits.h"
 #include "ui/EditorUi.h"
 #include "ui/panels/PanelWidgets.h"
@@ -40,6 +40,7 @@ void EditorUi::reductionPanel() {
     if (!curve) {
         ImGui::TextDisabled(n > kMaxReductionVisemes ? "The reduction handles at most 64 visemes."
                                                      : "No result for the current inputs yet.");
+        saySection();
         return;
     }
 
@@ -93,7 +94,10 @@ void EditorUi::reductionPanel() {
                         ? 100.0 * std::sqrt(grouping->cost / curve->curve.front().cost)
                         : 0.0);
 
-    if (!grouping) return;
+    if (!grouping) {
+        saySection();
+        return;
+    }
     sectionHeader("Groups");
     std::vector<double> frequencies;
     session.attempt("Frequencies", [&] { frequencies = session.visemeFrequencies(); });
@@ -137,24 +141,16 @@ void EditorUi::reductionPanel() {
     const int selected = std::max(session.selectedViseme, 0);
     if (ctl::BeginCombo("viseme", set->visemes[static_cast<std::size_t>(selected)].name.c_str())) {
         for (int i = 0; i < n; ++i)
-            if (ctl::Selectable(set->visemes[static_cast<std::size_t>(i)].name.c_str(), i == selected))
+            if (ctl::Selectable(set->visemes[static_cast<std::size_t>(i)].name.c_str(), i == selected)) {
                 session.selectedViseme = i;
+                say_.shown = false; // the views compare this viseme again
+                pauseSpeech();
+            }
         ImGui::EndCombo();
     }
     ImGui::TextDisabled("Right view: colour = weighted distance to the merged shape");
 
-    sectionHeader("Playback");
-    ImGui::SetNextItemWidth(-1);
-    ctl::InputTextWithHint("##sequence", "phonemes or visemes, e.g. PP aa E RR (empty: all visemes)",
-                           &playback_.sequence);
-    float speed = static_cast<float>(playback_.secondsPerKey);
-    ImGui::SetNextItemWidth(160);
-    if (ctl::SliderFloat("s per key", &speed, 0.05f, 1.0f, "%.2f")) playback_.secondsPerKey = speed;
-    ImGui::SameLine();
-    if (ctl::Button(playback_.playing ? "Stop" : "Play", ImVec2(70, 0))) {
-        playback_.playing = !playback_.playing;
-        playback_.time = 0.0;
-    }
+    saySection();
 }
 
 } // namespace vl::ui

@@ -128,7 +128,17 @@ void EditorUi::visemesPanel() {
         session.attempt("Remove viseme", [&] { session.removeViseme(session.selectedViseme); });
     if (!canRemove) ImGui::EndDisabled();
     ImGui::SameLine();
-    ctl::Checkbox("Play all", &playback_.playing);
+    const auto& clip = session.speechClip();
+    bool playAll = speechShown() && say_.playing && clip->loops && clip->sequence.empty();
+    if (ctl::Checkbox("Play all", &playAll)) {
+        if (playAll) {
+            say_.sequence.clear();
+            session.attempt("Playback", [&] { session.playSequence({}, say_.secondsPerKey); });
+        } else {
+            pauseSpeech();
+            say_.shown = false;
+        }
+    }
 }
 
 } // namespace vl::ui

@@ -519,6 +519,16 @@ void EditorSession::setTarget(int m) {
     commit("Target m = " + std::to_string(m), edit::setTarget(document(), m), "target");
 }
 
+void EditorSession::setSpeech(SpeechSettings speech) {
+    const SpeechSettings& current = document().speech;
+    if (speech == current) return;
+    const bool rateOnly = speech.text == current.text && speech.voice == current.voice;
+    const std::string name = rateOnly ? "Speaking rate " + std::to_string(speech.wordsPerMinute) + " wpm"
+                             : speech.voice != current.voice ? "Voice " + speech.voice
+                                                             : std::string("Say text");
+    commit(name, edit::setSpeech(document(), std::move(speech)), rateOnly ? "speech-rate" : "");
+}
+
 void EditorSession::setConstraints(ConstraintNames constraints) {
     if (constraints == document().constraints) return;
     commit("Constraints", edit::setConstraints(document(), std::move(constraints)));
@@ -567,6 +577,7 @@ void EditorSession::poll() {
         else
             error(exportTask_.label() + ": " + std::get<1>(*outcome));
     }
+    if (auto failed = speech_.poll()) error("Say: " + *failed);
     if (auto outcome = countTask_.take()) {
         if (outcome->index() == 0) {
             const PhonemeCountResult& counted = std::get<0>(*outcome);
@@ -608,6 +619,7 @@ void EditorSession::finishBackgroundWork() {
         saveTask_.wait();
         exportTask_.wait();
         countTask_.wait();
+        speech_.wait();
         refinement_.wait();
         reduction_.wait();
         poll();

@@ -14,6 +14,7 @@
 #include "ui/session/CommandHistory.h"
 #include "ui/session/ReductionService.h"
 #include "ui/session/RefinementService.h"
+#include "ui/session/SpeechService.h"
 
 #include <deque>
 #include <filesystem>
@@ -160,6 +161,23 @@ class EditorSession {
     const std::vector<std::vector<Vec3>>& mergedShapes() { return reduction_.mergedShapes(document()); }
     bool autoReduce = true; // re-run in the background after every input change
 
+    // --- speech (Say) ------------------------------------------------------------------------------
+    // Text, voice and rate (validated; saved in the project). A rate change while dragging merges
+    // into one undo step.
+    void setSpeech(SpeechSettings speech);
+    // Speaks the document's text on a worker thread; poll() makes the speech the current clip.
+    void say() { speech_.say(document().speech); }
+    bool speaking() const { return speech_.speaking(); }
+    // A typed sequence of phonemes or viseme names, `secondsPerKey` each, becomes the current clip.
+    void playSequence(const std::string& sequence, double secondsPerKey) {
+        speech_.playSequence(document(), sequence, secondsPerKey);
+    }
+    const std::shared_ptr<const SpeechClip>& speechClip() const { return speech_.clip(); }
+    // The current clip on the full set and the current reduction, with its utterance error.
+    const SpeechPlayback* speechPlayback() {
+        return speech_.playback(document(), reduction_.inputsRevision(), currentGrouping());
+    }
+
     // --- frame loop --------------------------------------------------------------------------
     // Starts a UI frame: documents replaced during the previous frame may be released now. Every
     // reference into document() taken during a frame stays valid until the next beginFrame(), even
@@ -239,6 +257,7 @@ class EditorSession {
     std::uint64_t geometryGeneration_ = 1;
     ReductionService reduction_;
     RefinementService refinement_;
+    SpeechService speech_;
     BackgroundTask<PhonemeCountResult> countTask_;
     std::filesystem::path countCorpus_;
     BackgroundTask<Loaded> loadTask_;

@@ -30,6 +30,7 @@ VL_PROBED_CONTROL(DragFloat2, "drag")
 VL_PROBED_CONTROL(DragInt, "drag")
 VL_PROBED_CONTROL(InputText, "text")
 VL_PROBED_CONTROL(InputTextWithHint, "text")
+VL_PROBED_CONTROL(InputTextMultiline, "text")
 VL_PROBED_CONTROL(InputInt, "text")
 VL_PROBED_CONTROL(InputDouble, "text")
 VL_PROBED_CONTROL(Selectable, "selectable")
@@ -38,6 +39,7 @@ VL_PROBED_CONTROL(BeginTabItem, "tab")
 VL_PROBED_CONTROL(Combo, "combo")
 VL_PROBED_CONTROL(BeginCombo, "combo")
 VL_PROBED_CONTROL(BeginMenu, "menu")
+VL_PROBED_CONTROL(TreeNode, "tree")
 
 #undef VL_PROBED_CONTROL
 

@@ -1,0 +1,154 @@
+#include "ui/session/SpeechService.h"
+
+#include "core/common/Error.h"
+#include "core/export/ReducedModel.h"
+#include "core/phonetics/EspeakSynthesizer.h"
+
+#include <algorithm>
+#include <sstream>
+
+namespace vl::ui {
+
+namespace {
+
+std::string quoted(const std::string& text) {
+    constexpr std::size_t kShown = 40;
+    std::string shown = text.substr(0, kShown);
+    std::replace(shown.begin(), shown.end(), '\n', ' ');
+    return "\"" + shown + (text.size() > kShown ? "...\"" : "\"");
+}
+
+// groupOf[viseme] = index of its group.
+std::vector<int> groupOf(const Grouping& grouping, std::size_t visemes) {
+    std::vector<int> group(visemes, 0);
+    for (std::size_t g = 0; g < grouping.groups.size(); ++g)
+        for (const int member : grouping.groups[g])
+            group[static_cast<std::size_t>(member)] = static_cast<int>(g);
+    return group;
+}
+
+// A typed sequence's key in `model` for each viseme name (the key whose members include it).
+std::vector<int> keysOfVisemes(const std::vector<std::string>& visemes, const ReducedModel& model) {
+    std::vector<int> keys;
+    for (const std::string& name : visemes) {
+        int key = kNeutralKey;
+        for (std::size_t k = 0; k < model.keys.size() && key == kNeutralKey; ++k)
+            if (std::find(model.keys[k].members.begin(), model.keys[k].members.end(), name) !=
+                model.keys[k].members.end())
+                key = static_cast<int>(k);
+        keys.push_back(key);
+    }
+    return keys;
+}
+
+FaceTrack trackOf(ReducedModel model, const SpeechClip& clip, const char* where) {
+    const PlaybackSettings settings; // the CLI's default blending (cubic)
+    if (clip.visemes.empty()) return FaceTrack(std::move(model), clip.phonemes, settings, where);
+    std::vector<int> keys = keysOfVisemes(clip.visemes, model);
+    return FaceTrack(std::move(model), clip.phonemes, std::move(keys), settings, where);
+}
+
+} // namespace
+
+void SpeechService::say(const SpeechSettings& settings) {
+    checkSpeechSettings(settings, "speech");
+    if (settings.text.find_first_not_of(" \t\r\n") == std::string::npos)
+        throwInputError("text", "type the text to say first");
+    const std::uint64_t id = nextId_++;
+    task_.start("Speaking", [settings, id](const auto&) {
+        auto synthesizer = makeEspeakSynthesizer({settings.voice, settings.wordsPerMinute});
+        Utterance utterance = synthesizer->synthesize(settings.text);
+        if (std::none_of(utterance.phonemes.begin(), utterance.phonemes.end(),
+                         [](const TimedPhoneme& p) { return p.phoneme != kSilencePhoneme; }))
+            throwInputError("text", "nothing to say: the text has no words espeak-ng speaks");
+        SpeechClip clip;
+        clip.phonemes = std::move(utterance.phonemes);
+        clip.samples = std::move(utterance.samples);
+        clip.sampleRate = utterance.sampleRate;
+        clip.label = "Say " + quoted(settings.text) + " (" + settings.voice + ", " +
+                     std::to_string(settings.wordsPerMinute) + " wpm)";
+        clip.id = id;
+        return clip;
+    });
+}
+
+std::optional<std::string> SpeechService::poll() {
+    auto outcome = task_.take();
+    if (!outcome) return std::nullopt;
+    if (outcome->index() == 1) return std::get<1>(*outcome);
+    clip_ = std::make_shared<const SpeechClip>(std::move(std::get<0>(*outcome)));
+    return std::nullopt;
+}
+
+void SpeechService::playSequence(const Document& document, const std::string& sequence,
+                                 double secondsPerKey) {
+    const VisemeSet* set = document.visemes.get();
+    if (!set) throwInputError("Playback", "load a viseme set first");
+    if (!(secondsPerKey > 0)) throwInputError("Playback", "the time per key must be > 0");
+    std::vector<std::string> typed, visemes; // as typed (the timeline's phoneme row), and their visemes
+    std::istringstream tokens(sequence);
+    std::string token;
+    while (tokens >> token) {
+        typed.push_back(token);
+        const std::string* viaMap = document.frequencies.map.visemeOf(token);
+        const std::string name = viaMap ? *viaMap : token;
+        if (set->find(name) < 0)
+            throwInputError("Playback", "'" + token + "' is neither a viseme nor a phoneme of the map");
+        visemes.push_back(name);
+    }
+    if (visemes.empty())
+        for (const auto& viseme : set->visemes) visemes.push_back(viseme.name);
+    if (typed.empty()) typed = visemes;
+    SpeechClip clip;
+    for (std::size_t i = 0; i < visemes.size(); ++i)
+        clip.phonemes.push_back({typed[i], double(i) * secondsPerKey, double(i + 1) * secondsPerKey});
+    clip.visemes = std::move(visemes);
+    clip.sequence = sequence;
+    clip.loops = true;
+    clip.label = sequence.empty() ? "every viseme" : "sequence " + quoted(sequence);
+    clip.id = nextId_++;
+    task_.cancel(); // a typed sequence replaces speech still being synthesised
+    clip_ = std::make_shared<const SpeechClip>(std::move(clip));
+}
+
+const SpeechPlayback* SpeechService::playback(const Document& document, std::uint64_t inputsRevision,
+                                              const Grouping* grouping) {
+    if (!clip_) return nullptr;
+    if (builtClip_ == clip_->id && builtRevision_ == inputsRevision && builtGrouping_ == grouping &&
+        builtTarget_ == document.target)
+        return &playback_;
+    builtClip_ = clip_->id;
+    builtRevision_ = inputsRevision;
+    builtGrouping_ = grouping;
+    builtTarget_ = document.target;
+    playback_ = SpeechPlayback();
+    playback_.clip = clip_;
+    const VisemeSet* set = document.visemes.get();
+    if (!set) {
+        playback_.problem = "no viseme set";
+        return &playback_;
+    }
+    try {
+        if (clip_->visemes.empty() && !document.frequencies.isPhonemeBased())
+            throwInputError("Say", "speech needs a phoneme -> viseme map; the frequencies are per viseme "
+                                   "(Frequencies panel: use a phoneme table and a map)");
+        const std::vector<double> frequencies = documentFrequencies(document);
+        playback_.full.emplace(
+            trackOf(unreducedModel(*set, frequencies, document.frequencies), *clip_, "full viseme set"));
+        if (grouping && grouping->feasible()) {
+            playback_.reduced.emplace(trackOf(
+                buildReducedModel(*set, frequencies, groupOf(*grouping, set->size()), document.frequencies),
+                *clip_, "reduced set"));
+            playback_.groups = static_cast<int>(grouping->groups.size());
+            playback_.error = measureUtteranceError(*playback_.full, *playback_.reduced,
+                                                    documentWeights(document), kSpeechErrorFps);
+        }
+    } catch (const InputError& e) {
+        playback_ = SpeechPlayback();
+        playback_.clip = clip_;
+        playback_.problem = e.what();
+    }
+    return &playback_;
+}
+
+} // namespace vl::ui
