@@ -6,7 +6,6 @@
 #include "core/io/MeshIO.h"
 #include "core/project/ProjectRun.h"
 
-
 namespace vl {
 namespace {
 
