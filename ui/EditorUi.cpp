@@ -650,14 +650,7 @@ void EditorUi::comparisonViews(ImVec2 size) {
                 afterLabel += text;
             }
         } else {
-            const std::vector<int> groupOf = [&] {
-                std::vector<int> g(session.visemeCount(), 0);
-                for (std::size_t k = 0; k < grouping->groups.size(); ++k)
-                    for (int member : grouping->groups[k])
-                        g[static_cast<std::size_t>(member)] = static_cast<int>(k);
-                return g;
-            }();
-            const int group = groupOf[static_cast<std::size_t>(selected)];
+            const int group = grouping->groupOf()[static_cast<std::size_t>(selected)];
             after.assign(grouping->groups.size(), 0.0f);
             after[static_cast<std::size_t>(group)] = 1.0f;
             afterLabel = "Merged group " + std::to_string(group + 1) + " (error colours)";

@@ -158,14 +158,17 @@ double Grouping::gap() const {
     return std::clamp((cost - lowerBound) / cost, 0.0, 1.0);
 }
 
-std::vector<int> ReductionResult::groupOf() const {
+std::vector<int> Grouping::groupOf() const {
     std::size_t n = 0;
-    for (const auto& g : best().groups) n += g.size();
+    for (const auto& g : groups) n += g.size();
     std::vector<int> result(n, -1);
-    for (std::size_t g = 0; g < best().groups.size(); ++g)
-        for (const int member : best().groups[g])
-            result[static_cast<std::size_t>(member)] = static_cast<int>(g);
+    for (std::size_t g = 0; g < groups.size(); ++g)
+        for (const int member : groups[g]) result[static_cast<std::size_t>(member)] = static_cast<int>(g);
     return result;
+}
+
+std::vector<int> ReductionResult::groupOf() const {
+    return best().groupOf();
 }
 
 ReductionResult reduceVisemes(const ReductionProblem& problem, const ProgressCallback& progress) {

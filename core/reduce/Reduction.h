@@ -60,6 +60,8 @@ struct Grouping {
     std::vector<std::vector<int>> groups; // member indices, each ascending; groups ordered by first member
 
     bool feasible() const { return !groups.empty(); }
+    // groupOf[i]: the group viseme i is in (the groups partition the n visemes).
+    std::vector<int> groupOf() const;
     // (cost - lowerBound) / cost: 0 when optimal, 1 when nothing is known.
     double gap() const;
     bool operator==(const Grouping&) const = default;

@@ -19,14 +19,6 @@ void requirePhonemeMap(const Project& project, const PhonemeVisemeMap* map) {
                         "phoneme table and a map)");
 }
 
-std::vector<int> groupOfGrouping(const Grouping& grouping, std::size_t visemes) {
-    std::vector<int> groupOf(visemes, 0);
-    for (std::size_t g = 0; g < grouping.groups.size(); ++g)
-        for (const int member : grouping.groups[g])
-            groupOf[static_cast<std::size_t>(member)] = static_cast<int>(g);
-    return groupOf;
-}
-
 } // namespace
 
 void setPhonemeMap(ReducedModel& model, const PhonemeVisemeMap& map, std::string_view where) {
@@ -80,8 +72,8 @@ std::vector<ErrorCurvePoint> projectErrorCurve(const Project& project, std::span
     std::vector<ErrorCurvePoint> curve;
     for (std::size_t p = 0; p < outcome.result.curve.size(); ++p) {
         const Grouping& grouping = outcome.result.curve[p];
-        ReducedModel model = buildReducedModel(set, outcome.frequencies,
-                                               groupOfGrouping(grouping, set.size()), project.frequencies);
+        ReducedModel model =
+            buildReducedModel(set, outcome.frequencies, grouping.groupOf(), project.frequencies);
         const FaceTrack reduced(std::move(model), phonemes, settings, where);
         curve.push_back({static_cast<int>(p + 1), grouping.cost,
                          measureUtteranceError(full, reduced, outcome.weights, fps)});

@@ -1,6 +1,7 @@
 // Every edit of the document is a validated function: it returns the edited document or throws
 // InputError naming what is wrong; the document it was given never changes.
 #include "core/document/Commands.h"
+#include "TestDocuments.h"
 #include "core/common/Error.h"
 
 #include <gtest/gtest.h>
@@ -11,11 +12,7 @@
 namespace vl {
 namespace {
 
-Document faceDocument() {
-    Document document;
-    document.face = makeFaceModel(face::Individual::Bundled, 12);
-    return edit::generateVisemesFromFace(document);
-}
+using test::faceDocument;
 
 FrequencySource phonemeSource(const Document& document) {
     FrequencySource source;

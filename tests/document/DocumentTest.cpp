@@ -1,6 +1,7 @@
 // The document and its file form: a project loads into a document and a document saves back to
 // the same project; comparisons are exact and defaulted (a new field cannot be forgotten).
 #include "core/document/Document.h"
+#include "TestDocuments.h"
 #include "core/document/Commands.h"
 #include "core/io/MeshIO.h"
 
@@ -11,19 +12,8 @@
 namespace vl {
 namespace {
 
-std::filesystem::path tempDir(const char* name) {
-    const auto dir = std::filesystem::temp_directory_path() / ("visemelab-document-" + std::string(name));
-    std::filesystem::remove_all(dir);
-    std::filesystem::create_directories(dir);
-    return dir;
-}
-
-// A face document with its generated visemes (embedded geometry).
-Document faceDocument() {
-    Document document;
-    document.face = makeFaceModel(face::Individual::Bundled, 12);
-    return edit::generateVisemesFromFace(document);
-}
+using test::faceDocument;
+using test::tempDir;
 
 TEST(Document, EmbeddedDocumentSurvivesTheProjectFileExactly) {
     Document document = faceDocument();

@@ -1,5 +1,6 @@
 // The Say panel's saved state: text, voice and rate in the document, the project's optional
 // "speech" section, and the command that edits them.
+#include "TestDocuments.h"
 #include "core/common/Error.h"
 #include "core/document/Commands.h"
 #include "core/document/Document.h"
@@ -12,11 +13,8 @@
 namespace vl {
 namespace {
 
-Document faceDocument() {
-    Document document;
-    document.face = makeFaceModel(face::Individual::Bundled, 12);
-    return edit::generateVisemesFromFace(document);
-}
+using test::faceDocument;
+using test::tempDir;
 
 std::string errorOf(const std::function<void()>& action) {
     try {
@@ -30,9 +28,7 @@ std::string errorOf(const std::function<void()>& action) {
 TEST(SpeechSettings, DocumentProjectFileRoundTrip) {
     const Document document = edit::setSpeech(
         faceDocument(), {"Four \"poor\" fire fighters.\nSecond line: é ü", "en-gb-scotland", 212});
-    const auto dir = std::filesystem::temp_directory_path() / "visemelab-document-speech";
-    std::filesystem::remove_all(dir);
-    std::filesystem::create_directories(dir);
+    const auto dir = tempDir("speech");
     const Project project = projectFromDocument(document);
     EXPECT_EQ(project.speech, document.speech);
     saveProject(dir / "p.vlproj", project);
@@ -67,9 +63,7 @@ TEST(SpeechSettings, CommandRefusesBadSettingsAndChangesNothing) {
 }
 
 TEST(SpeechSettings, BadSectionsNameTheFileAndPath) {
-    const auto dir = std::filesystem::temp_directory_path() / "visemelab-document-speech-bad";
-    std::filesystem::remove_all(dir);
-    std::filesystem::create_directories(dir);
+    const auto dir = tempDir("speech-bad");
     const std::string base =
         R"({"format": "visemelab-project", "version": 1, "neutral": null, "visemes": [], )";
     const auto messageFor = [&](const std::string& speech) {

@@ -72,3 +72,12 @@ class GuiDriver {
 };
 
 } // namespace vl::test
+
+// In a test: skip (saying what is missing) without Xvfb or xdotool; fail with the editor's log when
+// it died.
+#define REQUIRE_GUI_TOOLS()                                                                                  \
+    if (const std::string missing = missingGuiTools(); !missing.empty())                                     \
+    GTEST_SKIP() << "GUI click tests need" << missing
+
+#define EXPECT_ALIVE(gui)                                                                                    \
+    ASSERT_TRUE((gui).alive()) << "editor " << (gui).exitStatus() << ":\n" << (gui).log()

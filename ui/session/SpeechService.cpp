@@ -18,15 +18,6 @@ std::string quoted(const std::string& text) {
     return "\"" + shown + (text.size() > kShown ? "...\"" : "\"");
 }
 
-// groupOf[viseme] = index of its group.
-std::vector<int> groupOf(const Grouping& grouping, std::size_t visemes) {
-    std::vector<int> group(visemes, 0);
-    for (std::size_t g = 0; g < grouping.groups.size(); ++g)
-        for (const int member : grouping.groups[g])
-            group[static_cast<std::size_t>(member)] = static_cast<int>(g);
-    return group;
-}
-
 // A typed sequence's key in `model` for each viseme name (the key whose members include it).
 std::vector<int> keysOfVisemes(const std::vector<std::string>& visemes, const ReducedModel& model) {
     std::vector<int> keys;
@@ -136,9 +127,9 @@ const SpeechPlayback* SpeechService::playback(const Document& document, std::uin
         playback_.full.emplace(
             trackOf(unreducedModel(*set, frequencies, document.frequencies), *clip_, "full viseme set"));
         if (grouping && grouping->feasible()) {
-            playback_.reduced.emplace(trackOf(
-                buildReducedModel(*set, frequencies, groupOf(*grouping, set->size()), document.frequencies),
-                *clip_, "reduced set"));
+            playback_.reduced.emplace(
+                trackOf(buildReducedModel(*set, frequencies, grouping->groupOf(), document.frequencies),
+                        *clip_, "reduced set"));
             playback_.groups = static_cast<int>(grouping->groups.size());
             playback_.error = measureUtteranceError(*playback_.full, *playback_.reduced,
                                                     documentWeights(document), kSpeechErrorFps);
