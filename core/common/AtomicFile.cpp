@@ -1,11 +1,11 @@
 #include "core/common/AtomicFile.h"
 
 #include "core/common/Error.h"
+#include "core/common/FileWriting.h"
+#include "core/common/InputRegistry.h"
 #include "core/common/Limits.h"
 
-#include <cstdio>
 #include <fstream>
-#include <random>
 #include <system_error>
 #include <unistd.h>
 
@@ -37,31 +37,31 @@ std::string readFileToString(const std::filesystem::path& path) {
         in.read(data.data(), size);
     }
     if (!in) throwInputError(path.string(), "read error");
+    noteInputFile(path);
     return data;
 }
 
 void writeFileAtomically(const std::filesystem::path& path, std::string_view contents) {
-    const auto dir = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+    refuseOverwritingInput(path);
+    const std::filesystem::path target = fileio::writeTarget(path);
+    const auto folder = target.has_parent_path() ? target.parent_path() : std::filesystem::path(".");
     std::error_code ec;
-    std::filesystem::create_directories(dir, ec);
-    std::random_device rd;
-    const auto temp = dir / ("." + path.filename().string() + ".tmp" + std::to_string(rd() % 1000000));
-    {
-        std::FILE* f = std::fopen(temp.c_str(), "wb");
-        if (!f) throwInputError(path.string(), "cannot create temporary file for writing");
-        const bool ok = std::fwrite(contents.data(), 1, contents.size(), f) == contents.size() &&
-                        std::fflush(f) == 0 && ::fsync(fileno(f)) == 0;
-        std::fclose(f);
-        if (!ok) {
-            std::filesystem::remove(temp, ec);
-            throwInputError(path.string(), "write failed (disk full?); the previous file is unchanged");
-        }
+    std::filesystem::create_directories(folder, ec);
+    fileio::sweepStaleTemporaries(folder, target.filename().string());
+    const fileio::TemporaryFile temp = fileio::createTemporaryFor(target, path.string());
+    const bool ok = fileio::writeAll(temp.fd, contents) && ::fsync(temp.fd) == 0;
+    const std::string problem = ok ? std::string() : fileio::lastSystemError();
+    ::close(temp.fd);
+    if (!ok) {
+        std::filesystem::remove(temp.path, ec);
+        throwInputError(path.string(), "write failed (" + problem + "); the previous file is unchanged");
     }
-    std::filesystem::rename(temp, path, ec);
+    std::filesystem::rename(temp.path, target, ec);
     if (ec) {
-        std::filesystem::remove(temp, ec);
+        std::filesystem::remove(temp.path, ec);
         throwInputError(path.string(), "cannot replace file: " + ec.message());
     }
+    fileio::syncFolder(folder); // the rename itself survives a power cut
 }
 
 } // namespace vl

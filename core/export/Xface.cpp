@@ -219,11 +219,13 @@ std::vector<std::string> writeXfaceFace(const std::filesystem::path& outDir, con
                                         std::string_view faceName) {
     const std::string dictionary = formatXfaceDictionary(model);
     const std::string fdp = formatFdp(model);
-    std::vector<std::string> written = writeKeyMeshFiles(outDir, model, ".wrl");
+    OutputSet outputs(outDir, "export-vrml"); // the meshes, .fdp and .dic replace the last export as one set
+    std::vector<std::string> written = addKeyMeshFiles(outputs, model, ".wrl");
     written.push_back(std::string(faceName) + ".fdp");
-    writeFileAtomically(outDir / written.back(), fdp);
+    outputs.add(written.back(), fdp);
     written.push_back(std::string(faceName) + ".dic");
-    writeFileAtomically(outDir / written.back(), dictionary);
+    outputs.add(written.back(), dictionary);
+    outputs.commit();
     return written;
 }
 
