@@ -1,4 +1,4 @@
-// visemelab: the headless pipeline (reduce, refine, visemes, export, freq).
+// visemelab: the headless pipeline (reduce, refine, visemes, export, freq, project, avatar, say).
 #include "app/cli/Command.h"
 #include "core/common/Error.h"
 #include "core/common/InputRegistry.h"
@@ -18,6 +18,8 @@ int main(int argc, char** argv) {
     vl::cli::addRefineCommand(app, run);
     vl::cli::addExportCommand(app, run);
     vl::cli::addProjectCommand(app, run);
+    vl::cli::addAvatarCommand(app, run);
+    vl::cli::addSayCommand(app, run);
 
     try {
         app.parse(argc, argv);

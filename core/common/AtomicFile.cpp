@@ -1,13 +1,12 @@
 #include "core/common/AtomicFile.h"
 
+#include "core/common/AtomicFileWriter.h"
 #include "core/common/Error.h"
-#include "core/common/FileWriting.h"
 #include "core/common/InputRegistry.h"
 #include "core/common/Limits.h"
 
 #include <fstream>
 #include <system_error>
-#include <unistd.h>
 
 namespace vl {
 
@@ -42,26 +41,9 @@ std::string readFileToString(const std::filesystem::path& path) {
 }
 
 void writeFileAtomically(const std::filesystem::path& path, std::string_view contents) {
-    refuseOverwritingInput(path);
-    const std::filesystem::path target = fileio::writeTarget(path);
-    const auto folder = target.has_parent_path() ? target.parent_path() : std::filesystem::path(".");
-    std::error_code ec;
-    std::filesystem::create_directories(folder, ec);
-    fileio::sweepStaleTemporaries(folder, target.filename().string());
-    const fileio::TemporaryFile temp = fileio::createTemporaryFor(target, path.string());
-    const bool ok = fileio::writeAll(temp.fd, contents) && ::fsync(temp.fd) == 0;
-    const std::string problem = ok ? std::string() : fileio::lastSystemError();
-    ::close(temp.fd);
-    if (!ok) {
-        std::filesystem::remove(temp.path, ec);
-        throwInputError(path.string(), "write failed (" + problem + "); the previous file is unchanged");
-    }
-    std::filesystem::rename(temp.path, target, ec);
-    if (ec) {
-        std::filesystem::remove(temp.path, ec);
-        throwInputError(path.string(), "cannot replace file: " + ec.message());
-    }
-    fileio::syncFolder(folder); // the rename itself survives a power cut
+    AtomicFileWriter file(path);
+    file.write(contents);
+    file.commit();
 }
 
 } // namespace vl

@@ -1,8 +1,11 @@
 #include "core/export/Export.h"
 
+#include "core/common/AtomicFile.h"
 #include "core/common/Error.h"
+#include "core/common/OutputSet.h"
 #include "core/export/Gltf.h"
 #include "core/export/KeyMeshFiles.h"
+#include "core/export/MappingJson.h"
 #include "core/export/RuntimePackageWriter.h"
 #include "core/export/Xface.h"
 #include "core/project/ProjectRun.h"
@@ -38,23 +41,47 @@ std::vector<std::filesystem::path> exportModel(const ReducedModel& model, Export
         for (const std::string& name : names) paths.push_back(out / name);
         return paths;
     };
+    // mapping.json beside every format: <stem>.mapping.json beside a file, inside a folder export.
+    const auto withMapping = [&](const std::filesystem::path& file) {
+        const std::filesystem::path mapping = out.parent_path() / (out.stem().string() + ".mapping.json");
+        writeFileAtomically(mapping, formatMappingJson(model, {}));
+        return std::vector<std::filesystem::path>{file, mapping};
+    };
+    // A folder export replaces the previous export of its format as one set (core/common/OutputSet.h).
+    const auto folderExport = [&](const char* setName, const auto& stage) {
+        OutputSet files(out, setName);
+        std::vector<std::string> names = stage(files);
+        const std::string extension = format == ExportFormat::Vrml ? ".wrl" : ".obj";
+        std::vector<std::string> keyFiles;
+        for (std::size_t k = 0; k < model.keys.size(); ++k)
+            keyFiles.push_back(keyFileName(model, k, extension));
+        names.push_back("mapping.json");
+        files.add(names.back(), formatMappingJson(model, keyFiles));
+        files.commit();
+        return inFolder(names);
+    };
     switch (format) {
     case ExportFormat::Glb:
         writeGlb(out, model);
-        return {out};
+        return withMapping(out);
     case ExportFormat::Runtime:
         writeRuntimePackage(out, model, {.quantise = options.quantise});
-        return {out};
+        return withMapping(out);
     case ExportFormat::Vrml:
-        return inFolder(writeXfaceFace(out, model, options.faceName));
+        return folderExport("export-vrml",
+                            [&](OutputSet& files) { return addXfaceFace(files, model, options.faceName); });
     case ExportFormat::Obj:
-        return inFolder(writeKeyMeshFiles(out, model, ".obj"));
+        return folderExport("export-obj",
+                            [&](OutputSet& files) { return addKeyMeshFiles(files, model, ".obj"); });
     }
     return {};
 }
 
 ReducedModel projectReducedModel(const Project& project, bool unreduced) {
-    const VisemeSet set = loadProjectVisemeSet(project);
+    return projectReducedModel(project, loadProjectVisemeSet(project), unreduced);
+}
+
+ReducedModel projectReducedModel(const Project& project, const VisemeSet& set, bool unreduced) {
     std::vector<std::string> names;
     for (const Viseme& v : set.visemes) names.push_back(v.name);
     if (unreduced)

@@ -8,6 +8,7 @@
 
 #include <tinyxml2.h>
 
+#include <algorithm>
 #include <cctype>
 #include <set>
 #include <unordered_set>
@@ -16,6 +17,7 @@ namespace vl {
 namespace {
 
 constexpr const char* kRestAlias = "Rest";
+constexpr const char* kPausePhonemes[] = {"#", "_"};
 
 std::string xmlEscape(std::string_view text) {
     std::string out;
@@ -206,27 +208,42 @@ std::string formatXfaceDictionary(const ReducedModel& model, std::string_view la
     validateReducedModel(model, "Xface export");
     const std::vector<std::string> aliases = xfaceAliases(model);
     std::string out = std::string(language) + "\n";
+    std::string silence = kRestAlias;
     for (const auto& [phoneme, key] : model.phonemeToKey) {
         for (char c : phoneme)
             if (std::isspace(static_cast<unsigned char>(c)))
                 throwInputError("Xface export", "phoneme '" + phoneme + "' contains white space");
         out += phoneme + " " + aliases[static_cast<std::size_t>(key)] + "\n";
+        if (phoneme == "sil") silence = aliases[static_cast<std::size_t>(key)];
     }
+    // Pauses need a line, or XfacePlayer finds no viseme for them: '#' as in Xface's own dictionaries
+    // (italian.dic: "# Rest"), '_' as in the MBROLA phoneme timings it plays. Silence shows the key
+    // "sil" was merged into, else the neutral face.
+    for (const char* pause : kPausePhonemes)
+        if (std::none_of(model.phonemeToKey.begin(), model.phonemeToKey.end(),
+                         [&](const auto& entry) { return entry.first == pause; }))
+            out += std::string(pause) + " " + silence + "\n";
     return out;
+}
+
+std::vector<std::string> addXfaceFace(OutputSet& outputs, const ReducedModel& model,
+                                      std::string_view faceName) {
+    const std::string dictionary = formatXfaceDictionary(model);
+    const std::string fdp = formatFdp(model);
+    std::vector<std::string> names = addKeyMeshFiles(outputs, model, ".wrl");
+    names.push_back(std::string(faceName) + ".fdp");
+    outputs.add(names.back(), fdp);
+    names.push_back(std::string(faceName) + ".dic");
+    outputs.add(names.back(), dictionary);
+    return names;
 }
 
 std::vector<std::string> writeXfaceFace(const std::filesystem::path& outDir, const ReducedModel& model,
                                         std::string_view faceName) {
-    const std::string dictionary = formatXfaceDictionary(model);
-    const std::string fdp = formatFdp(model);
     OutputSet outputs(outDir, "export-vrml"); // the meshes, .fdp and .dic replace the last export as one set
-    std::vector<std::string> written = addKeyMeshFiles(outputs, model, ".wrl");
-    written.push_back(std::string(faceName) + ".fdp");
-    outputs.add(written.back(), fdp);
-    written.push_back(std::string(faceName) + ".dic");
-    outputs.add(written.back(), dictionary);
+    std::vector<std::string> names = addXfaceFace(outputs, model, faceName);
     outputs.commit();
-    return written;
+    return names;
 }
 
 XfaceFace loadXfaceFace(const std::filesystem::path& fdpPath) {
@@ -259,8 +276,14 @@ XfaceFace loadXfaceFace(const std::filesystem::path& fdpPath) {
                                               std::to_string(face.set.visemes.size()));
     std::filesystem::path dictionary = fdpPath;
     dictionary.replace_extension(".dic");
-    if (std::filesystem::exists(dictionary))
-        face.dictionary = parseXfaceDictionary(readFileToString(dictionary), dictionary.string());
+    if (std::filesystem::exists(dictionary)) {
+        for (auto& entry : parseXfaceDictionary(readFileToString(dictionary), dictionary.string()).entries) {
+            if (entry.second == neutral->alias)
+                face.restPhonemes.push_back(std::move(entry.first));
+            else
+                face.dictionary.entries.push_back(std::move(entry));
+        }
+    }
     return face;
 }
 

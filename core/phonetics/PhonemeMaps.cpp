@@ -2,6 +2,7 @@
 
 #include "core/common/Error.h"
 #include "core/phonetics/Arpabet.h"
+#include "core/speech/Utterance.h"
 
 #include <algorithm>
 #include <unordered_set>
@@ -28,10 +29,13 @@ void checkMapCovers(const PhonemeVisemeMap& map, std::span<const std::string> ph
     std::vector<std::string> unmapped;
     for (const auto& phoneme : phonemes)
         if (!mapped.contains(phoneme)) unmapped.push_back(phoneme);
-    if (!unmapped.empty())
-        throwInputError(where, std::to_string(unmapped.size()) + " phoneme" +
-                                   (unmapped.size() == 1 ? "" : "s") +
-                                   " not mapped to any viseme: " + joinList(unmapped));
+    if (unmapped.empty()) return;
+    const bool silence = std::find(unmapped.begin(), unmapped.end(), kSilencePhoneme) != unmapped.end();
+    throwInputError(where, std::to_string(unmapped.size()) + " phoneme" + (unmapped.size() == 1 ? "" : "s") +
+                               " not mapped to any viseme: " + joinList(unmapped) +
+                               (silence ? " (sil is the pause at punctuation: map it to the viseme of "
+                                          "the mouth at rest, e.g. 'sil,sil')"
+                                        : ""));
 }
 
 void checkMapVisemes(const PhonemeVisemeMap& map, std::span<const std::string> visemeNames,
@@ -49,7 +53,7 @@ void checkMapVisemes(const PhonemeVisemeMap& map, std::span<const std::string> v
 void checkArpabetMap(const PhonemeVisemeMap& map, std::string_view where) {
     std::vector<std::string> foreign;
     for (const auto& [phoneme, viseme] : map.entries)
-        if (!findArpabet(phoneme)) foreign.push_back(phoneme);
+        if (!findArpabet(phoneme) && phoneme != kSilencePhoneme) foreign.push_back(phoneme);
     if (!foreign.empty())
         throwInputError(where, "not ARPAbet phonemes (see docs/phonemes.md): " + joinList(foreign));
     checkMapCovers(map, arpabetSymbols(), where);

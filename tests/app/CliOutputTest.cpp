@@ -3,6 +3,7 @@
 #include "CliRunner.h"
 
 #include "core/common/AtomicFile.h"
+#include "core/common/OutputSet.h"
 #include "core/io/MeshIO.h"
 #include "tests/export/TestModels.h"
 
@@ -97,13 +98,17 @@ TEST_F(CliOutput, FolderOutputsReplaceTheLastRunAsASet) {
     fs::create_directories(out);
     std::ofstream(out / "readme.txt") << "not ours";
     ASSERT_EQ(run("export " + project() + " --unreduced --format obj --out " + out.string()).exitCode, 0);
-    EXPECT_EQ(listing(out).size(), 1u + 1u + 1u + 4u); // manifest, readme, neutral, 4 keys
+    EXPECT_EQ(listing(out).size(), 1u + 1u + 1u + 4u + 1u); // manifest, readme, neutral, 4 keys, mapping.json
     const auto r = run("export " + project() + " --format obj --out " + out.string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
     const auto files = listing(out);
     // The reduced export has 2 keys: the 4 unreduced ones of the first run are gone, readme.txt stays.
-    EXPECT_EQ(files.size(), 1u + 1u + 1u + 2u) << ::testing::PrintToString(files);
+    EXPECT_EQ(files.size(), 1u + 1u + 1u + 2u + 1u) << ::testing::PrintToString(files);
     EXPECT_TRUE(std::count(files.begin(), files.end(), "readme.txt"));
+    // mapping.json belongs to the set: it names the reduced key files of this run.
+    const std::string mapping = readFileToString(out / "mapping.json");
+    EXPECT_NE(mapping.find(files[4]), std::string::npos) << mapping;
+    EXPECT_EQ(OutputSet::readManifest(OutputSet::manifestPath(out, "export-obj")).size(), 4u);
     for (const auto& name : files) EXPECT_EQ(name.find(".vltmp"), std::string::npos) << name;
 
     const fs::path reduced = dir / "reduced";
