@@ -44,6 +44,7 @@ struct ProjectWeights {
 
 struct ProjectReduction {
     int target = 1;                        // m, in 1..n
+    ConstraintNames constraints;           // pins, apart and together pairs by viseme name
     std::optional<ReductionResult> result; // the last run (groups ordered and canonical), if any
 };
 

@@ -59,9 +59,10 @@ TEST(ProjectSave, InvalidStateIsRefusedWithItsPathAndTheOldFileStays) {
     p.visemes[0].file = "a.obj";
     EXPECT_INPUT_ERROR(saveProject(file, p), "/visemes/0: has both a file and embedded positions");
     p = smallProject(file);
-    p.reduction.result = ReductionResult{{Grouping{0.0, {{1}, {0}}}}};
+    p.reduction.result = ReductionResult{{Grouping{.cost = 0.0, .groups = {{1}, {0}}}}};
     EXPECT_INPUT_ERROR(saveProject(file, p), "/reduction/result/curve/0/groups: expected 1 groups");
-    p.reduction.result = ReductionResult{{Grouping{0.0, {{1, 0}}}}}; // members not ascending
+    p.reduction.result =
+        ReductionResult{{Grouping{.cost = 0.0, .groups = {{1, 0}}}}}; // members not ascending
     EXPECT_INPUT_ERROR(saveProject(file, p), "does not survive a save/load round trip");
 
     EXPECT_EQ(readFileToString(file), before);
