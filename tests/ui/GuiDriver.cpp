@@ -262,6 +262,10 @@ void GuiDriver::press(int button, bool down) {
 }
 
 void GuiDriver::click(const nlohmann::json& control, double fx, double fy) {
+    // A real user cannot click a row scrolled out of its list (the click lands on something else).
+    if (!control.value("visible", true))
+        throw std::runtime_error("'" + control["label"].get<std::string>() +
+                                 "' is outside its window's visible area");
     clickAt(control["x"].get<double>() + fx * control["width"].get<double>(),
             control["y"].get<double>() + fy * control["height"].get<double>());
 }
