@@ -317,6 +317,8 @@ nlohmann::json EditorUi::paintSummary() const {
             {"radius_model", paintTool_.modelRadius},
             {"front_faces_only", brush_.frontFacesOnly},
             {"selected", paintTool_.selection.size()},
+            {"vertices", paintSurface_.vertexCount()},
+            {"fill_value", paintTool_.fillValue},
             {"readout", paintTool_.readout ? nlohmann::json(*paintTool_.readout) : nlohmann::json()},
             {"front_mean", frontCount ? front / static_cast<double>(frontCount) : 0.0},
             {"back_mean", backCount ? back / static_cast<double>(backCount) : 0.0}};

@@ -59,8 +59,12 @@ void EditorUi::weightsPanel() {
                          pixels ? "%.0f px" : "%.1f %% of head", ImGuiSliderFlags_Logarithmic))
         brush_.radius.value = radius;
     int unit = static_cast<int>(brush_.radius.unit);
-    const char* units[] = {"screen pixels", "% of head size"};
-    if (ctl::Combo("radius unit", &unit, units, 2) && unit != static_cast<int>(brush_.radius.unit)) {
+    ImGui::TextUnformatted("radius in");
+    ImGui::SameLine();
+    bool unitChanged = ctl::RadioButton("screen pixels", &unit, 0);
+    ImGui::SameLine();
+    unitChanged |= ctl::RadioButton("% of head size", &unit, 1);
+    if (unitChanged && unit != static_cast<int>(brush_.radius.unit)) {
         // Keep the size the brush has on the face now (known once the cursor was over the mesh).
         const double headSize = paintSurface().size();
         const double model = paintTool_.modelRadius, perPixel = paintTool_.unitsPerPixel;
