@@ -114,6 +114,7 @@ void applyStartOptions(const EditorOptions& options, EditorSession& session, Edi
         ui.enableBrush(static_cast<int>(it - std::begin(modes)));
     });
     if (options.play >= 0.0) ui.startPlayback(options.play, options.sequence);
+    step(!options.mapStart.empty(), [&] { ui.startMapFrom(options.mapStart); });
 }
 
 // Replaces the mouse state for this frame by a straight left-button drag: pressed from frame 1,
@@ -199,7 +200,11 @@ int runEditor(const EditorOptions& options) {
                 if (options.drag.size() == 4) scriptedDrag(options, frame);
                 ImGui::NewFrame();
                 ui.frame();
-                if (probe::enabled()) probe::endFrame(ui.probeSummary());
+                if (probe::enabled()) {
+                    nlohmann::json summary = ui.probeSummary();
+                    summary.update(ui.authoringProbe());
+                    probe::endFrame(summary);
+                }
                 ImGui::Render();
                 int width = 0, height = 0;
                 glfwGetFramebufferSize(window, &width, &height);

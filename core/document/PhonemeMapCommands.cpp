@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
+#include <map>
 #include <unordered_map>
 
 namespace vl::edit {
@@ -80,11 +81,27 @@ std::vector<MapAssignment> suggestMapAssignment(const Document& document, const 
         rows.push_back(std::move(row));
         return rows.back();
     };
+    // Per row, how much of its phoneme mass the document's current map gives each viseme.
+    std::vector<std::map<std::string, double>> currentMass; // ordered: ties resolve by name
+    const FrequencySource& current = document.frequencies;
     for (const auto& [phoneme, value] : table.entries) {
         const std::string* mapped = start.visemeOf(phoneme);
         MapAssignment& row = rowOf(mapped ? *mapped : std::string(kPhonemesNotInMap));
         row.phonemes.push_back(phoneme);
         row.share += total > 0.0 ? value / total : 0.0;
+        currentMass.resize(rows.size());
+        if (const std::string* now = current.isPhonemeBased() ? current.map.visemeOf(phoneme) : nullptr)
+            currentMass[static_cast<std::size_t>(&row - rows.data())][*now] += value;
+    }
+    // Rows no name matched take the viseme the current map gives most of their phonemes.
+    for (std::size_t r = 0; r < rows.size(); ++r) {
+        if (!rows[r].to.empty()) continue;
+        double best = 0.0;
+        for (const auto& [viseme, mass] : currentMass[r])
+            if (mass > best && std::find(names.begin(), names.end(), viseme) != names.end()) {
+                best = mass;
+                rows[r].to = viseme;
+            }
     }
     // The phonemes the map does not list come last.
     std::stable_partition(rows.begin(), rows.end(),

@@ -26,8 +26,9 @@ struct MapAssignment {
 
 // The assignment of `start`'s visemes (in order of first appearance, then kPhonemesNotInMap when
 // some phoneme of `table` is not listed): each goes to the set's viseme of the same name, else of
-// the same name ignoring case, else nowhere yet. Visemes of the map no phoneme of the table uses
-// are left out.
+// the same name ignoring case, else to the viseme the document's current phoneme map gives most of
+// its phonemes' frequency, else nowhere yet. Visemes of the map no phoneme of the table uses are
+// left out.
 std::vector<MapAssignment> suggestMapAssignment(const Document& document, const FrequencyTable& table,
                                                 const PhonemeVisemeMap& start);
 

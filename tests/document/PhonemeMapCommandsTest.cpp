@@ -130,6 +130,35 @@ TEST(PhonemeMapCommands, NamesMatchIgnoringCaseAndUnlistedPhonemesAreARow) {
     EXPECT_NE(refusal([&] { edit::startPhonemeMap(start, table, oculusMap(), rows); }), "(not refused)");
 }
 
+TEST(PhonemeMapCommands, RowsNoNameMatchesFollowTheCurrentMap) {
+    const Document start = faceDocument();
+    const Document oculus = edit::startPhonemeMap(
+        start, bundledTable(), oculusMap(), edit::suggestMapAssignment(start, bundledTable(), oculusMap()));
+    const PhonemeVisemeMap mpeg4 = loadPhonemeMapFile(kAssets / "phonemes" / "map_mpeg4.csv");
+    // Without a phoneme map only the names can suggest: MPEG-4's "e" is the set's "E".
+    for (const auto& row : edit::suggestMapAssignment(start, bundledTable(), mpeg4))
+        EXPECT_EQ(row.to.empty(), row.from != "e") << row.from;
+    // With the Oculus map current, each row goes where most of its phonemes' frequency maps now.
+    const std::vector<edit::MapAssignment> rows = edit::suggestMapAssignment(oculus, bundledTable(), mpeg4);
+    std::map<std::string, std::string> to;
+    for (const auto& row : rows) to[row.from] = row.to;
+    EXPECT_EQ(to["p_b_m"], "PP");
+    EXPECT_EQ(to["A"], "aa");
+    EXPECT_EQ(to["none"], "sil");
+    EXPECT_EQ(to["e"], "E");
+    for (const auto& row : rows) {
+        // The reference: the largest summed frequency over the row's phonemes, by current viseme.
+        std::map<std::string, double> mass;
+        for (const std::string& phoneme : row.phonemes)
+            mass[*oculus.frequencies.map.visemeOf(phoneme)] += *bundledTable().find(phoneme);
+        double best = 0.0;
+        for (const auto& [viseme, m] : mass) best = std::max(best, m);
+        if (row.from != "e") {
+            EXPECT_EQ(mass[row.to], best) << row.from;
+        }
+    }
+}
+
 TEST(PhonemeMapCommands, OneRowPerPhonemeMapsEachPhonemeOnItsOwn) {
     const Document start = ownNamesDocument();
     const FrequencyTable table = bundledTable();

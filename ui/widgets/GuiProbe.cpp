@@ -78,8 +78,10 @@ void recordItem(const Before& before, const char* label, const char* kind) {
         item.y = rect.Min.y;
         item.width = rect.GetWidth();
         item.height = rect.GetHeight();
-        // Visible = inside the clip rectangle of its window (scrolled-out rows are not).
-        item.visible = window->ClipRect.Contains(rect.GetCenter());
+        // Visible = inside the visible area of its window (scrolled-out rows are not). Not the
+        // current clip rectangle: in a table that is one column's, and a row's selectable spanning
+        // all columns has its centre outside the first column.
+        item.visible = window->InnerClipRect.Contains(rect.GetCenter());
         probe.lastSeen[{item.window, item.label}] = item;
     } else {
         // The popup of this combo or menu is open: the control is where it was last frame.
