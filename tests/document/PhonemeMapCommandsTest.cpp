@@ -7,11 +7,13 @@
 #include "core/document/VisemeCommands.h"
 #include "core/phonetics/PhonemeMaps.h"
 #include "core/phonetics/PhonemeTableIO.h"
+#include "core/reduce/VisemeSet.h"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <random>
 
 namespace vl {
@@ -192,6 +194,56 @@ TEST(PhonemeMapCommands, MovingPhonemesAndGoingBackToDirectFrequencies) {
     for (std::size_t i = 0; i < before.size(); ++i) EXPECT_NEAR(after[i], before[i], 1e-15);
     EXPECT_NE(refusal([&] { edit::useDirectFrequencies(direct); }).find("direct"), std::string::npos);
     EXPECT_NE(refusal([&] { edit::movePhonemes(direct, "PP", "FF"); }).find("direct"), std::string::npos);
+}
+
+// Real data nobody here made: the ICT FaceKit mouth shapes (VISEMELAB_SHARED_DATA_DIR) carry blend
+// shape names no bundled map knows. Started from the Oculus map with a rest viseme for the pause,
+// every shape gets the summed frequency of the phonemes assigned to it.
+TEST(PhonemeMapCommands, IctMouthShapesGetPhonemeDerivedFrequencies) {
+    const std::filesystem::path folder =
+        std::filesystem::path(VISEMELAB_SHARED_DATA_DIR) / "ict-facekit-mouth";
+    if (!std::filesystem::is_directory(folder)) GTEST_SKIP() << "shared data folder absent: " << folder;
+    Document document;
+    const auto files = listVisemeFolder(folder, folder / "generic_neutral_mesh.obj");
+    document.visemes =
+        std::make_shared<const VisemeSet>(loadVisemeSet(folder / "generic_neutral_mesh.obj", files));
+    document.neutralFile = folder / "generic_neutral_mesh.obj";
+    for (const auto& file : files) document.visemeFiles.push_back(file.second);
+    FrequencySource direct;
+    for (const auto& file : files) direct.visemeFrequencies.entries.emplace_back(file.first, 1.0);
+    document = edit::setFrequencies(document, direct);
+    ASSERT_EQ(document.visemeCount(), 7u);
+
+    // No name matches and no current map: nothing is suggested, and applying is refused.
+    std::vector<edit::MapAssignment> rows = edit::suggestMapAssignment(document, bundledTable(), oculusMap());
+    for (const auto& row : rows) EXPECT_TRUE(row.to.empty()) << row.from;
+    EXPECT_NE(refusal([&] { edit::startPhonemeMap(document, bundledTable(), oculusMap(), rows); }),
+              "(not refused)");
+
+    document = edit::addRestViseme(document, "rest");
+    const std::map<std::string, std::string> shapeOf = {
+        {"sil", "rest"},          {"PP", "mouthClose"},  {"FF", "mouthRollLower"}, {"TH", "mouthStretch_L"},
+        {"DD", "jawOpen"},        {"kk", "jawOpen"},     {"CH", "mouthFunnel"},    {"SS", "mouthSmile_L"},
+        {"nn", "mouthStretch_L"}, {"RR", "mouthPucker"}, {"aa", "jawOpen"},        {"E", "mouthSmile_L"},
+        {"ih", "mouthStretch_L"}, {"oh", "mouthFunnel"}, {"ou", "mouthPucker"}};
+    for (auto& row : rows) row.to = shapeOf.at(row.from);
+    const Document mapped = edit::startPhonemeMap(document, bundledTable(), oculusMap(), rows);
+
+    // Reference: plain sums of the table's counts through both maps.
+    std::map<std::string, double> expected;
+    double total = 0.0;
+    for (const auto& [phoneme, value] : bundledTable().entries) {
+        expected[shapeOf.at(*oculusMap().visemeOf(phoneme))] += value;
+        total += value;
+    }
+    const std::vector<double> frequencies = documentFrequencies(mapped);
+    const std::vector<std::string> names = visemeNames(mapped);
+    ASSERT_EQ(names.size(), 8u);
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        EXPECT_NEAR(frequencies[i], expected[names[i]] / total, 1e-12) << names[i];
+        EXPECT_GT(frequencies[i], 0.0) << names[i];
+    }
+    EXPECT_TRUE(edit::mapCoverage(mapped).visemesWithoutPhoneme.empty());
 }
 
 } // namespace
