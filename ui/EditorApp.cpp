@@ -200,11 +200,7 @@ int runEditor(const EditorOptions& options) {
                 if (options.drag.size() == 4) scriptedDrag(options, frame);
                 ImGui::NewFrame();
                 ui.frame();
-                if (probe::enabled()) {
-                    nlohmann::json summary = ui.probeSummary();
-                    summary.update(ui.authoringProbe());
-                    probe::endFrame(summary);
-                }
+                if (probe::enabled()) probe::endFrame(ui.probeSummary());
                 ImGui::Render();
                 int width = 0, height = 0;
                 glfwGetFramebufferSize(window, &width, &height);
