@@ -167,6 +167,7 @@ nlohmann::json EditorUi::probeSummary() {
         {"playing", say_.playing},
         {"say", sayProbe()}};
     summary.update(polishSummary());
+    summary.update(authoringProbe());
     return summary;
 }
 

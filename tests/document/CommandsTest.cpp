@@ -1,8 +1,9 @@
 // Every edit of the document is a validated function: it returns the edited document or throws
 // InputError naming what is wrong; the document it was given never changes.
 #include "core/document/Commands.h"
-#include "TestDocuments.h"
 #include "core/common/Error.h"
+
+#include "DocumentTestSupport.h"
 
 #include <gtest/gtest.h>
 

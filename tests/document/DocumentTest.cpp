@@ -1,9 +1,10 @@
 // The document and its file form: a project loads into a document and a document saves back to
 // the same project; comparisons are exact and defaulted (a new field cannot be forgotten).
 #include "core/document/Document.h"
-#include "TestDocuments.h"
 #include "core/document/Commands.h"
 #include "core/io/MeshIO.h"
+
+#include "DocumentTestSupport.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // The Say panel's saved state: text, voice and rate in the document, the project's optional
 // "speech" section, and the command that edits them.
-#include "TestDocuments.h"
+#include "DocumentTestSupport.h"
 #include "core/common/Error.h"
 #include "core/document/Commands.h"
 #include "core/document/Document.h"
@@ -14,16 +14,8 @@ namespace vl {
 namespace {
 
 using test::faceDocument;
+using test::refusal;
 using test::tempDir;
-
-std::string errorOf(const std::function<void()>& action) {
-    try {
-        action();
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return {};
-}
 
 TEST(SpeechSettings, DocumentProjectFileRoundTrip) {
     const Document document = edit::setSpeech(
@@ -43,19 +35,19 @@ TEST(SpeechSettings, DocumentProjectFileRoundTrip) {
 TEST(SpeechSettings, CommandRefusesBadSettingsAndChangesNothing) {
     const Document document = faceDocument();
     EXPECT_EQ(edit::setSpeech(document, {"Hello", "en-us", 175}).speech.text, "Hello");
-    EXPECT_NE(errorOf([&] {
+    EXPECT_NE(refusal([&] {
                   edit::setSpeech(document, {"Hello", "en-us", 79});
               }).find("speech/wordsPerMinute"),
               std::string::npos);
-    EXPECT_NE(errorOf([&] {
+    EXPECT_NE(refusal([&] {
                   edit::setSpeech(document, {"Hello", "", 175});
               }).find("speech/voice"),
               std::string::npos);
-    EXPECT_NE(errorOf([&] {
+    EXPECT_NE(refusal([&] {
                   edit::setSpeech(document, {"Hello", "en us; rm", 175});
               }).find("not a voice name"),
               std::string::npos);
-    EXPECT_NE(errorOf([&] {
+    EXPECT_NE(refusal([&] {
                   edit::setSpeech(document, {std::string(kMaxSpeechTextBytes + 1, 'a'), "en", 175});
               }).find("speech/text"),
               std::string::npos);
@@ -67,13 +59,13 @@ TEST(SpeechSettings, BadSectionsNameTheFileAndPath) {
     const std::string base =
         R"({"format": "visemelab-project", "version": 1, "neutral": null, "visemes": [], )";
     const auto messageFor = [&](const std::string& speech) {
-        return errorOf([&] { projectFromJsonText(base + R"("speech": )" + speech + "}", dir / "p.vlproj"); });
+        return refusal([&] { projectFromJsonText(base + R"("speech": )" + speech + "}", dir / "p.vlproj"); });
     };
     EXPECT_NE(messageFor(R"({"wordsPerMinute": 900})").find("/speech/wordsPerMinute"), std::string::npos);
     EXPECT_NE(messageFor(R"({"voice": "x y"})").find("/speech/voice"), std::string::npos);
     EXPECT_NE(messageFor(R"({"pitch": 3})").find("/speech"), std::string::npos);
     EXPECT_NE(messageFor(R"({"text": 3})").find("/speech/text"), std::string::npos);
-    EXPECT_EQ(messageFor(R"({"text": "Hi"})"), "");
+    EXPECT_EQ(messageFor(R"({"text": "Hi"})"), "(not refused)");
     EXPECT_EQ(projectFromJsonText(base + R"("speech": {"text": "Hi"}})", dir / "p.vlproj").speech,
               (SpeechSettings{"Hi", "en-us", 175}));
 }
