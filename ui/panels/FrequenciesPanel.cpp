@@ -5,6 +5,7 @@
 #include "ui/EditorUi.h"
 #include "ui/panels/PanelWidgets.h"
 #include "ui/widgets/Controls.h"
+#include "ui/widgets/FrequencyHistogram.h"
 
 #include <imgui.h>
 
@@ -62,12 +63,9 @@ void EditorUi::frequenciesPanel() {
     const bool ok = session.attempt("Frequencies", [&] { frequencies = session.visemeFrequencies(); });
     sectionHeader("Viseme frequencies (normalised)");
     if (ok) {
-        std::vector<float> values(frequencies.begin(), frequencies.end());
-        ImGui::PlotHistogram("##viseme-frequencies", values.data(), static_cast<int>(values.size()), 0,
-                             nullptr, 0.0f, FLT_MAX, ImVec2(ImGui::GetContentRegionAvail().x, 80));
-        std::string names;
-        for (const auto& v : set->visemes) names += v.name + " ";
-        ImGui::TextDisabled("%s", names.c_str());
+        std::vector<std::string> names;
+        for (const auto& v : set->visemes) names.push_back(v.name);
+        frequencyHistogram("##viseme-frequencies", frequencies, names, 80.0f);
     }
 
     const FrequencySource& source = session.document().frequencies;

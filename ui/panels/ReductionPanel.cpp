@@ -141,7 +141,18 @@ void EditorUi::reductionPanel() {
                 session.selectedViseme = i;
         ImGui::EndCombo();
     }
-    ImGui::TextDisabled("Right view: colour = weighted distance to the merged shape");
+    ImGui::TextUnformatted("Right view:");
+    int display = static_cast<int>(mergedDisplay_);
+    ImGui::SameLine();
+    bool displayChanged = ctl::RadioButton("error colours", &display, 0);
+    ImGui::SameLine();
+    displayChanged |= ctl::RadioButton("skin", &display, 1);
+    ImGui::SameLine();
+    displayChanged |= ctl::RadioButton("overlay on original", &display, 2);
+    if (displayChanged) mergedDisplay_ = static_cast<MergedDisplay>(display);
+    helpMarker("Error colours: the weighted distance of each vertex to the merged shape. Skin: the merged "
+               "shape as the face will look. Overlay: the merged shape in skin with the original drawn "
+               "over it as a cyan film; plain skin shows where the merged shape stands out in front.");
 
     sectionHeader("Playback");
     ImGui::SetNextItemWidth(-1);
