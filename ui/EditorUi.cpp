@@ -160,6 +160,7 @@ nlohmann::json EditorUi::probeSummary() const {
         {"wireframe", wireframe_},
         {"playing", playback_.playing}};
     summary.update(polishSummary());
+    summary.update(authoringProbe());
     return summary;
 }
 

@@ -214,6 +214,41 @@ class EditorUi {
     ImVec2 uvInsetOffset_{0.0f, 0.0f};
     // How the Reduction panel's right view shows the merged shape.
     enum class MergedDisplay { ErrorColours, Skin, Overlay } mergedDisplay_ = MergedDisplay::ErrorColours;
+
+    // --- viseme authoring and the phoneme map editor (ui/panels/VisemeAuthoring.cpp,
+    // StoreSlidersSection.cpp, PhonemeMapEditor.cpp); view state only, the edits are the session's.
+  public:
+    // Opens the map editor's assignment from a bundled map id ("oculus", ...) or "per-phoneme".
+    void startMapFrom(const std::string& id);
+
+  private:
+    // What the authoring tests check, merged into probeSummary(): viseme names, presets, the map.
+    nlohmann::json authoringProbe() const;
+    void visemeAuthoring(); // Visemes panel: rename, duplicate, move, delete the selected viseme
+    void deleteVisemePopup();
+    void storeSlidersSection(); // Deformation panel: the sliders as a new or existing viseme, presets
+    void phonemeMapEditor();    // Frequencies panel: start a map, one row per phoneme, by viseme
+    void mapStartSection();
+    void openMapStart(std::string title, const PhonemeVisemeMap& map);
+    struct AuthoringView {
+        int nameFor = -2;               // the viseme whose name the rename field holds
+        std::uint64_t nameDocument = 0; // ... in this document state
+        bool editingName = false;       // the field had the keyboard last frame
+        std::string name;               // the rename field
+        bool openDelete = false;        // open the delete popup next frame
+        int deleteIndex = -1;           // the viseme the popup deletes
+        std::string phonemesGoTo;       // where its phonemes go
+        std::string newViseme;          // Deformation: name of a new viseme from the sliders
+        std::string storeInto;          // Deformation: the existing preset or viseme to store into
+        std::string restName = "sil";   // Frequencies: name of a rest viseme to add
+    } authoring_;
+    struct MapStartView {
+        bool open = false;
+        std::string title; // the map it starts from, for the panel and the undo step
+        FrequencyTable table;
+        PhonemeVisemeMap map;
+        std::vector<edit::MapAssignment> rows;
+    } mapStart_;
 };
 
 } // namespace vl::ui

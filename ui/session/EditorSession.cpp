@@ -349,11 +349,15 @@ void EditorSession::importViseme(const std::string& name, const std::filesystem:
     info("Imported " + name + " from " + file.string());
 }
 
-void EditorSession::removeViseme(int index) {
+void EditorSession::removeViseme(int index, const std::string& phonemesGoTo) {
     const std::string name = visemes() && index >= 0 && index < static_cast<int>(visemeCount())
                                  ? visemes()->visemes[static_cast<std::size_t>(index)].name
                                  : std::to_string(index);
-    commit("Remove viseme " + name, edit::removeViseme(document(), index));
+    const std::string selected = selectedViseme >= 0 && selectedViseme != index
+                                     ? visemes()->visemes[static_cast<std::size_t>(selectedViseme)].name
+                                     : std::string();
+    commit("Remove viseme " + name, edit::removeViseme(document(), index, phonemesGoTo));
+    select(selected);
 }
 
 // --- frequencies -----------------------------------------------------------------------------
