@@ -59,6 +59,8 @@ class EditorUi {
     void frame();
     void selectPanel(Panel panel);
     void setWireframe(bool on) { wireframe_ = on; }
+    // "errors", "skin" or "overlay" (--merged); throws InputError for another name.
+    void setMergedDisplay(const std::string& name);
     // Turns painting on with this operation (0 add, 1 subtract, 2 smooth).
     void enableBrush(int operation) {
         brush_.enabled = true;

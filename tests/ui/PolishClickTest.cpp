@@ -173,6 +173,17 @@ TEST(PolishClicks, MergedShapeInSkinAndAsOverlay) {
     gui.click(gui.control("error colours", "radio"));
     EXPECT_EQ(gui.document()["merged_display"], 0);
     EXPECT_ALIVE(gui);
+    // The start option (the guide's pictures use it); a wrong name is shown, not fatal.
+    GuiDriver overlay({"--sample", "--panel", "Reduction", "--merged", "overlay"});
+    overlay.waitIdle();
+    EXPECT_EQ(overlay.document()["merged_display"], 2);
+    GuiDriver wrong({"--sample", "--panel", "Reduction", "--merged", "nosuch"});
+    wrong.waitIdle();
+    EXPECT_ALIVE(wrong);
+    EXPECT_EQ(wrong.document()["merged_display"], 0);
+    const auto status = statusControl(wrong);
+    ASSERT_TRUE(status);
+    EXPECT_NE((*status)["label"].get<std::string>().find("--merged"), std::string::npos) << status->dump();
 }
 
 } // namespace

@@ -1,5 +1,6 @@
 // Reduction panel: target m, the optimal cost for every p with m marked, the groups, and playback
 // of a phoneme sequence with the full and the reduced set (the views show both side by side).
+#include "core/common/Error.h"
 #include "core/inspect/DistanceUnits.h"
 #include "ui/EditorUi.h"
 #include "ui/panels/PanelWidgets.h"
@@ -166,6 +167,16 @@ void EditorUi::reductionPanel() {
         playback_.playing = !playback_.playing;
         playback_.time = 0.0;
     }
+}
+
+void EditorUi::setMergedDisplay(const std::string& name) {
+    const char* const names[] = {"errors", "skin", "overlay"};
+    for (int i = 0; i < 3; ++i)
+        if (name == names[i]) {
+            mergedDisplay_ = static_cast<MergedDisplay>(i);
+            return;
+        }
+    throwInputError("--merged", "expected errors, skin or overlay, got '" + name + "'");
 }
 
 } // namespace vl::ui

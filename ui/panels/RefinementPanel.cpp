@@ -104,8 +104,8 @@ void EditorUi::refinementPanel() {
         if (report->fromBaseMesh)
             ImGui::TextWrapped("Started again from the %zu-vertex base mesh (a new face or field).",
                                report->verticesAtStart);
-        ImGui::Text("Refined: +%zu vertices (edge splits)", report->stats.splits);
-        ImGui::Text("Coarsened: -%zu vertices (welds)", report->stats.welds);
+        ImGui::Text("Refined: %zu vertices added (edge splits)", report->stats.splits);
+        ImGui::Text("Coarsened: %zu vertices removed (welds)", report->stats.welds);
         ImGui::TextDisabled("Triangles: %zu before, %zu after; %zu refinement tests", report->trianglesBefore,
                             report->triangles, report->stats.tests);
         if (report->maxLevel >= 0) ImGui::Text("Deepest level: %d", report->maxLevel);
