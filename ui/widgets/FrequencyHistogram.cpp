@@ -71,7 +71,8 @@ void frequencyHistogram(const char* id, std::span<const double> values, std::spa
         const int row = static_cast<int>(i) % rows;
         const float y = bottom + tick + static_cast<float>(row) * lineHeight;
         if (rows > 1) draw->AddLine(ImVec2(centre, bottom), ImVec2(centre, y), axis);
-        const ImVec2 at(std::max(origin.x, std::min(centre - 0.5f * labelWidths[i], plotRight - labelWidths[i])), y);
+        const ImVec2 at(
+            std::max(origin.x, std::min(centre - 0.5f * labelWidths[i], plotRight - labelWidths[i])), y);
         draw->AddText(at, lit ? IM_COL32(250, 190, 90, 255) : label, names[i].c_str());
         probe::recordRect(names[i].c_str(), "histogram-label", at,
                           ImVec2(at.x + labelWidths[i], at.y + lineHeight));
