@@ -16,13 +16,6 @@
 namespace vl::test {
 namespace {
 
-#define REQUIRE_GUI_TOOLS()                                                                                  \
-    if (const std::string missing = missingGuiTools(); !missing.empty())                                     \
-    GTEST_SKIP() << "GUI click tests need" << missing
-
-#define EXPECT_ALIVE(gui)                                                                                    \
-    ASSERT_TRUE((gui).alive()) << "editor " << (gui).exitStatus() << ":\n" << (gui).log()
-
 using Json = nlohmann::json;
 
 // The control of that text (or label) and kind in a window whose name starts with `window`
