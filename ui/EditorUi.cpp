@@ -607,8 +607,7 @@ void EditorUi::comparisonViews(ImVec2 size) {
             const int group = groupOf[static_cast<std::size_t>(selected)];
             after.assign(grouping->groups.size(), 0.0f);
             after[static_cast<std::size_t>(group)] = 1.0f;
-            static const char* const kShown[] = {" (error colours)", " (skin)",
-                                                 " over the original (cyan: the original on or in front)"};
+            static const char* const kShown[] = {" (error colours)", " (skin)", " on the original (cyan)"};
             afterLabel =
                 "Merged group " + std::to_string(group + 1) + kShown[static_cast<int>(mergedDisplay_)];
         }
