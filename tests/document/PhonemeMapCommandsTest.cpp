@@ -9,6 +9,8 @@
 #include "core/phonetics/PhonemeTableIO.h"
 #include "core/reduce/VisemeSet.h"
 
+#include "DocumentTestSupport.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -19,13 +21,10 @@
 namespace vl {
 namespace {
 
-const std::filesystem::path kAssets = VISEMELAB_ASSETS_DIR;
+using test::faceDocument;
+using test::refusal;
 
-Document faceDocument() {
-    Document document;
-    document.face = makeFaceModel(face::Individual::Bundled, 12);
-    return edit::generateVisemesFromFace(document);
-}
+const std::filesystem::path kAssets = VISEMELAB_ASSETS_DIR;
 
 FrequencyTable bundledTable() {
     return loadPhonemeTable(defaultPhonemeTablePath(kAssets));
@@ -43,15 +42,6 @@ Document ownNamesDocument() {
                            "jawOpen", "stretch",    "smile",   "funnel", "pucker"};
     for (int i = 0; i < 15; ++i) document = edit::renameViseme(document, i, names[i]);
     return document;
-}
-
-std::string refusal(const std::function<void()>& edit) {
-    try {
-        edit();
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "(not refused)";
 }
 
 TEST(PhonemeMapCommands, ABundledMapOnItsOwnVisemesNeedsNoAssignment) {

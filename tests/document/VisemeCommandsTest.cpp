@@ -9,6 +9,8 @@
 #include "core/phonetics/PhonemeMaps.h"
 #include "core/phonetics/PhonemeTableIO.h"
 
+#include "DocumentTestSupport.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -17,11 +19,8 @@
 namespace vl {
 namespace {
 
-Document faceDocument() {
-    Document document;
-    document.face = makeFaceModel(face::Individual::Bundled, 12);
-    return edit::generateVisemesFromFace(document);
-}
+using test::faceDocument;
+using test::refusal;
 
 // The face's set with the bundled en-us table and Oculus map, constraints and painted weights.
 Document mappedDocument() {
@@ -33,15 +32,6 @@ Document mappedDocument() {
     document = edit::setConstraints(document, {{"PP"}, {{"PP", "aa"}}, {{"FF", "TH"}}});
     document = edit::setPaintedWeights(document, std::vector<double>(document.visemes->vertexCount(), 0.7));
     return document;
-}
-
-std::string refusal(const std::function<void()>& edit) {
-    try {
-        edit();
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "(not refused)";
 }
 
 double frequencyOf(const Document& document, const std::string& name) {

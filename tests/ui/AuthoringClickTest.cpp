@@ -287,5 +287,59 @@ TEST(AuthoringClicks, PhonemeMapEditorStartsEditsAndSavesAMap) {
     EXPECT_ALIVE(gui);
 }
 
+// The authored document is the project: renamed and duplicated visemes, a viseme stored from the
+// sliders (preset and mesh) and a phoneme mapped to it are saved with Ctrl+S and come back the same
+// when the saved project is opened.
+TEST(AuthoringClicks, AuthoredVisemesAndMapSurviveSaveAndReopen) {
+    REQUIRE_GUI_TOOLS();
+    const auto folder =
+        std::filesystem::temp_directory_path() / ("visemelab-authored-" + std::to_string(getpid()));
+    std::filesystem::remove_all(folder);
+    std::filesystem::create_directories(folder);
+    const auto project = folder / "authored.vlproj";
+    Json saved;
+    {
+        GuiDriver gui({"--sample", "--panel", "Visemes"});
+        gui.waitIdle();
+        gui.click(gui.control("PP", "selectable"));
+        typeInto(gui, "##viseme-name", "closed");
+        gui.key("Return");
+        gui.click(reveal(gui, "Duplicate", "button"));
+        gui.waitIdle();
+        gui.click(gui.control("Deform", "tab"));
+        gui.click(reveal(gui, "jaw_open", "slider"), 0.7);
+        typeInto(gui, "##new-viseme-name", "wide");
+        gui.click(reveal(gui, "Store as new viseme", "button"));
+        gui.waitIdle();
+        gui.click(gui.control("Freq.", "tab"));
+        choose(gui, "##map-AH", "wide");
+        ASSERT_EQ(gui.document()["phoneme_map"]["AH"], "wide") << gui.document()["messages"].dump();
+        ASSERT_EQ(names(gui).size(), 17u);
+
+        gui.key("ctrl+s");
+        ASSERT_TRUE(gui.document()["file_dialog_open"].get<bool>());
+        gui.click(gui.control("##name", "text"));
+        gui.key("ctrl+a");
+        gui.type(project.string());
+        gui.click(gui.control("Save", "button"));
+        gui.waitIdle();
+        ASSERT_EQ(gui.document()["project_path"], project.string()) << gui.document()["messages"].dump();
+        EXPECT_FALSE(gui.document()["modified"].get<bool>());
+        saved = gui.document();
+        EXPECT_ALIVE(gui);
+    }
+    GuiDriver gui({"--project", project.string()});
+    gui.waitIdle();
+    EXPECT_ALIVE(gui);
+    for (const char* key :
+         {"viseme_names", "presets", "parameters", "phoneme_map", "phoneme_frequencies", "target"})
+        EXPECT_EQ(gui.document()[key], saved[key]) << key;
+    EXPECT_EQ(names(gui)[1], "closed");
+    EXPECT_EQ(names(gui)[2], "closed copy");
+    EXPECT_EQ(names(gui).back(), "wide");
+    EXPECT_FALSE(gui.document()["modified"].get<bool>());
+    std::filesystem::remove_all(folder);
+}
+
 } // namespace
 } // namespace vl::test
