@@ -232,6 +232,7 @@ class EditorUi {
     void phonemeMapEditor();    // Frequencies panel: start a map, one row per phoneme, by viseme
     void mapStartSection();
     void openMapStart(std::string title, const PhonemeVisemeMap& map);
+    void restVisemeRow(); // a viseme with the neutral's shape, e.g. "sil" for the pause
     struct AuthoringView {
         int nameFor = -2;               // the viseme whose name the rename field holds
         std::uint64_t nameDocument = 0; // ... in this document state

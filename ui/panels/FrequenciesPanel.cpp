@@ -37,6 +37,9 @@ void EditorUi::frequenciesPanel() {
         "CSV lines 'name,frequency', or JSON {\"phonemes\": {...}, \"map\": {...}}. A phoneme table needs a "
         "map that covers every phoneme; errors name the file and line.");
 
+    // Decided before the section draws: applying closes it mid-frame, and the editor below would then
+    // draw its controls a second time in this frame.
+    const bool assigning = mapStart_.open;
     mapStartSection();
     const bool counting = session.phonemeCountRunning();
     if (counting) ImGui::BeginDisabled();
@@ -61,7 +64,7 @@ void EditorUi::frequenciesPanel() {
     }
 
     const FrequencySource& source = session.document().frequencies;
-    if (source.isPhonemeBased() && !mapStart_.open) {
+    if (source.isPhonemeBased() && !assigning) {
         phonemeMapEditor();
     } else if (!source.isPhonemeBased()) {
         sectionHeader("Viseme frequencies (direct)");
