@@ -20,10 +20,6 @@
 namespace vl::test {
 namespace {
 
-std::uint64_t documentId(const GuiDriver& gui) {
-    return gui.document()["document_id"].get<std::uint64_t>();
-}
-
 bool hasError(const GuiDriver& gui) {
     for (const auto& message : gui.document()["messages"])
         if (message["error"].get<bool>()) return true;

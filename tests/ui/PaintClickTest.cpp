@@ -11,10 +11,6 @@
 namespace vl::test {
 namespace {
 
-std::uint64_t documentId(const GuiDriver& gui) {
-    return gui.document()["document_id"].get<std::uint64_t>();
-}
-
 const nlohmann::json& paint(const GuiDriver& gui) {
     return gui.document()["paint"];
 }
