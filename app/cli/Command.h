@@ -31,5 +31,6 @@ void addRenderCommand(CLI::App& app, CommandRunner& run);
 void addRefineCommand(CLI::App& app, CommandRunner& run);
 void addExportCommand(CLI::App& app, CommandRunner& run);
 void addProjectCommand(CLI::App& app, CommandRunner& run);
+void addFaceCommand(CLI::App& app, CommandRunner& run);
 
 } // namespace vl::cli

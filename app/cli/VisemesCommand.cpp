@@ -12,6 +12,7 @@
 #include "core/deform/Visemes.h"
 #include "core/io/MeshIO.h"
 #include "core/project/JsonRead.h"
+#include "core/project/Project.h"
 
 #include <nlohmann/json.hpp>
 
@@ -25,6 +26,7 @@ namespace {
 
 struct VisemesOptions {
     std::string face = "bundled";
+    std::string project; // a project's deformable face instead of a bundled one
     std::string outDir = "visemes";
     int resolution = 38;
     std::string density = "mouth";
@@ -100,7 +102,7 @@ MeshData buildVisemeMesh(const VisemesOptions& o, const DeformationCascade& face
 nlohmann::json describe(const VisemesOptions& o, const DeformationCascade& face, const VisemeSet& set,
                         const std::vector<VisemeParameters>& visemes) {
     nlohmann::json j;
-    j["face"] = o.face;
+    j["face"] = o.project.empty() ? o.face : o.project;
     j["resolution"] = o.resolution;
     j["density"] = o.density;
     j["decimals"] = o.decimals;
@@ -121,9 +123,18 @@ nlohmann::json describe(const VisemesOptions& o, const DeformationCascade& face,
 }
 
 int runVisemes(const VisemesOptions& o) {
-    const auto individual = face::parseIndividual(o.face, "--face");
-    const DeformationCascade cascade = face::makeFaceCascade(individual);
-    const auto visemes = o.visemeFile.empty() ? oculusVisemes() : readVisemeFile(o.visemeFile, cascade);
+    DeformationCascade cascade;
+    std::vector<VisemeParameters> visemes;
+    if (!o.project.empty()) {
+        const Project project = loadProject(o.project);
+        if (!project.deformation.isSet()) throwInputError(o.project, "the project has no deformable face");
+        cascade = project.deformation.cascade;
+        visemes = project.deformation.visemes.empty() ? oculusVisemes() : project.deformation.visemes;
+    } else {
+        cascade = face::makeFaceCascade(face::parseIndividual(o.face, "--face"));
+        visemes = oculusVisemes();
+    }
+    if (!o.visemeFile.empty()) visemes = readVisemeFile(o.visemeFile, cascade);
     const MeshData uvMesh = buildVisemeMesh(o, cascade, visemes);
     if (o.decimals > 15) throwInputError("--decimals", "must be at most 15 (or negative for exact values)");
     VisemeSet set = generateVisemeSet(cascade, uvMesh, visemes);
@@ -147,6 +158,8 @@ void addVisemesCommand(CLI::App& app, CommandRunner& run) {
     auto* cmd =
         app.add_subcommand("visemes", "Write the interpolable viseme set of a bundled deformable face");
     cmd->add_option("--face", options->face, "Individual: bundled or retarget")->capture_default_str();
+    cmd->add_option("--project", options->project,
+                    "Use the deformable face and viseme parameter vectors of this project (e.g. from `face build`)");
     cmd->add_option("--out", options->outDir, "Output folder (neutral.obj, <viseme>.obj, visemes.json)")
         ->capture_default_str();
     cmd->add_option("--resolution", options->resolution, "Grid cells across the (u,v) domain (10..4096)")

@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
     vl::cli::addRefineCommand(app, run);
     vl::cli::addExportCommand(app, run);
     vl::cli::addProjectCommand(app, run);
+    vl::cli::addFaceCommand(app, run);
 
     try {
         app.parse(argc, argv);

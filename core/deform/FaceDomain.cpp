@@ -20,6 +20,17 @@ bool insideMouthHole(double u, double v) {
     return std::abs(v - kMouthV) < mouthHoleHalfHeight(u) - 1e-12;
 }
 
+double squeezedMouthV(double u, double v, double closedGap) {
+    constexpr double kReach = 0.035;
+    const double h = mouthHoleHalfHeight(u);
+    const double d = v - kMouthV;
+    if (h == 0.0) return v;
+    if (std::abs(d) < h) return kMouthV + closedGap * d;
+    const double s = std::abs(d) - h;
+    const double shift = (1.0 - closedGap) * h * std::exp(-(s / kReach) * (s / kReach));
+    return v - std::copysign(shift, d);
+}
+
 namespace {
 
 using Density = std::function<double(double)>;

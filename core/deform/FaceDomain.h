@@ -13,11 +13,24 @@ constexpr double kMouthU = 0.5;           // mouth centre
 constexpr double kMouthV = 0.3;           // mouth line (stomion)
 constexpr double kMouthHalfWidth = 0.1;   // corners at kMouthU -/+ this
 constexpr double kMouthHalfHeight = 0.02; // lip middles at kMouthV -/+ this (in (u,v), before squeezing)
+// The other landmarks of the domain (core/face aligns a user's mesh to them): eye corners (the
+// outer corner a little higher, as in most faces) and the nose tip.
+constexpr double kEyeInnerU = 0.078; // inner eye corners at kMouthU -/+ this
+constexpr double kEyeInnerV = 0.583;
+constexpr double kEyeOuterU = 0.21; // outer eye corners at kMouthU -/+ this
+constexpr double kEyeOuterV = 0.592;
+constexpr double kNoseTipV = 0.415; // the nose tip at (kMouthU, kNoseTipV)
 
 // Half-height of the hole at u (0 beyond the corners).
 double mouthHoleHalfHeight(double u);
 // True when (u,v) lies strictly inside the mouth hole.
 bool insideMouthHole(double u, double v);
+
+// Pulls the lips' rim together (the base geometry of every face samples its surface at the squeezed
+// (u,v)): points on the rim of the hole map to within closedGap * half-height of the mouth line,
+// points inside the hole scale towards it, and the shift fades out with distance from the rim.
+double squeezedMouthV(double u, double v, double closedGap);
+constexpr double kBundledClosedGap = 0.07; // the bundled faces' lips almost touch
 
 enum class DomainDensity {
     Uniform,      // cells of about 1/resolution everywhere

@@ -83,20 +83,6 @@ double faceY(double v, const Proportions& p) {
     return y;
 }
 
-// Pulls the lips' rim together: points on the rhombus border of the hole map to within
-// kClosedGap of the mouth line; far from the mouth nothing moves.
-double squeezedV(double u, double v) {
-    constexpr double kClosedGap = 0.07; // fraction of the hole height left open
-    constexpr double kReach = 0.035;
-    const double h = mouthHoleHalfHeight(u);
-    const double d = v - kMouthV;
-    if (h == 0.0) return v;
-    if (std::abs(d) < h) return kMouthV + kClosedGap * d;
-    const double s = std::abs(d) - h;
-    const double shift = (1.0 - kClosedGap) * h * std::exp(-(s / kReach) * (s / kReach));
-    return v - std::copysign(shift, d);
-}
-
 double noseHeight(double u, double v, const Proportions& p) {
     // Profile along v: rises steeply from the subnasale to the tip, then falls along the bridge.
     double h;
@@ -166,7 +152,7 @@ Vec3 facePoint(double u, double v, const Proportions& p) {
     const double x = halfWidth * std::sin(theta);
     const double z =
         front - depth * (1.0 - std::cos(theta)) + featureDepth(u, v, p) * std::cos(theta) * std::cos(theta);
-    return Vec3(x, faceY(squeezedV(u, v), p), z);
+    return Vec3(x, faceY(squeezedMouthV(u, v, kBundledClosedGap), p), z);
 }
 
 } // namespace

@@ -33,7 +33,6 @@ inline double bump(double u, double v, double cu, double cv, double ru, double r
 constexpr double kEyeU = 0.135; // eye centres at 0.5 -/+ kEyeU
 constexpr double kEyeV = 0.585;
 constexpr double kBrowV = 0.66;
-constexpr double kNoseTipV = 0.415;
 constexpr double kSubnasaleV = 0.372;
 constexpr double kNasionV = 0.615;
 constexpr double kUpperLipV = 0.333; // centre of the upper vermilion

@@ -34,19 +34,35 @@ bool isMeshFile(const std::filesystem::path& path) {
     return formatOfExtension(path).has_value();
 }
 
-MeshData readMesh(const std::filesystem::path& path) {
+namespace {
+
+MeshData readMeshFile(const std::filesystem::path& path, CornerTexCoords* corners) {
     const MeshFormat format = meshFormatFromPath(path);
     const std::string bytes = readFileToString(path);
     const std::string source = path.string();
     switch (format) {
     case MeshFormat::Obj:
-        return parseObj(bytes, source);
-    case MeshFormat::Ply:
-        return parsePly(bytes, source);
+        return parseObj(bytes, source, corners);
+    case MeshFormat::Ply: {
+        MeshData mesh = parsePly(bytes, source);
+        if (corners && mesh.hasUVs()) *corners = {mesh.uvs, mesh.triangles};
+        return mesh;
+    }
     case MeshFormat::Vrml:
-        return parseVrml(bytes, source);
+        return parseVrml(bytes, source, corners);
     }
     throwInputError(source, "unknown mesh format");
+}
+
+} // namespace
+
+MeshData readMesh(const std::filesystem::path& path) {
+    return readMeshFile(path, nullptr);
+}
+
+MeshData readMesh(const std::filesystem::path& path, CornerTexCoords& corners) {
+    corners = {};
+    return readMeshFile(path, &corners);
 }
 
 void writeMesh(const std::filesystem::path& path, const MeshData& mesh) {

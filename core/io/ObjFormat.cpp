@@ -25,7 +25,8 @@ std::string_view nextToken(std::string_view line, std::size_t& pos) {
 
 class ObjParser {
   public:
-    ObjParser(std::string_view text, std::string_view source) : text_(text), source_(source) {}
+    ObjParser(std::string_view text, std::string_view source, CornerTexCoords* corners)
+        : text_(text), source_(source), cornerTexCoords_(corners) {}
 
     MeshData run() {
         meshio::requireNotBlank(text_, source_);
@@ -114,6 +115,7 @@ class ObjParser {
 
     void parseFace(std::string_view line, std::size_t pos) {
         corners_.clear();
+        texCorners_.clear();
         for (std::string_view token = nextToken(line, pos); !token.empty(); token = nextToken(line, pos)) {
             // Corner forms: v, v/vt, v//vn, v/vt/vn. Normals are not used.
             const std::size_t slash = token.find('/');
@@ -131,14 +133,19 @@ class ObjParser {
             const auto v =
                 static_cast<std::uint32_t>(resolveIndex(vertexToken, mesh_.positions.size(), false));
             corners_.push_back(v);
+            std::int64_t t = -1;
             if (!textureToken.empty()) {
-                const std::int64_t t = resolveIndex(textureToken, texCoords_.size(), true);
+                t = resolveIndex(textureToken, texCoords_.size(), true);
                 if (v >= cornerUV_.size()) cornerUV_.resize(v + std::size_t{1}, -1);
                 if (cornerUV_[v] < 0) cornerUV_[v] = t; // first corner wins at UV seams
             }
+            texCorners_.push_back(t < 0 ? CornerTexCoords::kNoTexCoord : static_cast<std::uint32_t>(t));
         }
         const std::string problem = meshio::appendPolygonFan(corners_, faceCount_++, 1, mesh_.triangles);
         if (!problem.empty()) throwInputError(where(), problem);
+        if (cornerTexCoords_) // the same fan over the texture corners
+            for (std::size_t k = 2; k < texCorners_.size(); ++k)
+                cornerTexCoords_->triangles.push_back({texCorners_[0], texCorners_[k - 1], texCorners_[k]});
     }
 
     MeshData finish() {
@@ -153,6 +160,12 @@ class ObjParser {
         meshio::requireVerticesAndFaces(mesh_, source_);
         cornerUV_.resize(mesh_.positions.size(), -1);
         mesh_.uvs = meshio::uvsFromFirstCorners(cornerUV_, texCoords_);
+        if (cornerTexCoords_) {
+            if (mesh_.uvs.empty())
+                *cornerTexCoords_ = {};
+            else
+                cornerTexCoords_->texCoords = texCoords_;
+        }
         return std::move(mesh_);
     }
 
@@ -164,13 +177,16 @@ class ObjParser {
     std::vector<Vec2> texCoords_;
     std::vector<std::int64_t> cornerUV_; // per vertex (grown on use): first corner's texture coordinate or -1
     std::vector<std::uint32_t> corners_;
+    std::vector<std::uint32_t> texCorners_; // the face's texture coordinate per corner, or kNoTexCoord
+    CornerTexCoords* cornerTexCoords_;       // filled when the caller asks for corner texture coordinates
     std::vector<ForwardReference> forward_;
 };
 
 } // namespace
 
-MeshData parseObj(std::string_view text, std::string_view source) {
-    return ObjParser(text, source).run();
+MeshData parseObj(std::string_view text, std::string_view source, CornerTexCoords* corners) {
+    if (corners) *corners = {};
+    return ObjParser(text, source, corners).run();
 }
 
 std::string formatObj(const MeshData& mesh) {
