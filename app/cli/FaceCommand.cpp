@@ -32,6 +32,7 @@ struct FaceBuildCliOptions {
     std::string name;
     int grid = 257;
     int resolution = 38;
+    bool ignoreLayout = false;
 };
 
 face::UvMesh loadUvMesh(const std::filesystem::path& path) {
@@ -162,7 +163,7 @@ int runFaceBuild(const FaceBuildCliOptions& o) {
     std::printf("face build: %s (%zu vertices, %zu triangles with (u,v), %zu UV islands)\n", o.mesh.c_str(),
                 mesh.positions.size(), mesh.triangles.size(), mesh.islandCount);
     const face::FaceLandmarks given = givenLandmarks(mesh, o.landmarks);
-    const face::LandmarkSuggestion suggestion = face::suggestLandmarks(mesh, given);
+    const face::LandmarkSuggestion suggestion = face::suggestLandmarks(mesh, given, !o.ignoreLayout);
     for (const auto& note : suggestion.notes) std::printf("%s\n", note.c_str());
     printLandmarks(suggestion.landmarks);
     if (!suggestion.landmarks.hasRequired()) {
@@ -211,6 +212,8 @@ void addFaceCommand(CLI::App& app, CommandRunner& run) {
         ->capture_default_str();
     build->add_option("--resolution", o->resolution, "Grid cells across the face domain for the viseme meshes")
         ->capture_default_str();
+    build->add_flag("--ignore-layout", o->ignoreLayout,
+                    "Find landmarks from the geometry even on a known layout (to compare the two)");
     build->callback([&run, o] { run = [o] { return runFaceBuild(*o); }; });
 }
 

@@ -23,7 +23,8 @@ struct LandmarkSuggestion {
     std::vector<std::string> notes; // what the finder saw (e.g. "mouth opening: boundary loop of 74 vertices")
 };
 
-// Keeps every landmark `given` has and finds the others.
-LandmarkSuggestion suggestLandmarks(const UvMesh& mesh, const FaceLandmarks& given = {});
+// Keeps every landmark `given` has and finds the others; `useLayouts` false skips the known layouts
+// (to check the geometry finder on a mesh whose layout gives the answer).
+LandmarkSuggestion suggestLandmarks(const UvMesh& mesh, const FaceLandmarks& given = {}, bool useLayouts = true);
 
 } // namespace vl::face

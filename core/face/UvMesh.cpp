@@ -259,10 +259,11 @@ UvHit UvLocator::locate(const Vec2& uv) const {
     return best;
 }
 
-UvHit closestSurfacePoint(const UvMesh& m, const Vec3& p) {
+UvHit closestSurfacePoint(const UvMesh& m, const Vec3& p, const std::vector<bool>& allowed) {
     UvHit best;
     double bestDistance = std::numeric_limits<double>::max();
     for (std::uint32_t t = 0; t < m.triangles.size(); ++t) {
+        if (!allowed.empty() && !allowed[t]) continue;
         const auto& tri = m.triangles[t];
         double w[3];
         const Vec3 q = closestPointOnTriangle(p, m.positions[tri[0]], m.positions[tri[1]], m.positions[tri[2]], w);

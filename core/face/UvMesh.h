@@ -71,9 +71,9 @@ class UvLocator {
 // Barycentric weights of p in the (u,v) triangle (a, b, c); they sum to 1.
 void barycentric(const Vec2& p, const Vec2& a, const Vec2& b, const Vec2& c, double out[3]);
 
-// The closest point of the mesh (all triangles) to `p`: its triangle, barycentric weights and
-// position (brute force over triangles; called for a handful of landmarks).
-UvHit closestSurfacePoint(const UvMesh& mesh, const Vec3& p);
+// The closest point of the mesh to `p` (over the triangles `allowed` marks, or all when empty): its
+// triangle, barycentric weights and position (brute force; called for a handful of landmarks).
+UvHit closestSurfacePoint(const UvMesh& mesh, const Vec3& p, const std::vector<bool>& allowed = {});
 // The (u,v) of a hit.
 Vec2 uvOf(const UvMesh& mesh, const UvHit& hit);
 
