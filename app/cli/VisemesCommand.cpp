@@ -10,6 +10,7 @@
 #include "core/deform/BundledFace.h"
 #include "core/deform/FaceDomain.h"
 #include "core/deform/Visemes.h"
+#include "core/face/HeadParts.h"
 #include "core/io/MeshIO.h"
 #include "core/project/JsonRead.h"
 #include "core/project/Project.h"
@@ -33,6 +34,7 @@ struct VisemesOptions {
     CriterionOptions adaptive; // --criterion given: adaptive refinement instead of the grid
     int decimals = 6;
     std::string visemeFile; // empty: the 15 Oculus visemes
+    bool skinOnly = false;  // leave out the eyeballs, teeth, tongue and mouth cavity
 };
 
 // Viseme parameter vectors from a JSON file in the format visemes.json is written in:
@@ -137,7 +139,8 @@ int runVisemes(const VisemesOptions& o) {
     if (!o.visemeFile.empty()) visemes = readVisemeFile(o.visemeFile, cascade);
     const MeshData uvMesh = buildVisemeMesh(o, cascade, visemes);
     if (o.decimals > 15) throwInputError("--decimals", "must be at most 15 (or negative for exact values)");
-    VisemeSet set = generateVisemeSet(cascade, uvMesh, visemes);
+    const auto parts = o.skinOnly ? std::vector<face::HeadPart>{} : face::makeHeadParts(cascade);
+    VisemeSet set = face::generateHeadVisemeSet(cascade, uvMesh, visemes, parts);
     roundCoordinates(set, o.decimals);
 
     const std::filesystem::path out = o.outDir;
@@ -158,8 +161,9 @@ void addVisemesCommand(CLI::App& app, CommandRunner& run) {
     auto* cmd =
         app.add_subcommand("visemes", "Write the interpolable viseme set of a bundled deformable face");
     cmd->add_option("--face", options->face, "Individual: bundled or retarget")->capture_default_str();
-    cmd->add_option("--project", options->project,
-                    "Use the deformable face and viseme parameter vectors of this project (e.g. from `face build`)");
+    cmd->add_option(
+        "--project", options->project,
+        "Use the deformable face and viseme parameter vectors of this project (e.g. from `face build`)");
     cmd->add_option("--out", options->outDir, "Output folder (neutral.obj, <viseme>.obj, visemes.json)")
         ->capture_default_str();
     cmd->add_option("--resolution", options->resolution, "Grid cells across the (u,v) domain (10..4096)")
@@ -171,6 +175,8 @@ void addVisemesCommand(CLI::App& app, CommandRunner& run) {
     cmd->add_option(
         "--viseme-file", options->visemeFile,
         "JSON with the visemes' parameter vectors (the format of visemes.json; default: Oculus 15)");
+    cmd->add_flag("--skin-only", options->skinOnly,
+                  "Only the face's skin: leave out the eyeballs, teeth, tongue and mouth cavity");
     cmd->add_option("--decimals", options->decimals,
                     "Round coordinates to this many decimals (centimetres; negative: exact doubles)")
         ->capture_default_str();

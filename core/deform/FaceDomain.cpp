@@ -12,7 +12,8 @@ namespace vl::face {
 double mouthHoleHalfHeight(double u) {
     // The tolerance makes the corners exactly 0 although 0.5 - 0.1 is not exact in binary.
     const double t = std::abs(u - kMouthU) / kMouthHalfWidth;
-    return t >= 1.0 - 1e-12 ? 0.0 : kMouthHalfHeight * (1.0 - t);
+    if (t >= 1.0 - 1e-12) return 0.0;
+    return t <= kMouthFlat ? kMouthHalfHeight : kMouthHalfHeight * (1.0 - t) / (1.0 - kMouthFlat);
 }
 
 bool insideMouthHole(double u, double v) {
@@ -96,7 +97,9 @@ MeshData faceDomainMesh(int resolution, DomainDensity density) {
                        : 1.0;
     };
     const auto us =
-        gridLines({0.0, kMouthU - kMouthHalfWidth, kMouthU, kMouthU + kMouthHalfWidth, 1.0}, resolution, du);
+        gridLines({0.0, kMouthU - kMouthHalfWidth, kMouthU - kMouthFlat * kMouthHalfWidth, kMouthU,
+                   kMouthU + kMouthFlat * kMouthHalfWidth, kMouthU + kMouthHalfWidth, 1.0},
+                  resolution, du);
     const auto vs = gridLines({0.0, kMouthV, 1.0}, resolution, dv);
     const int nu = static_cast<int>(us.size()), nv = static_cast<int>(vs.size());
     const int mouthRow = static_cast<int>(std::find(vs.begin(), vs.end(), kMouthV) - vs.begin());

@@ -11,8 +11,8 @@ namespace vl::face {
 namespace {
 
 constexpr std::array<std::string_view, kLandmarkCount> kNames = {
-    "mouth_corner_right", "mouth_corner_left", "upper_lip_mid",   "lower_lip_mid",   "eye_outer_right",
-    "eye_inner_right",    "eye_inner_left",    "eye_outer_left",  "nose_tip",        "upper_lip_right",
+    "mouth_corner_right", "mouth_corner_left", "upper_lip_mid",  "lower_lip_mid", "eye_outer_right",
+    "eye_inner_right",    "eye_inner_left",    "eye_outer_left", "nose_tip",      "upper_lip_right",
     "upper_lip_left",     "lower_lip_right",   "lower_lip_left"};
 
 } // namespace
@@ -49,13 +49,13 @@ Vec2 canonicalPosition(Landmark landmark) {
     case Landmark::NoseTip:
         return {kMouthU, kNoseTipV};
     case Landmark::UpperLipRight:
-        return {kMouthU - w / 2, kMouthV + h / 2};
+        return {kMouthU - w / 2, kMouthV + mouthHoleHalfHeight(kMouthU - w / 2)};
     case Landmark::UpperLipLeft:
-        return {kMouthU + w / 2, kMouthV + h / 2};
+        return {kMouthU + w / 2, kMouthV + mouthHoleHalfHeight(kMouthU + w / 2)};
     case Landmark::LowerLipRight:
-        return {kMouthU - w / 2, kMouthV - h / 2};
+        return {kMouthU - w / 2, kMouthV - mouthHoleHalfHeight(kMouthU - w / 2)};
     case Landmark::LowerLipLeft:
-        return {kMouthU + w / 2, kMouthV - h / 2};
+        return {kMouthU + w / 2, kMouthV - mouthHoleHalfHeight(kMouthU + w / 2)};
     }
     return {0, 0};
 }
@@ -94,11 +94,13 @@ FoundLandmark resolveLandmark(const UvMesh& mesh, const LandmarkInput& input, La
     switch (input.kind) {
     case LandmarkInput::Kind::Vertex: {
         if (input.vertex >= mesh.positions.size())
-            throwInputError(where, "vertex " + std::to_string(input.vertex) + " is out of range (the mesh has " +
+            throwInputError(where, "vertex " + std::to_string(input.vertex) +
+                                       " is out of range (the mesh has " +
                                        std::to_string(mesh.positions.size()) + " vertices)");
         for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t)
             for (int k = 0; k < 3; ++k)
-                if (mesh.triangles[t][k] == input.vertex && (!hit.found || bigger(mesh.island[t], mesh.island[hit.triangle]))) {
+                if (mesh.triangles[t][k] == input.vertex &&
+                    (!hit.found || bigger(mesh.island[t], mesh.island[hit.triangle]))) {
                     hit.found = true;
                     hit.triangle = t;
                     for (int c = 0; c < 3; ++c) hit.b[c] = c == k ? 1.0 : 0.0;
@@ -124,8 +126,8 @@ FoundLandmark resolveLandmark(const UvMesh& mesh, const LandmarkInput& input, La
             std::copy(w, w + 3, hit.b);
         }
         if (!hit.found)
-            throwInputError(where, "(u,v) (" + std::to_string(input.uv[0]) + ", " + std::to_string(input.uv[1]) +
-                                       ") lies on no triangle of the mesh");
+            throwInputError(where, "(u,v) (" + std::to_string(input.uv[0]) + ", " +
+                                       std::to_string(input.uv[1]) + ") lies on no triangle of the mesh");
         {
             const auto& tri = mesh.triangles[hit.triangle];
             hit.position = mesh.positions[tri[0]] * hit.b[0] + mesh.positions[tri[1]] * hit.b[1] +

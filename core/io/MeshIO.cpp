@@ -42,14 +42,14 @@ MeshData readMeshFile(const std::filesystem::path& path, CornerTexCoords* corner
     const std::string source = path.string();
     switch (format) {
     case MeshFormat::Obj:
-        return parseObj(bytes, source, corners);
+        return corners ? parseObj(bytes, source, *corners) : parseObj(bytes, source);
     case MeshFormat::Ply: {
         MeshData mesh = parsePly(bytes, source);
         if (corners && mesh.hasUVs()) *corners = {mesh.uvs, mesh.triangles};
         return mesh;
     }
     case MeshFormat::Vrml:
-        return parseVrml(bytes, source, corners);
+        return corners ? parseVrml(bytes, source, *corners) : parseVrml(bytes, source);
     }
     throwInputError(source, "unknown mesh format");
 }

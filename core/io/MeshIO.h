@@ -60,7 +60,9 @@ void writeMesh(const std::filesystem::path& path, const MeshData& mesh);
 // anywhere). Other statements (vn, vp, o, g, s, usemtl, mtllib, l, ...) are ignored, except
 // unknown ones starting with v or f (say `V` or `vx`), which are rejected: skipping a line that may
 // be a vertex would renumber every vertex after it. Line continuations ('\') are not supported.
-MeshData parseObj(std::string_view text, std::string_view source, CornerTexCoords* corners = nullptr);
+MeshData parseObj(std::string_view text, std::string_view source);
+// The same, and the file's per-corner texture coordinates.
+MeshData parseObj(std::string_view text, std::string_view source, CornerTexCoords& corners);
 // `v` lines, `vt` lines when the mesh has (u,v), and `f a b c` or `f a/a b/b c/c`.
 std::string formatObj(const MeshData& mesh);
 
@@ -78,7 +80,8 @@ std::string formatPly(const MeshData& mesh); // binary little-endian, float64: b
 // Transforms are ignored: positions are taken as written. DEF/USE of Coordinate and
 // TextureCoordinate nodes is resolved; a USE of a whole IndexedFaceSet does not add its geometry
 // again. PROTO declarations are skipped. VRML 1.0 and gzip-compressed files are rejected.
-MeshData parseVrml(std::string_view text, std::string_view source, CornerTexCoords* corners = nullptr);
+MeshData parseVrml(std::string_view text, std::string_view source);
+MeshData parseVrml(std::string_view text, std::string_view source, CornerTexCoords& corners);
 // `#VRML V2.0 utf8` with one Shape { IndexedFaceSet } holding all vertices and triangles, and a
 // TextureCoordinate with one (u,v) per vertex (no texCoordIndex) when the mesh has them.
 std::string formatVrml(const MeshData& mesh);

@@ -178,15 +178,19 @@ class ObjParser {
     std::vector<std::int64_t> cornerUV_; // per vertex (grown on use): first corner's texture coordinate or -1
     std::vector<std::uint32_t> corners_;
     std::vector<std::uint32_t> texCorners_; // the face's texture coordinate per corner, or kNoTexCoord
-    CornerTexCoords* cornerTexCoords_;       // filled when the caller asks for corner texture coordinates
+    CornerTexCoords* cornerTexCoords_;      // filled when the caller asks for corner texture coordinates
     std::vector<ForwardReference> forward_;
 };
 
 } // namespace
 
-MeshData parseObj(std::string_view text, std::string_view source, CornerTexCoords* corners) {
-    if (corners) *corners = {};
-    return ObjParser(text, source, corners).run();
+MeshData parseObj(std::string_view text, std::string_view source) {
+    return ObjParser(text, source, nullptr).run();
+}
+
+MeshData parseObj(std::string_view text, std::string_view source, CornerTexCoords& corners) {
+    corners = {};
+    return ObjParser(text, source, &corners).run();
 }
 
 std::string formatObj(const MeshData& mesh) {

@@ -291,7 +291,7 @@ class VrmlParser {
                 auto& uv = cornerUV_[vertexOffset + static_cast<std::size_t>(entry.value)];
                 if (separateTexIndex && uv < 0) // first corner wins
                     uv = static_cast<std::int64_t>(texOffset) + set.texCoordIndex[k].value;
-                const std::int64_t texture = !set.hasTexCoord ? -1
+                const std::int64_t texture = !set.hasTexCoord   ? -1
                                              : separateTexIndex ? set.texCoordIndex[k].value
                                                                 : entry.value;
                 texCorners.push_back(texture < 0 ? CornerTexCoords::kNoTexCoord
@@ -303,7 +303,8 @@ class VrmlParser {
                 if (!problem.empty()) throwInputError(whereLine(entry.line), problem);
                 if (cornerTexCoords_) // the same fan over the texture corners
                     for (std::size_t c = 2; c < texCorners.size(); ++c)
-                        cornerTexCoords_->triangles.push_back({texCorners[0], texCorners[c - 1], texCorners[c]});
+                        cornerTexCoords_->triangles.push_back(
+                            {texCorners[0], texCorners[c - 1], texCorners[c]});
                 corners.clear();
                 texCorners.clear();
             }
@@ -328,8 +329,9 @@ class VrmlParser {
 
 } // namespace
 
-MeshData parseVrml(std::string_view text, std::string_view source, CornerTexCoords* corners) {
-    if (corners) *corners = {};
+namespace {
+
+MeshData parseVrmlText(std::string_view text, std::string_view source, CornerTexCoords* corners) {
     meshio::requireNotBlank(text, source);
     if (text.size() >= 2 && static_cast<unsigned char>(text[0]) == 0x1f &&
         static_cast<unsigned char>(text[1]) == 0x8b)
@@ -337,6 +339,17 @@ MeshData parseVrml(std::string_view text, std::string_view source, CornerTexCoor
     if (text.starts_with("#VRML V1.0"))
         throwInputError(fileLine(source, 1), "VRML 1.0 is not supported; only VRML97 (#VRML V2.0 utf8)");
     return VrmlParser(text, source, corners).run();
+}
+
+} // namespace
+
+MeshData parseVrml(std::string_view text, std::string_view source) {
+    return parseVrmlText(text, source, nullptr);
+}
+
+MeshData parseVrml(std::string_view text, std::string_view source, CornerTexCoords& corners) {
+    corners = {};
+    return parseVrmlText(text, source, &corners);
 }
 
 std::string formatVrml(const MeshData& mesh) {
