@@ -3,6 +3,7 @@
 #include "core/common/Error.h"
 #include "ui/EditorUi.h"
 #include "ui/session/EditorSession.h"
+#include "ui/widgets/GuiProbe.h"
 
 #include <epoxy/gl.h>
 #define GLFW_INCLUDE_NONE
@@ -165,8 +166,16 @@ int runEditor(const EditorOptions& options) {
         EditorSession session;
         try {
             EditorUi ui(session, window);
-            applyStartOptions(options, session, ui);
+            if (!options.probe.empty()) probe::enable(options.probe);
             const bool screenshotMode = !options.screenshot.empty();
+            try {
+                applyStartOptions(options, session, ui);
+            } catch (const InputError& e) {
+                // A script asking for a picture must fail; a person gets the editor with the error
+                // shown (what was applied before the bad option stays).
+                if (screenshotMode) throw;
+                session.error(std::string("Start options: ") + e.what());
+            }
             for (int frame = 0; !glfwWindowShouldClose(window) || !ui.quitConfirmed(); ++frame) {
                 glfwPollEvents();
                 if (screenshotMode) session.finishBackgroundWork(); // deterministic pictures
@@ -175,6 +184,7 @@ int runEditor(const EditorOptions& options) {
                 if (options.drag.size() == 4) scriptedDrag(options, frame);
                 ImGui::NewFrame();
                 ui.frame();
+                if (probe::enabled()) probe::endFrame(ui.probeSummary());
                 ImGui::Render();
                 int width = 0, height = 0;
                 glfwGetFramebufferSize(window, &width, &height);

@@ -13,18 +13,19 @@ struct EditorOptions {
     std::filesystem::path visemeFolder; // load a folder of meshes at start
     std::filesystem::path screenshot;   // non-empty: render `frames` frames, save a PNG, exit
     int frames = 6;
-    int screenshotBits = 8;  // < 8: fewer colour levels, much smaller files
-    std::string panel;       // panel to show (Visemes, Frequencies, Weights, ...)
-    std::string viseme;      // viseme to select
-    std::string individual;  // base geometry of the face: bundled or retarget
-    std::string preset;      // viseme preset applied to the deformable face
-    std::string field;       // deformation field (stage name) to select
-    double play = -1.0;      // >= 0: start the playback at this time (seconds)
-    std::string sequence;    // playback sequence (phonemes or viseme names)
-    std::string brush;       // add, subtract or smooth: paint in the Weights panel
-    std::vector<float> drag; // x0 y0 x1 y1: a left-button drag over the frames (window pixels)
-    bool wireframe = true;   // wireframe overlay at start
-    std::string refine;      // run a refinement with this criterion (depth, normals, contour)
+    int screenshotBits = 8;      // < 8: fewer colour levels, much smaller files
+    std::string panel;           // panel to show (Visemes, Frequencies, Weights, ...)
+    std::string viseme;          // viseme to select
+    std::string individual;      // base geometry of the face: bundled or retarget
+    std::string preset;          // viseme preset applied to the deformable face
+    std::string field;           // deformation field (stage name) to select
+    double play = -1.0;          // >= 0: start the playback at this time (seconds)
+    std::string sequence;        // playback sequence (phonemes or viseme names)
+    std::string brush;           // add, subtract or smooth: paint in the Weights panel
+    std::vector<float> drag;     // x0 y0 x1 y1: a left-button drag over the frames (window pixels)
+    bool wireframe = true;       // wireframe overlay at start
+    std::string refine;          // run a refinement with this criterion (depth, normals, contour)
+    std::filesystem::path probe; // GUI tests: write the controls and a document summary here each frame
     int width = 1600;
     int height = 1000;
 };

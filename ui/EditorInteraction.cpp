@@ -165,9 +165,12 @@ void EditorUi::updateScalars() {
                         scale = std::max(scale, maxOf(errors));
                         if (member == selected) shown = std::move(errors);
                     }
-                // Square root: distances read better than squared distances on a colour ramp.
+                // Square root: distances read better than squared distances on a colour ramp. The
+                // legend reads in distance for a vertex of the largest weight (sqrt(w) d / sqrt(w_max)).
                 for (double& e : shown) e = std::sqrt(e);
                 mergedMesh_.setScalars(normalised(shown, std::sqrt(scale)));
+                const double maxWeight = maxOf(w);
+                errorLegendMax_ = maxWeight > 0.0 ? std::sqrt(scale / maxWeight) : 0.0;
             });
             errorKey_ = key;
         }

@@ -1,6 +1,8 @@
 #include "ui/EditorUi.h"
 
 #include "core/common/Error.h"
+#include "core/inspect/DistanceUnits.h"
+#include "ui/widgets/Controls.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -8,6 +10,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 
 namespace vl::ui {
 namespace {
@@ -54,9 +57,12 @@ void colourLegend(const ImVec2& min, const ImVec2& max, const char* low, const c
     }
     draw->AddRect(origin, ImVec2(origin.x + width, origin.y + height), IM_COL32(20, 20, 24, 255));
     draw->AddText(ImVec2(origin.x, origin.y + height + 2.0f), IM_COL32(220, 220, 230, 255), low);
+    // Right-aligned under the bar's end, but never over the low label.
     const float highWidth = ImGui::CalcTextSize(high).x;
-    draw->AddText(ImVec2(origin.x + width - highWidth, origin.y + height + 2.0f),
-                  IM_COL32(220, 220, 230, 255), high);
+    const float lowWidth = ImGui::CalcTextSize(low).x;
+    draw->AddText(
+        ImVec2(std::max(origin.x + width - highWidth, origin.x + lowWidth + 12.0f), origin.y + height + 2.0f),
+        IM_COL32(220, 220, 230, 255), high);
 }
 
 } // namespace
@@ -108,6 +114,43 @@ void EditorUi::startPlayback(double time, std::string sequence) {
 
 void EditorUi::requestQuit() {
     guarded([this] { quitConfirmed_ = true; });
+}
+
+double EditorUi::millimetresPerModelUnit() const {
+    static const LengthUnit kChosen[] = {LengthUnit::Metre, LengthUnit::Centimetre, LengthUnit::Millimetre,
+                                         LengthUnit::Inch};
+    if (costView_.unit >= 1 && costView_.unit <= 4) return millimetresPer(kChosen[costView_.unit - 1]);
+    Vec3 lo, hi;
+    const VisemeSet* set = session.visemes();
+    if (!set || !bounds(set->neutral.positions, lo, hi)) return millimetresPer(LengthUnit::Metre);
+    const double extent = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
+    return millimetresPer(guessLengthUnit(extent));
+}
+
+nlohmann::json EditorUi::probeSummary() const {
+    static const char* const kCriteria[] = {"depth", "normals", "contour"};
+    const Project& project = session.project();
+    nlohmann::json messages = nlohmann::json::array();
+    for (const StatusMessage& message : session.messages())
+        messages.push_back({{"error", message.kind == StatusMessage::Kind::Error}, {"text", message.text}});
+    return {{"panel", panelName(activePanel_)},
+            {"document_id", session.documentId()},
+            {"undo", session.undoName()},
+            {"redo", session.redoName()},
+            {"modified", session.modified()},
+            {"project_path", project.path.string()},
+            {"messages", std::move(messages)},
+            {"busy", session.loading() || session.saving() || session.exporting() ||
+                         session.refinementRunning() || session.reductionRunning() ||
+                         session.phonemeCountRunning()},
+            {"visemes", project.visemes.size()},
+            {"selected_viseme", session.selectedViseme},
+            {"target", project.reduction.target},
+            {"criterion", kCriteria[static_cast<int>(project.refinement.kind)]},
+            {"file_dialog_open", fileDialog_.isOpen()},
+            {"brush", brush_.enabled},
+            {"wireframe", wireframe_},
+            {"playing", playback_.playing}};
 }
 
 void EditorUi::saveProject(bool askForFile, std::function<void()> then) {
@@ -183,6 +226,7 @@ void EditorUi::syncGpu() {
 // --- frame -----------------------------------------------------------------------------------
 
 void EditorUi::frame() {
+    session.beginFrame();
     session.poll();
     if (playback_.playing) playback_.time += ImGui::GetIO().DeltaTime;
     syncGpu();
@@ -250,22 +294,22 @@ void EditorUi::shortcuts() {
 
 void EditorUi::menuBar() {
     if (!ImGui::BeginMainMenuBar()) return;
-    if (ImGui::BeginMenu("File")) {
-        if (ImGui::MenuItem("New project")) guarded([this] { session.newProject(); });
-        if (ImGui::MenuItem("Open project...", "Ctrl+O"))
+    if (ctl::BeginMenu("File")) {
+        if (ctl::MenuItem("New project")) guarded([this] { session.newProject(); });
+        if (ctl::MenuItem("Open project...", "Ctrl+O"))
             guarded([this] {
                 fileDialog_.open("Open project", FileDialog::Mode::OpenFile, {".vlproj", ".json"},
                                  [this](const auto& path) {
                                      session.attempt("Open project", [&] { session.startOpenProject(path); });
                                  });
             });
-        if (ImGui::MenuItem("Save project", "Ctrl+S", false, !session.project().path.empty()))
+        if (ctl::MenuItem("Save project", "Ctrl+S", false, !session.project().path.empty()))
             saveProject(false);
-        if (ImGui::MenuItem("Save project as...", "Ctrl+Shift+S")) saveProject(true);
+        if (ctl::MenuItem("Save project as...", "Ctrl+Shift+S")) saveProject(true);
         ImGui::Separator();
-        if (ImGui::MenuItem("Load sample face", "Ctrl+L"))
+        if (ctl::MenuItem("Load sample face", "Ctrl+L"))
             guarded([this] { session.attempt("Load sample", [&] { session.startLoadSample(); }); });
-        if (ImGui::MenuItem("Open viseme folder..."))
+        if (ctl::MenuItem("Open viseme folder..."))
             guarded([this] {
                 fileDialog_.open(
                     "Open viseme folder", FileDialog::Mode::OpenFolder, {}, [this](const auto& path) {
@@ -273,26 +317,26 @@ void EditorUi::menuBar() {
                     });
             });
         ImGui::Separator();
-        if (ImGui::MenuItem("Quit")) requestQuit();
+        if (ctl::MenuItem("Quit")) requestQuit();
         ImGui::EndMenu();
     }
-    if (ImGui::BeginMenu("Edit")) {
+    if (ctl::BeginMenu("Edit")) {
         const std::string undo = "Undo " + session.undoName();
         const std::string redo = "Redo " + session.redoName();
-        if (ImGui::MenuItem(undo.c_str(), "Ctrl+Z", false, session.canUndo())) session.undo();
-        if (ImGui::MenuItem(redo.c_str(), "Ctrl+Y", false, session.canRedo())) session.redo();
+        if (ctl::MenuItem(undo.c_str(), "Ctrl+Z", false, session.canUndo())) session.undo();
+        if (ctl::MenuItem(redo.c_str(), "Ctrl+Y", false, session.canRedo())) session.redo();
         ImGui::EndMenu();
     }
-    if (ImGui::BeginMenu("View")) {
-        if (ImGui::MenuItem("Frame model", "F")) frameAll();
-        ImGui::MenuItem("Wireframe overlay", "W", &wireframe_);
+    if (ctl::BeginMenu("View")) {
+        if (ctl::MenuItem("Frame model", "F")) frameAll();
+        ctl::MenuItem("Wireframe overlay", "W", &wireframe_);
         ImGui::Separator();
         for (int i = 0; i < static_cast<int>(Panel::Count); ++i)
-            if (ImGui::MenuItem(kPanelNames[i], nullptr, activePanel_ == static_cast<Panel>(i)))
+            if (ctl::MenuItem(kPanelNames[i], nullptr, activePanel_ == static_cast<Panel>(i)))
                 selectPanel(static_cast<Panel>(i));
         ImGui::EndMenu();
     }
-    if (ImGui::BeginMenu("Help")) {
+    if (ctl::BeginMenu("Help")) {
         ImGui::TextUnformatted("VisemeLab editor");
         ImGui::Separator();
         ImGui::TextUnformatted("Left drag: orbit    Right/middle drag: pan    Wheel: zoom");
@@ -326,7 +370,7 @@ void EditorUi::sidePanel(float top, float width, float height) {
             const auto panel = static_cast<Panel>(i);
             const ImGuiTabItemFlags flags =
                 panelSelectPending_ && activePanel_ == panel ? ImGuiTabItemFlags_SetSelected : 0;
-            if (ImGui::BeginTabItem(kPanelLabels[i], nullptr, flags)) {
+            if (ctl::BeginTabItem(kPanelLabels[i], nullptr, flags)) {
                 if (!panelSelectPending_) activePanel_ = panel;
                 ImGui::BeginChild("##panel-body");
                 switch (panel) {
@@ -454,17 +498,17 @@ void EditorUi::unsavedChangesPopup() {
     if (!ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
     ImGui::TextUnformatted("The project has unsaved changes.");
     const bool hasPath = !session.project().path.empty();
-    if (ImGui::Button(hasPath ? "Save" : "Save as...", ImVec2(110, 0))) {
+    if (ctl::Button(hasPath ? "Save" : "Save as...", ImVec2(110, 0))) {
         ImGui::CloseCurrentPopup();
         saveProject(false, std::move(pendingGuarded_));
     }
     ImGui::SameLine();
-    if (ImGui::Button("Discard changes", ImVec2(130, 0))) {
+    if (ctl::Button("Discard changes", ImVec2(130, 0))) {
         ImGui::CloseCurrentPopup();
         if (auto action = std::move(pendingGuarded_)) action();
     }
     ImGui::SameLine();
-    if (ImGui::Button("Cancel", ImVec2(90, 0))) {
+    if (ctl::Button("Cancel", ImVec2(90, 0))) {
         pendingGuarded_ = nullptr;
         ImGui::CloseCurrentPopup();
     }
@@ -603,7 +647,14 @@ void EditorUi::comparisonViews(ImVec2 size) {
         });
     if (session.visemes()) viewLabel(right.imageMin, afterLabel);
     if (grouping && !playback_.playing)
-        colourLegend(right.imageMin, right.imageMax, "0", "largest error (all visemes)");
+        colourLegend(right.imageMin, right.imageMax, "0 mm",
+                     [&] {
+                         char text[64];
+                         std::snprintf(text, sizeof text, "%.3g mm (largest, all visemes)",
+                                       errorLegendMax_ * millimetresPerModelUnit());
+                         return std::string(text);
+                     }()
+                         .c_str());
     // One camera for both views: the one the user is moving wins.
     if (right.hovered || right.leftDown)
         beforeView_.camera = afterView_.camera;

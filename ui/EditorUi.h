@@ -8,6 +8,8 @@
 #include "ui/session/EditorSession.h"
 #include "ui/widgets/FileDialog.h"
 
+#include <nlohmann/json.hpp>
+
 #include <optional>
 #include <string>
 #include <string_view>
@@ -64,6 +66,8 @@ class EditorUi {
     // True when the user asked to quit and either nothing is unsaved or they confirmed.
     bool quitConfirmed() const { return quitConfirmed_; }
     void requestQuit();
+    // What a GUI test checks after a click (see GuiProbe.h): panel, undo history, messages, tasks.
+    nlohmann::json probeSummary() const;
 
     EditorSession& session;
 
@@ -134,6 +138,15 @@ class EditorUi {
     bool openUnsavedPopup_ = false;
     bool quitConfirmed_ = false;
     bool framePending_ = true;
+    // How the Reduction panel shows the cost curve (view state, not saved).
+    struct CostView {
+        bool logarithmic = true;
+        bool percent = false;
+        int unit = 0; // 0 auto (guessed from the head size), then m, cm, mm, in
+    } costView_;
+    double errorLegendMax_ = 0.0; // largest weighted distance of the error colours, model units
+    // Millimetres per model unit: the chosen unit, or the guess from the neutral mesh's size.
+    double millimetresPerModelUnit() const;
     std::string importName_;
     std::string importError_; // the core's message for the last failed import, shown in the panel
 };

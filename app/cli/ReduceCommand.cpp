@@ -1,12 +1,15 @@
 // `visemelab reduce`: load a viseme set, reduce it to m merged meshes, write meshes, mapping and report.
 #include "app/cli/Command.h"
 #include "app/cli/Progress.h"
+#include "app/cli/WeightsOption.h"
 #include "core/common/AtomicFile.h"
 #include "core/common/Error.h"
 #include "core/common/TextParsing.h"
+#include "core/export/Xface.h"
 #include "core/project/ProjectRun.h"
 #include "core/reduce/ReduceRun.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -22,6 +25,7 @@ struct ReduceOptions {
     std::string neutral;
     std::vector<std::string> visemes; // NAME=FILE
     std::string visemeDir;
+    std::string fdp;                // an Xface face (.fdp)
     std::vector<std::string> freqs; // NAME=F
     std::string freqFile;
     std::string mapFile;
@@ -47,7 +51,11 @@ std::filesystem::path findNeutralIn(const std::filesystem::path& dir) {
                     "no neutral mesh (neutral.obj/.ply/.wrl) in the folder; pass --neutral FILE");
 }
 
-VisemeSet loadSet(const ReduceOptions& o) {
+VisemeSet loadSet(const ReduceOptions& o, XfaceFace& xface) {
+    if (!o.fdp.empty()) { // the "Rest" entity and the Viseme entities; <stem>.dic as phoneme map
+        xface = loadXfaceFace(o.fdp);
+        return std::move(xface.set);
+    }
     std::filesystem::path neutral = o.neutral;
     std::vector<std::pair<std::string, std::filesystem::path>> files;
     if (!o.visemeDir.empty()) {
@@ -59,7 +67,7 @@ VisemeSet loadSet(const ReduceOptions& o) {
     return loadVisemeSet(neutral, files);
 }
 
-FrequencySource loadFrequencies(const ReduceOptions& o, const VisemeSet& set) {
+FrequencySource loadFrequencies(const ReduceOptions& o, const VisemeSet& set, const XfaceFace& xface = {}) {
     FrequencySource source;
     if (!o.freqFile.empty()) {
         source = loadFrequencyFile(o.freqFile);
@@ -81,6 +89,26 @@ FrequencySource loadFrequencies(const ReduceOptions& o, const VisemeSet& set) {
         }
         source.map = loadPhonemeMapFile(o.mapFile);
     }
+    // An Xface face's .dic maps a phoneme table given without --map (a table that names only the
+    // face's visemes stays a viseme table); the phonemes it shows with the neutral (pauses) are not
+    // visemes and leave the table.
+    if (o.mapFile.empty() && !xface.dictionary.entries.empty() && !o.freqFile.empty()) {
+        const bool visemeTable =
+            !source.isPhonemeBased() &&
+            std::all_of(source.visemeFrequencies.entries.begin(), source.visemeFrequencies.entries.end(),
+                        [&](const auto& entry) { return set.find(entry.first) >= 0; });
+        if (!visemeTable) {
+            if (!source.isPhonemeBased()) {
+                source.phonemes = std::move(source.visemeFrequencies);
+                source.visemeFrequencies = {};
+            }
+            if (source.map.entries.empty()) source.map = xface.dictionary;
+            std::erase_if(source.phonemes.entries, [&](const auto& entry) {
+                return std::find(xface.restPhonemes.begin(), xface.restPhonemes.end(), entry.first) !=
+                       xface.restPhonemes.end();
+            });
+        }
+    }
     if (source.isPhonemeBased() && source.map.entries.empty())
         throwInputError("--freq-file",
                         "a phoneme frequency table needs a phoneme -> viseme map (--map FILE)");
@@ -90,13 +118,7 @@ FrequencySource loadFrequencies(const ReduceOptions& o, const VisemeSet& set) {
 ReduceSettings loadSettings(const ReduceOptions& o) {
     ReduceSettings settings;
     settings.target = o.target;
-    if (const auto mode = weightModeFromString(o.weights)) {
-        settings.weightMode = *mode;
-        if (*mode == WeightMode::Painted) throwUsage("painted weights need a file: --weights FILE");
-    } else {
-        settings.weightMode = WeightMode::Painted;
-        settings.paintedWeights = loadWeightsFile(o.weights);
-    }
+    applyWeightsOption(o.weights, settings);
     return settings;
 }
 
@@ -119,18 +141,22 @@ void checkFlagCombinations(const ReduceOptions& o) {
         throwUsage("use either --freq NAME=F or --freq-file FILE, not both");
     if (o.project.empty() && o.target == kTargetNotGiven)
         throwUsage("--target M is required (or --project FILE)");
-    if (o.project.empty() && o.neutral.empty() && o.visemeDir.empty())
-        throwUsage("a neutral mesh is required: --neutral FILE (or --visemes DIR)");
+    if (o.project.empty() && o.neutral.empty() && o.visemeDir.empty() && o.fdp.empty())
+        throwUsage("a neutral mesh is required: --neutral FILE (or --visemes DIR, or --fdp FACE.fdp)");
     if (!o.project.empty() && (!o.neutral.empty() || !o.visemes.empty() || !o.visemeDir.empty()))
         throwUsage("--project already names the meshes; drop --neutral/--viseme/--visemes");
+    if (!o.fdp.empty() &&
+        (!o.project.empty() || !o.neutral.empty() || !o.visemes.empty() || !o.visemeDir.empty()))
+        throwUsage("--fdp already names the meshes; drop --project/--neutral/--viseme/--visemes");
 }
 
 ReduceInputs loadInputs(const ReduceOptions& o, bool weightsGiven) {
     checkFlagCombinations(o);
     ReduceInputs in;
     if (o.project.empty()) {
-        in.set = loadSet(o);
-        in.frequencies = loadFrequencies(o, in.set);
+        XfaceFace xface;
+        in.set = loadSet(o, xface);
+        in.frequencies = loadFrequencies(o, in.set, xface);
         in.settings = loadSettings(o);
         return in;
     }
@@ -185,6 +211,9 @@ void addReduceCommand(CLI::App& app, CommandRunner& run) {
     cmd->add_option("--viseme", options->visemes, "A viseme as NAME=FILE (repeatable)");
     cmd->add_option("--visemes", options->visemeDir,
                     "Folder of viseme meshes, sorted by name; neutral.* in it is the neutral mesh");
+    cmd->add_option("--fdp", options->fdp,
+                    "An Xface face (XfaceEd .fdp): its Rest entity is the neutral, its Viseme entities the "
+                    "visemes; <stem>.dic beside it maps a phoneme --freq-file given without --map");
     cmd->add_option("--freq", options->freqs, "A viseme frequency as NAME=F (repeatable)");
     cmd->add_option("--freq-file", options->freqFile,
                     "Frequencies: CSV name,frequency or JSON (viseme table, or phonemes + map)");

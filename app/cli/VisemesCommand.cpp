@@ -11,6 +11,7 @@
 #include "core/deform/FaceDomain.h"
 #include "core/deform/Visemes.h"
 #include "core/face/HeadParts.h"
+#include "core/export/KeyMeshFiles.h"
 #include "core/io/MeshIO.h"
 #include "core/project/JsonRead.h"
 #include "core/project/Project.h"
@@ -20,6 +21,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <unordered_set>
 
 namespace vl::cli {
 
@@ -47,11 +49,19 @@ std::vector<VisemeParameters> readVisemeFile(const std::filesystem::path& path,
     if (!document.is_object() || !root.has("visemes"))
         throwInputError(path.string(), "expected an object with a \"visemes\" array");
     std::vector<VisemeParameters> visemes;
+    std::unordered_set<std::string> names;
+    checkVisemeSetSize(root["visemes"].size(), 0, root["visemes"].path()); // before any viseme is built
     for (const JsonNode& entry : root["visemes"].elements()) {
         entry.expectObject();
         entry.allowOnly({"name", "file", "parameters"});
         VisemeParameters v;
-        v.name = entry["name"].nonEmptyString();
+        const JsonNode nameNode = entry["name"];
+        v.name = nameNode.nonEmptyString();
+        // The name becomes <name>.obj in the output folder: nothing that leaves it or hits neutral.obj.
+        if (fileSafeName(v.name) != v.name || v.name == "neutral")
+            nameNode.fail("viseme name \"" + v.name +
+                          "\" cannot be a file name (letters, digits, '-', '_', '+' only; not \"neutral\")");
+        if (!names.insert(v.name).second) nameNode.fail("viseme \"" + v.name + "\" is listed twice");
         if (entry.has("parameters"))
             for (const auto& [name, value] : entry["parameters"].members()) {
                 const int k = face.findParameter(name);
@@ -138,6 +148,8 @@ int runVisemes(const VisemesOptions& o) {
     }
     if (!o.visemeFile.empty()) visemes = readVisemeFile(o.visemeFile, cascade);
     const MeshData uvMesh = buildVisemeMesh(o, cascade, visemes);
+    checkVisemeSetSize(visemes.size(), uvMesh.positions.size(),
+                       o.visemeFile.empty() ? std::string("visemes") : o.visemeFile);
     if (o.decimals > 15) throwInputError("--decimals", "must be at most 15 (or negative for exact values)");
     const auto parts = o.skinOnly ? std::vector<face::HeadPart>{} : face::makeHeadParts(cascade);
     VisemeSet set = face::generateHeadVisemeSet(cascade, uvMesh, visemes, parts);

@@ -1,9 +1,10 @@
-// visemelab: the headless pipeline (reduce, refine, visemes, export, freq).
+// visemelab: the headless pipeline (reduce, refine, visemes, export, freq, project, avatar, say).
 #include "app/cli/Command.h"
 #include "core/common/Error.h"
 
 #include <cstdio>
 #include <exception>
+#include <new>
 
 int main(int argc, char** argv) {
     CLI::App app{"VisemeLab: optimal viseme reduction and adaptive deformable faces"};
@@ -17,6 +18,8 @@ int main(int argc, char** argv) {
     vl::cli::addExportCommand(app, run);
     vl::cli::addProjectCommand(app, run);
     vl::cli::addFaceCommand(app, run);
+    vl::cli::addAvatarCommand(app, run);
+    vl::cli::addSayCommand(app, run);
 
     try {
         app.parse(argc, argv);
@@ -31,6 +34,10 @@ int main(int argc, char** argv) {
         return vl::cli::kExitUsage;
     } catch (const vl::InputError& e) {
         std::fprintf(stderr, "visemelab: error: %s\n", e.what());
+        return vl::cli::kExitInvalidInput;
+    } catch (const std::bad_alloc&) {
+        // Readers bound memory by their input's size; this is a machine short of memory for it.
+        std::fprintf(stderr, "visemelab: error: out of memory (the input is too large for this machine)\n");
         return vl::cli::kExitInvalidInput;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "visemelab: internal error: %s\n", e.what());

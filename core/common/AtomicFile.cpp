@@ -1,6 +1,7 @@
 #include "core/common/AtomicFile.h"
 
 #include "core/common/Error.h"
+#include "core/common/Limits.h"
 
 #include <cstdio>
 #include <fstream>
@@ -12,8 +13,11 @@ namespace vl {
 
 std::string readFileToString(const std::filesystem::path& path) {
     std::error_code ec;
-    if (!std::filesystem::exists(path, ec)) throwInputError(path.string(), "file not found");
-    if (std::filesystem::is_directory(path, ec)) throwInputError(path.string(), "is a directory, not a file");
+    const auto status = std::filesystem::status(path, ec);
+    if (!std::filesystem::exists(status)) throwInputError(path.string(), "file not found");
+    if (std::filesystem::is_directory(status)) throwInputError(path.string(), "is a directory, not a file");
+    // A FIFO or device would block or never end.
+    if (!std::filesystem::is_regular_file(status)) throwInputError(path.string(), "not a regular file");
     std::ifstream in(path, std::ios::binary);
     if (!in) throwInputError(path.string(), "cannot open file for reading");
     std::string data;
@@ -21,7 +25,15 @@ std::string readFileToString(const std::filesystem::path& path) {
     const auto size = in.tellg();
     in.seekg(0, std::ios::beg);
     if (size > 0) {
-        data.resize(static_cast<std::size_t>(size));
+        if (static_cast<std::uintmax_t>(size) > limits::kMaxInputFileBytes)
+            throwInputError(path.string(),
+                            "file too large (" + std::to_string(static_cast<std::uintmax_t>(size)) +
+                                " bytes; the limit is " + std::to_string(limits::kMaxInputFileBytes) + ")");
+        try {
+            data.resize(static_cast<std::size_t>(size));
+        } catch (const std::bad_alloc&) {
+            throwInputError(path.string(), "not enough memory to read the file");
+        }
         in.read(data.data(), size);
     }
     if (!in) throwInputError(path.string(), "read error");

@@ -61,4 +61,12 @@ std::string_view trim(std::string_view text) {
     return text.substr(first, last - first + 1);
 }
 
+std::string_view stripUtf8Bom(std::string_view text) {
+    return text.starts_with("\xEF\xBB\xBF") ? text.substr(3) : text;
+}
+
+bool isBlankText(std::string_view text) {
+    return trim(stripUtf8Bom(text)).empty();
+}
+
 } // namespace vl

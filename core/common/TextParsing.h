@@ -21,4 +21,10 @@ std::vector<std::string_view> splitWhitespace(std::string_view line);
 
 std::string_view trim(std::string_view text);
 
+// `text` without a leading UTF-8 byte order mark (EF BB BF), which some editors write.
+std::string_view stripUtf8Bom(std::string_view text);
+
+// True when the text holds nothing but white space (and perhaps a byte order mark).
+bool isBlankText(std::string_view text);
+
 } // namespace vl

@@ -1,8 +1,10 @@
 #include "core/export/Export.h"
 
+#include "core/common/AtomicFile.h"
 #include "core/common/Error.h"
 #include "core/export/Gltf.h"
 #include "core/export/KeyMeshFiles.h"
+#include "core/export/MappingJson.h"
 #include "core/export/RuntimePackageWriter.h"
 #include "core/export/Xface.h"
 #include "core/project/ProjectRun.h"
@@ -38,23 +40,38 @@ std::vector<std::filesystem::path> exportModel(const ReducedModel& model, Export
         for (const std::string& name : names) paths.push_back(out / name);
         return paths;
     };
+    // mapping.json beside every format: inside a folder export, <stem>.mapping.json beside a file.
+    const auto withMapping = [&](std::vector<std::filesystem::path> written, bool folder) {
+        std::vector<std::string> keyFiles;
+        if (folder)
+            for (std::size_t k = 0; k < model.keys.size(); ++k)
+                keyFiles.push_back(keyFileName(model, k, format == ExportFormat::Vrml ? ".wrl" : ".obj"));
+        const std::filesystem::path mapping =
+            folder ? out / "mapping.json" : out.parent_path() / (out.stem().string() + ".mapping.json");
+        writeFileAtomically(mapping, formatMappingJson(model, keyFiles));
+        written.push_back(mapping);
+        return written;
+    };
     switch (format) {
     case ExportFormat::Glb:
         writeGlb(out, model);
-        return {out};
+        return withMapping({out}, false);
     case ExportFormat::Runtime:
         writeRuntimePackage(out, model, {.quantise = options.quantise});
-        return {out};
+        return withMapping({out}, false);
     case ExportFormat::Vrml:
-        return inFolder(writeXfaceFace(out, model, options.faceName));
+        return withMapping(inFolder(writeXfaceFace(out, model, options.faceName)), true);
     case ExportFormat::Obj:
-        return inFolder(writeKeyMeshFiles(out, model, ".obj"));
+        return withMapping(inFolder(writeKeyMeshFiles(out, model, ".obj")), true);
     }
     return {};
 }
 
 ReducedModel projectReducedModel(const Project& project, bool unreduced) {
-    const VisemeSet set = loadProjectVisemeSet(project);
+    return projectReducedModel(project, loadProjectVisemeSet(project), unreduced);
+}
+
+ReducedModel projectReducedModel(const Project& project, const VisemeSet& set, bool unreduced) {
     std::vector<std::string> names;
     for (const Viseme& v : set.visemes) names.push_back(v.name);
     if (unreduced)

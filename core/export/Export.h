@@ -23,8 +23,9 @@ struct ExportOptions {
     std::string faceName = "face"; // vrml: <faceName>.fdp / .dic
 };
 
-// glb and runtime write the file `out`; vrml and obj write into the folder `out` (created).
-// Returns the paths written.
+// glb and runtime write the file `out` and <stem>.mapping.json beside it; vrml and obj write into
+// the folder `out` (created), mapping.json included (core/export/MappingJson.h: every original
+// viseme and phoneme -> key). Returns the paths written.
 std::vector<std::filesystem::path> exportModel(const ReducedModel& model, ExportFormat format,
                                                const std::filesystem::path& out,
                                                const ExportOptions& options = {});
@@ -33,6 +34,8 @@ std::vector<std::filesystem::path> exportModel(const ReducedModel& model, Export
 // result when it matches the viseme count and target, else by a fresh exact reduction with the
 // project's settings. `unreduced` exports every original viseme as its own key instead.
 ReducedModel projectReducedModel(const Project& project, bool unreduced = false);
+// The same with the project's meshes already loaded (loadProjectVisemeSet).
+ReducedModel projectReducedModel(const Project& project, const VisemeSet& set, bool unreduced = false);
 
 // A model (e.g. an imported glTF) as a viseme set: the keys become the visemes.
 VisemeSet toVisemeSet(const ReducedModel& model, const std::filesystem::path& source);

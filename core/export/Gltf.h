@@ -12,7 +12,10 @@
 // Import (.glb or .gltf): the first mesh that has morph targets (else the first mesh); all its
 // triangle primitives are concatenated. Targets become key meshes (neutral + displacement), named
 // from extras.targetNames or "target<k>"; the VisemeLab extras are read back when present. Node
-// transforms are ignored (shapes stay in mesh space). Dense and sparse accessors, any stride.
+// transforms are ignored (shapes stay in mesh space). Read with core/gltf's hardened reader (limits,
+// confined URIs; sparse, quantised, EXT_meshopt_compression and Draco data). Whole avatars (every
+// mesh, the visemes among other targets, written back as the same avatar): core/gltf/Avatar*.
+#include "core/export/GltfAnimation.h"
 #include "core/export/ReducedModel.h"
 
 #include <filesystem>
@@ -21,10 +24,11 @@
 
 namespace vl {
 
-// The .glb bytes.
-std::string formatGlb(const ReducedModel& model);
+// The .glb bytes, with `animation` (when given) animating the morph target weights.
+std::string formatGlb(const ReducedModel& model, const GltfMorphAnimation* animation = nullptr);
 // formatGlb written atomically.
-void writeGlb(const std::filesystem::path& path, const ReducedModel& model);
+void writeGlb(const std::filesystem::path& path, const ReducedModel& model,
+              const GltfMorphAnimation* animation = nullptr);
 
 // Throws InputError naming `source` (and the glTF element) for anything it cannot read.
 ReducedModel parseGltf(std::string_view bytes, std::string_view source, bool binary,

@@ -102,9 +102,43 @@ tinygltf::Value visemeLabExtras(const ReducedModel& model) {
     return tinygltf::Value(std::move(extras));
 }
 
+// Animation data is not vertex data: its buffer views have no target.
+constexpr int kNoBufferTarget = 0;
+
+// Appends `animation` as one sampler and one "weights" channel on node 0.
+void addMorphAnimation(GltfBuilder& b, const GltfMorphAnimation& animation, std::size_t targets) {
+    const bool cubic = animation.interpolation == GltfMorphAnimation::Interpolation::CubicSpline;
+    const std::size_t perTime = targets * (cubic ? 3 : 1);
+    if (animation.times.empty() || targets == 0 ||
+        animation.values.size() != animation.times.size() * perTime)
+        throwInputError("glTF export", "animation '" + animation.name +
+                                           "': " + std::to_string(animation.values.size()) + " values for " +
+                                           std::to_string(animation.times.size()) + " times and " +
+                                           std::to_string(targets) + " morph targets");
+    for (std::size_t i = 1; i < animation.times.size(); ++i)
+        if (!(animation.times[i] > animation.times[i - 1]))
+            throwInputError("glTF export", "animation '" + animation.name + "': time " + std::to_string(i) +
+                                               " does not increase");
+    tinygltf::AnimationSampler sampler;
+    sampler.input = b.addAccessor(animation.times, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_SCALAR,
+                                  animation.times.size(), kNoBufferTarget, true); // input needs min/max
+    sampler.output = b.addAccessor(animation.values, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_SCALAR,
+                                   animation.values.size(), kNoBufferTarget, false);
+    sampler.interpolation = cubic ? "CUBICSPLINE" : "LINEAR";
+    tinygltf::AnimationChannel channel;
+    channel.sampler = 0;
+    channel.target_node = 0;
+    channel.target_path = "weights";
+    tinygltf::Animation gltfAnimation;
+    gltfAnimation.name = animation.name;
+    gltfAnimation.samplers.push_back(std::move(sampler));
+    gltfAnimation.channels.push_back(std::move(channel));
+    b.model.animations.push_back(std::move(gltfAnimation));
+}
+
 } // namespace
 
-std::string formatGlb(const ReducedModel& model) {
+std::string formatGlb(const ReducedModel& model, const GltfMorphAnimation* animation) {
     validateReducedModel(model, "glTF export");
     const MeshData& mesh = model.neutral;
     GltfBuilder b;
@@ -169,6 +203,7 @@ std::string formatGlb(const ReducedModel& model) {
     scene.nodes.push_back(0);
     b.model.scenes.push_back(scene);
     b.model.defaultScene = 0;
+    if (animation) addMorphAnimation(b, *animation, model.keys.size());
     b.model.asset.version = "2.0";
     b.model.asset.generator = "VisemeLab";
     b.model.buffers[0].data.resize((b.model.buffers[0].data.size() + 3) & ~std::size_t{3}, 0);
@@ -180,8 +215,9 @@ std::string formatGlb(const ReducedModel& model) {
     return stream.str();
 }
 
-void writeGlb(const std::filesystem::path& path, const ReducedModel& model) {
-    writeFileAtomically(path, formatGlb(model));
+void writeGlb(const std::filesystem::path& path, const ReducedModel& model,
+              const GltfMorphAnimation* animation) {
+    writeFileAtomically(path, formatGlb(model, animation));
 }
 
 } // namespace vl

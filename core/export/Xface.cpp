@@ -8,13 +8,16 @@
 
 #include <tinyxml2.h>
 
+#include <algorithm>
 #include <cctype>
 #include <set>
+#include <unordered_set>
 
 namespace vl {
 namespace {
 
 constexpr const char* kRestAlias = "Rest";
+constexpr const char* kPausePhonemes[] = {"#", "_"};
 
 std::string xmlEscape(std::string_view text) {
     std::string out;
@@ -80,6 +83,8 @@ MeshData readEntityMeshes(const FdpEntity& entity, const std::filesystem::path& 
         } catch (const InputError& e) {
             throwInputError(where, e.what());
         }
+        // An entity may list the same mesh many times: its parts together obey the viseme set limit.
+        checkVisemeSetSize(0, mesh.positions.size(), where);
     }
     return mesh;
 }
@@ -169,6 +174,9 @@ std::string formatFdp(const ReducedModel& model) {
 
 PhonemeVisemeMap parseXfaceDictionary(std::string_view text, std::string_view source, std::string* language) {
     PhonemeVisemeMap map;
+    map.origin = source;
+    std::unordered_set<std::string_view> listed; // linear-time duplicate check
+    text = stripUtf8Bom(text); // a file of only a byte order mark is empty, not the language "\xEF\xBB\xBF"
     std::size_t lineNumber = 0, start = 0;
     bool haveLanguage = false;
     while (start <= text.size()) {
@@ -186,12 +194,13 @@ PhonemeVisemeMap parseXfaceDictionary(std::string_view text, std::string_view so
             continue;
         }
         if (tokens.size() != 2) throwInputError(fileLine(source, lineNumber), "expected 'phoneme viseme'");
-        if (map.visemeOf(tokens[0]))
+        if (!listed.insert(tokens[0]).second)
             throwInputError(fileLine(source, lineNumber),
                             "phoneme '" + std::string(tokens[0]) + "' is listed twice");
         map.entries.emplace_back(std::string(tokens[0]), std::string(tokens[1]));
     }
     if (!haveLanguage) throwInputError(source, "empty phoneme dictionary");
+    if (map.entries.empty()) throwInputError(source, "no 'phoneme viseme' lines after the language line");
     return map;
 }
 
@@ -199,12 +208,21 @@ std::string formatXfaceDictionary(const ReducedModel& model, std::string_view la
     validateReducedModel(model, "Xface export");
     const std::vector<std::string> aliases = xfaceAliases(model);
     std::string out = std::string(language) + "\n";
+    std::string silence = kRestAlias;
     for (const auto& [phoneme, key] : model.phonemeToKey) {
         for (char c : phoneme)
             if (std::isspace(static_cast<unsigned char>(c)))
                 throwInputError("Xface export", "phoneme '" + phoneme + "' contains white space");
         out += phoneme + " " + aliases[static_cast<std::size_t>(key)] + "\n";
+        if (phoneme == "sil") silence = aliases[static_cast<std::size_t>(key)];
     }
+    // Pauses need a line, or XfacePlayer finds no viseme for them: '#' as in Xface's own dictionaries
+    // (italian.dic: "# Rest"), '_' as in the MBROLA phoneme timings it plays. Silence shows the key
+    // "sil" was merged into, else the neutral face.
+    for (const char* pause : kPausePhonemes)
+        if (std::none_of(model.phonemeToKey.begin(), model.phonemeToKey.end(),
+                         [&](const auto& entry) { return entry.first == pause; }))
+            out += std::string(pause) + " " + silence + "\n";
     return out;
 }
 
@@ -230,10 +248,16 @@ XfaceFace loadXfaceFace(const std::filesystem::path& fdpPath) {
     XfaceFace face;
     face.set.neutral = readEntityMeshes(*neutral, fdpPath);
     face.set.neutralSource = fdpPath.parent_path() / neutral->meshFiles.front();
+    std::size_t visemeCount = 0;
+    for (const FdpEntity& e : doc.entities) visemeCount += e.category == "Viseme" ? 1 : 0;
+    // Checked before reading: entities naming the same big mesh again and again must not exhaust memory.
+    checkVisemeSetSize(visemeCount, face.set.vertexCount(), fdpPath.string());
+    std::unordered_set<std::string_view> aliases;
     for (const FdpEntity& e : doc.entities) {
         if (e.category != "Viseme") continue;
         const std::string where = fileLine(fdpPath.string(), static_cast<std::size_t>(e.line));
-        if (face.set.find(e.alias) >= 0) throwInputError(where, "viseme '" + e.alias + "' is defined twice");
+        if (!aliases.insert(e.alias).second)
+            throwInputError(where, "viseme '" + e.alias + "' is defined twice");
         const MeshData mesh = readEntityMeshes(e, fdpPath);
         checkInterpolable(face.set.neutral, face.set.neutralSource.string(), mesh,
                           where + ": entity '" + e.alias + "'");
@@ -244,8 +268,14 @@ XfaceFace loadXfaceFace(const std::filesystem::path& fdpPath) {
                                               std::to_string(face.set.visemes.size()));
     std::filesystem::path dictionary = fdpPath;
     dictionary.replace_extension(".dic");
-    if (std::filesystem::exists(dictionary))
-        face.dictionary = parseXfaceDictionary(readFileToString(dictionary), dictionary.string());
+    if (std::filesystem::exists(dictionary)) {
+        for (auto& entry : parseXfaceDictionary(readFileToString(dictionary), dictionary.string()).entries) {
+            if (entry.second == neutral->alias)
+                face.restPhonemes.push_back(std::move(entry.first));
+            else
+                face.dictionary.entries.push_back(std::move(entry));
+        }
+    }
     return face;
 }
 

@@ -6,7 +6,10 @@
 // estimated from the neutral's bounding box until feature points are set in XfaceEd, identity
 // translation/rotation) and a source with an Expression entity "Rest" for the neutral and one
 // Viseme entity per key mesh; and <face>.dic, an Xface phoneme dictionary (first line the language,
-// then one "phoneme viseme-alias" line per phoneme) mapping every phoneme to its merged viseme.
+// then one "phoneme viseme-alias" line per phoneme) mapping every phoneme to its merged viseme, plus
+// pause lines "# <alias>" (as Xface's own dictionaries write silence) and "_ <alias>" (MBROLA's
+// silence): the key "sil" was merged into, else "Rest". The VRML files use the layout XfacePlayer's
+// loader reads (core/io formatVrml).
 //
 // Import: an .fdp's entities; the neutral is the entity aliased "Rest" (else the first entity),
 // the visemes are the category="Viseme" entities in file order, each entity's mesh files (relative
@@ -58,7 +61,8 @@ std::vector<std::string> writeXfaceFace(const std::filesystem::path& outDir, con
 
 struct XfaceFace {
     VisemeSet set;
-    PhonemeVisemeMap dictionary; // empty when no <stem>.dic exists
+    PhonemeVisemeMap dictionary;           // empty when no <stem>.dic exists; phonemes -> Viseme entities
+    std::vector<std::string> restPhonemes; // .dic phonemes shown by the neutral entity (pauses): not visemes
 };
 XfaceFace loadXfaceFace(const std::filesystem::path& fdpPath);
 

@@ -40,16 +40,23 @@ MeshData readMeshFile(const std::filesystem::path& path, CornerTexCoords* corner
     const MeshFormat format = meshFormatFromPath(path);
     const std::string bytes = readFileToString(path);
     const std::string source = path.string();
-    switch (format) {
-    case MeshFormat::Obj:
-        return corners ? parseObj(bytes, source, *corners) : parseObj(bytes, source);
-    case MeshFormat::Ply: {
-        MeshData mesh = parsePly(bytes, source);
-        if (corners && mesh.hasUVs()) *corners = {mesh.uvs, mesh.triangles};
-        return mesh;
-    }
-    case MeshFormat::Vrml:
-        return corners ? parseVrml(bytes, source, *corners) : parseVrml(bytes, source);
+    try {
+        switch (format) {
+        case MeshFormat::Obj:
+            return corners ? parseObj(bytes, source, *corners) : parseObj(bytes, source);
+        case MeshFormat::Ply:
+        {
+            MeshData mesh = parsePly(bytes, source);
+            if (corners && mesh.hasUVs()) *corners = {mesh.uvs, mesh.triangles};
+            return mesh;
+        }
+        case MeshFormat::Vrml:
+            return corners ? parseVrml(bytes, source, *corners) : parseVrml(bytes, source);
+        }
+    } catch (const std::bad_alloc&) {
+        // Memory grows linearly with the file's size; a machine short of it still gets the file's name.
+        throwInputError(source,
+                        "not enough memory to read this mesh (" + std::to_string(bytes.size()) + " bytes)");
     }
     throwInputError(source, "unknown mesh format");
 }

@@ -136,8 +136,13 @@ class ObjParser {
             std::int64_t t = -1;
             if (!textureToken.empty()) {
                 t = resolveIndex(textureToken, texCoords_.size(), true);
-                if (v >= cornerUV_.size()) cornerUV_.resize(v + std::size_t{1}, -1);
-                if (cornerUV_[v] < 0) cornerUV_[v] = t; // first corner wins at UV seams
+                if (v < mesh_.positions.size()) {
+                    // Grown only to vertices that exist: a huge index in a tiny file allocates nothing.
+                    if (v >= cornerUV_.size()) cornerUV_.resize(mesh_.positions.size(), -1);
+                    if (cornerUV_[v] < 0) cornerUV_[v] = t; // first corner wins at UV seams
+                } else {
+                    forwardUV_.push_back({v, t});
+                }
             }
             texCorners_.push_back(t < 0 ? CornerTexCoords::kNoTexCoord : static_cast<std::uint32_t>(t));
         }
@@ -159,6 +164,10 @@ class ObjParser {
         }
         meshio::requireVerticesAndFaces(mesh_, source_);
         cornerUV_.resize(mesh_.positions.size(), -1);
+        // Corners naming a vertex before its `v` line come before every other corner of that vertex
+        // in file order, so the earliest of them wins: assign them last, latest first.
+        for (auto it = forwardUV_.rbegin(); it != forwardUV_.rend(); ++it)
+            cornerUV_[it->vertex] = it->texCoord;
         mesh_.uvs = meshio::uvsFromFirstCorners(cornerUV_, texCoords_);
         if (cornerTexCoords_) {
             if (mesh_.uvs.empty())
@@ -180,6 +189,12 @@ class ObjParser {
     std::vector<std::uint32_t> texCorners_; // the face's texture coordinate per corner, or kNoTexCoord
     CornerTexCoords* cornerTexCoords_;      // filled when the caller asks for corner texture coordinates
     std::vector<ForwardReference> forward_;
+    // Texture coordinates of corners whose vertex is defined further down (range-checked in finish()).
+    struct ForwardUV {
+        std::uint32_t vertex;
+        std::int64_t texCoord;
+    };
+    std::vector<ForwardUV> forwardUV_;
 };
 
 } // namespace

@@ -181,11 +181,31 @@ std::vector<Role> rolesOf(const PlyElement& element, std::string_view source) {
     return roles;
 }
 
-template <class Reader> MeshData readData(Reader& reader, const PlyHeader& header, std::string_view source) {
+// Whether the element counts the header declares fit in the bytes that follow it: an element takes
+// at least one byte per value plus a separator in ASCII, and the sizes of its scalars and list
+// lengths in binary. Only counts that fit are used to reserve memory; the others are reported by
+// the walk where the data runs out, so a few bytes never allocate gigabytes.
+bool countsFitData(const PlyHeader& header, std::size_t dataBytes) {
+    const bool ascii = header.encoding == PlyEncoding::Ascii;
+    const std::uint64_t available = dataBytes + (ascii ? 1 : 0); // the last ASCII value needs no separator
+    std::uint64_t needed = 0;
+    for (const auto& element : header.elements) {
+        std::uint64_t perElement = 0;
+        for (const auto& property : element.properties)
+            perElement +=
+                ascii ? 2 : meshio::plyTypeSize(property.isList ? property.countType : property.type);
+        if (perElement == 0 || element.count == 0) continue;
+        if (element.count > (available - needed) / perElement) return false;
+        needed += element.count * perElement;
+    }
+    return true;
+}
+
+template <class Reader>
+MeshData readData(Reader& reader, const PlyHeader& header, std::size_t dataBytes, std::string_view source) {
     MeshData mesh;
     const std::size_t vertexCount = header.find("vertex")->count;
-    // The header's count is not trusted yet: reserve at most a plausible amount.
-    mesh.positions.reserve(std::min(vertexCount, std::size_t{1} << 24));
+    if (countsFitData(header, dataBytes)) mesh.positions.reserve(vertexCount);
     std::vector<std::uint32_t> corners;
     std::size_t faceIndex = 0;
     for (const auto& element : header.elements) {
@@ -265,10 +285,10 @@ MeshData parsePly(std::string_view bytes, std::string_view source) {
     MeshData mesh;
     if (header.encoding == PlyEncoding::Ascii) {
         AsciiPlyReader reader(bytes, header, source);
-        mesh = readData(reader, header, source);
+        mesh = readData(reader, header, bytes.size() - header.dataOffset, source);
     } else {
         BinaryPlyReader reader(bytes, header, source);
-        mesh = readData(reader, header, source);
+        mesh = readData(reader, header, bytes.size() - header.dataOffset, source);
     }
     meshio::requireVerticesAndFaces(mesh, source);
     return mesh;

@@ -2,6 +2,7 @@
 // tokens for IndexedFaceSet nodes (wherever they are nested) and for DEF'd Coordinate and
 // TextureCoordinate nodes that a later `USE` may name, and skips everything else.
 #include "core/common/Error.h"
+#include "core/common/Limits.h"
 #include "core/io/MeshIO.h"
 #include "core/io/MeshIOSupport.h"
 #include "core/io/VrmlTokenizer.h"
@@ -78,6 +79,9 @@ class VrmlParser {
         return i_ + ahead < tokens_.size() ? tokens_[i_ + ahead].text : std::string_view{};
     }
     std::string whereLine(std::size_t line) const { return fileLine(source_, line); }
+    std::size_t useBudget() const {
+        return std::max(limits::kVrmlMinUseExpansionBudget, limits::kVrmlUseExpansionFactor * tokens_.size());
+    }
     std::string here() const { return whereLine(i_ < tokens_.size() ? tokens_[i_].line : lastLine()); }
     std::size_t lastLine() const { return tokens_.empty() ? 1 : tokens_.back().line; }
 
@@ -184,6 +188,14 @@ class VrmlParser {
                 throwInputError(whereLine(name.line), "'" + std::string(name.text) + "' is a " +
                                                           std::string(it->second.type) + ", not a " +
                                                           std::string(type));
+            // Each USE copies the points again: a small file must not expand into gigabytes.
+            usedValues_ += it->second.values.size();
+            if (usedValues_ > useBudget())
+                throwInputError(
+                    whereLine(name.line),
+                    "USE of '" + std::string(name.text) + "' would copy " + std::to_string(usedValues_) +
+                        " numbers in total by USE, more than the limit of " + std::to_string(useBudget()) +
+                        " for this file (" + std::to_string(limits::kVrmlUseExpansionFactor) + " per token)");
             return it->second.values;
         }
         std::string defName;
@@ -265,7 +277,13 @@ class VrmlParser {
             texCoords_.emplace_back(set.texPoints[2 * k], set.texPoints[2 * k + 1]);
         cornerUV_.resize(mesh_.positions.size(), -1);
 
-        const bool separateTexIndex = set.hasTexCoord && !set.texCoordIndex.empty();
+        // A texCoordIndex equal to coordIndex (what VisemeLab writes for XfacePlayer) means per-vertex
+        // texture coordinates, so vertices no face uses keep theirs too.
+        const bool sameAsCoordIndex =
+            set.texCoordIndex.size() == set.coordIndex.size() &&
+            std::equal(set.texCoordIndex.begin(), set.texCoordIndex.end(), set.coordIndex.begin(),
+                       [](const IndexEntry& a, const IndexEntry& b) { return a.value == b.value; });
+        const bool separateTexIndex = set.hasTexCoord && !set.texCoordIndex.empty() && !sameAsCoordIndex;
         if (separateTexIndex) {
             bool matches = set.texCoordIndex.size() == set.coordIndex.size();
             for (std::size_t k = 0; matches && k < set.coordIndex.size(); ++k)
@@ -319,6 +337,7 @@ class VrmlParser {
     std::vector<VrmlToken> tokens_;
     std::size_t i_ = 0;
     std::map<std::string, PointNode> defs_;
+    std::size_t usedValues_ = 0; // numbers copied by USE so far
     std::size_t faceSets_ = 0;
     std::size_t faceCount_ = 0;
     MeshData mesh_;
@@ -352,27 +371,41 @@ MeshData parseVrml(std::string_view text, std::string_view source, CornerTexCoor
     return parseVrmlText(text, source, &corners);
 }
 
+// The layout XfacePlayer's VRML loader reads (it loops on other legal VRML97): values separated by
+// commas, a comma after every index including each face's -1, no comma before a closing ']', and
+// an explicit texCoordIndex when there are texture coordinates. Any VRML97 reader reads it too.
 std::string formatVrml(const MeshData& mesh) {
     meshio::requireWritable(mesh);
     std::string out = "#VRML V2.0 utf8\n# VisemeLab mesh: " + std::to_string(mesh.positions.size()) +
                       " vertices, " + std::to_string(mesh.triangles.size()) + " triangles\n";
-    out.reserve(mesh.positions.size() * 70 + mesh.triangles.size() * 60);
+    out.reserve(mesh.positions.size() * 70 + mesh.triangles.size() * (mesh.hasUVs() ? 120 : 60));
     out += "Shape {\n  appearance Appearance { material Material { } }\n  geometry IndexedFaceSet {\n"
            "    solid FALSE\n    coord Coordinate {\n      point [\n";
-    for (const auto& p : mesh.positions) meshio::appendDoubles(out, "        ", {p[0], p[1], p[2]}, ",\n");
+    for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+        const Vec3& p = mesh.positions[i];
+        meshio::appendDoubles(out, "        ", {p[0], p[1], p[2]},
+                              i + 1 < mesh.positions.size() ? ",\n" : "\n");
+    }
     out += "      ]\n    }\n";
     if (mesh.hasUVs()) {
         out += "    texCoord TextureCoordinate {\n      point [\n";
-        for (const auto& uv : mesh.uvs) meshio::appendDoubles(out, "        ", {uv[0], uv[1]}, ",\n");
+        for (std::size_t i = 0; i < mesh.uvs.size(); ++i)
+            meshio::appendDoubles(out, "        ", {mesh.uvs[i][0], mesh.uvs[i][1]},
+                                  i + 1 < mesh.uvs.size() ? ",\n" : "\n");
         out += "      ]\n    }\n";
     }
-    out += "    coordIndex [\n";
-    for (const auto& t : mesh.triangles) {
-        out += "     ";
-        for (const auto v : t) out.append(" ").append(std::to_string(v));
-        out += " -1,\n";
-    }
-    out += "    ]\n  }\n}\n";
+    const auto indexList = [&](const char* field) {
+        out += std::string("    ") + field + " [\n";
+        for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+            out += "      ";
+            for (const auto v : mesh.triangles[t]) out.append(std::to_string(v)).append(", ");
+            out += t + 1 < mesh.triangles.size() ? "-1,\n" : "-1\n";
+        }
+        out += "    ]\n";
+    };
+    indexList("coordIndex");
+    if (mesh.hasUVs()) indexList("texCoordIndex"); // per-vertex (u,v): the same indices
+    out += "  }\n}\n";
     return out;
 }
 

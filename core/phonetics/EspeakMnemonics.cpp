@@ -1,5 +1,7 @@
 #include "core/phonetics/EspeakMnemonics.h"
 
+#include "core/speech/Utterance.h"
+
 #include <array>
 #include <unordered_map>
 
@@ -144,8 +146,21 @@ bool isRhotic(std::string_view m) {
 
 } // namespace
 
+std::vector<std::string_view> splitNonEmpty(std::string_view text, char separator) {
+    std::vector<std::string_view> parts;
+    std::size_t start = 0;
+    for (std::size_t i = 0; i <= text.size(); ++i) {
+        if (i == text.size() || text[i] == separator) {
+            if (i > start) parts.push_back(text.substr(start, i - start));
+            start = i + 1;
+        }
+    }
+    return parts;
+}
+
 void appendArpabetForEspeakWord(std::span<const std::string_view> mnemonics, std::vector<std::string>& out,
-                                std::map<std::string, std::size_t>& skipped) {
+                                std::map<std::string, std::size_t>& skipped,
+                                std::vector<std::size_t>* sources) {
     bool lastWasRhotic = false; // the previous phoneme already was R or ER
     for (std::size_t i = 0; i < mnemonics.size(); ++i) {
         const std::string_view m = stripStress(mnemonics[i]);
@@ -167,8 +182,43 @@ void appendArpabetForEspeakWord(std::span<const std::string_view> mnemonics, std
             while (next < mnemonics.size() && isMarker(stripStress(mnemonics[next]))) ++next;
             if (next < mnemonics.size() && isRhotic(stripStress(mnemonics[next]))) --count;
         }
-        for (std::size_t k = 0; k < count; ++k) out.emplace_back(rule->arpabet[k]);
+        for (std::size_t k = 0; k < count; ++k) {
+            out.emplace_back(rule->arpabet[k]);
+            if (sources) sources->push_back(i);
+        }
         lastWasRhotic = count > 0 && (out.back() == "R" || out.back() == "ER");
+    }
+}
+
+EspeakSymbol splitEspeakSymbol(std::string_view symbol) {
+    if (!symbol.starts_with('_')) return {{}, symbol};
+    // Marker characters after the '_': no English mnemonic starts with one of them.
+    const std::size_t end = symbol.find_first_not_of(":!|;^_#", 1);
+    if (end == std::string_view::npos) return {symbol, {}};
+    return {symbol.substr(0, end), symbol.substr(end)};
+}
+
+void appendSilence(std::vector<std::string>& out) {
+    if (!out.empty() && out.back() != kSilencePhoneme) out.emplace_back(kSilencePhoneme);
+}
+
+void appendArpabetForEspeakClause(std::string_view clause, char separator, std::vector<std::string>& out,
+                                  std::map<std::string, std::size_t>& skipped) {
+    std::vector<std::string_view> word;
+    const auto flushWord = [&] {
+        appendArpabetForEspeakWord(word, out, skipped);
+        word.clear();
+    };
+    for (const auto token : splitNonEmpty(clause, ' ')) {
+        for (const auto symbol : splitNonEmpty(token, separator)) {
+            const EspeakSymbol parts = splitEspeakSymbol(symbol);
+            if (parts.isPause()) {
+                flushWord();
+                appendSilence(out);
+            }
+            if (!parts.phoneme.empty()) word.push_back(parts.phoneme);
+        }
+        flushWord();
     }
 }
 

@@ -1,14 +1,13 @@
 #include "core/phonetics/EspeakTranscriber.h"
 
 #include "core/common/Error.h"
+#include "core/phonetics/EspeakApi.h"
+#include "core/phonetics/EspeakEngine.h"
 #include "core/phonetics/EspeakMnemonics.h"
 
-#include <espeak-ng/speak_lib.h>
-
 #include <algorithm>
-#include <mutex>
+#include <cctype>
 #include <set>
-#include <stdexcept>
 
 namespace vl {
 
@@ -19,55 +18,28 @@ namespace {
 constexpr int kIpaBit = 0x02;
 constexpr int kSeparator = '\t';
 
-// espeak-ng keeps one global engine; every call goes through this lock.
-std::mutex& engineMutex() {
-    static std::mutex mutex;
-    return mutex;
-}
-
-// Must be called with the lock held. Initialises the engine once per process.
-void ensureInitialised() {
-    static bool initialised = false;
-    if (initialised) return;
-    // DONT_EXIT: without it espeak-ng calls exit() when its data files are missing.
-    if (espeak_Initialize(AUDIO_OUTPUT_SYNCHRONOUS, 0, nullptr, espeakINITIALIZE_DONT_EXIT) < 0)
-        throw std::runtime_error(
-            "espeak-ng could not be initialised (is the espeak-ng-data package installed?)");
-    initialised = true;
-}
-
-// Must be called with the lock held. Returns the language code of the selected voice ("en-us").
-std::string selectVoice(const std::string& voice) {
-    static std::string current;
-    static std::string currentLanguage;
-    if (voice == current) return currentLanguage;
-    if (espeak_SetVoiceByName(voice.c_str()) != EE_OK)
-        throwInputError("voice '" + voice + "'",
-                        "espeak-ng has no such voice (language codes such as en-us, en-gb, de, fr work)");
-    const espeak_VOICE* selected = espeak_GetCurrentVoice();
-    current = voice;
-    currentLanguage = selected && selected->languages ? std::string(selected->languages + 1) : voice;
-    return currentLanguage;
-}
-
-std::vector<std::string_view> split(std::string_view text, char separator) {
-    std::vector<std::string_view> parts;
-    std::size_t start = 0;
-    for (std::size_t i = 0; i <= text.size(); ++i) {
-        if (i == text.size() || text[i] == separator) {
-            if (i > start) parts.push_back(text.substr(start, i - start));
-            start = i + 1;
+// Whether `text` ends at a clause break (after closing quotes and brackets): espeak pauses there.
+bool endsAtPause(std::string_view text) {
+    while (!text.empty()) {
+        const auto c = static_cast<unsigned char>(text.back());
+        if (std::isspace(c) || c == '"' || c == '\'' || c == ')' || c == ']' || c == '}') {
+            text.remove_suffix(1);
+        } else if (text.ends_with("\u201D") || text.ends_with("\u2019") || text.ends_with("\u00BB")) {
+            text.remove_suffix(text.ends_with("\u00BB") ? 2 : 3); // closing ” ’ »
+        } else {
+            break;
         }
     }
-    return parts;
+    return !text.empty() && (std::string_view(".,;:!?").find(text.back()) != std::string_view::npos ||
+                             text.ends_with("\u2026")); // …
 }
 
 class EspeakTranscriber final : public PhonemeTranscriber {
   public:
     explicit EspeakTranscriber(std::string voice) : voice_(std::move(voice)) {
-        std::lock_guard lock(engineMutex());
-        ensureInitialised();
-        const std::string language = selectVoice(voice_);
+        std::lock_guard lock(espeak::engineMutex());
+        espeak::ensureInitialised();
+        const std::string language = espeak::selectVoice(voice_);
         notation_ = language.starts_with("en") ? PhonemeNotation::Arpabet : PhonemeNotation::Ipa;
     }
 
@@ -75,22 +47,26 @@ class EspeakTranscriber final : public PhonemeTranscriber {
         std::string input(text);
         std::replace(input.begin(), input.end(), '\0', ' '); // espeak reads up to the first NUL
         std::vector<std::string> phonemes;
-        std::lock_guard lock(engineMutex());
-        selectVoice(voice_);
+        std::lock_guard lock(espeak::engineMutex());
+        espeak::selectVoice(voice_);
         const int mode = (notation_ == PhonemeNotation::Ipa ? kIpaBit : 0) | (kSeparator << 8);
         const void* cursor = input.c_str();
         // One clause per call; espeak advances `cursor` and sets it to null after the last one.
         // The returned buffer is reused by the next call, so each clause is parsed right away.
+        // Every clause but the last ended at punctuation or a blank line, where speech pauses.
         while (cursor) {
-            const char* clause = espeak_TextToPhonemes(&cursor, espeakCHARS_UTF8, mode);
-            if (!clause || !*clause) continue;
-            for (const auto word : split(clause, ' ')) {
-                const auto symbols = split(word, kSeparator);
-                if (notation_ == PhonemeNotation::Arpabet)
-                    appendArpabetForEspeakWord(symbols, phonemes, skipped_);
-                else
-                    appendIpaForEspeakWord(symbols, phonemes);
+            const char* clause = espeak::api().TextToPhonemes(&cursor, espeakCHARS_UTF8, mode);
+            if (clause && *clause) {
+                if (notation_ == PhonemeNotation::Arpabet) {
+                    appendArpabetForEspeakClause(clause, kSeparator, phonemes, skipped_);
+                } else {
+                    // IPA output writes every marker as an empty symbol, so pauses inside a
+                    // clause cannot be told from glottal onsets: only clause ends count.
+                    for (const auto word : splitNonEmpty(clause, ' '))
+                        appendIpaForEspeakWord(splitNonEmpty(word, kSeparator), phonemes);
+                }
             }
+            if (cursor || endsAtPause(input)) appendSilence(phonemes);
         }
         return phonemes;
     }
@@ -111,11 +87,11 @@ std::unique_ptr<PhonemeTranscriber> makeEspeakTranscriber(std::string_view voice
 }
 
 std::vector<std::string> espeakVoiceNames() {
-    std::lock_guard lock(engineMutex());
-    ensureInitialised();
+    std::lock_guard lock(espeak::engineMutex());
+    espeak::ensureInitialised();
     std::set<std::string> names;
     // `languages` is a priority byte followed by the language code.
-    for (const espeak_VOICE** voice = espeak_ListVoices(nullptr); voice && *voice; ++voice)
+    for (const espeak_VOICE** voice = espeak::api().ListVoices(nullptr); voice && *voice; ++voice)
         if ((*voice)->languages && (*voice)->languages[1]) names.insert((*voice)->languages + 1);
     return {names.begin(), names.end()};
 }

@@ -2,6 +2,7 @@
 
 #include "core/common/Error.h"
 #include "core/phonetics/Arpabet.h"
+#include "core/speech/Utterance.h"
 
 #include <algorithm>
 
@@ -44,9 +45,11 @@ PhonemeCountResult finishCount(const Counter& counts, const CorpusStats& corpus,
 FrequencyTable sortedCountTable(const std::map<std::string, std::uint64_t>& counts,
                                 PhonemeNotation notation) {
     std::vector<std::pair<std::string, std::uint64_t>> rows(counts.begin(), counts.end());
-    if (notation == PhonemeNotation::Arpabet)
+    if (notation == PhonemeNotation::Arpabet) {
         for (const auto& phoneme : arpabetInventory())
             if (!counts.contains(std::string(phoneme.symbol))) rows.emplace_back(phoneme.symbol, 0);
+        if (!counts.contains(std::string(kSilencePhoneme))) rows.emplace_back(kSilencePhoneme, 0);
+    }
     std::sort(rows.begin(), rows.end(), [](const auto& a, const auto& b) {
         return a.second != b.second ? a.second > b.second : a.first < b.first;
     });

@@ -14,8 +14,9 @@
 namespace vl {
 
 struct PhonemeCountResult {
-    // phoneme -> count, most frequent first (ties by name). With ARPAbet all 39 phonemes are
-    // listed, unseen ones with 0, so a map checked against the table covers the inventory.
+    // phoneme -> count, most frequent first (ties by name), pauses counted as "sil". With ARPAbet
+    // all 39 phonemes and sil are listed, unseen ones with 0, so a map checked against the table
+    // covers the inventory.
     FrequencyTable counts;
     PhonemeNotation notation = PhonemeNotation::Arpabet;
     std::uint64_t phonemeTotal = 0;
@@ -34,7 +35,7 @@ PhonemeCountResult countPhonemesInText(std::string_view text, std::string_view s
                                        PhonemeTranscriber& transcriber, const CountProgressFn& progress = {});
 
 // counts -> table sorted by count (descending), then name; `notation` Arpabet adds unseen
-// inventory phonemes with 0.
+// inventory phonemes and sil with 0.
 FrequencyTable sortedCountTable(const std::map<std::string, std::uint64_t>& counts, PhonemeNotation notation);
 
 } // namespace vl

@@ -2,16 +2,21 @@
 
 #include "core/common/Error.h"
 #include "core/phonetics/Arpabet.h"
+#include "core/speech/Utterance.h"
 
 #include <algorithm>
+#include <unordered_set>
 
 namespace vl {
 
 namespace {
 
+// At most 30 names, then how many more: a message stays readable for a table of any length.
 std::string joinList(const std::vector<std::string>& names) {
+    constexpr std::size_t kShown = 30;
     std::string text;
-    for (const auto& name : names) text += (text.empty() ? "" : ", ") + name;
+    for (std::size_t i = 0; i < names.size() && i < kShown; ++i) text += (i == 0 ? "" : ", ") + names[i];
+    if (names.size() > kShown) text += " and " + std::to_string(names.size() - kShown) + " more";
     return text;
 }
 
@@ -19,21 +24,26 @@ std::string joinList(const std::vector<std::string>& names) {
 
 void checkMapCovers(const PhonemeVisemeMap& map, std::span<const std::string> phonemes,
                     std::string_view where) {
+    std::unordered_set<std::string_view> mapped;
+    for (const auto& entry : map.entries) mapped.insert(entry.first);
     std::vector<std::string> unmapped;
     for (const auto& phoneme : phonemes)
-        if (!map.visemeOf(phoneme)) unmapped.push_back(phoneme);
-    if (!unmapped.empty())
-        throwInputError(where, std::to_string(unmapped.size()) + " phoneme" +
-                                   (unmapped.size() == 1 ? "" : "s") +
-                                   " not mapped to any viseme: " + joinList(unmapped));
+        if (!mapped.contains(phoneme)) unmapped.push_back(phoneme);
+    if (unmapped.empty()) return;
+    const bool silence = std::find(unmapped.begin(), unmapped.end(), kSilencePhoneme) != unmapped.end();
+    throwInputError(where, std::to_string(unmapped.size()) + " phoneme" + (unmapped.size() == 1 ? "" : "s") +
+                               " not mapped to any viseme: " + joinList(unmapped) +
+                               (silence ? " (sil is the pause at punctuation: map it to the viseme of "
+                                          "the mouth at rest, e.g. 'sil,sil')"
+                                        : ""));
 }
 
 void checkMapVisemes(const PhonemeVisemeMap& map, std::span<const std::string> visemeNames,
                      std::string_view where) {
+    const std::unordered_set<std::string_view> known(visemeNames.begin(), visemeNames.end());
     std::vector<std::string> unknown;
     for (const auto& viseme : mapVisemeNames(map))
-        if (std::find(visemeNames.begin(), visemeNames.end(), viseme) == visemeNames.end())
-            unknown.push_back(viseme);
+        if (!known.contains(viseme)) unknown.push_back(viseme);
     if (!unknown.empty())
         throwInputError(where, "the map names visemes that are not in the viseme set: " + joinList(unknown) +
                                    " (the set has " + joinList({visemeNames.begin(), visemeNames.end()}) +
@@ -43,7 +53,7 @@ void checkMapVisemes(const PhonemeVisemeMap& map, std::span<const std::string> v
 void checkArpabetMap(const PhonemeVisemeMap& map, std::string_view where) {
     std::vector<std::string> foreign;
     for (const auto& [phoneme, viseme] : map.entries)
-        if (!findArpabet(phoneme)) foreign.push_back(phoneme);
+        if (!findArpabet(phoneme) && phoneme != kSilencePhoneme) foreign.push_back(phoneme);
     if (!foreign.empty())
         throwInputError(where, "not ARPAbet phonemes (see docs/phonemes.md): " + joinList(foreign));
     checkMapCovers(map, arpabetSymbols(), where);
@@ -51,8 +61,9 @@ void checkArpabetMap(const PhonemeVisemeMap& map, std::string_view where) {
 
 std::vector<std::string> mapVisemeNames(const PhonemeVisemeMap& map) {
     std::vector<std::string> names;
+    std::unordered_set<std::string_view> seen;
     for (const auto& [phoneme, viseme] : map.entries)
-        if (std::find(names.begin(), names.end(), viseme) == names.end()) names.push_back(viseme);
+        if (seen.insert(viseme).second) names.push_back(viseme);
     return names;
 }
 

@@ -20,7 +20,8 @@ void checkMapCovers(const PhonemeVisemeMap& map, std::span<const std::string> ph
 void checkMapVisemes(const PhonemeVisemeMap& map, std::span<const std::string> visemeNames,
                      std::string_view where);
 
-// An ARPAbet map must map all 39 phonemes and nothing else (a key outside the inventory is a typo).
+// An ARPAbet map must map all 39 phonemes and nothing else but sil, the pause (a key outside the
+// inventory is a typo).
 void checkArpabetMap(const PhonemeVisemeMap& map, std::string_view where);
 
 // The distinct viseme names of a map, in order of first appearance.

@@ -16,7 +16,10 @@ class PhonemeTranscriber {
   public:
     virtual ~PhonemeTranscriber() = default;
 
-    // The phonemes of `text` (UTF-8) in reading order; pauses and punctuation produce none.
+    // The phonemes of `text` (UTF-8) in reading order, with kSilencePhoneme ("sil",
+    // core/speech/Utterance.h) for each pause: at punctuation and blank lines, where the text ends
+    // with punctuation, and (English voices) where espeak-ng pauses inside a clause, e.g. before
+    // "and" in a long one. Never two pauses in a row, never a pause first.
     virtual std::vector<std::string> transcribe(std::string_view text) = 0;
 
     virtual PhonemeNotation notation() const = 0;

@@ -2,16 +2,12 @@
 #include "core/common/Error.h"
 #include "core/project/ProjectJson.h"
 
-#include <algorithm>
 #include <set>
+#include <unordered_set>
 
 namespace vl {
 
 namespace {
-
-bool contains(const std::vector<std::string>& names, const std::string& name) {
-    return std::find(names.begin(), names.end(), name) != names.end();
-}
 
 // JSON objects cannot hold a key twice: a duplicate in memory would be lost silently on save.
 template <typename Entries>
@@ -62,12 +58,14 @@ FrequencySource frequenciesFromJson(const JsonNode& node, const std::vector<std:
     const bool phonemeBased = node.has("phonemes") || node.has("map");
     if (direct && phonemeBased) node.fail("give either \"visemes\" or \"phonemes\" with \"map\", not both");
 
+    // Hash sets keep every check linear in the number of entries.
+    const std::unordered_set<std::string_view> known(visemeNames.begin(), visemeNames.end());
     if (direct || !phonemeBased) {
         if (!direct) return source; // no frequencies yet
         const JsonNode table = node["visemes"];
         source.visemeFrequencies = tableFromJson(table, "viseme");
         for (const auto& [name, value] : source.visemeFrequencies.entries)
-            if (!contains(visemeNames, name))
+            if (!known.contains(name))
                 throwInputError(jsonPathAppend(table.path(), name), "unknown viseme \"" + name + "\"");
         return source;
     }
@@ -76,16 +74,20 @@ FrequencySource frequenciesFromJson(const JsonNode& node, const std::vector<std:
     const JsonNode phonemes = node["phonemes"];
     const JsonNode map = node["map"];
     source.phonemes = tableFromJson(phonemes, "phoneme");
+    std::unordered_set<std::string_view> listed;
+    for (const auto& entry : source.phonemes.entries) listed.insert(entry.first);
     for (const auto& [phoneme, visemeNode] : map.members()) {
         const std::string viseme = visemeNode.nonEmptyString();
-        if (!source.phonemes.find(phoneme))
+        if (!listed.contains(phoneme))
             throwInputError(visemeNode.path(),
                             "phoneme \"" + phoneme + "\" is not listed in /frequencies/phonemes");
-        if (!contains(visemeNames, viseme)) visemeNode.fail("unknown viseme \"" + viseme + "\"");
+        if (!known.contains(viseme)) visemeNode.fail("unknown viseme \"" + viseme + "\"");
         source.map.entries.emplace_back(phoneme, viseme);
     }
+    std::unordered_set<std::string_view> mapped;
+    for (const auto& entry : source.map.entries) mapped.insert(entry.first);
     for (const auto& [phoneme, value] : source.phonemes.entries)
-        if (!source.map.visemeOf(phoneme)) map.fail("phoneme \"" + phoneme + "\" has no viseme");
+        if (!mapped.contains(phoneme)) map.fail("phoneme \"" + phoneme + "\" has no viseme");
     return source;
 }
 

@@ -2,9 +2,8 @@
 // Strict reading of a JSON document with the JSON path (RFC 6901 pointer) of every element, so a
 // loader can name exactly where a problem is: "/frequencies/phonemes/AA: expected a non-negative
 // number, found string". Used by the project file; any module's plain structs can be read with it.
+#include "core/common/JsonParse.h"
 #include "core/mesh/Mesh.h"
-
-#include <nlohmann/json.hpp>
 
 #include <initializer_list>
 #include <string>
@@ -12,13 +11,6 @@
 #include <vector>
 
 namespace vl {
-
-// Object keys keep their file order, so a save of a loaded document lists them as the user did.
-using Json = nlohmann::ordered_json;
-
-// Parses text; syntax errors and duplicate object keys (which nlohmann would silently merge) are
-// InputErrors naming `source` and the position / the JSON path.
-Json parseJsonStrict(std::string_view text, std::string_view source);
 
 // A JSON value together with its path. Accessors throw InputError "<path>: <what>".
 class JsonNode {
@@ -68,12 +60,5 @@ class JsonNode {
     const Json* value_;
     std::string path_;
 };
-
-// "number", "string", "object", ... for messages.
-std::string jsonTypeName(const Json& value);
-
-// Appends an object key to a JSON path, escaping '~' and '/' as RFC 6901 requires.
-std::string jsonPathAppend(std::string_view path, std::string_view key);
-std::string jsonPathAppend(std::string_view path, std::size_t index);
 
 } // namespace vl

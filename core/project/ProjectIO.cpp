@@ -46,6 +46,10 @@ Project projectFromJsonText(std::string_view text, const std::filesystem::path& 
         }
     }
     project.path = projectFile;
+    // Later checks of the frequencies (against the loaded meshes) name the project file too.
+    project.frequencies.origin = projectFile.string() + ":/frequencies";
+    if (!project.frequencies.map.entries.empty())
+        project.frequencies.map.origin = project.frequencies.origin + "/map";
     return project;
 }
 

@@ -5,6 +5,7 @@
 
 #include <set>
 #include <system_error>
+#include <unordered_set>
 
 namespace vl {
 
@@ -187,11 +188,11 @@ Project projectFromJson(const JsonNode& root, const ProjectReadContext& context)
 
     const JsonNode visemes = root["visemes"];
     std::vector<std::string> names;
+    std::unordered_set<std::string> seen; // linear-time duplicate check, however many visemes
     for (const JsonNode& v : visemes.elements()) {
         project.visemes.push_back(visemeFromJson(v, project.neutral, context));
         const std::string& name = project.visemes.back().name;
-        for (const auto& other : names)
-            if (other == name) v["name"].fail("duplicate viseme name \"" + name + "\"");
+        if (!seen.insert(name).second) v["name"].fail("duplicate viseme name \"" + name + "\"");
         names.push_back(name);
     }
     if (!names.empty() && !project.neutral.isSet())

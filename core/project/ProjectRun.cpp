@@ -8,10 +8,16 @@ namespace vl {
 
 namespace {
 
-// "/visemes/3/file (mouth/aa.obj)": where a mesh came from, for messages.
-std::string meshSource(std::string_view jsonPath, const std::filesystem::path& file) {
-    if (file.empty()) return std::string(jsonPath);
-    return std::string(jsonPath) + "/file (" + file.generic_string() + ")";
+// "proj.vlproj: /visemes/3": a JSON path of the project, named with the project file when it has one.
+std::string projectWhere(const Project& project, std::string_view jsonPath) {
+    if (project.path.empty()) return std::string(jsonPath);
+    return project.path.string() + ": " + std::string(jsonPath);
+}
+
+// "proj.vlproj: /visemes/3/file (mouth/aa.obj)": where a mesh came from, for messages.
+std::string meshSource(const Project& project, std::string_view jsonPath, const std::filesystem::path& file) {
+    if (file.empty()) return projectWhere(project, jsonPath);
+    return projectWhere(project, jsonPath) + "/file (" + file.generic_string() + ")";
 }
 
 MeshData readProjectMesh(const Project& project, std::string_view jsonPath,
@@ -19,36 +25,39 @@ MeshData readProjectMesh(const Project& project, std::string_view jsonPath,
     try {
         return readMesh(resolveProjectFile(project, file));
     } catch (const InputError& e) {
-        throwInputError(meshSource(jsonPath, file), e.what());
+        throwInputError(meshSource(project, jsonPath, file), e.what());
     }
 }
 
 } // namespace
 
 VisemeSet loadProjectVisemeSet(const Project& project) {
-    if (!project.neutral.isSet()) throwInputError("/neutral", "the project has no neutral mesh");
+    if (!project.neutral.isSet())
+        throwInputError(projectWhere(project, "/neutral"), "the project has no neutral mesh");
     VisemeSet set;
-    const std::string neutralSource = meshSource("/neutral", project.neutral.file);
+    const std::string neutralSource = meshSource(project, "/neutral", project.neutral.file);
     if (project.neutral.isEmbedded()) {
         set.neutral = project.neutral.embedded;
     } else {
         set.neutral = readProjectMesh(project, "/neutral", project.neutral.file);
         set.neutralSource = resolveProjectFile(project, project.neutral.file);
     }
+    // Before any viseme is read: a project may name one big mesh file for thousands of visemes.
+    checkVisemeSetSize(project.visemes.size(), set.vertexCount(), projectWhere(project, "/visemes"));
     for (std::size_t i = 0; i < project.visemes.size(); ++i) {
         const ProjectViseme& viseme = project.visemes[i];
         const std::string path = jsonPathAppend("/visemes", i);
         Viseme loaded{viseme.name, {}, {}};
         if (viseme.isEmbedded()) {
             if (viseme.positions.size() != set.neutral.positions.size())
-                throwInputError(path + "/positions",
+                throwInputError(projectWhere(project, path + "/positions"),
                                 "not interpolable: " + std::to_string(viseme.positions.size()) +
                                     " vertices (the neutral mesh " + neutralSource + " has " +
                                     std::to_string(set.neutral.positions.size()) + ")");
             loaded.positions = viseme.positions;
         } else {
             MeshData mesh = readProjectMesh(project, path, viseme.file);
-            checkInterpolable(set.neutral, neutralSource, mesh, meshSource(path, viseme.file));
+            checkInterpolable(set.neutral, neutralSource, mesh, meshSource(project, path, viseme.file));
             loaded.source = resolveProjectFile(project, viseme.file);
             loaded.positions = std::move(mesh.positions);
         }
@@ -58,21 +67,23 @@ VisemeSet loadProjectVisemeSet(const Project& project) {
 }
 
 ReduceSettings projectReduceSettings(const Project& project) {
-    return {project.weights.mode, project.weights.painted, project.reduction.target};
+    return {project.weights.mode, project.weights.painted, project.reduction.target,
+            projectWhere(project, "/weights/painted")};
 }
 
 ReduceOutcome reduceProject(const Project& project, const VisemeSet& set, const ProgressCallback& progress) {
     if (set.size() < 2)
-        throwInputError("/visemes",
+        throwInputError(projectWhere(project, "/visemes"),
                         "a reduction needs at least 2 visemes, found " + std::to_string(set.size()));
     if (project.reduction.target < 1 || static_cast<std::size_t>(project.reduction.target) > set.size())
-        throwInputError("/reduction/target", std::to_string(project.reduction.target) +
-                                                 " is outside the allowed range 1.." +
-                                                 std::to_string(set.size()));
+        throwInputError(projectWhere(project, "/reduction/target"), std::to_string(project.reduction.target) +
+                                                                        " is outside the allowed range 1.." +
+                                                                        std::to_string(set.size()));
     if (project.weights.mode == WeightMode::Painted && project.weights.painted.size() != set.vertexCount())
-        throwInputError("/weights/painted", "expected " + std::to_string(set.vertexCount()) +
-                                                " weights (one per vertex), found " +
-                                                std::to_string(project.weights.painted.size()));
+        throwInputError(projectWhere(project, "/weights/painted"),
+                        "expected " + std::to_string(set.vertexCount()) +
+                            " weights (one per vertex), found " +
+                            std::to_string(project.weights.painted.size()));
     return runReduction(set, project.frequencies, projectReduceSettings(project), progress);
 }
 

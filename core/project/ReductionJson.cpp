@@ -4,6 +4,7 @@
 #include "core/project/ProjectJson.h"
 
 #include <algorithm>
+#include <unordered_map>
 
 namespace vl {
 
@@ -29,7 +30,10 @@ Json groupingToJson(const Grouping& grouping, const std::vector<std::string>& vi
 
 // Reads the grouping into p groups, checks that it is a partition of all visemes and puts it in the
 // canonical order of ReductionResult (members ascending, groups by first member).
-Grouping groupingFromJson(const JsonNode& node, std::size_t p, const std::vector<std::string>& visemeNames) {
+using NameIndex = std::unordered_map<std::string_view, std::size_t>;
+
+Grouping groupingFromJson(const JsonNode& node, std::size_t p, const std::vector<std::string>& visemeNames,
+                          const NameIndex& indexOf) {
     node.allowOnly({"cost", "groups"});
     Grouping grouping;
     grouping.cost = node["cost"].nonNegativeNumber();
@@ -43,9 +47,9 @@ Grouping groupingFromJson(const JsonNode& node, std::size_t p, const std::vector
         std::vector<int> members;
         for (const JsonNode& member : group.elements()) {
             const std::string name = member.string();
-            const auto it = std::find(visemeNames.begin(), visemeNames.end(), name);
-            if (it == visemeNames.end()) member.fail("unknown viseme \"" + name + "\"");
-            const auto index = static_cast<std::size_t>(it - visemeNames.begin());
+            const auto it = indexOf.find(name);
+            if (it == indexOf.end()) member.fail("unknown viseme \"" + name + "\"");
+            const std::size_t index = it->second;
             if (groupOf[index] >= 0) member.fail("viseme \"" + name + "\" is in more than one group");
             groupOf[index] = static_cast<int>(grouping.groups.size());
             members.push_back(static_cast<int>(index));
@@ -91,9 +95,11 @@ ProjectReduction reductionFromJson(const JsonNode& node, const std::vector<std::
     if (curve.size() == 0 || curve.size() > visemeNames.size())
         curve.fail("expected 1.." + std::to_string(visemeNames.size()) + " entries (p = 1..m), found " +
                    std::to_string(curve.size()));
+    NameIndex indexOf; // names are unique (checked by the caller): one hash lookup per member
+    for (std::size_t i = 0; i < visemeNames.size(); ++i) indexOf.emplace(visemeNames[i], i);
     ReductionResult parsed;
     for (std::size_t p = 0; p < curve.size(); ++p)
-        parsed.curve.push_back(groupingFromJson(curve[p], p + 1, visemeNames));
+        parsed.curve.push_back(groupingFromJson(curve[p], p + 1, visemeNames, indexOf));
     reduction.result = std::move(parsed);
     return reduction;
 }

@@ -2,12 +2,12 @@
 
 #include "core/common/AtomicFile.h"
 #include "core/common/Error.h"
+#include "core/common/JsonParse.h"
 #include "core/common/TextParsing.h"
 
-#include <nlohmann/json.hpp>
-
 #include <cmath>
-#include <set>
+#include <unordered_map>
+#include <unordered_set>
 
 namespace vl {
 
@@ -53,6 +53,7 @@ bool looksNumeric(std::string_view text) {
 // comments and a header line (a first line whose second field is not a number).
 template <typename RowFn>
 void forEachCsvRow(std::string_view text, std::string_view source, bool secondColumnNumeric, RowFn row) {
+    text = stripUtf8Bom(text);
     std::size_t lineNumber = 0;
     bool first = true;
     std::size_t start = 0;
@@ -80,61 +81,75 @@ void checkFrequency(double value, const std::string& where) {
     if (!std::isfinite(value) || value < 0) throwInputError(where, "frequency must be a finite number >= 0");
 }
 
-void addEntry(FrequencyTable& table, std::string name, double value, const std::string& where) {
-    checkFrequency(value, where);
-    if (table.find(name)) throwInputError(where, "'" + name + "' is listed twice");
-    table.entries.emplace_back(std::move(name), value);
+// Builds a table while refusing a name listed twice (a hash set: linear time for any length).
+class TableBuilder {
+  public:
+    void add(std::string name, double value, const std::string& where) {
+        checkFrequency(value, where);
+        if (name.empty()) throwInputError(where, "empty name");
+        if (!seen_.insert(name).second) throwInputError(where, "'" + name + "' is listed twice");
+        table_.entries.emplace_back(std::move(name), value);
+    }
+    FrequencyTable take() { return std::move(table_); }
+
+  private:
+    FrequencyTable table_;
+    std::unordered_set<std::string> seen_;
+};
+
+// "file:/path" for messages about a JSON element of a file.
+std::string jsonWhere(const std::string& source, std::string_view path) {
+    return source + ":" + std::string(path.empty() ? "/" : path);
 }
 
-FrequencyTable tableFromJson(const nlohmann::ordered_json& node, const std::string& where) {
-    FrequencyTable table;
+FrequencyTable tableFromJson(const Json& node, const std::string& source, const std::string& path) {
+    TableBuilder table;
     if (node.is_object()) {
         for (const auto& [key, value] : node.items()) {
-            const std::string path = where + "/" + key;
+            const std::string where = jsonWhere(source, jsonPathAppend(path, key));
             if (!value.is_number())
-                throwInputError(path, "expected a non-negative number, found " + value.dump());
-            addEntry(table, key, value.get<double>(), path);
+                throwInputError(where, "expected a non-negative number, found " + value.dump());
+            table.add(key, value.get<double>(), where);
         }
     } else if (node.is_array()) { // [[name, f], ...] keeps the file's order
         for (std::size_t i = 0; i < node.size(); ++i) {
             const auto& item = node[i];
-            const std::string path = where + "/" + std::to_string(i);
+            const std::string where = jsonWhere(source, jsonPathAppend(path, i));
             if (!item.is_array() || item.size() != 2 || !item[0].is_string() || !item[1].is_number())
-                throwInputError(path, "expected [\"name\", number], found " + item.dump());
-            addEntry(table, item[0].get<std::string>(), item[1].get<double>(), path);
+                throwInputError(where, "expected [\"name\", number], found " + jsonTypeName(item));
+            table.add(item[0].get<std::string>(), item[1].get<double>(), where);
         }
     } else {
-        throwInputError(where, "expected an object or an array of [name, frequency] pairs");
+        throwInputError(jsonWhere(source, path), "expected an object or an array of [name, frequency] pairs");
     }
-    return table;
+    return table.take();
 }
 
-PhonemeVisemeMap mapFromJson(const nlohmann::ordered_json& node, const std::string& where) {
-    if (!node.is_object()) throwInputError(where, "expected an object {\"phoneme\": \"viseme\", ...}");
+PhonemeVisemeMap mapFromJson(const Json& node, const std::string& source, const std::string& path) {
+    if (!node.is_object())
+        throwInputError(jsonWhere(source, path), "expected an object {\"phoneme\": \"viseme\", ...}");
     PhonemeVisemeMap map;
+    map.origin = jsonWhere(source, path);
     for (const auto& [key, value] : node.items()) {
-        if (!value.is_string())
-            throwInputError(where + "/" + key, "expected a viseme name, found " + value.dump());
+        const std::string where = jsonWhere(source, jsonPathAppend(path, key));
+        if (!value.is_string() || value.get_ref<const std::string&>().empty())
+            throwInputError(where,
+                            "expected a viseme name, found " +
+                                (value.is_string() ? std::string("an empty string") : jsonTypeName(value)));
+        if (key.empty()) throwInputError(where, "empty phoneme name");
         map.entries.emplace_back(key, value.get<std::string>());
     }
     return map;
 }
 
-nlohmann::ordered_json parseJsonFile(const std::string& text, const std::string& source) {
-    try {
-        return nlohmann::ordered_json::parse(text);
-    } catch (const nlohmann::json::parse_error& e) {
-        throwInputError(source, std::string("invalid JSON: ") + e.what());
-    }
-}
-
 } // namespace
 
 FrequencyTable parseFrequencyCsv(std::string_view text, std::string_view source) {
-    FrequencyTable table;
+    TableBuilder builder;
     forEachCsvRow(text, source, true, [&](const std::vector<std::string>& fields, const std::string& where) {
-        addEntry(table, fields[0], parseFiniteDouble(fields[1], where), where);
+        builder.add(fields[0], parseFiniteDouble(fields[1], where), where);
     });
+    FrequencyTable table = builder.take();
     if (table.entries.empty()) throwInputError(source, "no frequencies in file");
     return table;
 }
@@ -142,21 +157,23 @@ FrequencyTable parseFrequencyCsv(std::string_view text, std::string_view source)
 FrequencySource loadFrequencyFile(const std::filesystem::path& path) {
     const std::string text = readFileToString(path);
     const std::string source = path.string();
-    if (trim(text).empty()) throwInputError(source, "empty frequency file");
+    if (isBlankText(text)) throwInputError(source, "empty frequency file");
     FrequencySource result;
+    result.origin = source;
     if (path.extension() != ".json") {
         result.visemeFrequencies = parseFrequencyCsv(text, source);
         return result;
     }
-    const auto doc = parseJsonFile(text, source);
-    if (!doc.is_object()) throwInputError(source, "expected a JSON object");
+    const Json doc = parseJsonStrict(stripUtf8Bom(text), source);
+    if (!doc.is_object()) throwInputError(source, "expected a JSON object, found " + jsonTypeName(doc));
     if (doc.contains("phonemes")) {
-        result.phonemes = tableFromJson(doc["phonemes"], source + ":/phonemes");
-        if (doc.contains("map")) result.map = mapFromJson(doc["map"], source + ":/map");
+        result.phonemes = tableFromJson(doc["phonemes"], source, "/phonemes");
+        if (doc.contains("map")) result.map = mapFromJson(doc["map"], source, "/map");
         if (result.phonemes.entries.empty()) throwInputError(source + ":/phonemes", "no phonemes listed");
     } else {
-        result.visemeFrequencies = tableFromJson(doc.contains("visemes") ? doc["visemes"] : doc,
-                                                 source + (doc.contains("visemes") ? ":/visemes" : ":"));
+        const bool nested = doc.contains("visemes");
+        result.visemeFrequencies =
+            tableFromJson(nested ? doc["visemes"] : doc, source, nested ? "/visemes" : "");
         if (result.visemeFrequencies.entries.empty()) throwInputError(source, "no frequencies listed");
     }
     return result;
@@ -165,15 +182,20 @@ FrequencySource loadFrequencyFile(const std::filesystem::path& path) {
 PhonemeVisemeMap loadPhonemeMapFile(const std::filesystem::path& path) {
     const std::string text = readFileToString(path);
     const std::string source = path.string();
-    if (trim(text).empty()) throwInputError(source, "empty phoneme map file");
+    if (isBlankText(text)) throwInputError(source, "empty phoneme map file");
     if (path.extension() == ".json") {
-        const auto doc = parseJsonFile(text, source);
-        return mapFromJson(doc.contains("map") ? doc["map"] : doc,
-                           source + ":" + (doc.contains("map") ? "/map" : ""));
+        const Json doc = parseJsonStrict(stripUtf8Bom(text), source);
+        const bool nested = doc.is_object() && doc.contains("map");
+        PhonemeVisemeMap map = mapFromJson(nested ? doc["map"] : doc, source, nested ? "/map" : "");
+        if (map.entries.empty()) throwInputError(map.origin, "no phoneme -> viseme entries");
+        return map;
     }
     PhonemeVisemeMap map;
+    map.origin = source;
+    std::unordered_set<std::string> mapped;
     forEachCsvRow(text, source, false, [&](const std::vector<std::string>& fields, const std::string& where) {
-        if (map.visemeOf(fields[0])) throwInputError(where, "phoneme '" + fields[0] + "' is mapped twice");
+        if (!mapped.insert(fields[0]).second)
+            throwInputError(where, "phoneme '" + fields[0] + "' is mapped twice");
         if (fields[1].empty()) throwInputError(where, "phoneme '" + fields[0] + "' has an empty viseme name");
         map.entries.emplace_back(fields[0], fields[1]);
     });
@@ -183,39 +205,46 @@ PhonemeVisemeMap loadPhonemeMapFile(const std::filesystem::path& path) {
 
 std::vector<double> visemeFrequencies(const FrequencySource& source,
                                       const std::vector<std::string>& visemeNames, std::string_view where) {
-    const std::string place(where);
-    std::vector<double> freq(visemeNames.size(), 0.0);
-    auto indexOf = [&](const std::string& name) -> int {
-        for (std::size_t i = 0; i < visemeNames.size(); ++i)
-            if (visemeNames[i] == name) return static_cast<int>(i);
-        return -1;
+    const auto placeOr = [&](const std::string& origin) {
+        return std::string(!where.empty()    ? where
+                           : !origin.empty() ? std::string_view(origin)
+                                             : "frequencies");
     };
+    const std::string place = placeOr(source.origin);
+    std::unordered_map<std::string_view, std::size_t> indexOf;
+    for (std::size_t i = 0; i < visemeNames.size(); ++i) indexOf.emplace(visemeNames[i], i);
+    std::vector<double> freq(visemeNames.size(), 0.0);
     if (source.isPhonemeBased()) {
+        std::unordered_map<std::string_view, const std::string*> visemeOfPhoneme;
+        for (const auto& [phoneme, viseme] : source.map.entries) visemeOfPhoneme.emplace(phoneme, &viseme);
+        const std::string mapPlace = placeOr(source.map.origin.empty() ? source.origin : source.map.origin);
         std::string unmapped;
         for (const auto& [phoneme, value] : source.phonemes.entries) {
             checkFrequency(value, place + ": phoneme '" + phoneme + "'");
-            const std::string* viseme = source.map.visemeOf(phoneme);
-            if (!viseme) {
+            const auto mapped = visemeOfPhoneme.find(phoneme);
+            if (mapped == visemeOfPhoneme.end()) {
                 unmapped += (unmapped.empty() ? "" : ", ") + phoneme;
                 continue;
             }
-            const int index = indexOf(*viseme);
-            if (index < 0)
-                throwInputError(place, "phoneme '" + phoneme + "' maps to viseme '" + *viseme +
-                                           "', which is not in the viseme set");
-            freq[static_cast<std::size_t>(index)] += value;
+            const auto index = indexOf.find(*mapped->second);
+            if (index == indexOf.end())
+                throwInputError(mapPlace, "phoneme '" + phoneme + "' maps to viseme '" + *mapped->second +
+                                              "', which is not in the viseme set");
+            freq[index->second] += value;
         }
-        if (!unmapped.empty()) throwInputError(place, "phonemes not mapped to any viseme: " + unmapped);
+        if (!unmapped.empty()) throwInputError(mapPlace, "phonemes not mapped to any viseme: " + unmapped);
     } else {
+        std::vector<bool> given(visemeNames.size(), false);
         for (const auto& [name, value] : source.visemeFrequencies.entries) {
             checkFrequency(value, place + ": viseme '" + name + "'");
-            const int index = indexOf(name);
-            if (index < 0) throwInputError(place, "frequency given for unknown viseme '" + name + "'");
-            freq[static_cast<std::size_t>(index)] = value;
+            const auto index = indexOf.find(name);
+            if (index == indexOf.end())
+                throwInputError(place, "frequency given for unknown viseme '" + name + "'");
+            freq[index->second] = value;
+            given[index->second] = true;
         }
         for (std::size_t i = 0; i < visemeNames.size(); ++i)
-            if (!source.visemeFrequencies.find(visemeNames[i]))
-                throwInputError(place, "no frequency given for viseme '" + visemeNames[i] + "'");
+            if (!given[i]) throwInputError(place, "no frequency given for viseme '" + visemeNames[i] + "'");
     }
     double total = 0;
     for (const double f : freq) total += f;

@@ -18,6 +18,7 @@ struct FrequencyTable {
 // phoneme -> viseme name, in table order.
 struct PhonemeVisemeMap {
     std::vector<std::pair<std::string, std::string>> entries;
+    std::string origin; // the file (or project JSON path) it was read from, for messages; may be empty
     const std::string* visemeOf(std::string_view phoneme) const;
 };
 
@@ -26,12 +27,14 @@ struct FrequencySource {
     FrequencyTable visemeFrequencies; // used when phonemes is empty
     FrequencyTable phonemes;
     PhonemeVisemeMap map;
+    std::string origin; // the file (or project JSON path) it was read from, for messages; may be empty
     bool isPhonemeBased() const { return !phonemes.entries.empty(); }
 };
 
 // CSV "name,frequency" lines (a header line and '#' comments allowed) or JSON: either
 // {"name": f, ...}, or {"phonemes": {...} | [[p,f],...], "map": {"phoneme": "viseme", ...}}.
-// Negative, NaN or non-numeric values are errors naming file and line / JSON path.
+// Negative, NaN, overflowing (1e999) or non-numeric values and names listed twice are errors
+// naming file and line / JSON path. Duplicate checks take linear time however long the table.
 FrequencySource loadFrequencyFile(const std::filesystem::path& path);
 FrequencyTable parseFrequencyCsv(std::string_view text, std::string_view source);
 PhonemeVisemeMap loadPhonemeMapFile(const std::filesystem::path& path); // CSV "phoneme,viseme" or JSON object
@@ -39,9 +42,10 @@ PhonemeVisemeMap loadPhonemeMapFile(const std::filesystem::path& path); // CSV "
 // Frequencies per viseme of `visemeNames` (same order). Direct: every viseme must be listed and
 // unknown names are errors. Phoneme-based: every phoneme must be mapped to a known viseme (the
 // error lists all unmapped phonemes); visemes no phoneme maps to get 0. All must be >= 0 and not
-// all zero. Frequencies are normalised to sum to 1.
+// all zero. Frequencies are normalised to sum to 1. Errors name `where`, or when it is empty the
+// source's origin (the map's for mapping errors), else "frequencies".
 std::vector<double> visemeFrequencies(const FrequencySource& source,
                                       const std::vector<std::string>& visemeNames,
-                                      std::string_view where = "frequencies");
+                                      std::string_view where = {});
 
 } // namespace vl

@@ -29,7 +29,8 @@ ReduceOutcome runReduction(const VisemeSet& set, const FrequencySource& frequenc
     ReduceOutcome out;
     for (const auto& v : set.visemes) out.visemeNames.push_back(v.name);
     out.frequencies = visemeFrequencies(frequencies, out.visemeNames);
-    out.weights = computeWeights(settings.weightMode, set.neutral, settings.paintedWeights);
+    out.weights = computeWeights(settings.weightMode, set.neutral, settings.paintedWeights,
+                                 settings.paintedWeightsSource);
 
     std::vector<std::vector<Vec3>> shapes;
     shapes.reserve(set.size());

@@ -16,6 +16,7 @@ struct ReduceSettings {
     WeightMode weightMode = WeightMode::Uniform;
     std::vector<double> paintedWeights; // used when weightMode == Painted
     int target = 1;
+    std::string paintedWeightsSource = "weights"; // the weights' file or JSON path, for messages
 };
 
 struct ReducedViseme {

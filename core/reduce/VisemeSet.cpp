@@ -1,10 +1,11 @@
 #include "core/reduce/VisemeSet.h"
 
 #include "core/common/Error.h"
+#include "core/common/Limits.h"
 #include "core/io/MeshIO.h"
 
 #include <algorithm>
-#include <set>
+#include <unordered_set>
 
 namespace vl {
 
@@ -46,6 +47,18 @@ void checkInterpolable(const MeshData& reference, std::string_view referenceSour
     }
 }
 
+void checkVisemeSetSize(std::size_t visemeCount, std::size_t vertexCount, std::string_view where) {
+    if (visemeCount > limits::kMaxVisemes)
+        throwInputError(where, "too many visemes: " + std::to_string(visemeCount) + " (at most " +
+                                   std::to_string(limits::kMaxVisemes) + ")");
+    const std::size_t limit = limits::kMaxVisemeSetPositions;
+    if (vertexCount > limit || visemeCount + 1 > limit / std::max<std::size_t>(vertexCount, 1))
+        throwInputError(where, "too large: " + std::to_string(visemeCount) + " visemes of " +
+                                   std::to_string(vertexCount) +
+                                   " vertices (plus the neutral) exceed the limit of " +
+                                   std::to_string(limit) + " vertex positions in one viseme set");
+}
+
 VisemeSet loadVisemeSet(const std::filesystem::path& neutral,
                         const std::vector<std::pair<std::string, std::filesystem::path>>& visemes) {
     if (visemes.size() < 2)
@@ -53,7 +66,8 @@ VisemeSet loadVisemeSet(const std::filesystem::path& neutral,
     VisemeSet set;
     set.neutralSource = neutral;
     set.neutral = readMesh(neutral);
-    std::set<std::string> names;
+    checkVisemeSetSize(visemes.size(), set.vertexCount(), "viseme set of " + neutral.string());
+    std::unordered_set<std::string> names;
     for (const auto& [name, file] : visemes) {
         if (name.empty()) throwInputError(file.string(), "viseme has an empty name");
         if (!names.insert(name).second)

@@ -34,6 +34,11 @@ struct VisemeSet {
 void checkInterpolable(const MeshData& reference, std::string_view referenceSource, const MeshData& other,
                        std::string_view otherSource);
 
+// Throws InputError at `where` when a neutral and `visemeCount` visemes of `vertexCount` vertices
+// each would hold more than limits::kMaxVisemeSetPositions positions. Loaders call it before
+// reading the visemes, so a file naming one mesh many times cannot exhaust memory.
+void checkVisemeSetSize(std::size_t visemeCount, std::size_t vertexCount, std::string_view where);
+
 // Loads the neutral mesh and each (name, file) viseme, checking interpolability, unique non-empty
 // names and n >= 2.
 VisemeSet loadVisemeSet(const std::filesystem::path& neutral,

@@ -2,9 +2,8 @@
 
 #include "core/common/AtomicFile.h"
 #include "core/common/Error.h"
+#include "core/common/JsonParse.h"
 #include "core/common/TextParsing.h"
-
-#include <nlohmann/json.hpp>
 
 #include <cmath>
 
@@ -62,24 +61,31 @@ std::vector<double> computeWeights(WeightMode mode, const MeshData& neutral,
     return weights;
 }
 
-static std::vector<double> weightsFromJson(const nlohmann::json& doc, const std::string& source) {
-    const nlohmann::json* array = &doc;
+// A painted weight at `where`: finite (the readers already refuse NaN/Inf) and not negative.
+static double checkedWeight(double value, const std::string& where) {
+    if (value < 0)
+        throwInputError(where, "weight " + formatDouble(value) + " is negative; weights must be >= 0");
+    return value;
+}
+
+static std::vector<double> weightsFromJson(const Json& doc, const std::string& source) {
+    const Json* array = &doc;
     std::string path;
     if (doc.is_object()) {
-        if (!doc.contains("weights")) throwInputError(source, "JSON object has no \"weights\" array");
+        if (!doc.contains("weights")) throwInputError(source + ":/", "JSON object has no \"weights\" array");
         array = &doc["weights"];
         path = "/weights";
     }
     if (!array->is_array())
-        throwInputError(source + ":" + (path.empty() ? "/" : path), "expected an array of numbers");
+        throwInputError(source + ":" + (path.empty() ? "/" : path),
+                        "expected an array of numbers, found " + jsonTypeName(*array));
     std::vector<double> weights;
     weights.reserve(array->size());
     for (std::size_t i = 0; i < array->size(); ++i) {
         const auto& value = (*array)[i];
-        if (!value.is_number())
-            throwInputError(source + ":" + path + "/" + std::to_string(i),
-                            "expected a number, found " + value.dump());
-        weights.push_back(value.get<double>());
+        const std::string where = source + ":" + jsonPathAppend(path, i);
+        if (!value.is_number()) throwInputError(where, "expected a number, found " + jsonTypeName(value));
+        weights.push_back(checkedWeight(value.get<double>(), where));
     }
     return weights;
 }
@@ -87,32 +93,28 @@ static std::vector<double> weightsFromJson(const nlohmann::json& doc, const std:
 std::vector<double> loadWeightsFile(const std::filesystem::path& path) {
     const std::string text = readFileToString(path);
     const std::string source = path.string();
-    if (trim(text).empty()) throwInputError(source, "empty weights file");
-    if (path.extension() == ".json") {
-        nlohmann::json doc;
-        try {
-            doc = nlohmann::json::parse(text);
-        } catch (const nlohmann::json::parse_error& e) {
-            throwInputError(source, std::string("invalid JSON: ") + e.what());
-        }
-        return weightsFromJson(doc, source);
-    }
+    if (isBlankText(text)) throwInputError(source, "empty weights file");
+    if (path.extension() == ".json")
+        return weightsFromJson(parseJsonStrict(stripUtf8Bom(text), source), source);
     // Plain text: numbers separated by newlines, commas or spaces; '#' starts a comment.
+    const std::string_view body = stripUtf8Bom(text);
     std::vector<double> weights;
     std::size_t lineNumber = 0;
     std::size_t start = 0;
-    while (start <= text.size()) {
-        const auto end = std::min(text.find('\n', start), text.size());
-        std::string line(text.substr(start, end - start));
+    while (start <= body.size()) {
+        const auto end = std::min(body.find('\n', start), body.size());
+        std::string line(body.substr(start, end - start));
         ++lineNumber;
         start = end + 1;
         if (const auto hash = line.find('#'); hash != std::string::npos) line.resize(hash);
         for (auto& c : line)
             if (c == ',' || c == ';') c = ' ';
+        const std::string where = fileLine(source, lineNumber);
         for (const auto token : splitWhitespace(line))
-            weights.push_back(parseFiniteDouble(token, fileLine(source, lineNumber)));
-        if (end == text.size()) break;
+            weights.push_back(checkedWeight(parseFiniteDouble(token, where), where));
+        if (end == body.size()) break;
     }
+    if (weights.empty()) throwInputError(source, "no weights in file");
     return weights;
 }
 

@@ -27,7 +27,7 @@ bool keyframesFromPhonemes(const Package& package, const std::vector<PhonemeKeyf
 }
 
 bool KeyframeAnimation::setKeyframes(const Package& package, std::vector<Keyframe> keyframes,
-                                     Interpolation interpolation, std::string& error) {
+                                     Interpolation interpolation, std::string& error, double dominanceRate) {
     package_ = nullptr;
     keyframes_.clear();
     if (package.empty()) {
@@ -36,6 +36,10 @@ bool KeyframeAnimation::setKeyframes(const Package& package, std::vector<Keyfram
     }
     if (keyframes.empty()) {
         error = "no keyframes";
+        return false;
+    }
+    if (!std::isfinite(dominanceRate) || dominanceRate < 0) {
+        error = "the dominance rate must be a finite number >= 0";
         return false;
     }
     for (std::size_t i = 0; i < keyframes.size(); ++i) {
@@ -48,6 +52,10 @@ bool KeyframeAnimation::setKeyframes(const Package& package, std::vector<Keyfram
             error = "keyframe " + std::to_string(i) + ": time does not increase";
             return false;
         }
+        if (!std::isfinite(k.dominance) || !(k.dominance > 0)) {
+            error = "keyframe " + std::to_string(i) + ": dominance must be a finite number > 0";
+            return false;
+        }
         if (k.key != kRestKey && k.key >= package.keyCount()) {
             error = "keyframe " + std::to_string(i) + ": key " + std::to_string(k.key) + " of " +
                     std::to_string(package.keyCount());
@@ -57,11 +65,61 @@ bool KeyframeAnimation::setKeyframes(const Package& package, std::vector<Keyfram
     package_ = &package;
     keyframes_ = std::move(keyframes);
     interpolation_ = interpolation;
+    dominanceRate_ = dominanceRate;
     return true;
+}
+
+namespace {
+
+double smoothstep(double s) {
+    return s * s * (3 - 2 * s);
+}
+
+} // namespace
+
+// Cohen and Massaro's blend F(t) = sum_i D_i(t) T_i / sum_i D_i(t), with each dominance function
+// limited to the two keyframes on either side of its own: a smooth taper takes it from 0 at
+// t_{i-2} to full strength at t_{i-1} and back to 0 at t_{i+2}. So at most 4 keyframes (the
+// Catmull-Rom neighbourhood) contribute at any time and the blend stays continuous where one
+// leaves and another enters. Far keyframes matter little anyway: e^-(theta * gap).
+std::size_t KeyframeAnimation::dominanceWeightsAt(double t, KeyWeight out[4]) const {
+    const std::size_t last = keyframes_.size() - 1;
+    t = std::clamp(t, keyframes_.front().time, keyframes_[last].time);
+    const auto after = std::upper_bound(keyframes_.begin(), keyframes_.end(), t,
+                                        [](double time, const Keyframe& k) { return time < k.time; });
+    const std::size_t j = static_cast<std::size_t>(after - keyframes_.begin()) - 1; // t_j <= t
+    const std::size_t first = j > 0 ? j - 1 : 0;
+    const std::size_t end = std::min(j + 2, last); // inclusive
+    // Distances are measured from the nearest keyframe (j or j+1, both at full taper), so the
+    // exponentials never all underflow.
+    const double sinceJ = t - keyframes_[j].time;
+    const double nearest = j < last ? std::min(sinceJ, keyframes_[j + 1].time - t) : sinceJ;
+    double raw[4] = {0, 0, 0, 0};
+    double sum = 0;
+    for (std::size_t i = first; i <= end; ++i) {
+        const double ti = keyframes_[i].time;
+        double taper = 1.0;
+        if (i >= 2 && t < keyframes_[i - 1].time) {
+            const double t0 = keyframes_[i - 2].time;
+            taper = smoothstep((t - t0) / (keyframes_[i - 1].time - t0));
+        } else if (i + 2 <= last && t > keyframes_[i + 1].time) {
+            const double t1 = keyframes_[i + 1].time;
+            taper = 1.0 - smoothstep((t - t1) / (keyframes_[i + 2].time - t1));
+        }
+        raw[i - first] =
+            keyframes_[i].dominance * taper * std::exp(-dominanceRate_ * (std::abs(t - ti) - nearest));
+        sum += raw[i - first];
+    }
+    std::size_t count = 0;
+    for (std::size_t i = first; i <= end; ++i)
+        out[count++] = {keyframes_[i].key, static_cast<float>(raw[i - first] / sum)};
+    return count;
 }
 
 std::size_t KeyframeAnimation::weightsAt(double t, KeyWeight out[4]) const {
     if (keyframes_.empty()) return 0;
+    if (interpolation_ == Interpolation::Dominance)
+        return dominanceWeightsAt(std::isnan(t) ? -HUGE_VAL : t, out);
     const std::size_t last = keyframes_.size() - 1;
     if (!(t > keyframes_.front().time)) { // also catches NaN
         out[0] = {keyframes_.front().key, 1.0f};

@@ -1,8 +1,12 @@
 #pragma once
 // Keyframe facial animation on a runtime package, as MPEG-4 keyframe animation allows: a timed
-// sequence of key meshes (one per spoken phoneme), interpolated linearly or with a cubic Hermite
+// sequence of key meshes (one per spoken phoneme), interpolated linearly, with a cubic Hermite
 // curve whose tangents are Catmull-Rom finite differences (C1, passes through every keyframe,
-// correct for uneven keyframe spacing). Dependency-free; errors are returned, never thrown.
+// correct for uneven keyframe spacing), or blended by dominance for coarticulation (Cohen and
+// Massaro 1993, "Modeling coarticulation in synthetic visual speech"): every keyframe pulls the
+// mouth towards its key with a strength that decays exponentially away from its time, and the
+// shape is the dominance-weighted average, so short segments do not reach their target unless
+// they dominate (lip closure of p b m). Dependency-free; errors are returned, never thrown.
 #include "core/runtime/Package.h"
 
 #include <cstddef>
@@ -13,12 +17,18 @@
 
 namespace vl::runtime {
 
-enum class Interpolation { Linear, Cubic };
+enum class Interpolation { Linear, Cubic, Dominance };
 
 struct Keyframe {
-    double time = 0.0;     // seconds, strictly increasing along a sequence
-    std::uint32_t key = 0; // key mesh index, or kRestKey for the neutral face
+    double time = 0.0;      // seconds, strictly increasing along a sequence
+    std::uint32_t key = 0;  // key mesh index, or kRestKey for the neutral face
+    float dominance = 1.0f; // Dominance only: the magnitude alpha of its dominance function, > 0
 };
+
+// Dominance only: the decay rate theta (1/s) of every dominance function
+// D_i(t) = alpha_i * exp(-theta * |t - t_i|) (Cohen and Massaro's dominance function with c = 1 and
+// the same rate before and after the keyframe). 25/s: a keyframe 80 ms away pulls e^-2 as much.
+inline constexpr double kDefaultDominanceRate = 25.0;
 
 struct PhonemeKeyframe {
     double time = 0.0;
@@ -32,24 +42,31 @@ bool keyframesFromPhonemes(const Package& package, const std::vector<PhonemeKeyf
 class KeyframeAnimation {
   public:
     // Checks the sequence (non-empty, finite strictly increasing times, keys < keyCount or
-    // kRestKey) against `package`, which must outlive the animation.
+    // kRestKey, finite dominance > 0) and the rate (finite, >= 0) against `package`, which must
+    // outlive the animation.
     bool setKeyframes(const Package& package, std::vector<Keyframe> keyframes, Interpolation interpolation,
-                      std::string& error);
+                      std::string& error, double dominanceRate = kDefaultDominanceRate);
 
     double startTime() const { return keyframes_.empty() ? 0.0 : keyframes_.front().time; }
     double endTime() const { return keyframes_.empty() ? 0.0 : keyframes_.back().time; }
 
+    Interpolation interpolation() const { return interpolation_; }
+    const std::vector<Keyframe>& keyframes() const { return keyframes_; }
+
     // The blend at time t (clamped to [startTime, endTime]): up to 4 (key, weight) terms whose
-    // weights sum to 1. Returns the number of terms written to `out`.
+    // weights sum to 1 (a key may appear in two terms). Returns the number of terms written.
     std::size_t weightsAt(double t, KeyWeight out[4]) const;
 
     // Vertex positions at time t, 3 floats per vertex of the package.
     void evaluate(double t, float* out) const;
 
   private:
+    std::size_t dominanceWeightsAt(double t, KeyWeight out[4]) const;
+
     const Package* package_ = nullptr;
     std::vector<Keyframe> keyframes_;
     Interpolation interpolation_ = Interpolation::Linear;
+    double dominanceRate_ = kDefaultDominanceRate;
 };
 
 } // namespace vl::runtime

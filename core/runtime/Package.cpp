@@ -1,5 +1,7 @@
 #include "core/runtime/Package.h"
 
+#include <algorithm>
+
 #include "core/runtime/Crc32.h"
 #include "core/runtime/PackageFormat.h"
 
@@ -308,9 +310,19 @@ std::uint32_t Package::findPhoneme(std::string_view name) const {
 }
 
 std::uint32_t Package::findKey(std::string_view name) const {
+    if (name.empty()) return kNotFound;
     for (std::size_t i = 0; i < keyNames_.size(); ++i)
         if (keyNames_[i] == name) return static_cast<std::uint32_t>(i);
-    return kNotFound;
+    for (std::size_t i = 0; i < keyNames_.size(); ++i) { // members of merged keys: "a+b+c"
+        const std::string_view key = keyNames_[i];
+        for (std::size_t start = 0; start <= key.size();) {
+            const std::size_t end = std::min(key.find('+', start), key.size());
+            if (key.substr(start, end - start) == name) return static_cast<std::uint32_t>(i);
+            start = end + 1;
+        }
+    }
+    const std::uint32_t phoneme = findPhoneme(name);
+    return phoneme == kNotFound ? kNotFound : phonemeKeys_[phoneme];
 }
 
 void Package::neutralPositions(float* out) const {

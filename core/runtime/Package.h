@@ -13,7 +13,10 @@
 
 namespace vl::runtime {
 
+// What findKey / findPhoneme return for a name the package does not hold.
 inline constexpr std::uint32_t kNotFound = 0xFFFFFFFFu;
+// A key index meaning the neutral face (no displacement): for keyframes and blends, e.g. silence.
+inline constexpr std::uint32_t kRestKey = 0xFFFFFFFFu;
 
 // One term of a blend: key mesh `key` (or kRestKey for the neutral) with weight `weight`.
 struct KeyWeight {
@@ -41,7 +44,9 @@ class Package {
     const std::string& phonemeName(std::uint32_t phoneme) const { return phonemeNames_[phoneme]; }
     std::uint32_t keyOfPhoneme(std::uint32_t phoneme) const { return phonemeKeys_[phoneme]; }
     std::uint32_t findPhoneme(std::string_view name) const; // kNotFound when absent
-    std::uint32_t findKey(std::string_view name) const;     // kNotFound when absent
+    // The key that plays `name`: a key's own name ("FF+TH"), else an original viseme merged into a
+    // key (a member of a name joined by '+': "FF"), else a phoneme ("F"); kNotFound when none.
+    std::uint32_t findKey(std::string_view name) const;
 
     // Corner `corner` (0 .. 3*triangleCount-1) of the triangle list.
     std::uint32_t index(std::size_t corner) const {

@@ -1,6 +1,8 @@
 #pragma once
 // Layout constants of the VisemeLab runtime package (docs/runtime-format.md), shared by the writer
 // (core/export) and the dependency-free reader (core/runtime). Everything is little-endian.
+#include "core/runtime/Package.h" // kRestKey, kNotFound
+
 #include <cstdint>
 
 namespace vl::runtime {
@@ -53,9 +55,6 @@ inline constexpr std::uint32_t kMaxVertices = 1u << 24;
 inline constexpr std::uint32_t kMaxTriangles = 1u << 25;
 inline constexpr std::uint32_t kMaxKeys = 4096;
 inline constexpr std::uint32_t kMaxPhonemes = 4096;
-
-// Keyframes may name this key to mean the neutral mesh (no displacement).
-inline constexpr std::uint32_t kRestKey = 0xFFFFFFFFu;
 
 constexpr std::uint32_t alignTo4(std::uint32_t n) {
     return (n + 3u) & ~3u;

@@ -1,4 +1,5 @@
 // `visemelab export` end to end on a small project written here.
+#include "core/common/AtomicFile.h"
 #include "core/export/Gltf.h"
 #include "core/export/Xface.h"
 #include "core/io/MeshIO.h"
@@ -6,6 +7,7 @@
 #include "tests/export/TestModels.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <cstdlib>
 #include <filesystem>
@@ -72,9 +74,24 @@ TEST_F(ExportCli, EveryFormat) {
     const XfaceFace face = loadXfaceFace(dir / "xface" / "face.fdp");
     EXPECT_EQ(face.set.visemes.size(), 2u);
     EXPECT_EQ(face.dictionary.entries.size(), 5u);
+    EXPECT_EQ(face.restPhonemes.size(), 2u); // the pauses # and _ show the neutral
 
     ASSERT_EQ(run("--format obj --out " + (dir / "obj").string()), 0);
     EXPECT_TRUE(std::filesystem::exists(dir / "obj" / "neutral.obj"));
+
+    // mapping.json beside every format: every original viseme and phoneme -> key.
+    for (const auto& mapping :
+         {dir / "face.mapping.json", dir / "xface" / "mapping.json", dir / "obj" / "mapping.json"}) {
+        ASSERT_TRUE(std::filesystem::exists(mapping)) << mapping;
+        const auto json = nlohmann::json::parse(readFileToString(mapping));
+        EXPECT_EQ(json["format"], "visemelab-mapping");
+        EXPECT_EQ(json["visemes"].size(), 4u);
+        EXPECT_EQ(json["phonemes"].size(), 5u);
+        EXPECT_EQ(json["reduced"].size(), 2u);
+        EXPECT_EQ(json["phonemes"]["F"], json["visemes"]["ff"]);
+        EXPECT_EQ(json["reduced"][0].contains("file"), mapping.parent_path() != dir) << mapping;
+    }
+    EXPECT_TRUE(std::filesystem::exists(dir / "face.mapping.json")); // face.glb and face.vlrt share a stem
 
     ASSERT_EQ(run("--unreduced --format runtime --out " + (dir / "full.vlrt").string()), 0);
     ASSERT_TRUE(package.loadFile((dir / "full.vlrt").c_str(), error)) << error;

@@ -3,6 +3,8 @@
 #include "core/common/Error.h"
 #include "tests/export/TestModels.h"
 
+#include "tests/app/CliRunner.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -12,6 +14,21 @@ namespace {
 
 const std::filesystem::path kAlice =
     std::filesystem::path(VISEMELAB_SHARED_DATA_DIR) / "xface-alice" / "alice.fdp";
+
+TEST(Xface, DictionaryPausesShowTheKeySilenceWasMergedInto) {
+    ReducedModel model = test::randomModel(4, 4, 3, false, 82);
+    model.phonemeToKey.emplace_back("sil", 1);
+    const PhonemeVisemeMap dic = parseXfaceDictionary(formatXfaceDictionary(model), "face.dic");
+    const std::vector<std::string> aliases = xfaceAliases(model);
+    ASSERT_GE(dic.entries.size(), 2u);
+    EXPECT_EQ(*dic.visemeOf("#"), aliases[1]);
+    EXPECT_EQ(*dic.visemeOf("_"), aliases[1]);
+    // A map that already names a pause phoneme keeps its own line.
+    model.phonemeToKey.emplace_back("#", 2);
+    const PhonemeVisemeMap own = parseXfaceDictionary(formatXfaceDictionary(model), "face.dic");
+    EXPECT_EQ(*own.visemeOf("#"), aliases[2]);
+    EXPECT_EQ(*own.visemeOf("_"), aliases[1]);
+}
 
 TEST(Xface, ExportThenImportRoundTrips) {
     ReducedModel model = test::randomModel(6, 5, 3, true, 81);
@@ -31,8 +48,10 @@ TEST(Xface, ExportThenImportRoundTrips) {
     EXPECT_EQ(face.set.visemes[1].name, "key1+m1");
     EXPECT_EQ(face.set.visemes[2].name, "oh_ooh");
     for (std::size_t k = 0; k < 3; ++k) EXPECT_EQ(face.set.visemes[k].positions, model.keys[k].positions);
-    // Every phoneme maps to the alias of its merged viseme.
+    // Every phoneme maps to the alias of its merged viseme; pauses (# and _) show the neutral face.
+    // (the pauses the .dic shows with the neutral are listed apart: they are not visemes).
     ASSERT_EQ(face.dictionary.entries.size(), model.phonemeToKey.size());
+    EXPECT_EQ(face.restPhonemes, (std::vector<std::string>{"#", "_"}));
     for (std::size_t p = 0; p < model.phonemeToKey.size(); ++p) {
         EXPECT_EQ(face.dictionary.entries[p].first, model.phonemeToKey[p].first);
         EXPECT_EQ(face.dictionary.entries[p].second,
@@ -110,6 +129,51 @@ TEST(Xface, DictionaryInXfaceFormat) {
     EXPECT_THROW(parseXfaceDictionary("english\na b c\n", "x.dic"), InputError);
     EXPECT_THROW(parseXfaceDictionary("english\na b\na c\n", "x.dic"), InputError);
     EXPECT_THROW(parseXfaceDictionary("", "x.dic"), InputError);
+}
+
+TEST(Xface, DictionaryOfOnlyAByteOrderMarkIsRejected) {
+    const auto errorOf = [](std::string_view text) {
+        try {
+            parseXfaceDictionary(text, "bom.dic");
+        } catch (const InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    // Was accepted: the mark became the language and the dictionary was empty.
+    EXPECT_EQ(errorOf("\xEF\xBB\xBF"), "bom.dic: empty phoneme dictionary");
+    EXPECT_EQ(errorOf("\xEF\xBB\xBF\n\n"), "bom.dic: empty phoneme dictionary");
+    EXPECT_EQ(errorOf("english\n"), "bom.dic: no 'phoneme viseme' lines after the language line");
+    std::string language;
+    const PhonemeVisemeMap map = parseXfaceDictionary("\xEF\xBB\xBF"
+                                                      "english\nAA aa\n",
+                                                      "bom.dic", &language);
+    EXPECT_EQ(language, "english");
+    EXPECT_EQ(map.entries.size(), 1u);
+}
+
+// An Xface face is a viseme set for `visemelab reduce --fdp`; its .dic maps a phoneme table.
+TEST(Xface, ReduceReadsAnXfaceFaceFromTheCommandLine) {
+    const ReducedModel model = test::randomModel(6, 5, 4, true, 83);
+    const auto dir = std::filesystem::temp_directory_path() / "visemelab_xface_reduce";
+    std::filesystem::remove_all(dir);
+    writeXfaceFace(dir / "face", model, "face");
+    std::string table = "phoneme,frequency\n";
+    for (const auto& [phoneme, f] : model.phonemeFrequencies)
+        table += phoneme + "," + std::to_string(f) + "\n";
+    table += "#,0.5\n_,0.1\n";
+    writeFileAtomically(dir / "phonemes.csv", table);
+    const auto r =
+        test::runCli("reduce --fdp " + (dir / "face" / "face.fdp").string() + " --freq-file " +
+                     (dir / "phonemes.csv").string() + " --target 2 --out " + (dir / "out").string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("Reduced 4 visemes to 2"), std::string::npos) << r.output;
+    const std::string mapping = readFileToString(dir / "out" / "mapping.json");
+    EXPECT_NE(mapping.find("\"p7\""), std::string::npos) << mapping; // phonemes came through the .dic
+    const auto both =
+        test::runCli("reduce --fdp " + (dir / "face" / "face.fdp").string() + " --neutral x.obj -m 2");
+    EXPECT_EQ(both.exitCode, 2) << both.output;
+    std::filesystem::remove_all(dir);
 }
 
 } // namespace

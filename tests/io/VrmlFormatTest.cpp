@@ -4,6 +4,8 @@
 #include "MeshIOTestUtil.h"
 #include "core/io/MeshIO.h"
 
+#include <cctype>
+
 namespace vl {
 namespace {
 
@@ -72,6 +74,31 @@ TEST(VrmlFormat, WritesOneShapeAndRoundTripsBitExactly) {
         EXPECT_EQ(text.find("IndexedFaceSet"), text.rfind("IndexedFaceSet"));
         EXPECT_EQ(text.find("TextureCoordinate") != std::string::npos, mesh.hasUVs());
         expectIdenticalMesh(mesh, parseVrml(text, "roundtrip.wrl"));
+    }
+}
+
+// XfacePlayer's loader loops on VRML it does not expect: a comma after every index and value, none
+// before a closing ']', and an explicit texCoordIndex.
+TEST(VrmlFormat, WritesTheLayoutXfacePlayerReads) {
+    for (bool uvs : {false, true}) {
+        const MeshData mesh = test::randomMesh(3, 40, 70, uvs);
+        const std::string text = formatVrml(mesh);
+        EXPECT_EQ(text.find(",\n      ]"), std::string::npos);
+        EXPECT_EQ(text.find(",\n    ]"), std::string::npos);
+        EXPECT_EQ(text.find("texCoordIndex") != std::string::npos, uvs);
+        const std::size_t begin = text.find("coordIndex [\n") + 13, end = text.find("    ]", begin);
+        const std::string indices = text.substr(begin, end - begin);
+        std::size_t numbers = 0, commas = 0;
+        for (std::size_t i = 0; i < indices.size(); ++i) {
+            if (indices[i] == ',') ++commas;
+            if ((std::isdigit(static_cast<unsigned char>(indices[i])) || indices[i] == '-') &&
+                (i == 0 || indices[i - 1] == ' '))
+                ++numbers;
+        }
+        EXPECT_EQ(numbers, 4 * mesh.triangles.size());
+        EXPECT_EQ(commas, numbers - 1); // after every index but the last
+        EXPECT_EQ(indices.substr(indices.size() - 3), "-1\n");
+        expectIdenticalMesh(mesh, parseVrml(text, "xface.wrl"));
     }
 }
 

@@ -16,11 +16,12 @@ namespace {
 //   the cat sat on the mat       DH AH  K AE T  S AE T  AO N  DH AH  M AE T
 //   a boy sings                  AH  B OY  S IH NG Z
 //   the judge measures the house DH AH  JH AH JH  M EH ZH ER Z  DH AH  HH AW S
+// and a pause (sil) at each of the . ; . that end the clauses.
 constexpr const char* kFixedText = "The cat sat on the mat.\nA boy sings; the judge measures the house.\n";
-const std::map<std::string, double> kFixedCounts = {{"AH", 6}, {"DH", 4}, {"AE", 3}, {"S", 3},  {"T", 3},
-                                                    {"JH", 2}, {"M", 2},  {"Z", 2},  {"AO", 1}, {"AW", 1},
-                                                    {"B", 1},  {"EH", 1}, {"ER", 1}, {"HH", 1}, {"IH", 1},
-                                                    {"K", 1},  {"N", 1},  {"NG", 1}, {"OY", 1}, {"ZH", 1}};
+const std::map<std::string, double> kFixedCounts = {
+    {"AH", 6}, {"DH", 4}, {"AE", 3}, {"S", 3},  {"T", 3},  {"JH", 2}, {"M", 2},
+    {"Z", 2},  {"AO", 1}, {"AW", 1}, {"B", 1},  {"EH", 1}, {"ER", 1}, {"HH", 1},
+    {"IH", 1}, {"K", 1},  {"N", 1},  {"NG", 1}, {"OY", 1}, {"ZH", 1}, {"sil", 3}};
 
 std::map<std::string, double> asMap(const FrequencyTable& table) {
     std::map<std::string, double> counts;
@@ -36,16 +37,17 @@ TEST(PhonemeCounting, ExactCountsOnAFixedText) {
     auto transcriber = makeEspeakTranscriber("en-us");
     const auto result = countPhonemesInFile(dir.write("fixed.txt", kFixedText), *transcriber);
     EXPECT_EQ(asMap(result.counts), kFixedCounts);
-    EXPECT_EQ(result.phonemeTotal, 37u);
+    EXPECT_EQ(result.phonemeTotal, 40u);
     EXPECT_EQ(result.notation, PhonemeNotation::Arpabet);
-    // All 39 phonemes are listed, most frequent first, ties and unseen ones by name.
-    ASSERT_EQ(result.counts.entries.size(), 39u);
+    // All 39 phonemes and sil are listed, most frequent first, ties and unseen ones by name.
+    ASSERT_EQ(result.counts.entries.size(), 40u);
     EXPECT_EQ(result.counts.entries[0].first, "AH");
     EXPECT_EQ(result.counts.entries[1].first, "DH");
     EXPECT_EQ(result.counts.entries[2].first, "AE");
     EXPECT_EQ(result.counts.entries[3].first, "S");
-    EXPECT_EQ(result.counts.entries[20].first, "AA");
-    EXPECT_EQ(result.counts.entries[20].second, 0.0);
+    EXPECT_EQ(result.counts.entries[5].first, "sil");
+    EXPECT_EQ(result.counts.entries[21].first, "AA");
+    EXPECT_EQ(result.counts.entries[21].second, 0.0);
     EXPECT_EQ(result.counts.entries.back().first, "Y");
 }
 
@@ -97,5 +99,5 @@ TEST(PhonemeCounting, SortedCountTableOrdersByCountThenName) {
     EXPECT_EQ(ipaTable.entries[0].first, "c");
     EXPECT_EQ(ipaTable.entries[1].first, "a");
     EXPECT_EQ(ipaTable.entries[2].first, "b");
-    EXPECT_EQ(sortedCountTable({{"AH", 1}}, PhonemeNotation::Arpabet).entries.size(), 39u);
+    EXPECT_EQ(sortedCountTable({{"AH", 1}}, PhonemeNotation::Arpabet).entries.size(), 40u);
 }

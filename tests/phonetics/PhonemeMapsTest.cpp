@@ -37,23 +37,24 @@ TEST(PhonemeMaps, EveryBundledMapCoversTheInventory) {
         SCOPED_TRACE(bundled.file.string());
         const auto map = loadPhonemeMapFile(bundled.file);
         EXPECT_NO_THROW(checkArpabetMap(map, bundled.file.string()));
-        EXPECT_EQ(map.entries.size(), 39u);
+        EXPECT_EQ(map.entries.size(), 40u);
+        EXPECT_NE(map.visemeOf("sil"), nullptr);
     }
 }
 
 TEST(PhonemeMaps, BundledMapsUseTheirSetsVisemeNames) {
-    // sil / none / X (silence) get no phoneme; every other viseme of a set gets at least one.
-    auto withoutSilence = [](std::vector<std::string> names, const std::string& silence) {
-        names.erase(std::find(names.begin(), names.end(), silence));
-        return sortedCopy(names);
-    };
-    EXPECT_EQ(sortedCopy(mapVisemeNames(bundledMap("oculus"))), withoutSilence(kOculusVisemes, "sil"));
-    EXPECT_EQ(sortedCopy(mapVisemeNames(bundledMap("sample-face"))), withoutSilence(kOculusVisemes, "sil"));
+    // Every viseme of a set gets at least one phoneme; the pause (sil) gets the rest viseme.
+    EXPECT_EQ(sortedCopy(mapVisemeNames(bundledMap("oculus"))), sortedCopy(kOculusVisemes));
+    EXPECT_EQ(sortedCopy(mapVisemeNames(bundledMap("sample-face"))), sortedCopy(kOculusVisemes));
     const std::vector<std::string> mpeg4 = {"none", "p_b_m", "f_v", "T_D", "t_d", "k_g", "tS_dZ_S", "s_z",
                                             "n_l",  "r",     "A",   "e",   "I",   "Q",   "U"};
-    EXPECT_EQ(sortedCopy(mapVisemeNames(bundledMap("mpeg4"))), withoutSilence(mpeg4, "none"));
+    EXPECT_EQ(sortedCopy(mapVisemeNames(bundledMap("mpeg4"))), sortedCopy(mpeg4));
     const std::vector<std::string> rhubarb = {"A", "B", "C", "D", "E", "F", "G", "H", "X"};
-    EXPECT_EQ(sortedCopy(mapVisemeNames(bundledMap("rhubarb"))), withoutSilence(rhubarb, "X"));
+    EXPECT_EQ(sortedCopy(mapVisemeNames(bundledMap("rhubarb"))), sortedCopy(rhubarb));
+    EXPECT_EQ(*bundledMap("oculus").visemeOf("sil"), "sil");
+    EXPECT_EQ(*bundledMap("sample-face").visemeOf("sil"), "sil");
+    EXPECT_EQ(*bundledMap("mpeg4").visemeOf("sil"), "none");
+    EXPECT_EQ(*bundledMap("rhubarb").visemeOf("sil"), "X");
 }
 
 TEST(PhonemeMaps, SpotChecksOfTheStandardAssignments) {
@@ -80,10 +81,10 @@ TEST(PhonemeMaps, SpotChecksOfTheStandardAssignments) {
 
 TEST(PhonemeMaps, DefaultTableIsCoveredByEveryMapAndGivesOculusFrequencies) {
     const auto table = loadPhonemeTable(defaultPhonemeTablePath(test::assetsDir()));
-    ASSERT_EQ(table.entries.size(), 39u);
+    ASSERT_EQ(table.entries.size(), 40u);
     std::vector<std::string> phonemes;
     for (const auto& [phoneme, count] : table.entries) {
-        EXPECT_NE(findArpabet(phoneme), nullptr) << phoneme;
+        EXPECT_TRUE(findArpabet(phoneme) || phoneme == "sil") << phoneme;
         EXPECT_GT(count, 0) << phoneme;
         phonemes.push_back(phoneme);
     }
@@ -96,8 +97,10 @@ TEST(PhonemeMaps, DefaultTableIsCoveredByEveryMapAndGivesOculusFrequencies) {
     double sum = 0;
     for (const double f : frequencies) sum += f;
     EXPECT_NEAR(sum, 1.0, 1e-12);
-    EXPECT_EQ(frequencies[0], 0.0); // sil: no phoneme
-    for (std::size_t i = 1; i < frequencies.size(); ++i) EXPECT_GT(frequencies[i], 0.0) << kOculusVisemes[i];
+    // sil has its measured share of pauses: more than the rarest visemes, less than the most common.
+    for (std::size_t i = 0; i < frequencies.size(); ++i) EXPECT_GT(frequencies[i], 0.0) << kOculusVisemes[i];
+    EXPECT_GT(frequencies[0], 0.02);
+    EXPECT_LT(frequencies[0], 0.15);
 }
 
 TEST(PhonemeMaps, CoverageErrorListsAllUnmappedPhonemesAtOnce) {
@@ -111,6 +114,7 @@ TEST(PhonemeMaps, CoverageErrorListsAllUnmappedPhonemesAtOnce) {
     } catch (const InputError& e) {
         EXPECT_EQ(std::string(e.what()), "my_map.csv: 3 phonemes not mapped to any viseme: AA, OY, ZH");
     }
+    map.entries.emplace_back("sil", "x"); // the pause is allowed, not required
     map.entries.emplace_back("AX", "x");
     map.entries.emplace_back("sh", "x");
     try {
@@ -118,6 +122,19 @@ TEST(PhonemeMaps, CoverageErrorListsAllUnmappedPhonemesAtOnce) {
         FAIL() << "expected InputError";
     } catch (const InputError& e) {
         EXPECT_EQ(std::string(e.what()), "my_map.csv: not ARPAbet phonemes (see docs/phonemes.md): AX, sh");
+    }
+}
+
+TEST(PhonemeMaps, UnmappedSilenceErrorSaysWhatToMapItTo) {
+    PhonemeVisemeMap map;
+    map.entries = {{"AA", "aa"}};
+    try {
+        checkMapCovers(map, std::vector<std::string>{"AA", "sil"}, "old_map.csv");
+        FAIL() << "expected InputError";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("not mapped to any viseme: sil (sil is the pause"),
+                  std::string::npos)
+            << e.what();
     }
 }
 

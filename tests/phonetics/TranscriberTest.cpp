@@ -1,9 +1,11 @@
 #include "core/common/Error.h"
 #include "core/phonetics/Arpabet.h"
 #include "core/phonetics/EspeakTranscriber.h"
+#include "core/speech/Utterance.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <thread>
 
 using namespace vl;
@@ -62,9 +64,11 @@ TEST(EspeakTranscriber, KnownWordsGiveTheirArpabet) {
 
 TEST(EspeakTranscriber, WholeTextAcrossClausesAndLines) {
     auto transcriber = makeEspeakTranscriber();
-    // Clauses end at punctuation and blank lines; every one must be transcribed, in order.
+    // Clauses end at punctuation and blank lines; every one must be transcribed, in order, with a
+    // pause after each (none after the last clause when the text ends without punctuation).
     EXPECT_EQ(join(transcriber->transcribe("Yes, sing.\n\nBoy! Cat?\nhouse")),
-              "Y EH S S IH NG B OY K AE T HH AW S");
+              "Y EH S sil S IH NG sil B OY sil K AE T sil HH AW S");
+    EXPECT_EQ(join(transcriber->transcribe("Boy! \"Cat.\"  ")), "B OY sil K AE T sil");
     EXPECT_TRUE(transcriber->transcribe("").empty());
     EXPECT_TRUE(transcriber->transcribe(" ... ,,, ;;; ").empty());
 }
@@ -75,7 +79,24 @@ TEST(EspeakTranscriber, EveryPhonemeOfLongTextIsInTheInventory) {
         "The quick brown fox jumps over the lazy dog; pack my box with five dozen liquor jugs. "
         "Sphinx of black quartz, judge my vow! How vexingly quick daft zebras jump.");
     EXPECT_GT(phonemes.size(), 100u);
-    for (const auto& p : phonemes) EXPECT_NE(findArpabet(p), nullptr) << p;
+    for (const auto& p : phonemes) EXPECT_TRUE(findArpabet(p) || p == kSilencePhoneme) << p;
+    EXPECT_EQ(std::count(phonemes.begin(), phonemes.end(), kSilencePhoneme), 5); // ; . , ! .
+}
+
+// espeak writes a pause inside a clause (before "and" in a long clause, at a quotation mark);
+// each is one silence, and the phoneme written right after a pause marker is kept.
+TEST(EspeakTranscriber, PausesInsideAClauseAreSilences) {
+    auto transcriber = makeEspeakTranscriber();
+    EXPECT_EQ(join(transcriber->transcribe("They act as a prism and form a rainbow")),
+              "DH EY AE K T AE Z AH P R IH Z AH M sil AE N D F AO R M AH R EY N B OW");
+    EXPECT_EQ(join(transcriber->transcribe("He said. \"Quoted\" again")),
+              "HH IY S EH D sil K W OW T IH D sil AH G EH N");
+    EXPECT_TRUE(transcriber->transcribe(" ... ,,, ;;; ").empty());
+}
+
+TEST(EspeakTranscriber, OtherLanguagesPauseAtPunctuation) {
+    auto german = makeEspeakTranscriber("de");
+    EXPECT_EQ(join(german->transcribe("Haus, Haus.")), "h aʊ s sil h aʊ s sil");
 }
 
 TEST(EspeakTranscriber, ForeignLetterNamesAreSkippedNotMisCounted) {
@@ -93,6 +114,12 @@ TEST(EspeakTranscriber, OtherLanguagesGiveIpa) {
     auto english = makeEspeakTranscriber("en-us");
     EXPECT_EQ(join(english->transcribe("house")), "HH AW S");
     EXPECT_EQ(join(german->transcribe("Haus")), "h aʊ s");
+}
+
+TEST(EspeakTranscriber, VoicesByLanguageCode) {
+    // British English is espeak-ng's voice "en", language code "en-gb": both names work.
+    EXPECT_EQ(join(makeEspeakTranscriber("en-gb")->transcribe("house")), "HH AW S");
+    EXPECT_EQ(join(makeEspeakTranscriber("en")->transcribe("house")), "HH AW S");
 }
 
 TEST(EspeakTranscriber, UnknownVoiceIsAnInputErrorNamingIt) {

@@ -93,3 +93,25 @@ TEST(Weights, LoadsJsonAndTextFilesWithLocatedErrors) {
     expectMessage(writeTemp("g.json", "[1,"), "invalid JSON");
     expectMessage(std::filesystem::temp_directory_path() / "visemelab_no_such_file.json", "file not found");
 }
+
+TEST(Weights, HostileFilesAreDataErrorsNamingTheFile) {
+    auto expectMessage = [](const std::filesystem::path& path, const std::string& fragment) {
+        try {
+            loadWeightsFile(path);
+            ADD_FAILURE() << "expected error for " << path;
+        } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+        }
+    };
+    expectMessage(writeTemp("deep.json", std::string(50000, '[')), "weights_deep.json: /0/0/0/0");
+    expectMessage(writeTemp("inf.json", "{\"weights\": [1, 1e999]}"),
+                  "weights_inf.json: /weights/1: number out of range: 1e999");
+    expectMessage(writeTemp("inf.txt", "1\n1e999\n"), "weights_inf.txt:2: number out of range");
+    expectMessage(writeTemp("neg.txt", "1\n2 -3\n"), "weights_neg.txt:2: weight -3 is negative");
+    expectMessage(writeTemp("neg.json", "[1, -3]"), "weights_neg.json:/1: weight -3 is negative");
+    expectMessage(writeTemp("bom.txt", "\xEF\xBB\xBF"), "empty weights file");
+    expectMessage(writeTemp("comments.txt", "# only a comment\n"), "no weights in file");
+    EXPECT_EQ(loadWeightsFile(writeTemp("bom2.txt", "\xEF\xBB\xBF"
+                                                    "1 2\n")),
+              (std::vector<double>{1, 2}));
+}

@@ -5,6 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <random>
+
 namespace vl {
 namespace {
 
@@ -146,6 +150,94 @@ TEST_F(AnimationTest, RejectsBadSequences) {
     ASSERT_TRUE(a.setKeyframes(package, {{0.5, 2}}, Interpolation::Cubic, error));
     expectNear(evaluate(a, 0.0), positionsOf(2), 0);
     expectNear(evaluate(a, std::nan("")), positionsOf(2), 0);
+}
+
+// Dominance blending evaluated over every keyframe, each with its taper written out from the
+// definition (0 before t_{i-2}, rising to 1 at t_{i-1}, 1 until t_{i+1}, falling to 0 at t_{i+2}):
+// the slow reference for the windowed version.
+std::vector<double> dominanceReference(const std::vector<Keyframe>& k, double rate, double t,
+                                       std::size_t keys) {
+    const std::size_t n = k.size();
+    t = std::clamp(t, k.front().time, k.back().time);
+    const auto smooth = [](double s) { return s * s * (3 - 2 * s); };
+    std::vector<double> byKey(keys + 1, 0.0); // the last slot is the rest key
+    double sum = 0;
+    std::vector<double> d(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        double taper = 1;
+        if (i >= 2 && t <= k[i - 2].time)
+            taper = 0;
+        else if (i >= 2 && t < k[i - 1].time)
+            taper = smooth((t - k[i - 2].time) / (k[i - 1].time - k[i - 2].time));
+        if (i + 2 < n && t >= k[i + 2].time)
+            taper = 0;
+        else if (i + 2 < n && t > k[i + 1].time)
+            taper = 1 - smooth((t - k[i + 1].time) / (k[i + 2].time - k[i + 1].time));
+        d[i] = k[i].dominance * taper * std::exp(-rate * std::abs(t - k[i].time));
+        sum += d[i];
+    }
+    for (std::size_t i = 0; i < n; ++i) byKey[k[i].key == kRestKey ? keys : k[i].key] += d[i] / sum;
+    return byKey;
+}
+
+TEST_F(AnimationTest, DominanceMatchesTheReferenceOnRandomSequences) {
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> gap(0.01, 0.3), alpha(0.2, 4.0), rate(5.0, 60.0);
+    for (int trial = 0; trial < 20; ++trial) {
+        std::vector<Keyframe> keyframes;
+        double time = -0.1;
+        const int count = 1 + static_cast<int>(rng() % 12);
+        for (int i = 0; i < count; ++i) {
+            time += gap(rng);
+            const std::uint32_t key = rng() % 5 == 4 ? kRestKey : static_cast<std::uint32_t>(rng() % 4);
+            keyframes.push_back({time, key, static_cast<float>(alpha(rng))});
+        }
+        const double theta = rate(rng);
+        KeyframeAnimation a;
+        std::string error;
+        ASSERT_TRUE(a.setKeyframes(package, keyframes, Interpolation::Dominance, error, theta)) << error;
+        for (double t = -0.2; t < time + 0.2; t += 0.0071) {
+            KeyWeight w[4];
+            const std::size_t terms = a.weightsAt(t, w);
+            std::vector<double> byKey(5, 0.0);
+            for (std::size_t j = 0; j < terms; ++j) {
+                EXPECT_GE(w[j].weight, 0.0f);
+                byKey[w[j].key == kRestKey ? 4 : w[j].key] += w[j].weight;
+            }
+            const auto expected = dominanceReference(keyframes, theta, t, 4);
+            for (std::size_t key = 0; key < 5; ++key) ASSERT_NEAR(byKey[key], expected[key], 1e-6) << t;
+        }
+    }
+}
+
+TEST_F(AnimationTest, DominanceIsContinuousAndDominantKeysWin) {
+    // A short bilabial between two vowels: with high dominance it is nearly reached at its time,
+    // with equal dominance it is not (coarticulation).
+    const std::vector<Keyframe> equal{{0.0, 0}, {0.1, 1}, {0.14, 2}, {0.18, 1}, {0.3, 0}};
+    std::vector<Keyframe> dominant = equal;
+    dominant[2].dominance = 20.0f;
+    KeyframeAnimation a, b;
+    std::string error;
+    ASSERT_TRUE(a.setKeyframes(package, equal, Interpolation::Dominance, error));
+    ASSERT_TRUE(b.setKeyframes(package, dominant, Interpolation::Dominance, error));
+    const auto weightOf = [](const KeyframeAnimation& anim, double t, std::uint32_t key) {
+        KeyWeight w[4];
+        double sum = 0;
+        for (std::size_t j = 0, terms = anim.weightsAt(t, w); j < terms; ++j)
+            if (w[j].key == key) sum += w[j].weight;
+        return sum;
+    };
+    EXPECT_LT(weightOf(a, 0.14, 2), 0.6);
+    EXPECT_GT(weightOf(b, 0.14, 2), 0.9);
+    // Continuity across keyframe times (where the window of contributing keyframes moves).
+    for (const Keyframe& k : equal) expectNear(evaluate(a, k.time - 1e-7), evaluate(a, k.time + 1e-7), 1e-4);
+    // Far apart keyframes: no underflow to 0/0.
+    ASSERT_TRUE(a.setKeyframes(package, {{0.0, 0}, {1000.0, 1}}, Interpolation::Dominance, error));
+    expectNear(evaluate(a, 500.0), evaluate(a, 500.0), 0);
+    EXPECT_NEAR(weightOf(a, 499.0, 0), 1.0, 1e-6);
+    EXPECT_FALSE(a.setKeyframes(package, {{0.0, 0, 0.0f}}, Interpolation::Dominance, error));
+    EXPECT_NE(error.find("dominance must be"), std::string::npos);
+    EXPECT_FALSE(a.setKeyframes(package, {{0.0, 0}}, Interpolation::Dominance, error, -1.0));
 }
 
 } // namespace

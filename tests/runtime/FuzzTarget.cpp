@@ -25,7 +25,8 @@ int loadAndAnimate(const std::uint8_t* data, std::size_t size) {
         if (package.keyOfPhoneme(p) >= package.keyCount()) std::abort();
     std::vector<runtime::Keyframe> keyframes{{0.0, runtime::kRestKey}};
     for (std::uint32_t k = 0; k < package.keyCount() && k < 8; ++k) keyframes.push_back({0.1 * (k + 1), k});
-    for (auto interpolation : {runtime::Interpolation::Linear, runtime::Interpolation::Cubic}) {
+    for (auto interpolation :
+         {runtime::Interpolation::Linear, runtime::Interpolation::Cubic, runtime::Interpolation::Dominance}) {
         runtime::KeyframeAnimation animation;
         if (!animation.setKeyframes(package, keyframes, interpolation, error)) std::abort();
         for (double t = -0.05; t <= animation.endTime() + 0.05; t += 0.037) animation.evaluate(t, out.data());

@@ -68,6 +68,16 @@ TEST(RuntimePackage, FloatRoundTripKeepsEverything) {
     EXPECT_EQ(package.findPhoneme("p3"), 3u);
     EXPECT_EQ(package.findPhoneme("nope"), runtime::kNotFound);
     EXPECT_EQ(package.findKey(model.keys[2].name), 2u);
+    // By a key's name, an original viseme merged into it, or a phoneme (model keys: key0, key1+m1, ...).
+    EXPECT_EQ(package.findKey("key1+m1"), 1u);
+    EXPECT_EQ(package.findKey("m1"), 1u);
+    EXPECT_EQ(package.findKey("key1"), 1u);
+    EXPECT_EQ(package.findKey("key2"), 2u);
+    EXPECT_EQ(package.findKey("p5"), 2u); // phoneme p5 plays key 2
+    EXPECT_EQ(package.findKey("p0"), 0u);
+    EXPECT_EQ(package.findKey("m"), runtime::kNotFound);
+    EXPECT_EQ(package.findKey(""), runtime::kNotFound);
+    EXPECT_EQ(package.findKey("key1+"), runtime::kNotFound);
 }
 
 TEST(RuntimePackage, QuantisedErrorIsWithinHalfAStep) {

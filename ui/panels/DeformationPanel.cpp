@@ -3,6 +3,7 @@
 #include "core/deform/Visemes.h"
 #include "ui/EditorUi.h"
 #include "ui/panels/PanelWidgets.h"
+#include "ui/widgets/Controls.h"
 
 #include <imgui.h>
 
@@ -16,7 +17,7 @@ constexpr Falloff kFalloffs[] = {Falloff::Linear, Falloff::Smoothstep, Falloff::
 
 bool dragVec2(const char* label, Vec2& v, float speed, float lo, float hi) {
     float values[2] = {static_cast<float>(v[0]), static_cast<float>(v[1])};
-    if (!ImGui::DragFloat2(label, values, speed, lo, hi, "%.3f")) return false;
+    if (!ctl::DragFloat2(label, values, speed, lo, hi, "%.3f")) return false;
     v = Vec2(values[0], values[1]);
     return true;
 }
@@ -29,44 +30,44 @@ void EditorUi::deformationPanel() {
         ImGui::TextWrapped(
             "The deformable face is a cascade of vector fields on the (u,v) square: a base geometry "
             "plus one field per muscle parameter.");
-        if (ImGui::Button("Load bundled face")) session.attempt("Load face", [&] { session.loadFace(); });
+        if (ctl::Button("Load bundled face")) session.attempt("Load face", [&] { session.loadFace(); });
         return;
     }
     const DeformationCascade& cascade = *model.cascade;
 
     sectionHeader("Base geometry (retargeting)");
     int individual = static_cast<int>(model.individual);
-    bool retargeted = ImGui::RadioButton("bundled", &individual, 0);
+    bool retargeted = ctl::RadioButton("bundled", &individual, 0);
     ImGui::SameLine();
-    retargeted |= ImGui::RadioButton("retarget (2nd individual)", &individual, 1);
+    retargeted |= ctl::RadioButton("retarget (2nd individual)", &individual, 1);
     if (retargeted)
         session.attempt("Retarget",
                         [&] { session.setIndividual(static_cast<face::Individual>(individual)); });
 
     sectionHeader("Parameters");
-    if (ImGui::BeginCombo("preset", "apply a viseme...")) {
+    if (ctl::BeginCombo("preset", "apply a viseme...")) {
         for (const VisemeParameters& preset : oculusVisemes())
-            if (ImGui::Selectable(preset.name.c_str()))
+            if (ctl::Selectable(preset.name.c_str()))
                 session.attempt("Preset", [&] { session.applyVisemePreset(preset.name); });
         ImGui::EndCombo();
     }
     ImGui::SameLine();
-    if (ImGui::Button("Defaults"))
+    if (ctl::Button("Defaults"))
         session.attempt("Defaults", [&] { session.setParameters(cascade.defaults(), "Reset parameters"); });
     for (std::size_t k = 0; k < cascade.parameters.size(); ++k) {
         const DeformParameter& p = cascade.parameters[k];
         float value = static_cast<float>(model.parameters[k]);
         ImGui::PushID(static_cast<int>(k));
         ImGui::SetNextItemWidth(-130);
-        if (ImGui::SliderFloat(p.name.c_str(), &value, static_cast<float>(p.min), static_cast<float>(p.max),
-                               "%.2f"))
+        if (ctl::SliderFloat(p.name.c_str(), &value, static_cast<float>(p.min), static_cast<float>(p.max),
+                             "%.2f"))
             session.attempt("Parameter", [&] { session.setParameter(static_cast<int>(k), value); });
         endEditOnRelease(session);
         ImGui::PopID();
     }
 
     sectionHeader("Fields");
-    ImGui::Checkbox("Show influence on the face", &showFieldInfluence_);
+    ctl::Checkbox("Show influence on the face", &showFieldInfluence_);
     if (ImGui::BeginListBox("##stages", ImVec2(-1, 6.5f * ImGui::GetTextLineHeightWithSpacing()))) {
         for (std::size_t s = 0; s < cascade.stages.size(); ++s) {
             const DeformationStage& stage = cascade.stages[s];
@@ -78,7 +79,7 @@ void EditorUi::deformationPanel() {
                 const bool selected =
                     selectedStage_ == static_cast<int>(s) && selectedInfluence_ == static_cast<int>(r);
                 ImGui::PushID(static_cast<int>(s * 1000 + r));
-                if (ImGui::Selectable(label.c_str(), selected)) {
+                if (ctl::Selectable(label.c_str(), selected)) {
                     selectedStage_ = static_cast<int>(s);
                     selectedInfluence_ = static_cast<int>(r);
                 }
@@ -102,7 +103,7 @@ void EditorUi::deformationPanel() {
             changed |= dragVec2("plateau", field.plateau, 0.002f, 0.0f, 1.0f);
             endEditOnRelease(session);
             float degrees = static_cast<float>(field.rotation * 180.0 / M_PI);
-            if (ImGui::SliderFloat("rotation", &degrees, -180.0f, 180.0f, "%.0f deg")) {
+            if (ctl::SliderFloat("rotation", &degrees, -180.0f, 180.0f, "%.0f deg")) {
                 field.rotation = degrees * M_PI / 180.0;
                 changed = true;
             }
@@ -116,17 +117,17 @@ void EditorUi::deformationPanel() {
             }
             endEditOnRelease(session);
             float magnitude = static_cast<float>(field.magnitude);
-            if (ImGui::DragFloat("magnitude", &magnitude, 0.01f, -10.0f, 10.0f, "%.3f")) {
+            if (ctl::DragFloat("magnitude", &magnitude, 0.01f, -10.0f, 10.0f, "%.3f")) {
                 field.magnitude = magnitude;
                 changed = true;
             }
             endEditOnRelease(session);
             int falloff = static_cast<int>(field.falloff);
             const std::string current(falloffName(field.falloff));
-            if (ImGui::BeginCombo("falloff", current.c_str())) {
+            if (ctl::BeginCombo("falloff", current.c_str())) {
                 for (Falloff kind : kFalloffs)
-                    if (ImGui::Selectable(std::string(falloffName(kind)).c_str(),
-                                          static_cast<int>(kind) == falloff)) {
+                    if (ctl::Selectable(std::string(falloffName(kind)).c_str(),
+                                        static_cast<int>(kind) == falloff)) {
                         field.falloff = kind;
                         changed = true;
                     }
@@ -142,7 +143,7 @@ void EditorUi::deformationPanel() {
 
     sectionHeader("Visemes");
     ImGui::TextWrapped("Generate the face's viseme set (one mesh per viseme preset) to reduce it.");
-    if (ImGui::Button("Generate viseme set from face"))
+    if (ctl::Button("Generate viseme set from face"))
         guarded([this] { session.attempt("Generate visemes", [&] { session.generateVisemesFromFace(); }); });
 }
 
@@ -151,7 +152,7 @@ void EditorUi::uvView(int stage, int influence, float side) {
     const InfluenceField& field = model.cascade->stages[static_cast<std::size_t>(stage)]
                                       .field.influences[static_cast<std::size_t>(influence)];
     const ImVec2 origin = ImGui::GetCursorScreenPos();
-    ImGui::InvisibleButton("##uv", ImVec2(side, side));
+    ctl::InvisibleButton("##uv", ImVec2(side, side));
     ImDrawList* draw = ImGui::GetWindowDrawList();
     draw->AddRect(ImVec2(origin.x - 1, origin.y - 1), ImVec2(origin.x + side + 1, origin.y + side + 1),
                   IM_COL32(120, 125, 140, 255));

@@ -1,6 +1,7 @@
 // Export panel: project save/load and the runtime exports of the core.
 #include "ui/EditorUi.h"
 #include "ui/panels/PanelWidgets.h"
+#include "ui/widgets/Controls.h"
 
 #include <imgui.h>
 
@@ -11,7 +12,7 @@ void EditorUi::exportPanel() {
     const Project& project = session.project();
     ImGui::TextWrapped("File: %s", project.path.empty() ? "(not saved yet)" : project.path.string().c_str());
     if (session.modified()) ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.4f, 1.0f), "Unsaved changes");
-    if (ImGui::Button("Open project..."))
+    if (ctl::Button("Open project..."))
         guarded([this] {
             fileDialog_.open("Open project", FileDialog::Mode::OpenFile, {".vlproj", ".json"},
                              [this](const auto& path) {
@@ -19,9 +20,9 @@ void EditorUi::exportPanel() {
                              });
         });
     ImGui::SameLine();
-    if (ImGui::Button("Save")) saveProject(false);
+    if (ctl::Button("Save")) saveProject(false);
     ImGui::SameLine();
-    if (ImGui::Button("Save as...")) saveProject(true);
+    if (ctl::Button("Save as...")) saveProject(true);
 
     sectionHeader("Runtime export (the reduced set)");
     const Grouping* grouping = session.currentGrouping();
@@ -51,7 +52,7 @@ void EditorUi::exportPanel() {
         {ExportFormat::Obj, "OBJ per key", "one OBJ file per merged viseme", true, ""},
     };
     for (const Target& target : targets) {
-        if (ImGui::Button(target.label, ImVec2(200, 0))) {
+        if (ctl::Button(target.label, ImVec2(200, 0))) {
             const ExportFormat format = target.format;
             auto run = [this, format](const std::filesystem::path& out) {
                 session.attempt("Export", [&] { session.startExport(format, out); });
@@ -68,7 +69,7 @@ void EditorUi::exportPanel() {
     }
 
     sectionHeader("Import");
-    if (ImGui::Button("Import glTF morph targets...", ImVec2(200, 0)))
+    if (ctl::Button("Import glTF morph targets...", ImVec2(200, 0)))
         guarded([this] {
             fileDialog_.open("Import glTF", FileDialog::Mode::OpenFile, {".glb", ".gltf"},
                              [this](const auto& path) {

@@ -4,6 +4,7 @@
 #include "core/phonetics/PhonemeTableIO.h"
 #include "ui/EditorUi.h"
 #include "ui/panels/PanelWidgets.h"
+#include "ui/widgets/Controls.h"
 
 #include <imgui.h>
 
@@ -17,13 +18,13 @@ void EditorUi::frequenciesPanel() {
         ImGui::TextWrapped("Load a viseme set first.");
         return;
     }
-    if (ImGui::Button("Load table..."))
+    if (ctl::Button("Load table..."))
         fileDialog_.open("Load frequencies", FileDialog::Mode::OpenFile, {".csv", ".json"},
                          [this](const auto& path) {
                              session.attempt("Load frequencies", [&] { session.loadFrequencies(path); });
                          });
     ImGui::SameLine();
-    if (ImGui::Button("Save as CSV..."))
+    if (ctl::Button("Save as CSV..."))
         fileDialog_.open(
             "Save frequencies", FileDialog::Mode::SaveFile, {".csv"},
             [this](const auto& path) {
@@ -36,9 +37,9 @@ void EditorUi::frequenciesPanel() {
         "map that covers every phoneme; errors name the file and line.");
 
     sectionHeader("Phoneme frequencies");
-    if (ImGui::BeginCombo("##bundled-map", "Bundled en-us table with map...")) {
+    if (ctl::BeginCombo("##bundled-map", "Bundled en-us table with map...")) {
         for (const BundledPhonemeMap& map : bundledPhonemeMaps(EditorSession::assetsDirectory()))
-            if (ImGui::Selectable(map.title.c_str()))
+            if (ctl::Selectable(map.title.c_str()))
                 session.attempt("Phoneme map", [&] { session.useBundledPhonemeMap(map.id); });
         ImGui::EndCombo();
     }
@@ -46,7 +47,7 @@ void EditorUi::frequenciesPanel() {
                "sample face); otherwise the error lists what does not match and nothing changes.");
     const bool counting = session.phonemeCountRunning();
     if (counting) ImGui::BeginDisabled();
-    if (ImGui::Button("Count phonemes in a text file..."))
+    if (ctl::Button("Count phonemes in a text file..."))
         fileDialog_.open("Text corpus (espeak-ng, en-us)", FileDialog::Mode::OpenFile, {".txt", ".md", ""},
                          [this](const auto& path) {
                              session.attempt("Phoneme count", [&] { session.startPhonemeCount(path); });
@@ -91,16 +92,16 @@ void EditorUi::frequenciesPanel() {
                 ImGui::TableNextColumn();
                 float f = static_cast<float>(value);
                 ImGui::SetNextItemWidth(-1);
-                if (ImGui::DragFloat("##f", &f, 1.0f, 0.0f, 1e9f, "%.6g"))
+                if (ctl::DragFloat("##f", &f, 1.0f, 0.0f, 1e9f, "%.6g"))
                     session.attempt("Phoneme frequency",
                                     [&] { session.setPhonemeFrequency(static_cast<int>(i), f); });
                 endEditOnRelease(session);
                 ImGui::TableNextColumn();
                 const std::string* mapped = source.map.visemeOf(phoneme);
                 ImGui::SetNextItemWidth(-1);
-                if (ImGui::BeginCombo("##viseme", mapped ? mapped->c_str() : "(unmapped)")) {
+                if (ctl::BeginCombo("##viseme", mapped ? mapped->c_str() : "(unmapped)")) {
                     for (const auto& v : set->visemes)
-                        if (ImGui::Selectable(v.name.c_str(), mapped && *mapped == v.name))
+                        if (ctl::Selectable(v.name.c_str(), mapped && *mapped == v.name))
                             session.attempt("Phoneme map",
                                             [&] { session.setPhonemeViseme(static_cast<int>(i), v.name); });
                     ImGui::EndCombo();
@@ -129,7 +130,7 @@ void EditorUi::frequenciesPanel() {
                 ImGui::TableNextColumn();
                 float f = value ? static_cast<float>(*value) : 0.0f;
                 ImGui::SetNextItemWidth(-1);
-                if (ImGui::DragFloat("##f", &f, 0.01f, 0.0f, 1e9f, "%.3f"))
+                if (ctl::DragFloat("##f", &f, 0.01f, 0.0f, 1e9f, "%.3f"))
                     session.attempt("Frequency", [&] { session.setVisemeFrequency(static_cast<int>(i), f); });
                 endEditOnRelease(session);
                 ImGui::PopID();

@@ -1,12 +1,16 @@
 // Reduction panel: target m, the optimal cost for every p with m marked, the groups, and playback
 // of a phoneme sequence with the full and the reduced set (the views show both side by side).
+#include "core/inspect/DistanceUnits.h"
 #include "ui/EditorUi.h"
 #include "ui/panels/PanelWidgets.h"
+#include "ui/widgets/Controls.h"
+#include "ui/widgets/CostPlot.h"
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 namespace vl::ui {
@@ -21,11 +25,11 @@ void EditorUi::reductionPanel() {
     int m = session.project().reduction.target;
     sectionHeader("Target");
     ImGui::SetNextItemWidth(-90);
-    if (ImGui::SliderInt("groups m", &m, 1, n)) session.attempt("Target", [&] { session.setTarget(m); });
+    if (ctl::SliderInt("groups m", &m, 1, n)) session.attempt("Target", [&] { session.setTarget(m); });
     endEditOnRelease(session);
-    ImGui::Checkbox("Re-run automatically", &session.autoReduce);
+    ctl::Checkbox("Re-run automatically", &session.autoReduce);
     ImGui::SameLine();
-    if (ImGui::Button("Run now")) session.attempt("Reduction", [&] { session.startReduction(); });
+    if (ctl::Button("Run now")) session.attempt("Reduction", [&] { session.startReduction(); });
     if (session.reductionRunning())
         ImGui::ProgressBar(static_cast<float>(session.reductionProgress()), ImVec2(-1, 0), "reducing...");
 
@@ -37,30 +41,42 @@ void EditorUi::reductionPanel() {
         return;
     }
 
-    sectionHeader("Optimal cost for p = 1..n");
-    std::vector<float> costs;
-    for (const Grouping& g : curve->curve) costs.push_back(static_cast<float>(g.cost));
-    const float top = *std::max_element(costs.begin(), costs.end());
-    char overlay[64];
-    std::snprintf(overlay, sizeof overlay, "m = %d: cost %.4g", m, grouping ? grouping->cost : 0.0);
-    ImGui::PlotLines("##cost", costs.data(), static_cast<int>(costs.size()), 0, overlay, 0.0f, top * 1.05f,
-                     ImVec2(ImGui::GetContentRegionAvail().x, 120)); // 1.86 PlotLines takes no negative width
-    {
-        // Mark the chosen m on the curve (PlotLines spreads the points over the inner frame).
-        const ImVec2 lo = ImGui::GetItemRectMin();
-        const ImVec2 hi = ImGui::GetItemRectMax();
-        const ImVec2 pad = ImGui::GetStyle().FramePadding;
-        const float x0 = lo.x + pad.x, x1 = hi.x - pad.x;
-        const float t =
-            costs.size() > 1 ? static_cast<float>(m - 1) / static_cast<float>(costs.size() - 1) : 0.0f;
-        const float x = x0 + t * (x1 - x0);
-        ImDrawList* draw = ImGui::GetWindowDrawList();
-        draw->AddLine(ImVec2(x, lo.y + pad.y), ImVec2(x, hi.y - pad.y), IM_COL32(255, 190, 60, 220), 2.0f);
-        const float y =
-            hi.y - pad.y - (hi.y - lo.y - 2 * pad.y) * costs[static_cast<std::size_t>(m - 1)] / (top * 1.05f);
-        draw->AddCircleFilled(ImVec2(x, y), 4.0f, IM_COL32(255, 190, 60, 255));
-    }
-    ImGui::TextDisabled("p = 1 (left) .. %d (right); cost 0 at p = n", n);
+    sectionHeader("Cost for p = 1..n");
+    ctl::Checkbox("log scale", &costView_.logarithmic);
+    ImGui::SameLine();
+    ctl::Checkbox("% of p = 1", &costView_.percent);
+    ImGui::SameLine();
+    static const char* const kUnits[] = {"auto", "m", "cm", "mm", "in"};
+    ImGui::SetNextItemWidth(70);
+    ctl::Combo("model unit", &costView_.unit, kUnits, 5);
+    helpMarker("The cost as a distance: the RMS weighted distance between each viseme and the merged "
+               "shape of its group, averaged by frequency. 'auto' guesses the model's length unit from "
+               "the size of the head (0.05 to 1 m across).");
+    std::vector<double> weights;
+    session.attempt("Weights", [&] { weights = session.weights(); });
+    double weightSum = 0.0;
+    for (const double w : weights) weightSum += w;
+    const double millimetres = millimetresPerModelUnit();
+    std::vector<double> distances;
+    for (const Grouping& g : curve->curve)
+        distances.push_back(rmsDistance(g.cost, 1.0, weightSum) * millimetres);
+    if (costView_.percent && !distances.empty() && distances[0] > 0.0)
+        for (double& d : distances) d = 100.0 * d / distances.front();
+    CostPlotOptions options;
+    options.logarithmic = costView_.logarithmic;
+    options.unit = costView_.percent ? "%" : "mm";
+    options.marked = m;
+    if (const int picked = costPlot("##cost", distances, options, ImVec2(0, 150)); picked > 0 && picked != m)
+        session.attempt("Target", [&] {
+            session.setTarget(picked);
+            session.endEdit();
+        });
+    if (grouping)
+        ImGui::Text("m = %d: RMS %.3g mm (%.1f%% of p = 1); click the plot to choose m", m,
+                    rmsDistance(grouping->cost, 1.0, weightSum) * millimetres,
+                    curve->curve.front().cost > 0.0
+                        ? 100.0 * std::sqrt(grouping->cost / curve->curve.front().cost)
+                        : 0.0);
 
     if (!grouping) return;
     sectionHeader("Groups");
@@ -91,7 +107,7 @@ void EditorUi::reductionPanel() {
                     ImGui::SameLine(0.0f, 6.0f);
                 first = false;
                 ImGui::PushID(member);
-                if (ImGui::SmallButton(name.c_str())) session.selectedViseme = member;
+                if (ctl::SmallButton(name.c_str())) session.selectedViseme = member;
                 ImGui::PopID();
                 if (static_cast<std::size_t>(member) < frequencies.size())
                     total += frequencies[static_cast<std::size_t>(member)];
@@ -104,9 +120,9 @@ void EditorUi::reductionPanel() {
 
     sectionHeader("Compare");
     const int selected = std::max(session.selectedViseme, 0);
-    if (ImGui::BeginCombo("viseme", set->visemes[static_cast<std::size_t>(selected)].name.c_str())) {
+    if (ctl::BeginCombo("viseme", set->visemes[static_cast<std::size_t>(selected)].name.c_str())) {
         for (int i = 0; i < n; ++i)
-            if (ImGui::Selectable(set->visemes[static_cast<std::size_t>(i)].name.c_str(), i == selected))
+            if (ctl::Selectable(set->visemes[static_cast<std::size_t>(i)].name.c_str(), i == selected))
                 session.selectedViseme = i;
         ImGui::EndCombo();
     }
@@ -114,13 +130,13 @@ void EditorUi::reductionPanel() {
 
     sectionHeader("Playback");
     ImGui::SetNextItemWidth(-1);
-    ImGui::InputTextWithHint("##sequence", "phonemes or visemes, e.g. PP aa E RR (empty: all visemes)",
-                             &playback_.sequence);
+    ctl::InputTextWithHint("##sequence", "phonemes or visemes, e.g. PP aa E RR (empty: all visemes)",
+                           &playback_.sequence);
     float speed = static_cast<float>(playback_.secondsPerKey);
     ImGui::SetNextItemWidth(160);
-    if (ImGui::SliderFloat("s per key", &speed, 0.05f, 1.0f, "%.2f")) playback_.secondsPerKey = speed;
+    if (ctl::SliderFloat("s per key", &speed, 0.05f, 1.0f, "%.2f")) playback_.secondsPerKey = speed;
     ImGui::SameLine();
-    if (ImGui::Button(playback_.playing ? "Stop" : "Play", ImVec2(70, 0))) {
+    if (ctl::Button(playback_.playing ? "Stop" : "Play", ImVec2(70, 0))) {
         playback_.playing = !playback_.playing;
         playback_.time = 0.0;
     }

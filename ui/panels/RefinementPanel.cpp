@@ -2,6 +2,7 @@
 // buttons running on a worker thread, live counts and timing, and the automatic mode.
 #include "ui/EditorUi.h"
 #include "ui/panels/PanelWidgets.h"
+#include "ui/widgets/Controls.h"
 
 #include <imgui.h>
 
@@ -11,36 +12,37 @@ void EditorUi::refinementPanel() {
     const FaceModel& model = session.face();
     if (!model.cascade) {
         ImGui::TextWrapped("Adaptive refinement works on the deformable face.");
-        if (ImGui::Button("Load bundled face")) session.attempt("Load face", [&] { session.loadFace(); });
+        if (ctl::Button("Load bundled face")) session.attempt("Load face", [&] { session.loadFace(); });
         return;
     }
     CriterionSettings settings = session.project().refinement;
     bool changed = false;
     sectionHeader("Criterion");
     int kind = static_cast<int>(settings.kind);
-    changed |= ImGui::RadioButton("depth", &kind, 0);
+    bool criterionChanged = ctl::RadioButton("depth", &kind, 0);
     ImGui::SameLine();
-    changed |= ImGui::RadioButton("normals", &kind, 1);
+    criterionChanged |= ctl::RadioButton("normals", &kind, 1);
     ImGui::SameLine();
-    changed |= ImGui::RadioButton("contour error", &kind, 2);
+    criterionChanged |= ctl::RadioButton("contour error", &kind, 2);
+    changed |= criterionChanged;
     settings.kind = static_cast<CriterionKind>(kind);
     ImGui::PushItemWidth(-150);
-    changed |= ImGui::SliderInt("max depth", &settings.maxDepth, 0, 16);
+    changed |= ctl::SliderInt("max depth", &settings.maxDepth, 0, 16);
     endEditOnRelease(session);
     switch (settings.kind) {
     case CriterionKind::Depth:
-        changed |= ImGui::SliderInt("depth", &settings.depth.depth, 0, 12);
+        changed |= ctl::SliderInt("uniform depth", &settings.depth.depth, 0, 12);
         endEditOnRelease(session);
         break;
     case CriterionKind::Normals: {
         float dihedral = static_cast<float>(settings.normals.dihedralAngleDeg);
         float normal = static_cast<float>(settings.normals.normalAngleDeg);
-        if (ImGui::SliderFloat("dihedral angle", &dihedral, 1.0f, 90.0f, "%.1f deg")) {
+        if (ctl::SliderFloat("dihedral angle", &dihedral, 1.0f, 90.0f, "%.1f deg")) {
             settings.normals.dihedralAngleDeg = dihedral;
             changed = true;
         }
         endEditOnRelease(session);
-        if (ImGui::SliderFloat("normal angle", &normal, 1.0f, 90.0f, "%.1f deg")) {
+        if (ctl::SliderFloat("normal angle", &normal, 1.0f, 90.0f, "%.1f deg")) {
             settings.normals.normalAngleDeg = normal;
             changed = true;
         }
@@ -50,46 +52,45 @@ void EditorUi::refinementPanel() {
     case CriterionKind::Contour: {
         float average = static_cast<float>(settings.contour.averageError);
         float maximum = static_cast<float>(settings.contour.maximumError);
-        if (ImGui::SliderFloat("average error", &average, 0.001f, 0.5f, "%.4f",
-                               ImGuiSliderFlags_Logarithmic)) {
+        if (ctl::SliderFloat("average error", &average, 0.001f, 0.5f, "%.4f", ImGuiSliderFlags_Logarithmic)) {
             settings.contour.averageError = average;
             changed = true;
         }
         endEditOnRelease(session);
-        if (ImGui::SliderFloat("maximum error", &maximum, 0.001f, 2.0f, "%.4f",
-                               ImGuiSliderFlags_Logarithmic)) {
+        if (ctl::SliderFloat("maximum error", &maximum, 0.001f, 2.0f, "%.4f", ImGuiSliderFlags_Logarithmic)) {
             settings.contour.maximumError = maximum;
             changed = true;
         }
         endEditOnRelease(session);
-        changed |= ImGui::SliderInt("samples per side", &settings.contour.samplesPerSide, 1, 16);
+        changed |= ctl::SliderInt("samples per side", &settings.contour.samplesPerSide, 1, 16);
         endEditOnRelease(session);
         break;
     }
     }
     ImGui::PopItemWidth();
     if (changed) session.attempt("Thresholds", [&] { session.setRefinementSettings(settings); });
+    if (criterionChanged) session.endEdit(); // a criterion switch is its own undo step
 
     sectionHeader("Adapt the face mesh");
     const bool busy = session.refinementRunning();
     if (busy) ImGui::BeginDisabled();
-    if (ImGui::Button("Refine"))
+    if (ctl::Button("Refine"))
         session.attempt("Refine", [&] { session.startRefinement(RefineAction::Refine); });
     ImGui::SameLine();
-    if (ImGui::Button("Simplify"))
+    if (ctl::Button("Simplify"))
         session.attempt("Simplify", [&] { session.startRefinement(RefineAction::Simplify); });
     ImGui::SameLine();
-    if (ImGui::Button("Re-adapt"))
+    if (ctl::Button("Re-adapt"))
         session.attempt("Re-adapt", [&] { session.startRefinement(RefineAction::Adapt); });
     ImGui::SameLine();
-    if (ImGui::Button("For all visemes"))
+    if (ctl::Button("For all visemes"))
         session.attempt("Refine", [&] { session.startRefinement(RefineAction::AllVisemes); });
     if (busy) ImGui::EndDisabled();
     helpMarker(
         "Refine splits edges where the criterion asks (for the current slider values); Simplify welds "
         "where it allows; Re-adapt does both after a change. 'For all visemes' refines one mesh for "
         "every viseme pose: Generate viseme set (Deformation panel) then gives an interpolable set on it.");
-    ImGui::Checkbox("Automatic: re-adapt after every slider or threshold change", &session.autoRefine);
+    ctl::Checkbox("Automatic: re-adapt after every slider or threshold change", &session.autoRefine);
     if (busy) ImGui::ProgressBar(-1.0f * static_cast<float>(ImGui::GetTime()), ImVec2(-1, 0), "refining...");
 
     sectionHeader("Current mesh");

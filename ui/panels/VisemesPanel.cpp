@@ -2,6 +2,7 @@
 // importing meshes with the core's interpolability errors shown.
 #include "ui/EditorUi.h"
 #include "ui/panels/PanelWidgets.h"
+#include "ui/widgets/Controls.h"
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
@@ -12,10 +13,10 @@
 namespace vl::ui {
 
 void EditorUi::visemesPanel() {
-    if (ImGui::Button("Load sample face"))
+    if (ctl::Button("Load sample face"))
         guarded([this] { session.attempt("Load sample", [&] { session.startLoadSample(); }); });
     ImGui::SameLine();
-    if (ImGui::Button("Open viseme folder..."))
+    if (ctl::Button("Open viseme folder..."))
         guarded([this] {
             fileDialog_.open("Open viseme folder", FileDialog::Mode::OpenFolder, {},
                              [this](const auto& path) {
@@ -33,9 +34,9 @@ void EditorUi::visemesPanel() {
 
     sectionHeader("Import a viseme mesh");
     ImGui::SetNextItemWidth(150);
-    ImGui::InputTextWithHint("##import-name", "name", &importName_);
+    ctl::InputTextWithHint("##import-name", "name", &importName_);
     ImGui::SameLine();
-    if (ImGui::Button("Choose file...")) {
+    if (ctl::Button("Choose file...")) {
         if (importName_.empty()) {
             session.error("Import: type a name for the new viseme first");
         } else {
@@ -51,7 +52,7 @@ void EditorUi::visemesPanel() {
         }
     }
     ImGui::SameLine();
-    if (ImGui::Button("glTF..."))
+    if (ctl::Button("glTF..."))
         guarded([this] {
             fileDialog_.open("Import glTF morph targets", FileDialog::Mode::OpenFile, {".glb", ".gltf"},
                              [this](const auto& path) {
@@ -91,15 +92,15 @@ void EditorUi::visemesPanel() {
         ImGui::TableHeadersRow();
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
-        if (ImGui::Selectable("(neutral)", session.selectedViseme < 0, ImGuiSelectableFlags_SpanAllColumns))
+        if (ctl::Selectable("(neutral)", session.selectedViseme < 0, ImGuiSelectableFlags_SpanAllColumns))
             session.selectedViseme = -1;
         for (std::size_t i = 0; i < set->size(); ++i) {
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
             ImGui::PushID(static_cast<int>(i));
             ImGui::AlignTextToFramePadding();
-            if (ImGui::Selectable(set->visemes[i].name.c_str(), session.selectedViseme == static_cast<int>(i),
-                                  ImGuiSelectableFlags_SpanAllColumns))
+            if (ctl::Selectable(set->visemes[i].name.c_str(), session.selectedViseme == static_cast<int>(i),
+                                ImGuiSelectableFlags_SpanAllColumns))
                 session.selectedViseme = static_cast<int>(i);
             ImGui::TableNextColumn();
             if (frequenciesOk) {
@@ -123,11 +124,11 @@ void EditorUi::visemesPanel() {
     }
     const bool canRemove = session.selectedViseme >= 0;
     if (!canRemove) ImGui::BeginDisabled();
-    if (ImGui::Button("Remove selected"))
+    if (ctl::Button("Remove selected"))
         session.attempt("Remove viseme", [&] { session.removeViseme(session.selectedViseme); });
     if (!canRemove) ImGui::EndDisabled();
     ImGui::SameLine();
-    ImGui::Checkbox("Play all", &playback_.playing);
+    ctl::Checkbox("Play all", &playback_.playing);
 }
 
 } // namespace vl::ui

@@ -1,4 +1,5 @@
 #include "ui/render/Viewport.h"
+#include "ui/widgets/GuiProbe.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -83,6 +84,7 @@ ViewportEvents Viewport::show(const char* id, ImVec2 size, const SceneFn& scene,
     const ImTextureID texture = reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(resolveTexture_));
     ImGui::Image(texture, ImVec2(static_cast<float>(width), static_cast<float>(height)), ImVec2(0, 1),
                  ImVec2(1, 0));
+    probe::recordArea(id, "view");
     events.imageMin = ImGui::GetItemRectMin();
     events.imageMax = ImGui::GetItemRectMax();
     const ImVec2 mousePos = ImGui::GetIO().MousePos;

@@ -3,8 +3,11 @@
 // name ("Paint stroke", "Set frequency of AA"); the heavy parts of a state (meshes) are shared
 // immutable pointers, so a commit copies little. Consecutive commits with the same merge key
 // (the drags of one slider) collapse into one undo step.
+// States are held as shared immutable objects: a caller that must keep the current state alive
+// across an edit (a UI frame reading it while a widget commits) pins it with currentShared().
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -14,20 +17,21 @@ namespace vl::ui {
 template <class State> class CommandHistory {
   public:
     explicit CommandHistory(State initial, std::size_t limit = 200) : limit_(limit) {
-        entries_.push_back({"Initial state", std::move(initial), {}, nextId_++});
+        entries_.push_back({"Initial state", share(std::move(initial)), {}, nextId_++});
     }
 
-    const State& current() const { return entries_[index_].state; }
+    const State& current() const { return *entries_[index_].state; }
+    std::shared_ptr<const State> currentShared() const { return entries_[index_].state; }
 
     void commit(std::string name, State state, std::string mergeKey = {}) {
         entries_.resize(index_ + 1); // drops the redo branch
         const bool merge =
             !mergeKey.empty() && index_ > 0 && entries_[index_].mergeKey == mergeKey && savedIndex_ != index_;
         if (merge) {
-            entries_[index_].state = std::move(state);
+            entries_[index_].state = share(std::move(state));
             entries_[index_].id = nextId_++;
         } else {
-            entries_.push_back({std::move(name), std::move(state), std::move(mergeKey), nextId_++});
+            entries_.push_back({std::move(name), share(std::move(state)), std::move(mergeKey), nextId_++});
             ++index_;
         }
         if (entries_.size() > limit_) {
@@ -37,7 +41,7 @@ template <class State> class CommandHistory {
         }
     }
     // Replaces the current state without a new undo step (derived data such as a re-adapted mesh).
-    void amend(State state) { entries_[index_].state = std::move(state); }
+    void amend(State state) { entries_[index_].state = share(std::move(state)); }
     // Ends merging: the next commit with the same key becomes a new step (a slider was released).
     void closeMerge() { entries_[index_].mergeKey.clear(); }
 
@@ -57,7 +61,7 @@ template <class State> class CommandHistory {
     // Starts over with `state` as the only entry, marked as saved (after open or new).
     void reset(State state) {
         entries_.clear();
-        entries_.push_back({"Initial state", std::move(state), {}, nextId_++});
+        entries_.push_back({"Initial state", share(std::move(state)), {}, nextId_++});
         index_ = 0;
         savedIndex_ = 0;
     }
@@ -70,9 +74,12 @@ template <class State> class CommandHistory {
 
   private:
     static constexpr std::size_t kNever = static_cast<std::size_t>(-1);
+    static std::shared_ptr<const State> share(State state) {
+        return std::make_shared<const State>(std::move(state));
+    }
     struct Entry {
         std::string name;
-        State state;
+        std::shared_ptr<const State> state;
         std::string mergeKey;
         std::uint64_t id = 0;
     };

@@ -109,33 +109,38 @@ void EditorSession::noteChange(const EditorState& before, const EditorState& aft
     }
 }
 
+std::shared_ptr<const EditorState> EditorSession::retireCurrent() {
+    frameStates_.push_back(history_.currentShared());
+    return frameStates_.back();
+}
+
 void EditorSession::commit(std::string name, EditorState next, std::string mergeKey) {
-    const EditorState before = state();
+    const auto before = retireCurrent();
     history_.commit(std::move(name), std::move(next), std::move(mergeKey));
-    noteChange(before, state());
+    noteChange(*before, state());
 }
 
 void EditorSession::resetTo(EditorState next) {
-    const EditorState before = state();
+    const auto before = retireCurrent();
     history_.reset(std::move(next));
-    noteChange(before, state());
+    noteChange(*before, state());
     ++inputsGeneration_; // a new document never reuses an old curve
 }
 
 void EditorSession::undo() {
     if (!canUndo()) return;
     const std::string name = history_.undoName();
-    const EditorState before = state();
+    const auto before = retireCurrent();
     history_.undo();
-    noteChange(before, state());
+    noteChange(*before, state());
     info("Undo: " + name);
 }
 
 void EditorSession::redo() {
     if (!canRedo()) return;
-    const EditorState before = state();
+    const auto before = retireCurrent();
     history_.redo();
-    noteChange(before, state());
+    noteChange(*before, state());
     info("Redo: " + history_.undoName());
 }
 
@@ -190,7 +195,28 @@ EditorState EditorSession::projectState(const std::filesystem::path& file) {
     }
     validateInputs(next);
     stripEmbeddedPositions(next.project);
+    if (isBundled(file)) untitle(next.project);
     return next;
+}
+
+bool EditorSession::isBundled(const std::filesystem::path& file) {
+    std::error_code error;
+    const auto assets = std::filesystem::weakly_canonical(assetsDirectory(), error);
+    const auto canonical = std::filesystem::weakly_canonical(file, error);
+    if (error) return false;
+    const auto relative = canonical.lexically_relative(assets);
+    return !relative.empty() && *relative.begin() != "..";
+}
+
+// Bundled files are read-only: the document keeps its meshes (absolute paths) but has no file of
+// its own, so Save asks where to write and nothing is ever written under assets/.
+void EditorSession::untitle(Project& project) {
+    auto absolute = [&](std::filesystem::path& file) {
+        if (!file.empty()) file = std::filesystem::absolute(resolveProjectFile(project, file));
+    };
+    absolute(project.neutral.file);
+    for (ProjectViseme& viseme : project.visemes) absolute(viseme.file);
+    project.path.clear();
 }
 
 void EditorSession::adopt(EditorState next, const std::string& message) {
@@ -273,6 +299,7 @@ bool EditorSession::recordSaved(const std::filesystem::path& target, Project sav
     // The saved file is the project's new home: record it without an undo step.
     EditorState next = state();
     next.project = std::move(saved);
+    retireCurrent();
     history_.reset(std::move(next));
     info("Saved " + target.string());
     return true;
@@ -928,6 +955,7 @@ void EditorSession::poll() {
                 lastRefinement_ = result.report;
                 EditorState next = state();
                 next.face.domain = result.domain;
+                retireCurrent();
                 history_.amend(std::move(next));
             }
         } else {

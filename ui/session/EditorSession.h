@@ -197,6 +197,10 @@ class EditorSession {
     bool autoReduce = true; // re-run in the background after every input change
 
     // --- frame loop --------------------------------------------------------------------------
+    // Starts a UI frame: states replaced during the previous frame may be released now. Every
+    // reference into state() taken during a frame stays valid until the next beginFrame(), even
+    // when a widget commits an edit in between (panels read the document, then edit it).
+    void beginFrame() { frameStates_.clear(); }
     // Collects finished background work and starts automatic re-runs; call once per frame.
     void poll();
     // Blocks until background work has finished and was collected (tests, screenshots).
@@ -211,6 +215,8 @@ class EditorSession {
     void redo();
     // Ends the current slider drag so the next change is a separate undo step.
     void endEdit() { history_.closeMerge(); }
+    // Identifies the current document state: changes with every edit, undo and redo.
+    std::uint64_t documentId() const { return history_.currentId(); }
 
     // --- messages ----------------------------------------------------------------------------
     void info(std::string text);
@@ -238,6 +244,9 @@ class EditorSession {
     void startLoading(std::string label, std::function<EditorState()> load,
                       std::function<std::string(const EditorState&)> describe);
     static EditorState sampleState();
+    // True when `file` lies inside the bundled assets folder (never written by the editor).
+    static bool isBundled(const std::filesystem::path& file);
+    static void untitle(Project& project);
     static std::string describeSample(const EditorState& sample);
     // The target of a save request (throws InputError when there is none).
     std::filesystem::path saveTarget(const std::filesystem::path& file) const;
@@ -253,7 +262,12 @@ class EditorSession {
     static void setVisemesFromFace(EditorState& next);
     static constexpr int kSampleResolution = 40;
 
+    // Keeps the current state alive until the next beginFrame() and returns it (call before any
+    // change of the current state).
+    std::shared_ptr<const EditorState> retireCurrent();
+
     CommandHistory<EditorState> history_;
+    std::vector<std::shared_ptr<const EditorState>> frameStates_; // states replaced this frame
     std::deque<StatusMessage> messages_;
     std::uint64_t inputsGeneration_ = 1;
     std::uint64_t geometryGeneration_ = 1;

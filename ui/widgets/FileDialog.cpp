@@ -1,4 +1,5 @@
 #include "ui/widgets/FileDialog.h"
+#include "ui/widgets/Controls.h"
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
@@ -40,12 +41,12 @@ void FileDialog::draw() {
     if (!ImGui::BeginPopupModal(id.c_str(), &visible_)) return;
 
     ImGui::SetNextItemWidth(-70);
-    if (ImGui::InputText("##folder", &folderText_, ImGuiInputTextFlags_EnterReturnsTrue)) {
+    if (ctl::InputText("##folder", &folderText_, ImGuiInputTextFlags_EnterReturnsTrue)) {
         std::error_code ec;
         if (fs::is_directory(folderText_, ec)) folder = fs::path(folderText_);
     }
     ImGui::SameLine();
-    if (ImGui::Button("Up")) {
+    if (ctl::Button("Up")) {
         folder = folder.parent_path().empty() ? folder : folder.parent_path();
         folderText_ = folder.string();
     }
@@ -65,8 +66,8 @@ void FileDialog::draw() {
     for (const auto& entry : entries) {
         const bool isDir = entry.is_directory(ec);
         const std::string label = (isDir ? "[dir] " : "      ") + entry.path().filename().string();
-        if (ImGui::Selectable(label.c_str(), !isDir && name_ == entry.path().filename().string(),
-                              ImGuiSelectableFlags_AllowDoubleClick | ImGuiSelectableFlags_DontClosePopups)) {
+        if (ctl::Selectable(label.c_str(), !isDir && name_ == entry.path().filename().string(),
+                            ImGuiSelectableFlags_AllowDoubleClick | ImGuiSelectableFlags_DontClosePopups)) {
             if (isDir) {
                 if (ImGui::IsMouseDoubleClicked(0) || mode_ == Mode::OpenFolder) {
                     folder = entry.path();
@@ -86,20 +87,20 @@ void FileDialog::draw() {
 
     if (mode_ != Mode::OpenFolder) {
         ImGui::SetNextItemWidth(-1);
-        ImGui::InputTextWithHint("##name", "file name", &name_);
+        ctl::InputTextWithHint("##name", "file name", &name_);
     } else {
         ImGui::TextUnformatted(("Folder: " + folder.string()).c_str());
     }
     const bool ready = mode_ == Mode::OpenFolder || !name_.empty();
     if (!ready) ImGui::BeginDisabled();
-    if (ImGui::Button(mode_ == Mode::SaveFile ? "Save" : "Open", ImVec2(100, 0)) && visible_) {
+    if (ctl::Button(mode_ == Mode::SaveFile ? "Save" : "Open", ImVec2(100, 0)) && visible_) {
         visible_ = false;
         ImGui::CloseCurrentPopup();
         accept_(mode_ == Mode::OpenFolder ? folder : folder / name_);
     }
     if (!ready) ImGui::EndDisabled();
     ImGui::SameLine();
-    if (ImGui::Button("Cancel", ImVec2(100, 0))) {
+    if (ctl::Button("Cancel", ImVec2(100, 0))) {
         visible_ = false;
         ImGui::CloseCurrentPopup();
     }

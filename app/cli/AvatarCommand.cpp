@@ -1,0 +1,209 @@
+// `visemelab avatar inspect|reduce`: real avatars (glTF / GLB / VRM) in, the same avatar out.
+#include "app/cli/Command.h"
+#include "app/cli/Progress.h"
+#include "app/cli/WeightsOption.h"
+#include "core/common/AtomicFile.h"
+#include "core/common/Error.h"
+#include "core/gltf/AvatarReduce.h"
+#include "core/gltf/AvatarReport.h"
+#include "core/gltf/AvatarScan.h"
+#include "core/gltf/GltfDocument.h"
+#include "core/gltf/TargetNames.h"
+#include "core/phonetics/PhonemeMaps.h"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+
+namespace vl::cli {
+
+namespace {
+
+struct InspectOptions {
+    std::string input;
+    std::string targets;
+    std::string json;
+};
+
+// Outputs never replace an input of the run.
+void refuseOverwrite(const std::string& output, const std::string& input, const char* option) {
+    std::error_code ec, ec2;
+    if (std::filesystem::equivalent(output, input, ec) ||
+        std::filesystem::weakly_canonical(output, ec) == std::filesystem::weakly_canonical(input, ec2))
+        throwUsage(std::string(option) + " " + output + " is the input file; choose another path");
+}
+
+struct ReduceOptions {
+    std::string input;
+    std::string out;
+    int target = 0;
+    std::string targets;
+    std::string freqFile;
+    std::string mapFile;
+    std::string weights = "uniform";
+    std::string report;
+    std::string names = "original";
+    bool noTargetNormals = false;
+    int maxTargets = 0;
+};
+
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Frequencies: a given table (with --map: phonemes), or the bundled American English phoneme table
+// with the given map, or with the bundled Oculus map when the avatar's visemes are Oculus visemes;
+// else equal frequencies. Says what it chose.
+FrequencySource avatarFrequencies(const ReduceOptions& o, const AvatarScan& scan, std::string& chosen) {
+    const std::filesystem::path assets = VISEMELAB_ASSETS_DIR;
+    FrequencySource source;
+    if (!o.freqFile.empty()) {
+        source = loadFrequencyFile(o.freqFile);
+        chosen = o.freqFile;
+    }
+    std::filesystem::path map = o.mapFile;
+    if (map.empty() && o.freqFile.empty() && scan.oculusNames) {
+        const auto bundled = bundledPhonemeMaps(assets);
+        const auto oculus =
+            std::find_if(bundled.begin(), bundled.end(), [](const auto& m) { return m.id == "oculus"; });
+        if (oculus != bundled.end() && mapFitsAvatar(loadPhonemeMapFile(oculus->file), scan))
+            map = oculus->file;
+    }
+    if (!map.empty()) {
+        if (o.freqFile.empty()) {
+            source = loadFrequencyFile(defaultPhonemeTablePath(assets));
+            chosen = "bundled en-us phoneme table";
+        }
+        if (!source.isPhonemeBased()) { // the table holds phoneme frequencies
+            source.phonemes = std::move(source.visemeFrequencies);
+            source.visemeFrequencies = {};
+        }
+        source.map = loadPhonemeMapFile(map);
+        chosen += " + map " + (o.mapFile.empty() ? std::string("oculus (bundled)") : o.mapFile);
+    }
+    if (source.isPhonemeBased() && source.map.entries.empty())
+        throwInputError(o.freqFile, "a phoneme frequency table needs a phoneme -> viseme map (--map FILE)");
+    if (o.freqFile.empty() && map.empty()) {
+        source = uniformFrequencies(scan);
+        chosen = scan.oculusNames
+                     ? "equal (the avatar lacks some of the Oculus map's visemes)"
+                     : "equal (not Oculus viseme names: give --freq-file, or --map for phonemes)";
+    }
+    return source;
+}
+
+int runReduce(const ReduceOptions& o) {
+    refuseOverwrite(o.out, o.input, "--out");
+    if (!o.report.empty()) {
+        refuseOverwrite(o.report, o.input, "--report");
+        refuseOverwrite(o.report, o.out, "--report");
+    }
+    if (std::filesystem::path(o.out).extension() == ".gltf")
+        throwUsage("--out " + o.out +
+                   ": the reduced avatar is written as binary glTF; name it .glb (or .vrm)");
+    if (o.names != "original" && o.names != "merged") throwUsage("--names must be original or merged");
+    if (o.maxTargets < 0) throwUsage("--max-targets must be >= 1");
+    if (!o.targets.empty()) checkGlobPattern(o.targets, "--targets");
+    ReduceSettings settings;
+    settings.target = o.target;
+    applyWeightsOption(o.weights, settings);
+    AvatarWriteOptions write;
+    write.names = o.names == "merged" ? AvatarNames::Merged : AvatarNames::Original;
+    write.targetNormals = !o.noTargetNormals;
+    write.maxTargets = o.maxTargets;
+
+    const auto t0 = std::chrono::steady_clock::now();
+    const GltfDocument doc = loadGltfDocument(o.input);
+    const AvatarScan scan = scanAvatar(doc, {o.targets});
+    std::string chosen;
+    const FrequencySource frequencies = avatarFrequencies(o, scan, chosen);
+    ReduceTimings timings;
+    timings.loadMs = millisecondsSince(t0);
+
+    const auto t1 = std::chrono::steady_clock::now();
+    ProgressLine progress("reducing");
+    const AvatarReduction r = reduceAvatar(doc, scan, frequencies, settings, write, progress.callback());
+    progress.finish();
+    timings.reduceMs = millisecondsSince(t1);
+    const auto t2 = std::chrono::steady_clock::now();
+    writeFileAtomically(o.out, r.glb);
+    timings.writeMs = millisecondsSince(t2);
+    if (!o.report.empty())
+        writeFileAtomically(o.report,
+                            avatarReductionReport(r, scan, settings, write, timings, o.input, o.out));
+
+    std::printf("Reduced %zu visemes to %zu (weights: %s; frequencies: %s), optimal cost %.6g\n",
+                scan.visemes.size(), r.model.keys.size(), toString(settings.weightMode), chosen.c_str(),
+                r.outcome.result.best().cost);
+    for (std::size_t g = 0; g < r.model.keys.size(); ++g)
+        std::printf("  %2zu: %s\n", g, r.model.keys[g].name.c_str());
+    for (const AvatarMeshChange& m : r.summary.meshes)
+        std::printf("mesh %d \"%s\": %zu morph targets -> %zu (%zu viseme targets, %zu keys, names %s)\n",
+                    m.mesh, m.name.c_str(), m.targetsBefore, m.targetsAfter, m.visemeTargets, m.keys,
+                    toString(write.names));
+    for (const std::string& note : r.summary.notes) std::printf("note: %s\n", note.c_str());
+    std::printf("Wrote %s (%zu bytes of binary data, was %zu)%s%s\n", o.out.c_str(),
+                r.summary.binaryBytesAfter, r.summary.binaryBytesBefore, o.report.empty() ? "" : "; report ",
+                o.report.c_str());
+    return kExitOk;
+}
+
+int runInspect(const InspectOptions& o) {
+    if (!o.json.empty()) refuseOverwrite(o.json, o.input, "--json");
+    if (!o.targets.empty()) checkGlobPattern(o.targets, "--targets");
+    const AvatarScan scan = scanAvatar(loadGltfDocument(o.input), {o.targets});
+    std::fputs(formatAvatarReport(scan).c_str(), stdout);
+    if (!o.json.empty()) writeFileAtomically(o.json, avatarReportJson(scan).dump(2) + "\n");
+    return kExitOk;
+}
+
+} // namespace
+
+void addAvatarCommand(CLI::App& app, CommandRunner& run) {
+    auto* avatar =
+        app.add_subcommand("avatar", "Avatars (glTF, GLB, VRM): inspect their visemes, reduce them");
+    avatar->require_subcommand(1, 1);
+
+    auto inspect = std::make_shared<InspectOptions>();
+    auto* cmd =
+        avatar->add_subcommand("inspect", "Report meshes, primitives, vertex counts and which morph targets "
+                                          "are visemes (and why the others are not)");
+    cmd->add_option("input", inspect->input, "Avatar file (.glb, .gltf, .vrm)")->required();
+    cmd->add_option("--targets", inspect->targets,
+                    "Glob selecting the viseme targets by name (*, ?, [AIUEO]); default: the Oculus visemes, "
+                    "with or without the viseme_ prefix");
+    cmd->add_option("--json", inspect->json, "Also write the report as JSON to this file");
+    cmd->callback([&run, inspect] { run = [inspect] { return runInspect(*inspect); }; });
+
+    auto reduce = std::make_shared<ReduceOptions>();
+    auto* r = avatar->add_subcommand("reduce",
+                                     "Reduce an avatar's visemes to m keys and write the same avatar back");
+    r->add_option("input", reduce->input, "Avatar file (.glb, .gltf, .vrm)")->required();
+    r->add_option("--target,-m", reduce->target, "Number of keys m (1..n)")
+        ->required()
+        ->check(CLI::PositiveNumber);
+    r->add_option("--out", reduce->out, "The reduced avatar (.glb or .vrm; never the input)")->required();
+    r->add_option("--targets", reduce->targets,
+                  "Glob selecting the viseme targets by name (*, ?, [AIUEO]); default: the Oculus visemes");
+    r->add_option(
+        "--freq-file", reduce->freqFile,
+        "Frequencies: viseme table, or phoneme table with --map (default: the bundled en-us phoneme "
+        "table and Oculus map for Oculus visemes, else equal)");
+    r->add_option("--map", reduce->mapFile,
+                  "Phoneme -> viseme map (CSV or JSON); the bundled en-us table by default");
+    r->add_option("--weights", reduce->weights,
+                  "Vertex weights over all the avatar's viseme meshes: uniform, area, or a file")
+        ->capture_default_str();
+    r->add_option("--report", reduce->report, "JSON report (the keys of reduce, plus the meshes touched)");
+    r->add_option(
+         "--names", reduce->names,
+         "original: every viseme target stays, members share one accessor; merged: one target per key")
+        ->capture_default_str();
+    r->add_flag("--no-target-normals", reduce->noTargetNormals,
+                "Write the keys without NORMAL/TANGENT displacements");
+    r->add_option("--max-targets", reduce->maxTargets,
+                  "Refuse when a primitive would have more morph targets (engines that cap them)");
+    r->callback([&run, reduce] { run = [reduce] { return runReduce(*reduce); }; });
+}
+
+} // namespace vl::cli

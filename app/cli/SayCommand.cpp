@@ -1,0 +1,206 @@
+// `visemelab say "TEXT" | --text-file F --project P --out track.json [--wav audio.wav] [--glb anim.glb]`:
+// text -> speech (espeak-ng) -> timed phonemes -> the full and the reduced viseme tracks, the
+// utterance error between them, and (for a corpus) the error curve over m = 1..n.
+#include "app/cli/Command.h"
+#include "app/cli/Progress.h"
+#include "core/common/Error.h"
+#include "core/export/Gltf.h"
+#include "core/phonetics/CorpusText.h"
+#include "core/phonetics/EspeakSynthesizer.h"
+#include "core/project/Project.h"
+#include "core/speech/ProjectSpeech.h"
+#include "core/speech/SpeechGltf.h"
+#include "core/speech/TrackJson.h"
+#include "core/speech/WavFile.h"
+
+#include <cstdio>
+#include <memory>
+#include <optional>
+
+namespace vl::cli {
+
+namespace {
+
+struct SayOptions {
+    std::string text;
+    std::string textFile;
+    std::string project;
+    std::string out;
+    std::string wav;
+    std::string glb;
+    std::string map;
+    std::string voice = "en-us";
+    int rate = 175;
+    double fps = 60;
+    std::string blend = "cubic";
+    bool curve = false;
+    bool quiet = false;
+};
+
+constexpr double kMaxFps = 1000;
+
+// Outputs must differ from each other and from the inputs (a typo must not destroy the project).
+void checkOutputs(const SayOptions& o) {
+    const auto same = [](const std::string& a, const std::string& b) {
+        if (a.empty() || b.empty()) return false;
+        std::error_code ec;
+        if (std::filesystem::equivalent(a, b, ec)) return true;
+        return std::filesystem::weakly_canonical(a, ec) == std::filesystem::weakly_canonical(b, ec);
+    };
+    const std::pair<const char*, const std::string*> outputs[] = {
+        {"--out", &o.out}, {"--wav", &o.wav}, {"--glb", &o.glb}};
+    const std::pair<const char*, const std::string*> inputs[] = {{"--project", &o.project},
+                                                                 {"--text-file", &o.textFile}};
+    for (std::size_t i = 0; i < std::size(outputs); ++i) {
+        for (std::size_t j = i + 1; j < std::size(outputs); ++j)
+            if (same(*outputs[i].second, *outputs[j].second))
+                throwUsage(std::string(outputs[i].first) + " and " + outputs[j].first +
+                           " name the same file");
+        for (const auto& [name, path] : inputs)
+            if (same(*outputs[i].second, *path))
+                throwUsage(std::string(outputs[i].first) + " would overwrite the input " + name + " " +
+                           *path);
+    }
+}
+
+// Speaks the inline text or the text file, streaming audio to the WAV writer when there is one.
+Utterance speak(const SayOptions& o, SpeechSynthesizer& synthesizer, WavStreamWriter* wav) {
+    Utterance utterance;
+    const AudioSink sink = [wav](std::span<const std::int16_t> samples) {
+        if (wav) wav->append(samples);
+    };
+    if (o.textFile.empty()) {
+        synthesizer.speak(o.text, utterance, sink);
+    } else {
+        ProgressLine progress("speaking " + std::filesystem::path(o.textFile).filename().string());
+        const auto fraction = progress.callback();
+        forEachCorpusChunk(o.textFile, [&](std::string_view chunk, std::uint64_t done, std::uint64_t total) {
+            synthesizer.speak(chunk, utterance, sink);
+            if (fraction && total > 0) fraction(double(done) / double(total));
+        });
+    }
+    bool speech = false;
+    for (const auto& p : utterance.phonemes) speech = speech || p.phoneme != kSilencePhoneme;
+    if (!speech)
+        throwInputError(o.textFile.empty() ? "text" : o.textFile,
+                        "nothing to say: the text has no words espeak-ng speaks");
+    return utterance;
+}
+
+std::vector<TrackErrorCurvePoint> errorCurve(const SayOptions& o, const Project& project,
+                                             const Utterance& utterance, const PlaybackSettings& settings,
+                                             const PhonemeVisemeMap* map) {
+    ProgressLine progress("error curve");
+    std::vector<TrackErrorCurvePoint> points;
+    for (const auto& p :
+         projectErrorCurve(project, utterance.phonemes, settings, o.fps, progress.callback(), map))
+        points.push_back({p.m, p.cost, p.error.mean, p.error.max, p.error.relative});
+    return points;
+}
+
+void printSummary(const SpeechTrackFile& track, const Project& project, std::size_t fullKeys) {
+    const auto& e = *track.error;
+    std::size_t pauses = 0;
+    for (const auto& p : track.phonemes) pauses += p.phoneme == kSilencePhoneme;
+    std::printf("%.2f s of speech: %zu phonemes (%zu pauses), %zu cues on %zu visemes, %zu cues on %d keys\n",
+                track.metadata.duration, track.phonemes.size() - pauses, pauses, track.mouthCues.size(),
+                fullKeys, track.reducedCues.size(), project.reduction.target);
+    std::printf("utterance error (m = %d, %s, %g fps): mean %.6g, max %.6g at %.2f s, %.2f %% of the mouth's "
+                "motion\n",
+                project.reduction.target, track.metadata.interpolation.c_str(), track.metadata.fps, e.mean,
+                e.max, e.maxTime, 100 * e.relative);
+    if (track.errorCurve.empty()) return;
+    std::printf("   m   reduction cost     error mean      error max   of motion\n");
+    for (const auto& p : track.errorCurve)
+        std::printf("%4d %16.6g %14.6g %14.6g %10.2f %%\n", p.m, p.cost, p.mean, p.max, 100 * p.relative);
+}
+
+int runSay(const SayOptions& o) {
+    if (o.text.empty() == o.textFile.empty()) throwUsage("give the text to say, or --text-file, not both");
+    if (!(o.fps > 0 && o.fps <= kMaxFps)) throwUsage("--fps must be in (0, 1000]");
+    const auto interpolation = interpolationFromString(o.blend);
+    if (!interpolation) throwUsage("--blend must be linear, cubic or dominance, not '" + o.blend + "'");
+    checkOutputs(o);
+
+    const Project project = loadProject(o.project);
+    std::optional<PhonemeVisemeMap> map;
+    if (!o.map.empty()) map = loadPhonemeMapFile(o.map);
+    const SpeechFaces faces = projectSpeechFaces(project, map ? &*map : nullptr);
+    auto synthesizer = makeEspeakSynthesizer({o.voice, o.rate});
+    std::optional<WavStreamWriter> wav;
+    if (!o.wav.empty()) wav.emplace(o.wav, synthesizer->sampleRate());
+    const Utterance utterance = speak(o, *synthesizer, wav ? &*wav : nullptr);
+
+    const PlaybackSettings settings{*interpolation};
+    const FaceTrack full(faces.full, utterance.phonemes, settings, o.project);
+    const FaceTrack reduced(faces.reduced, utterance.phonemes, settings, o.project);
+    const UtteranceError error = measureUtteranceError(full, reduced, faces.weights, o.fps);
+
+    SpeechTrackFile track;
+    track.metadata = {o.wav.empty() ? std::string() : projectRelativePath(o.out, o.wav).generic_string(),
+                      utterance.duration(),
+                      o.text,
+                      o.textFile,
+                      o.voice,
+                      o.rate,
+                      o.project,
+                      toString(*interpolation),
+                      o.fps};
+    track.mouthCues = full.cues();
+    track.reducedCues = reduced.cues();
+    track.phonemes = utterance.phonemes;
+    track.error = TrackError{error.mean, error.max, error.maxTime, error.relative, error.frames};
+    if (o.curve || !o.textFile.empty())
+        track.errorCurve = errorCurve(o, project, utterance, settings, map ? &*map : nullptr);
+
+    if (wav) wav->finish();
+    if (!o.glb.empty()) {
+        const GltfMorphAnimation animation = gltfAnimationOf(reduced, o.fps);
+        writeGlb(o.glb, faces.reduced, &animation);
+    }
+    saveTrackJson(o.out, track);
+    if (!o.quiet) printSummary(track, project, faces.full.keys.size());
+    for (const auto& [symbol, count] : synthesizer->skippedSymbols())
+        std::fprintf(stderr,
+                     "visemelab: note: espeak symbol '%s' (%zu) has no ARPAbet equivalent; its time went to "
+                     "the phoneme before it\n",
+                     symbol.c_str(), count);
+    std::printf("Wrote %s", o.out.c_str());
+    if (!o.wav.empty()) std::printf(", %s", o.wav.c_str());
+    if (!o.glb.empty()) std::printf(", %s", o.glb.c_str());
+    std::printf("\n");
+    return kExitOk;
+}
+
+} // namespace
+
+void addSayCommand(CLI::App& app, CommandRunner& run) {
+    auto o = std::make_shared<SayOptions>();
+    auto* cmd = app.add_subcommand(
+        "say", "Speak text (espeak-ng) and lip-sync it with the project's full and reduced "
+               "visemes: Rhubarb-style track JSON, utterance error, WAV, animated glTF");
+    cmd->add_option("text", o->text, "The text to say (or --text-file)");
+    cmd->add_option("--text-file", o->textFile,
+                    "UTF-8 text file of any length: also prints the error curve over m = 1..n");
+    cmd->add_option("--project", o->project, "Project (.vlproj) with a phoneme -> viseme map")->required();
+    cmd->add_option("--out", o->out, "Track JSON to write (Rhubarb layout + reducedCues, phonemes, error)")
+        ->required();
+    cmd->add_option("--map", o->map,
+                    "Phoneme -> viseme map (CSV/JSON) to use instead of the project's, e.g. for a project "
+                    "with frequencies per viseme");
+    cmd->add_option("--wav", o->wav, "Write the speech audio (16-bit mono WAV)");
+    cmd->add_option("--glb", o->glb,
+                    "Write the reduced face with the speech as a glTF morph weight animation");
+    cmd->add_option("--voice", o->voice,
+                    "English espeak-ng voice: en-us (default), en-gb, en-gb-scotland, ...");
+    cmd->add_option("--rate", o->rate, "Speaking rate in words per minute, 80..450 (default 175)");
+    cmd->add_option("--fps", o->fps,
+                    "Frames per second of the error curve and sampled animation (default 60)");
+    cmd->add_option("--blend", o->blend,
+                    "Playback blending: cubic (Catmull-Rom, default), linear, dominance");
+    cmd->add_flag("--curve", o->curve, "Also compute the error curve over m = 1..n for inline text");
+    cmd->add_flag("--quiet", o->quiet, "Print only the written files");
+    cmd->callback([&run, o] { run = [o] { return runSay(*o); }; });
+}
+
+} // namespace vl::cli

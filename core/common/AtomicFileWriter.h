@@ -1,0 +1,38 @@
+#pragma once
+// A file written piece by piece (too large to hold in memory) that appears at its path only when
+// commit() succeeds: data goes to a temporary file beside it, which is flushed, synced and renamed
+// over the path. Destroyed without commit(), the temporary file is removed and the path untouched.
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <string_view>
+
+namespace vl {
+
+class AtomicFileWriter {
+  public:
+    // Throws InputError naming `path` when the temporary file cannot be created.
+    explicit AtomicFileWriter(const std::filesystem::path& path);
+    ~AtomicFileWriter();
+    AtomicFileWriter(const AtomicFileWriter&) = delete;
+    AtomicFileWriter& operator=(const AtomicFileWriter&) = delete;
+
+    // Appends; throws InputError naming the path when the write fails (disk full).
+    void write(std::string_view bytes);
+    // Overwrites bytes already written at `offset` (a header whose sizes are known at the end).
+    void overwrite(std::uint64_t offset, std::string_view bytes);
+    std::uint64_t size() const { return size_; }
+
+    // Syncs and renames the temporary file over the path.
+    void commit();
+
+  private:
+    [[noreturn]] void fail(const char* what);
+
+    std::filesystem::path path_;
+    std::filesystem::path temp_;
+    std::FILE* file_ = nullptr;
+    std::uint64_t size_ = 0;
+};
+
+} // namespace vl

@@ -1,0 +1,96 @@
+#include "core/gltf/AvatarReduce.h"
+
+#include "core/common/Error.h"
+#include "core/gltf/AvatarReport.h"
+#include "core/gltf/GltfDocument.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+
+namespace vl {
+namespace {
+
+// The avatar's name for a viseme named `name` anywhere else, or `name` itself.
+std::string avatarName(const std::string& name, const AvatarScan& scan) {
+    const std::string key = visemeJoinKey(name);
+    for (std::size_t i = 0; i < scan.visemeKeys.size(); ++i)
+        if (scan.visemeKeys[i] == key) return scan.visemes[i];
+    return name;
+}
+
+} // namespace
+
+FrequencySource matchVisemeNames(FrequencySource source, const AvatarScan& scan) {
+    for (auto& [name, value] : source.visemeFrequencies.entries) name = avatarName(name, scan);
+    for (auto& [phoneme, viseme] : source.map.entries) viseme = avatarName(viseme, scan);
+    return source;
+}
+
+bool mapFitsAvatar(const PhonemeVisemeMap& map, const AvatarScan& scan) {
+    return std::all_of(map.entries.begin(), map.entries.end(), [&](const auto& entry) {
+        const std::string key = visemeJoinKey(entry.second);
+        return std::find(scan.visemeKeys.begin(), scan.visemeKeys.end(), key) != scan.visemeKeys.end();
+    });
+}
+
+FrequencySource uniformFrequencies(const AvatarScan& scan) {
+    FrequencySource source;
+    for (const std::string& name : scan.visemes) source.visemeFrequencies.entries.emplace_back(name, 1.0);
+    return source;
+}
+
+AvatarReduction reduceAvatar(const GltfDocument& doc, const AvatarScan& scan,
+                             const FrequencySource& frequencies, const ReduceSettings& settings,
+                             const AvatarWriteOptions& write, const ProgressCallback& progress) {
+    if (scan.visemes.size() < 2)
+        throwInputError(doc.source, "needs at least 2 visemes to reduce, found " +
+                                        std::to_string(scan.visemes.size()) + " (" + scan.selection +
+                                        "); see `visemelab avatar inspect`");
+    const FrequencySource matched = matchVisemeNames(frequencies, scan);
+    AvatarReduction r;
+    r.outcome = runReduction(scan.set, matched, settings, progress);
+    const std::vector<int> groupOf = r.outcome.result.groupOf();
+    r.model = buildReducedModel(scan.set, r.outcome.frequencies, groupOf, matched);
+    r.glb = writeReducedAvatar(doc, scan, r.model, groupOf, r.outcome.frequencies, write, &r.summary);
+    for (std::size_t i = 0; i < scan.visemes.size(); ++i)
+        if (r.outcome.frequencies[i] == 0.0)
+            r.summary.notes.push_back(scan.visemes[i] +
+                                      " has frequency 0 (no phoneme maps to it): it costs nothing " +
+                                      "wherever it goes and takes the shape of key '" +
+                                      r.model.keys[static_cast<std::size_t>(groupOf[i])].name + "'");
+    return r;
+}
+
+std::string avatarReductionReport(const AvatarReduction& reduction, const AvatarScan& scan,
+                                  const ReduceSettings& settings, const AvatarWriteOptions& write,
+                                  const ReduceTimings& timings, const std::string& input,
+                                  const std::string& output) {
+    nlohmann::ordered_json report = nlohmann::ordered_json::parse(
+        reductionReportJson(reduction.outcome, settings.weightMode, timings, {output}));
+    nlohmann::ordered_json meshes = nlohmann::ordered_json::array();
+    for (const AvatarMeshChange& m : reduction.summary.meshes)
+        meshes.push_back({{"index", m.mesh},
+                          {"name", m.name},
+                          {"targets_before", m.targetsBefore},
+                          {"targets_after", m.targetsAfter},
+                          {"viseme_targets", m.visemeTargets},
+                          {"keys", m.keys}});
+    report["meshes"] = meshes;
+    nlohmann::ordered_json phonemes = nlohmann::ordered_json::object();
+    for (const auto& [phoneme, key] : reduction.model.phonemeToKey) phonemes[phoneme] = key;
+    report["phoneme_to_key"] = phonemes;
+    report["avatar"] = {{"input", input},
+                        {"output", output},
+                        {"names", toString(write.names)},
+                        {"target_normals", write.targetNormals},
+                        {"accessors_before", reduction.summary.accessorsBefore},
+                        {"accessors_after", reduction.summary.accessorsAfter},
+                        {"binary_bytes_before", reduction.summary.binaryBytesBefore},
+                        {"binary_bytes_after", reduction.summary.binaryBytesAfter},
+                        {"notes", reduction.summary.notes}};
+    report["scan"] = avatarReportJson(scan);
+    return report.dump(2) + "\n";
+}
+
+} // namespace vl

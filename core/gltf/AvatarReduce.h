@@ -1,0 +1,51 @@
+#pragma once
+// An avatar's visemes reduced end to end: the viseme set of core/gltf/AvatarScan reduced with the
+// ordinary reduction (core/reduce/ReduceRun: exact optimum over the concatenated world-space
+// geometry), its keys built by buildReducedModel, and the same avatar written back
+// (core/gltf/AvatarWriter). Frequency tables and phoneme maps name visemes as the bundled files do
+// ("aa", "ih"); they are matched to the avatar's target names by meaning (core/gltf/TargetNames).
+#include "core/export/ReducedModel.h"
+#include "core/gltf/AvatarScan.h"
+#include "core/gltf/AvatarWriter.h"
+#include "core/reduce/ReduceRun.h"
+
+#include <string>
+#include <vector>
+
+namespace vl {
+
+class GltfDocument;
+
+// `source` with every viseme name that stands for one of the avatar's visemes (same join key)
+// replaced by the avatar's name for it; other names stay (and are reported as unknown later).
+FrequencySource matchVisemeNames(FrequencySource source, const AvatarScan& scan);
+
+// True when every viseme the map names is one of the avatar's visemes.
+bool mapFitsAvatar(const PhonemeVisemeMap& map, const AvatarScan& scan);
+
+// Equal frequencies for every viseme of the avatar.
+FrequencySource uniformFrequencies(const AvatarScan& scan);
+
+struct AvatarReduction {
+    ReduceOutcome outcome;
+    ReducedModel model; // keys over the concatenated geometry, phoneme -> key
+    std::string glb;
+    AvatarWriteSummary summary;
+};
+
+// Throws InputError when the avatar has fewer than 2 visemes, frequencies do not fit, or writing
+// is refused (--max-targets).
+AvatarReduction reduceAvatar(const GltfDocument& doc, const AvatarScan& scan,
+                             const FrequencySource& frequencies, const ReduceSettings& settings,
+                             const AvatarWriteOptions& write, const ProgressCallback& progress = {});
+
+// The report: the keys of `visemelab reduce` (n, m, weights, cost, groups, cost_curve, frequencies,
+// timing_ms, outputs, and whatever the reduction adds) plus "avatar" (input, output, names,
+// target_normals, notes, sizes), "meshes" (the meshes touched: targets before/after, keys) and
+// "scan" (core/gltf/AvatarReport).
+std::string avatarReductionReport(const AvatarReduction& reduction, const AvatarScan& scan,
+                                  const ReduceSettings& settings, const AvatarWriteOptions& write,
+                                  const ReduceTimings& timings, const std::string& input,
+                                  const std::string& output);
+
+} // namespace vl

@@ -1,0 +1,346 @@
+#include "core/gltf/AvatarWriter.h"
+
+#include "core/common/Error.h"
+#include "core/gltf/Accessors.h"
+#include "core/gltf/AvatarScan.h"
+#include "core/gltf/BufferViews.h"
+#include "core/gltf/GlbRepack.h"
+#include "core/gltf/GltfDocument.h"
+#include "core/gltf/GltfReferences.h"
+#include "core/gltf/MorphRemap.h"
+
+#include <cstring>
+#include <limits>
+#include <map>
+
+namespace vl {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+constexpr const char* kTargetAttributes[] = {"POSITION", "NORMAL", "TANGENT"};
+
+// A VEC3 float accessor for `values`: none of its own bytes when all are zero, sparse when few are
+// non-zero (teeth and eyes move little), dense otherwise. POSITION displacements carry min/max.
+int addVec3Accessor(GlbRepack& out, const std::vector<float>& values, bool bounds) {
+    const std::size_t count = values.size() / 3;
+    Json accessor{{"componentType", 5126}, {"count", count}, {"type", "VEC3"}};
+    if (bounds) {
+        std::vector<double> lo(3, std::numeric_limits<double>::infinity()),
+            hi(3, -std::numeric_limits<double>::infinity());
+        for (std::size_t i = 0; i < values.size(); ++i) {
+            lo[i % 3] = std::min(lo[i % 3], static_cast<double>(values[i]));
+            hi[i % 3] = std::max(hi[i % 3], static_cast<double>(values[i]));
+        }
+        accessor["min"] = lo;
+        accessor["max"] = hi;
+    }
+    std::vector<std::uint32_t> nonZero;
+    for (std::size_t i = 0; i < count; ++i)
+        if (values[3 * i] != 0.0f || values[3 * i + 1] != 0.0f || values[3 * i + 2] != 0.0f)
+            nonZero.push_back(static_cast<std::uint32_t>(i));
+    const std::size_t indexBytes = count <= 0xFF ? 1 : count <= 0xFFFF ? 2 : 4;
+    if (nonZero.empty()) return out.addAccessor(accessor);
+    if (nonZero.size() * (indexBytes + 12) < count * 12 * 2 / 3) {
+        std::string indices, sparseValues;
+        for (std::uint32_t i : nonZero) {
+            indices.append(reinterpret_cast<const char*>(&i), indexBytes); // little-endian low bytes
+            sparseValues.append(reinterpret_cast<const char*>(values.data() + 3 * i), 12);
+        }
+        const int componentType = indexBytes == 1 ? 5121 : indexBytes == 2 ? 5123 : 5125;
+        accessor["sparse"] = {
+            {"count", nonZero.size()},
+            {"indices", {{"bufferView", out.addView(std::move(indices))}, {"componentType", componentType}}},
+            {"values", {{"bufferView", out.addView(std::move(sparseValues))}}}};
+        return out.addAccessor(accessor);
+    }
+    std::string bytes(values.size() * 4, '\0');
+    std::memcpy(bytes.data(), values.data(), bytes.size());
+    accessor["bufferView"] = out.addView(std::move(bytes), 34962);
+    return out.addAccessor(accessor);
+}
+
+int attribute(const std::map<std::string, int>& attributes, const char* name) {
+    const auto it = attributes.find(name);
+    return it == attributes.end() ? -1 : it->second;
+}
+
+// Groups of the reduction and each viseme's weight inside its group's mean (eq. 19 of the paper: the
+// frequency-weighted mean; a group of zero total frequency takes the plain mean, as mergeGroup does).
+struct Grouping {
+    std::vector<int> groupOf;
+    std::vector<double> weightInGroup;
+    std::vector<std::size_t> size;
+
+    Grouping(const std::vector<int>& groups, const std::vector<double>& frequencies, std::size_t keys)
+        : groupOf(groups), weightInGroup(groups.size()), size(keys, 0) {
+        std::vector<double> total(keys, 0.0);
+        for (std::size_t i = 0; i < groups.size(); ++i) {
+            ++size[static_cast<std::size_t>(groups[i])];
+            total[static_cast<std::size_t>(groups[i])] += frequencies[i];
+        }
+        for (std::size_t i = 0; i < groups.size(); ++i) {
+            const auto g = static_cast<std::size_t>(groups[i]);
+            weightInGroup[i] = total[g] > 0 ? frequencies[i] / total[g] : 1.0 / static_cast<double>(size[g]);
+        }
+    }
+};
+
+// The reduced keys on one mesh: which of its targets belong to which key, and where they go.
+struct MeshPlan {
+    std::vector<std::vector<std::size_t>> members; // per key: the mesh's targets of its visemes
+    std::vector<int> remap;                        // old target -> new target
+    std::vector<std::string> names;                // new target names
+    std::vector<int> keyTarget;                    // per key: its (first) target after writing, or -1
+};
+
+MeshPlan planMesh(const AvatarMesh& mesh, const Grouping& grouping, const ReducedModel& model,
+                  AvatarNames names) {
+    MeshPlan plan;
+    plan.members.resize(model.keys.size());
+    plan.keyTarget.assign(model.keys.size(), -1);
+    plan.remap.assign(mesh.targets.size(), -1);
+    for (std::size_t k = 0; k < mesh.targets.size(); ++k) {
+        const AvatarTarget& t = mesh.targets[k];
+        const int key = t.viseme < 0 ? -1 : grouping.groupOf[static_cast<std::size_t>(t.viseme)];
+        if (key >= 0) plan.members[static_cast<std::size_t>(key)].push_back(k);
+        if (names == AvatarNames::Original || key < 0) {
+            plan.remap[k] = static_cast<int>(plan.names.size());
+            plan.names.push_back(t.name);
+            if (key >= 0 && plan.keyTarget[static_cast<std::size_t>(key)] < 0)
+                plan.keyTarget[static_cast<std::size_t>(key)] = plan.remap[k];
+            continue;
+        }
+        int& target = plan.keyTarget[static_cast<std::size_t>(key)];
+        if (target < 0) {
+            target = static_cast<int>(plan.names.size());
+            plan.names.push_back(model.keys[static_cast<std::size_t>(key)].name);
+        }
+        plan.remap[k] = target;
+    }
+    return plan;
+}
+
+// The morph target of key `key` on one primitive.
+Json keyTarget(GlbRepack& out, AccessorReader& reader, const Json& originalTargets,
+               const tinygltf::Primitive& prim, const AvatarMesh& mesh,
+               const std::vector<std::size_t>& members, const Grouping& grouping, std::size_t key,
+               std::size_t vertices, bool targetNormals, const std::string& where) {
+    if (grouping.size[key] == 1) { // one member: its own accessors, unchanged
+        Json target = originalTargets[members.front()];
+        if (!targetNormals) {
+            target.erase("NORMAL");
+            target.erase("TANGENT");
+        }
+        return target;
+    }
+    Json target = Json::object();
+    for (const char* name : kTargetAttributes) {
+        if (!targetNormals && std::strcmp(name, "POSITION") != 0) continue;
+        std::vector<double> sum(3 * vertices, 0.0);
+        bool any = false;
+        for (std::size_t k : members) {
+            const int accessor = attribute(prim.targets[k], name);
+            if (accessor < 0) continue;
+            any = true;
+            const double w = grouping.weightInGroup[static_cast<std::size_t>(mesh.targets[k].viseme)];
+            const std::vector<float> d = reader.floats(
+                accessor, TINYGLTF_TYPE_VEC3, where + "/targets/" + std::to_string(k) + "/" + name, vertices);
+            for (std::size_t c = 0; c < sum.size(); ++c) sum[c] += w * d[c];
+        }
+        if (!any && std::strcmp(name, "POSITION") != 0) continue;
+        target[name] = addVec3Accessor(out, std::vector<float>(sum.begin(), sum.end()),
+                                       std::strcmp(name, "POSITION") == 0);
+    }
+    return target;
+}
+
+Json* extrasObject(Json& object) {
+    if (!object.contains("extras")) object["extras"] = Json::object();
+    return object["extras"].is_object() ? &object["extras"] : nullptr;
+}
+
+void writeMeshExtras(Json& meshJson, const MeshPlan& plan, const ReducedModel& model, AvatarNames names,
+                     std::vector<std::string>& notes) {
+    Json* extras = extrasObject(meshJson);
+    if (!extras) {
+        notes.push_back("mesh '" + meshJson.value("name", std::string()) +
+                        "': its extras are not an object, so the phoneme map was not added to them");
+        return;
+    }
+    if (names == AvatarNames::Merged || extras->contains("targetNames"))
+        (*extras)["targetNames"] = plan.names;
+    Json phonemeToTarget = Json::object();
+    for (const auto& [phoneme, key] : model.phonemeToKey)
+        if (plan.keyTarget[static_cast<std::size_t>(key)] >= 0)
+            phonemeToTarget[phoneme] = plan.keyTarget[static_cast<std::size_t>(key)];
+    Json keys = Json::array();
+    for (std::size_t g = 0; g < model.keys.size(); ++g) {
+        if (plan.members[g].empty()) continue;
+        Json targets = Json::array();
+        for (std::size_t k : plan.members[g])
+            if (names == AvatarNames::Original) targets.push_back(plan.remap[k]);
+        if (names == AvatarNames::Merged) targets.push_back(plan.keyTarget[g]);
+        keys.push_back({{"key", g},
+                        {"name", model.keys[g].name},
+                        {"members", model.keys[g].members},
+                        {"frequency", model.keys[g].frequency},
+                        {"targets", targets}});
+    }
+    (*extras)["phonemeToTarget"] = phonemeToTarget;
+    (*extras)["visemeKeys"] = keys;
+}
+
+Json rootExtras(const ReducedModel& model, AvatarNames names, const std::vector<AvatarMeshChange>& meshes) {
+    Json keys = Json::array();
+    for (const KeyMesh& key : model.keys)
+        keys.push_back({{"name", key.name}, {"members", key.members}, {"frequency", key.frequency}});
+    Json phonemeToKey = Json::object(), phonemeFrequencies = Json::object(), touched = Json::array();
+    for (const auto& [phoneme, key] : model.phonemeToKey) phonemeToKey[phoneme] = key;
+    for (const auto& [phoneme, f] : model.phonemeFrequencies) phonemeFrequencies[phoneme] = f;
+    for (const AvatarMeshChange& m : meshes) touched.push_back(m.mesh);
+    Json out{{"version", 1}, {"names", toString(names)}, {"keys", keys}, {"phonemeToKey", phonemeToKey}};
+    if (!model.phonemeFrequencies.empty()) out["phonemeFrequencies"] = phonemeFrequencies;
+    out["meshes"] = touched;
+    return out;
+}
+
+void noteStorage(const GltfDocument& doc, std::vector<std::string>& notes) {
+    const auto used = [&](const char* name) {
+        return std::find(doc.model.extensionsUsed.begin(), doc.model.extensionsUsed.end(), name) !=
+               doc.model.extensionsUsed.end();
+    };
+    if (used("EXT_meshopt_compression"))
+        notes.push_back(
+            "EXT_meshopt_compression: views left as they were stay compressed; the reduced targets are "
+            "written uncompressed");
+    if (used("KHR_draco_mesh_compression"))
+        notes.push_back(
+            "KHR_draco_mesh_compression: the Draco geometry streams are kept as they are; the reduced "
+            "targets are plain accessors (the extension never compresses targets)");
+    if (used("KHR_mesh_quantization"))
+        notes.push_back("KHR_mesh_quantization: the reduced targets are written as floats");
+    for (const std::string& name : doc.model.extensionsUsed)
+        if (!isKnownExtension(name))
+            notes.push_back("extension " + name +
+                            " kept as it is (VisemeLab does not know it; if it refers to "
+                            "accessors or buffer views by index, those references were not renumbered)");
+}
+
+} // namespace
+
+const char* toString(AvatarNames names) {
+    return names == AvatarNames::Original ? "original" : "merged";
+}
+
+namespace {
+
+std::string write(const GltfDocument& doc, const AvatarScan& scan, const ReducedModel& model,
+                  const std::vector<int>& groupOf, const std::vector<double>& frequencies,
+                  const AvatarWriteOptions& options, AvatarWriteSummary* summary) {
+    if (groupOf.size() != scan.visemes.size() || frequencies.size() != scan.visemes.size())
+        throwInputError("avatar writer", "the grouping does not match the avatar's visemes");
+    const Grouping grouping(groupOf, frequencies, model.keys.size());
+    GlbRepack out(doc);
+    BufferViews views(doc);
+    AccessorReader reader(doc, views);
+    AvatarWriteSummary local;
+    AvatarWriteSummary& s = summary ? *summary : local;
+    noteStorage(doc, s.notes);
+
+    // Plans first, so that a --max-targets refusal names every mesh over the cap before anything is done.
+    std::vector<MeshPlan> plans(scan.meshes.size());
+    std::string overCap;
+    for (const AvatarMesh& mesh : scan.meshes) {
+        if (!mesh.carriesVisemes) continue;
+        MeshPlan& plan = plans[static_cast<std::size_t>(mesh.index)];
+        plan = planMesh(mesh, grouping, model, options.names);
+        AvatarMeshChange change{mesh.index, mesh.name, mesh.targets.size(), plan.names.size(), 0, 0};
+        for (const AvatarTarget& t : mesh.targets) change.visemeTargets += t.viseme >= 0;
+        for (const auto& m : plan.members) change.keys += !m.empty();
+        s.meshes.push_back(change);
+        if (options.maxTargets <= 0 || plan.names.size() <= static_cast<std::size_t>(options.maxTargets))
+            continue;
+        const bool original = options.names == AvatarNames::Original;
+        overCap += std::string(overCap.empty() ? "" : "; ") + "mesh '" + mesh.name + "' would have " +
+                   std::to_string(plan.names.size()) + " morph targets (" +
+                   std::to_string(mesh.targets.size() - change.visemeTargets) + " kept + " +
+                   std::to_string(original ? change.visemeTargets : change.keys) +
+                   (original ? " viseme names kept by --names original)" : " reduced keys)");
+    }
+    if (!overCap.empty())
+        throwInputError("--max-targets " + std::to_string(options.maxTargets),
+                        overCap + (options.names == AvatarNames::Original
+                                       ? "; --names merged keeps one target per key"
+                                       : "; a smaller --target gives fewer keys"));
+
+    std::map<int, std::vector<int>> remaps; // mesh -> old target -> new target (merged names)
+    for (const AvatarMesh& mesh : scan.meshes) {
+        if (!mesh.carriesVisemes) continue;
+        const MeshPlan& plan = plans[static_cast<std::size_t>(mesh.index)];
+        Json& meshJson = out.json["meshes"][static_cast<std::size_t>(mesh.index)];
+        const tinygltf::Mesh& gm = doc.model.meshes[static_cast<std::size_t>(mesh.index)];
+        for (std::size_t p = 0; p < gm.primitives.size(); ++p) {
+            const std::string where =
+                "meshes/" + std::to_string(mesh.index) + "/primitives/" + std::to_string(p);
+            Json& primJson = meshJson["primitives"][p];
+            const Json originalTargets = primJson["targets"];
+            std::vector<Json> keys(model.keys.size());
+            for (std::size_t g = 0; g < model.keys.size(); ++g)
+                if (!plan.members[g].empty())
+                    keys[g] =
+                        keyTarget(out, reader, originalTargets, gm.primitives[p], mesh, plan.members[g],
+                                  grouping, g, mesh.primitives[p].vertices, options.targetNormals, where);
+            Json targets = Json::array();
+            for (std::size_t k = 0; k < mesh.targets.size(); ++k) {
+                const int viseme = mesh.targets[k].viseme;
+                if (viseme < 0) {
+                    targets.push_back(originalTargets[k]);
+                    continue;
+                }
+                for (const auto& [name, accessor] : originalTargets[k].items())
+                    if (accessor.is_number_integer()) out.mayDrop(accessor.get<int>());
+                const auto g = static_cast<std::size_t>(grouping.groupOf[static_cast<std::size_t>(viseme)]);
+                if (options.names == AvatarNames::Original ||
+                    plan.remap[k] == static_cast<int>(targets.size()))
+                    targets.push_back(keys[g]);
+            }
+            primJson["targets"] = targets;
+            if (primJson.contains("extras") && primJson["extras"].is_object() &&
+                primJson["extras"].contains("targetNames"))
+                primJson["extras"]["targetNames"] = plan.names;
+        }
+        writeMeshExtras(meshJson, plan, model, options.names, s.notes);
+        if (options.names == AvatarNames::Merged) remaps[mesh.index] = plan.remap;
+    }
+    if (!remaps.empty()) remapMorphTargets(out, reader, remaps);
+
+    if (!out.json.contains("extras")) out.json["extras"] = Json::object();
+    if (out.json["extras"].is_object())
+        out.json["extras"]["visemelab"] = rootExtras(model, options.names, s.meshes);
+    else
+        s.notes.push_back(
+            "the document's extras are not an object: the key table is only in the meshes' extras");
+
+    RepackStats stats;
+    std::string glb = out.finish(&stats);
+    s.accessorsBefore = stats.accessorsBefore;
+    s.accessorsAfter = stats.accessorsAfter;
+    s.binaryBytesBefore = stats.binaryBytesBefore;
+    s.binaryBytesAfter = stats.binaryBytesAfter;
+    return glb;
+}
+
+} // namespace
+
+std::string writeReducedAvatar(const GltfDocument& doc, const AvatarScan& scan, const ReducedModel& model,
+                               const std::vector<int>& groupOf, const std::vector<double>& frequencies,
+                               const AvatarWriteOptions& options, AvatarWriteSummary* summary) {
+    try {
+        return write(doc, scan, model, groupOf, frequencies, options, summary);
+    } catch (const nlohmann::json::exception& e) { // a JSON value of a type tinygltf let through
+        doc.fail("", std::string("malformed glTF JSON: ") + e.what());
+    }
+}
+
+} // namespace vl

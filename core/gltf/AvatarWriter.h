@@ -1,0 +1,72 @@
+#pragma once
+// Writing the same avatar back with its viseme targets reduced.
+//
+// The output is the input document, edited: every node, skin, material, texture, image, animation,
+// extension and extra that is not a selected viseme target is kept, and the bytes of every kept
+// accessor, image and compressed stream are copied unchanged (EXT_meshopt_compression views and
+// Draco streams stay compressed; the new targets are written uncompressed). On each primitive of a
+// mesh carrying visemes, the viseme targets are replaced by the m reduced keys, the same grouping
+// on every mesh: key g on a mesh is the frequency-weighted mean of its members' displacements on that
+// mesh (a member the mesh lacks counts as zero, as in the reduction's concatenated geometry), for
+// POSITION and, unless disabled, NORMAL and TANGENT. A key of one member reuses that member's
+// accessors as they are.
+//
+// Names clients drive by:
+// - AvatarNames::Original (default): every original viseme target stays, under its own name and
+//   index; the members of a group point to one shared accessor. Weights, animations and VRM binds
+//   are untouched.
+// - AvatarNames::Merged: one target per key present on the mesh, at the place of its first member,
+//   named by its members joined with '+' (a key of one member keeps its name). Target indices after
+//   it shift: mesh.weights, node.weights, morph-weight animations (a key's weight is the sum of its
+//   members'), VRM 0.x blendShapeMaster binds and VRM 1.0 morphTargetBinds are remapped.
+// mesh.extras.targetNames follow the targets; mesh.extras gain "phonemeToTarget" (phoneme -> target
+// index on this mesh) and "visemeKeys"; the root extras gain "visemelab" (keys with members and
+// frequencies, phoneme -> key, phoneme frequencies).
+//
+// Accessors and buffer views that only the replaced targets (or rewritten animations) used are
+// removed and the rest renumbered wherever glTF 2.0, KHR_draco_mesh_compression,
+// EXT_meshopt_compression and EXT_mesh_gpu_instancing refer to them; every buffer with data
+// becomes the one GLB BIN chunk; external images are embedded.
+#include "core/export/ReducedModel.h"
+
+#include <string>
+#include <vector>
+
+namespace vl {
+
+class GltfDocument;
+struct AvatarScan;
+
+enum class AvatarNames { Original, Merged };
+
+struct AvatarWriteOptions {
+    AvatarNames names = AvatarNames::Original;
+    bool targetNormals = true; // NORMAL/TANGENT displacements of the reduced keys
+    int maxTargets = 0;        // > 0: refuse when a primitive would have more morph targets
+};
+
+struct AvatarMeshChange {
+    int mesh = 0;
+    std::string name;
+    std::size_t targetsBefore = 0, targetsAfter = 0;
+    std::size_t visemeTargets = 0; // selected viseme targets before
+    std::size_t keys = 0;          // reduced keys present on the mesh
+};
+
+struct AvatarWriteSummary {
+    std::vector<AvatarMeshChange> meshes;
+    std::size_t accessorsBefore = 0, accessorsAfter = 0;
+    std::size_t binaryBytesBefore = 0, binaryBytesAfter = 0;
+    std::vector<std::string> notes; // e.g. what stays compressed, extensions kept verbatim
+};
+
+// The GLB of the reduced avatar. `model` is buildReducedModel's result over `scan.set` (keys,
+// members, frequencies, phoneme map); `groupOf[i]` is viseme i's key and `frequencies[i]` its
+// normalised frequency. Throws InputError for --max-targets refusals and unreadable data.
+std::string writeReducedAvatar(const GltfDocument& doc, const AvatarScan& scan, const ReducedModel& model,
+                               const std::vector<int>& groupOf, const std::vector<double>& frequencies,
+                               const AvatarWriteOptions& options, AvatarWriteSummary* summary = nullptr);
+
+const char* toString(AvatarNames names);
+
+} // namespace vl

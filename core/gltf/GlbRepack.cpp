@@ -1,0 +1,224 @@
+#include "core/gltf/GlbRepack.h"
+
+#include "core/common/Limits.h"
+#include "core/gltf/GlbContainer.h"
+#include "core/gltf/GltfDocument.h"
+#include "core/gltf/GltfReferences.h"
+
+namespace vl {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+std::size_t arraySize(const Json& doc, const char* key) {
+    const auto it = doc.find(key);
+    return it != doc.end() && it->is_array() ? it->size() : 0;
+}
+
+// The image type from its first bytes (the types glTF and its texture extensions allow).
+std::string sniffMimeType(const std::string& bytes) {
+    if (bytes.rfind("\x89PNG", 0) == 0) return "image/png";
+    if (bytes.rfind("\xFF\xD8\xFF", 0) == 0) return "image/jpeg";
+    if (bytes.size() >= 12 && bytes.compare(0, 4, "RIFF") == 0 && bytes.compare(8, 4, "WEBP") == 0)
+        return "image/webp";
+    if (bytes.rfind("\xABKTX 20\xBB", 0) == 0) return "image/ktx2";
+    if (bytes.size() >= 12 && bytes.compare(4, 8, "ftypavif") == 0) return "image/avif";
+    if (bytes.rfind("DDS ", 0) == 0) return "image/vnd-ms.dds";
+    return "";
+}
+
+void appendAligned(std::string& bin, const unsigned char* data, std::size_t size) {
+    while (bin.size() % 4 != 0) bin.push_back('\0');
+    bin.append(reinterpret_cast<const char*>(data), size);
+}
+
+Json* meshoptExtension(Json& view) {
+    const auto ext = view.find("extensions");
+    if (ext == view.end() || !ext->is_object()) return nullptr;
+    const auto it = ext->find("EXT_meshopt_compression");
+    return it == ext->end() || !it->is_object() ? nullptr : &*it;
+}
+
+bool anyHas(Json& doc, const char* array, const char* extensionName) {
+    bool found = false;
+    const auto it = doc.find(array);
+    if (it == doc.end() || !it->is_array()) return false;
+    for (Json& element : *it)
+        if (element.is_object() && element.contains("extensions") && element["extensions"].is_object() &&
+            element["extensions"].contains(extensionName))
+            found = true;
+    return found;
+}
+
+bool dracoUsed(Json& doc) {
+    const auto meshes = doc.find("meshes");
+    if (meshes == doc.end() || !meshes->is_array()) return false;
+    for (Json& mesh : *meshes)
+        if (mesh.is_object() && anyHas(mesh, "primitives", "KHR_draco_mesh_compression")) return true;
+    return false;
+}
+
+void dropExtensionName(Json& doc, const std::string& name) {
+    for (const char* list : {"extensionsUsed", "extensionsRequired"}) {
+        const auto it = doc.find(list);
+        if (it == doc.end() || !it->is_array()) continue;
+        Json kept = Json::array();
+        for (const Json& e : *it)
+            if (!(e.is_string() && e.get<std::string>() == name)) kept.push_back(e);
+        if (kept.empty())
+            doc.erase(list);
+        else
+            *it = kept;
+    }
+}
+
+} // namespace
+
+GlbRepack::GlbRepack(const GltfDocument& doc) : json(doc.json), doc_(doc) {
+    originalViews_ = arraySize(json, "bufferViews");
+}
+
+int GlbRepack::addView(std::string bytes, int target) {
+    if (!json.contains("bufferViews")) json["bufferViews"] = Json::array();
+    Json view{{"buffer", 0}, {"byteLength", bytes.size()}};
+    if (target) view["target"] = target;
+    json["bufferViews"].push_back(view);
+    newViews_.push_back(std::move(bytes));
+    return static_cast<int>(json["bufferViews"].size()) - 1;
+}
+
+int GlbRepack::addAccessor(Json accessor) {
+    if (!json.contains("accessors")) json["accessors"] = Json::array();
+    json["accessors"].push_back(std::move(accessor));
+    return static_cast<int>(json["accessors"].size()) - 1;
+}
+
+void GlbRepack::embedExternalImages() {
+    const auto images = json.find("images");
+    if (images == json.end() || !images->is_array()) return;
+    for (std::size_t i = 0; i < images->size(); ++i) {
+        Json& image = (*images)[i];
+        if (!image.is_object() || !image.contains("uri") || !image["uri"].is_string()) continue;
+        const std::string uri = image["uri"].get<std::string>();
+        if (isDataUri(uri)) continue; // already inside the JSON
+        const std::string element = "images/" + std::to_string(i) + "/uri";
+        std::string bytes = doc_.readExternal(uri, element, limits::kMaxInputFileBytes);
+        std::string mime = image.value("mimeType", "");
+        if (mime.empty()) mime = sniffMimeType(bytes);
+        if (mime.empty()) doc_.fail(element, "'" + uri + "' is not an image type a GLB can embed");
+        const int view = addView(std::move(bytes));
+        image.erase("uri");
+        image["bufferView"] = view;
+        image["mimeType"] = mime;
+    }
+}
+
+std::string GlbRepack::finish(RepackStats* stats) {
+    embedExternalImages();
+    // Accessors the caller stopped using, and the views only they used.
+    const std::size_t accessorCount = arraySize(json, "accessors");
+    std::vector<char> usedAccessor(accessorCount, 0);
+    forEachAccessorReference(json, [&](Json& index) {
+        const auto i = index.get<long long>();
+        if (i >= 0 && static_cast<std::size_t>(i) < accessorCount)
+            usedAccessor[static_cast<std::size_t>(i)] = 1;
+    });
+    std::vector<int> accessorIndex(accessorCount);
+    std::set<long long> viewCandidates;
+    int next = 0;
+    for (std::size_t a = 0; a < accessorCount; ++a) {
+        const bool drop = !usedAccessor[a] && dropCandidates_.count(static_cast<int>(a));
+        accessorIndex[a] = drop ? -1 : next++;
+        if (!drop) continue;
+        Json single = Json::object();
+        single["accessors"] = Json::array({json["accessors"][a]});
+        forEachBufferViewReference(single, [&](Json& view) { viewCandidates.insert(view.get<long long>()); });
+    }
+    renumber(json, "accessors", accessorIndex, &forEachAccessorReference);
+
+    const std::size_t viewCount = arraySize(json, "bufferViews");
+    std::vector<char> usedView(viewCount, 0);
+    forEachBufferViewReference(json, [&](Json& index) {
+        const auto i = index.get<long long>();
+        if (i >= 0 && static_cast<std::size_t>(i) < viewCount) usedView[static_cast<std::size_t>(i)] = 1;
+    });
+    std::vector<int> viewIndex(viewCount);
+    std::vector<long long> sourceOf; // per kept view: original index, or -(1 + new view number)
+    next = 0;
+    for (std::size_t v = 0; v < viewCount; ++v) {
+        const bool drop = !usedView[v] && viewCandidates.count(static_cast<long long>(v));
+        viewIndex[v] = drop ? -1 : next++;
+        if (!drop)
+            sourceOf.push_back(v < originalViews_ ? static_cast<long long>(v)
+                                                  : -1 - static_cast<long long>(v - originalViews_));
+    }
+    renumber(json, "bufferViews", viewIndex, &forEachBufferViewReference);
+
+    // Buffers: one BIN chunk with every byte that remains, then the placeholder fallback buffers.
+    std::vector<int> placeholderIndex(doc_.buffers.size(), -1);
+    Json buffers = Json::array({Json{{"byteLength", 0}}});
+    std::string bin;
+    const auto placeholder = [&](int buffer) {
+        if (placeholderIndex[static_cast<std::size_t>(buffer)] < 0) {
+            placeholderIndex[static_cast<std::size_t>(buffer)] = static_cast<int>(buffers.size());
+            buffers.push_back(json["buffers"][static_cast<std::size_t>(buffer)]);
+        }
+        return placeholderIndex[static_cast<std::size_t>(buffer)];
+    };
+    const auto copyRange = [&](int buffer, std::size_t offset, std::size_t length,
+                               const std::string& element) {
+        if (buffer < 0 || static_cast<std::size_t>(buffer) >= doc_.buffers.size())
+            doc_.fail(element, "buffer " + std::to_string(buffer) + " does not exist");
+        const GltfBuffer& b = doc_.buffers[static_cast<std::size_t>(buffer)];
+        if (offset > b.length || length > b.length - offset) doc_.fail(element, "lies outside its buffer");
+        appendAligned(bin, b.data() + offset, length);
+        return bin.size() - length;
+    };
+    for (std::size_t v = 0; v < sourceOf.size(); ++v) {
+        Json& view = json["bufferViews"][v];
+        if (sourceOf[v] < 0) {
+            const std::string& bytes = newViews_[static_cast<std::size_t>(-1 - sourceOf[v])];
+            appendAligned(bin, reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size());
+            view["buffer"] = 0;
+            view["byteOffset"] = bin.size() - bytes.size();
+            continue;
+        }
+        const std::string element = "bufferViews/" + std::to_string(sourceOf[v]);
+        if (Json* meshopt = meshoptExtension(view)) {
+            const std::size_t at =
+                copyRange((*meshopt)["buffer"].get<int>(), meshopt->value("byteOffset", std::size_t{0}),
+                          (*meshopt)["byteLength"].get<std::size_t>(), element);
+            (*meshopt)["buffer"] = 0;
+            (*meshopt)["byteOffset"] = at;
+        }
+        const int buffer = view["buffer"].get<int>();
+        if (buffer >= 0 && static_cast<std::size_t>(buffer) < doc_.buffers.size() &&
+            doc_.buffers[static_cast<std::size_t>(buffer)].placeholder) {
+            view["buffer"] = placeholder(buffer);
+            continue;
+        }
+        const std::size_t at = copyRange(buffer, view.value("byteOffset", std::size_t{0}),
+                                         view["byteLength"].get<std::size_t>(), element);
+        view["buffer"] = 0;
+        view["byteOffset"] = at;
+    }
+    while (bin.size() % 4 != 0 || bin.empty()) bin.push_back('\0');
+    buffers[0]["byteLength"] = bin.size();
+    json["buffers"] = buffers;
+
+    if (!anyHas(json, "bufferViews", "EXT_meshopt_compression") &&
+        !anyHas(json, "buffers", "EXT_meshopt_compression"))
+        dropExtensionName(json, "EXT_meshopt_compression");
+    if (!dracoUsed(json)) dropExtensionName(json, "KHR_draco_mesh_compression");
+
+    if (stats) {
+        stats->accessorsBefore = arraySize(doc_.json, "accessors");
+        stats->accessorsAfter = arraySize(json, "accessors");
+        stats->binaryBytesBefore = 0;
+        for (const GltfBuffer& b : doc_.buffers) stats->binaryBytesBefore += b.length;
+        stats->binaryBytesAfter = bin.size();
+    }
+    return joinGlb(json.dump(), bin);
+}
+
+} // namespace vl

@@ -1,0 +1,47 @@
+#pragma once
+// Writes an edited copy of a glTF document as one GLB: the caller edits `json` (a copy of the
+// original), adds accessors and views of new data, and names the accessors it stopped using.
+// finish() then removes those accessors and the buffer views only they used (nothing else: an
+// object the input already left unused stays), renumbers every reference (core/gltf/GltfReferences),
+// copies the bytes of every remaining view unchanged into the BIN chunk (compressed
+// EXT_meshopt_compression data included; placeholder fallback buffers stay placeholders), embeds
+// external images, and drops compression extensions nothing uses any more.
+#include <nlohmann/json.hpp>
+
+#include <set>
+#include <string>
+#include <vector>
+
+namespace vl {
+
+class GltfDocument;
+
+struct RepackStats {
+    std::size_t accessorsBefore = 0, accessorsAfter = 0;
+    std::size_t binaryBytesBefore = 0, binaryBytesAfter = 0;
+};
+
+class GlbRepack {
+  public:
+    explicit GlbRepack(const GltfDocument& doc);
+
+    nlohmann::ordered_json json; // the document being edited (starts as the original)
+
+    // A buffer view of new bytes, placed in the BIN chunk; returns its index (current numbering).
+    int addView(std::string bytes, int target = 0);
+    // Appends an accessor; returns its index (current numbering).
+    int addAccessor(nlohmann::ordered_json accessor);
+    // The accessor may have lost its last user: remove it if nothing refers to it at finish().
+    void mayDrop(int accessor) { dropCandidates_.insert(accessor); }
+
+    std::string finish(RepackStats* stats = nullptr);
+
+  private:
+    void embedExternalImages();
+    const GltfDocument& doc_;
+    std::size_t originalViews_ = 0;
+    std::vector<std::string> newViews_; // bytes of views originalViews_, originalViews_ + 1, ...
+    std::set<int> dropCandidates_;
+};
+
+} // namespace vl

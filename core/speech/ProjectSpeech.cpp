@@ -1,0 +1,93 @@
+#include "core/speech/ProjectSpeech.h"
+
+#include "core/common/Error.h"
+#include "core/export/Export.h"
+#include "core/project/ProjectRun.h"
+
+#include <algorithm>
+
+namespace vl {
+
+namespace {
+
+void requirePhonemeMap(const Project& project, const PhonemeVisemeMap* map) {
+    if (!map && !project.frequencies.isPhonemeBased())
+        throwInputError(project.path.empty() ? std::string("project")
+                                             : project.path.string() + ": /frequencies",
+                        "speech needs a phoneme -> viseme map; this project gives frequencies per viseme "
+                        "(give a map, e.g. assets/phonemes/map_oculus.csv, or set the frequencies from a "
+                        "phoneme table and a map)");
+}
+
+std::vector<int> groupOfGrouping(const Grouping& grouping, std::size_t visemes) {
+    std::vector<int> groupOf(visemes, 0);
+    for (std::size_t g = 0; g < grouping.groups.size(); ++g)
+        for (const int member : grouping.groups[g])
+            groupOf[static_cast<std::size_t>(member)] = static_cast<int>(g);
+    return groupOf;
+}
+
+} // namespace
+
+void setPhonemeMap(ReducedModel& model, const PhonemeVisemeMap& map, std::string_view where) {
+    std::vector<std::pair<std::string, int>> phonemeToKey;
+    std::string missing;
+    for (const auto& [phoneme, viseme] : map.entries) {
+        const auto key = std::find_if(model.keys.begin(), model.keys.end(), [&](const KeyMesh& k) {
+            return std::find(k.members.begin(), k.members.end(), viseme) != k.members.end();
+        });
+        if (key == model.keys.end()) {
+            if (missing.find("'" + viseme + "'") == std::string::npos)
+                missing += (missing.empty() ? "'" : ", '") + viseme + "'";
+            continue;
+        }
+        phonemeToKey.emplace_back(phoneme, static_cast<int>(key - model.keys.begin()));
+    }
+    if (!missing.empty())
+        throwInputError(where, "the map names visemes the project does not have: " + missing);
+    model.phonemeToKey = std::move(phonemeToKey);
+}
+
+SpeechFaces projectSpeechFaces(const Project& project, const PhonemeVisemeMap* map) {
+    requirePhonemeMap(project, map);
+    const VisemeSet set = loadProjectVisemeSet(project);
+    SpeechFaces faces;
+    faces.full = projectReducedModel(project, set, true);
+    faces.reduced = projectReducedModel(project, set, false);
+    if (map) {
+        setPhonemeMap(faces.full, *map, "phoneme map");
+        setPhonemeMap(faces.reduced, *map, "phoneme map");
+    }
+    faces.weights = computeWeights(project.weights.mode, set.neutral, project.weights.painted,
+                                   project.path.string() + ": /weights");
+    return faces;
+}
+
+std::vector<ErrorCurvePoint> projectErrorCurve(const Project& project, std::span<const TimedPhoneme> phonemes,
+                                               const PlaybackSettings& settings, double fps,
+                                               const ProgressCallback& progress,
+                                               const PhonemeVisemeMap* map) {
+    requirePhonemeMap(project, map);
+    const VisemeSet set = loadProjectVisemeSet(project);
+    Project everyTarget = project;
+    everyTarget.reduction.target = static_cast<int>(set.size());
+    const ReduceOutcome outcome = reduceProject(everyTarget, set, [&](double f) {
+        if (progress) progress(0.5 * f);
+    });
+    const std::string where = project.path.empty() ? std::string("project") : project.path.string();
+    const FaceTrack full(unreducedModel(set, outcome.frequencies, project.frequencies), phonemes, settings,
+                         where);
+    std::vector<ErrorCurvePoint> curve;
+    for (std::size_t p = 0; p < outcome.result.curve.size(); ++p) {
+        const Grouping& grouping = outcome.result.curve[p];
+        const ReducedModel model = buildReducedModel(
+            set, outcome.frequencies, groupOfGrouping(grouping, set.size()), project.frequencies);
+        const FaceTrack reduced(model, phonemes, settings, where);
+        curve.push_back({static_cast<int>(p + 1), grouping.cost,
+                         measureUtteranceError(full, reduced, outcome.weights, fps)});
+        if (progress) progress(0.5 + 0.5 * double(p + 1) / double(outcome.result.curve.size()));
+    }
+    return curve;
+}
+
+} // namespace vl

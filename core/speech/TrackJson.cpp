@@ -1,0 +1,164 @@
+#include "core/speech/TrackJson.h"
+
+#include "core/common/AtomicFile.h"
+#include "core/common/Error.h"
+#include "core/project/JsonRead.h"
+
+namespace vl {
+
+namespace {
+
+std::string number(double value) {
+    return Json(value).dump();
+}
+
+std::string jsonString(std::string_view text) {
+    return Json(std::string(text)).dump();
+}
+
+// [{"start": s, "end": e, "value": v}, ...], one element per line.
+template <typename Timed, typename ValueOf>
+std::string timedArray(const std::vector<Timed>& items, ValueOf valueOf) {
+    if (items.empty()) return "[]";
+    std::string text = "[";
+    for (std::size_t i = 0; i < items.size(); ++i)
+        text += std::string(i == 0 ? "\n" : ",\n") + "    {\"start\": " + number(items[i].start) +
+                ", \"end\": " + number(items[i].end) + ", \"value\": " + jsonString(valueOf(items[i])) + "}";
+    return text + "\n  ]";
+}
+
+std::string numberArray(const std::vector<double>& values) {
+    std::string text = "[";
+    for (std::size_t i = 0; i < values.size(); ++i) text += (i == 0 ? "" : ", ") + number(values[i]);
+    return text + "]";
+}
+
+struct TimedElement {
+    double start, end;
+    std::string value;
+};
+
+std::vector<TimedElement> readTimedArray(const JsonNode& node) {
+    std::vector<TimedElement> items;
+    for (const JsonNode& element : node.elements()) {
+        element.expectObject();
+        element.allowOnly({"start", "end", "value"});
+        items.push_back(
+            {element["start"].number(), element["end"].number(), element["value"].nonEmptyString()});
+    }
+    return items;
+}
+
+std::vector<Cue> readCues(const JsonNode& node) {
+    std::vector<Cue> cues;
+    for (auto& item : readTimedArray(node)) cues.push_back({item.start, item.end, std::move(item.value)});
+    checkCues(cues, node.path());
+    return cues;
+}
+
+std::string optionalString(const JsonNode& object, std::string_view key) {
+    return object.has(key) ? object[key].string() : std::string();
+}
+
+double optionalNumber(const JsonNode& object, std::string_view key) {
+    return object.has(key) ? object[key].nonNegativeNumber() : 0.0;
+}
+
+} // namespace
+
+std::string formatTrackJson(const SpeechTrackFile& track) {
+    const TrackMetadata& m = track.metadata;
+    std::string text =
+        "{\n  \"metadata\": {\n    \"soundFile\": " + jsonString(m.soundFile) +
+        ",\n    \"duration\": " + number(m.duration) + ",\n    \"text\": " + jsonString(m.text) +
+        ",\n    \"source\": " + jsonString(m.source) + ",\n    \"voice\": " + jsonString(m.voice) +
+        ",\n    \"wordsPerMinute\": " + std::to_string(m.wordsPerMinute) +
+        ",\n    \"project\": " + jsonString(m.project) +
+        ",\n    \"interpolation\": " + jsonString(m.interpolation) + ",\n    \"fps\": " + number(m.fps) +
+        ",\n    \"generator\": \"VisemeLab\"\n  },\n";
+    const auto cueValue = [](const Cue& c) -> const std::string& { return c.value; };
+    text += "  \"mouthCues\": " + timedArray(track.mouthCues, cueValue) + ",\n";
+    text += "  \"reducedCues\": " + timedArray(track.reducedCues, cueValue) + ",\n";
+    text += "  \"phonemes\": " +
+            timedArray(track.phonemes, [](const TimedPhoneme& p) -> const std::string& { return p.phoneme; });
+    if (track.error) {
+        const TrackError& e = *track.error;
+        text += ",\n  \"error\": {\"mean\": " + number(e.mean) + ", \"max\": " + number(e.max) +
+                ", \"maxTime\": " + number(e.maxTime) + ", \"relative\": " + number(e.relative) +
+                ",\n    \"frames\": " + numberArray(e.frames) + "}";
+    }
+    if (!track.errorCurve.empty()) {
+        text += ",\n  \"errorCurve\": [";
+        for (std::size_t i = 0; i < track.errorCurve.size(); ++i) {
+            const auto& p = track.errorCurve[i];
+            text += std::string(i == 0 ? "\n" : ",\n") + "    {\"m\": " + std::to_string(p.m) +
+                    ", \"cost\": " + number(p.cost) + ", \"mean\": " + number(p.mean) +
+                    ", \"max\": " + number(p.max) + ", \"relative\": " + number(p.relative) + "}";
+        }
+        text += "\n  ]";
+    }
+    return text + "\n}\n";
+}
+
+void saveTrackJson(const std::filesystem::path& path, const SpeechTrackFile& track) {
+    writeFileAtomically(path, formatTrackJson(track));
+}
+
+SpeechTrackFile parseTrackJson(std::string_view text, std::string_view source) {
+    const Json doc = parseJsonStrict(text, source);
+    const JsonNode root(doc, std::string(source) + ":");
+    root.expectObject();
+    SpeechTrackFile track;
+    if (root.has("metadata")) {
+        const JsonNode metadata = root["metadata"];
+        metadata.expectObject();
+        TrackMetadata& m = track.metadata;
+        m.soundFile = optionalString(metadata, "soundFile");
+        m.duration = optionalNumber(metadata, "duration");
+        m.text = optionalString(metadata, "text");
+        m.source = optionalString(metadata, "source");
+        m.voice = optionalString(metadata, "voice");
+        m.wordsPerMinute = metadata.has("wordsPerMinute")
+                               ? static_cast<int>(metadata["wordsPerMinute"].integerInRange(0, 100000))
+                               : 0;
+        m.project = optionalString(metadata, "project");
+        m.interpolation = optionalString(metadata, "interpolation");
+        m.fps = optionalNumber(metadata, "fps");
+    }
+    track.mouthCues = readCues(root["mouthCues"]);
+    if (root.has("reducedCues") && root["reducedCues"].size() > 0)
+        track.reducedCues = readCues(root["reducedCues"]);
+    if (root.has("phonemes") && root["phonemes"].size() > 0) {
+        for (auto& item : readTimedArray(root["phonemes"]))
+            track.phonemes.push_back({std::move(item.value), item.start, item.end});
+        checkTimedPhonemes(track.phonemes, root["phonemes"].path());
+    }
+    if (root.has("error")) {
+        const JsonNode error = root["error"];
+        error.expectObject();
+        error.allowOnly({"mean", "max", "maxTime", "relative", "frames"});
+        TrackError e;
+        e.mean = error["mean"].nonNegativeNumber();
+        e.max = error["max"].nonNegativeNumber();
+        e.maxTime = optionalNumber(error, "maxTime");
+        e.relative = optionalNumber(error, "relative");
+        if (error.has("frames")) e.frames = error["frames"].nonNegativeNumbers();
+        track.error = std::move(e);
+    }
+    if (root.has("errorCurve")) {
+        for (const JsonNode& point : root["errorCurve"].elements()) {
+            point.expectObject();
+            point.allowOnly({"m", "cost", "mean", "max", "relative"});
+            track.errorCurve.push_back({static_cast<int>(point["m"].integerInRange(1, 1000000)),
+                                        point["cost"].nonNegativeNumber(), point["mean"].nonNegativeNumber(),
+                                        point["max"].nonNegativeNumber(), optionalNumber(point, "relative")});
+        }
+    }
+    return track;
+}
+
+SpeechTrackFile loadTrackJson(const std::filesystem::path& path) {
+    return parseTrackJson(readFileToString(path), path.string());
+}
+
+} // namespace vl

@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# Regenerates the user guide's editor pictures (docs/images/editor-*.png) from the current build:
+# each picture is the editor's --screenshot mode on the bundled sample under a private Xvfb.
+# Usage: scripts/guide-pictures.sh [build/release]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build="${1:-build/release}"
+editor="$build/ui/visemelab-editor"
+[ -x "$editor" ] || { echo "guide-pictures: build the editor first ($editor not found)" >&2; exit 2; }
+command -v xvfb-run >/dev/null || { echo "guide-pictures: xvfb-run is not installed (apt-get install xvfb xauth)" >&2; exit 2; }
+
+shot() { # shot NAME ARGS... : one picture at 1280x800
+  local name="$1"
+  shift
+  xvfb-run -a -s '-screen 0 1600x1000x24' "$editor" --size 1280 800 --sample "$@" \
+    --screenshot "docs/images/editor-$name.png" >/dev/null
+  echo "docs/images/editor-$name.png"
+}
+
+shot visemes --frames 8 --screenshot-bits 6 --panel Visemes --viseme ou --no-wireframe
+shot frequencies --frames 8 --screenshot-bits 6 --panel Frequencies --no-wireframe
+shot weights --screenshot-bits 6 --panel Weights --brush subtract --drag 760 380 1010 410 --frames 20 --no-wireframe
+shot deformation --frames 8 --panel Deformation --preset oh --field zygomatic_l --no-wireframe --screenshot-bits 5
+shot refinement --frames 8 --panel Refinement --refine contour --preset aa --screenshot-bits 4
+shot reduction --frames 8 --screenshot-bits 6 --panel Reduction --viseme E --no-wireframe
+shot playback --frames 8 --screenshot-bits 6 --panel Reduction --play 1.3 --sequence 'HH EH L OW W ER L D' --no-wireframe
+shot export --frames 8 --screenshot-bits 6 --panel Export --no-wireframe

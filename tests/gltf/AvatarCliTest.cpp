@@ -1,0 +1,128 @@
+// `visemelab avatar ...` as a user runs it: exit codes 0 / 2 (usage) / 3 (bad file, named).
+#include "core/common/AtomicFile.h"
+#include "tests/app/CliRunner.h"
+#include "tests/gltf/AvatarFixtures.h"
+#include "tests/gltf/GltfTestSupport.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+namespace vl {
+namespace {
+
+class AvatarCli : public ::testing::Test {
+  protected:
+    // One folder per test: ctest runs the tests of this fixture in parallel.
+    std::filesystem::path dir = std::filesystem::temp_directory_path() /
+                                (std::string("visemelab_avatar_cli_") +
+                                 ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    void SetUp() override {
+        std::filesystem::remove_all(dir);
+        std::filesystem::create_directories(dir);
+        writeFileAtomically(dir / "rpm.glb", test::rpmLikeAvatar());
+        writeFileAtomically(dir / "vroid.vrm", test::vroidLikeAvatar());
+    }
+    void TearDown() override { std::filesystem::remove_all(dir); }
+    std::string path(const char* name) const { return (dir / name).string(); }
+};
+
+TEST_F(AvatarCli, InspectReportsTheVisemesAndWritesJson) {
+    const auto r = test::runCli("avatar inspect " + path("rpm.glb") + " --json " + path("report.json"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("Visemes: 15 (Oculus viseme names)"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("one set over 4 meshes"), std::string::npos) << r.output;
+    const auto json = nlohmann::json::parse(readFileToString(dir / "report.json"));
+    EXPECT_EQ(json["visemes"].size(), 15u);
+    const auto vroid = test::runCli("avatar inspect " + path("vroid.vrm") + " --targets 'Fcl_MTH_[AIUEO]'");
+    ASSERT_EQ(vroid.exitCode, 0) << vroid.output;
+    EXPECT_NE(vroid.output.find("Fcl_MTH_A Fcl_MTH_I Fcl_MTH_U Fcl_MTH_E Fcl_MTH_O"), std::string::npos)
+        << vroid.output;
+}
+
+TEST_F(AvatarCli, BadFilesExitWith3NamingFileAndElementAndUsageErrorsWith2) {
+    const std::string sparse =
+        test::editGlb(test::rpmLikeAvatar({test::FixtureStorage::Sparse}), [](auto& j) {
+            for (auto& mesh : j["meshes"])
+                if (mesh["name"] == "Wolf3D_Head")
+                    j["accessors"][mesh["primitives"][0]["targets"][5]["POSITION"]
+                                       .template get<std::size_t>()]["sparse"]["indices"]["componentType"] =
+                        5126;
+        });
+    writeFileAtomically(dir / "hostile.glb", sparse);
+    const auto bad = test::runCli("avatar inspect " + path("hostile.glb"));
+    EXPECT_EQ(bad.exitCode, 3) << bad.output;
+    EXPECT_NE(bad.output.find("hostile.glb"), std::string::npos) << bad.output;
+    EXPECT_NE(bad.output.find("sparse indices"), std::string::npos) << bad.output;
+    const auto missing = test::runCli("avatar inspect " + path("missing.glb"));
+    EXPECT_EQ(missing.exitCode, 3) << missing.output;
+    const auto same = test::runCli("avatar inspect " + path("rpm.glb") + " --json " + path("rpm.glb"));
+    EXPECT_EQ(same.exitCode, 2) << same.output;
+    const auto pattern = test::runCli("avatar inspect " + path("rpm.glb") + " --targets 'viseme_[aa'");
+    EXPECT_EQ(pattern.exitCode, 3) << pattern.output;
+    EXPECT_NE(pattern.output.find("--targets"), std::string::npos) << pattern.output;
+    EXPECT_EQ(test::runCli("avatar").exitCode, 2);
+}
+
+TEST_F(AvatarCli, ReduceWritesTheAvatarAndAReportWithTheKeysOfReduce) {
+    const auto r = test::runCli("avatar reduce " + path("rpm.glb") + " --target 6 --out " + path("out.glb") +
+                                " --report " + path("report.json") + " --weights area");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("Reduced 15 visemes to 6"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("bundled en-us phoneme table + map oculus"), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("has frequency 0"), std::string::npos) << r.output; // silence is counted too
+    const auto report = nlohmann::json::parse(readFileToString(dir / "report.json"));
+    for (const char* key :
+         {"n", "m", "weights", "cost", "groups", "cost_curve", "timing_ms", "meshes", "avatar"})
+        EXPECT_TRUE(report.contains(key)) << key;
+    EXPECT_EQ(report["n"], 15);
+    EXPECT_EQ(report["m"], 6);
+    EXPECT_EQ(report["weights"], "area");
+    EXPECT_EQ(report["meshes"].size(), 4u);
+    EXPECT_EQ(report["phoneme_to_key"].size(), 40u); // the ARPAbet phonemes and sil of the Oculus map
+    const AvatarScan out = scanAvatar(loadGltfDocument(dir / "out.glb"), {});
+    EXPECT_EQ(out.visemes.size(), 15u); // --names original: every viseme name is still there
+
+    // Merged names with a cap that fits; a cap that does not fit is refused with exit 3.
+    const auto merged = test::runCli("avatar reduce " + path("rpm.glb") +
+                                     " -m 4 --names merged --max-targets 10 --out " + path("merged.glb"));
+    ASSERT_EQ(merged.exitCode, 0) << merged.output;
+    const auto capped =
+        test::runCli("avatar reduce " + path("rpm.glb") + " -m 4 --max-targets 8 --out " + path("x.glb"));
+    EXPECT_EQ(capped.exitCode, 3) << capped.output;
+    EXPECT_NE(capped.output.find("--names merged"), std::string::npos) << capped.output;
+    EXPECT_FALSE(std::filesystem::exists(dir / "x.glb"));
+
+    // VRoid names need a pattern; frequencies then default to equal.
+    const auto vroid = test::runCli("avatar reduce " + path("vroid.vrm") +
+                                    " -m 3 --targets 'Fcl_MTH_[AIUEO]' --out " + path("vroid_out.vrm"));
+    ASSERT_EQ(vroid.exitCode, 0) << vroid.output;
+    EXPECT_NE(vroid.output.find("frequencies: equal"), std::string::npos) << vroid.output;
+    const auto none = test::runCli("avatar reduce " + path("vroid.vrm") + " -m 3 --out " + path("v.vrm"));
+    EXPECT_EQ(none.exitCode, 3) << none.output;
+    EXPECT_NE(none.output.find("needs at least 2 visemes"), std::string::npos) << none.output;
+}
+
+TEST_F(AvatarCli, ReduceRefusesToOverwriteItsInputAndChecksItsFlags) {
+    const std::string before = readFileToString(dir / "rpm.glb");
+    for (const std::string& args :
+         {"-m 6 --out " + path("rpm.glb"), "-m 6 --out " + path("o.glb") + " --report " + path("rpm.glb"),
+          "-m 6 --out " + path("o.gltf"), "-m 6 --out " + path("o.glb") + " --names short",
+          "-m 6 --out " + path("o.glb") + " --weights painted", "--out " + path("o.glb")}) {
+        const auto r = test::runCli("avatar reduce " + path("rpm.glb") + " " + args);
+        EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.output;
+    }
+    EXPECT_EQ(readFileToString(dir / "rpm.glb"), before);
+    // A frequency table in the bundled files' spelling applies to Ready Player Me's names.
+    writeFileAtomically(dir / "freq.csv",
+                        "viseme,frequency\nsil,5\nPP,1\nFF,1\nTH,1\nDD,1\nkk,1\nCH,1\nSS,1\nnn,1\n"
+                        "RR,1\naa,3\nE,2\nih,2\noh,1\nou,1\n");
+    const auto r = test::runCli("avatar reduce " + path("rpm.glb") + " -m 5 --freq-file " + path("freq.csv") +
+                                " --out " + path("f.glb"));
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    const auto bad = test::runCli("avatar reduce " + path("rpm.glb") + " -m 16 --out " + path("f.glb"));
+    EXPECT_EQ(bad.exitCode, 3) << bad.output;
+}
+
+} // namespace
+} // namespace vl

@@ -1,0 +1,75 @@
+// Writes the avatar fixtures (tests/gltf/AvatarFixtures.h) into a folder: for the Khronos validator
+// test, the avatar CLI tests, the benchmark (--bench: a 30,000-vertex avatar) and manual checks.
+#include "core/common/AtomicFile.h"
+#include "core/gltf/AvatarReduce.h"
+#include "core/gltf/GltfDocument.h"
+#include "tests/gltf/AvatarFixtures.h"
+
+#include <cstdio>
+#include <cstring>
+#include <exception>
+#include <filesystem>
+
+namespace {
+
+// <stem>_original.glb and <stem>_merged.glb: the avatar reduced to m keys in both name modes.
+void writeReductions(const std::filesystem::path& dir, const std::string& stem, const std::string& glb, int m,
+                     const std::string& pattern) {
+    const vl::GltfDocument doc = vl::parseGltfDocument(glb, stem, {});
+    const vl::AvatarScan scan = vl::scanAvatar(doc, {pattern});
+    vl::ReduceSettings settings;
+    settings.target = m;
+    settings.weightMode = vl::WeightMode::Area;
+    for (vl::AvatarNames names : {vl::AvatarNames::Original, vl::AvatarNames::Merged}) {
+        vl::AvatarWriteOptions write;
+        write.names = names;
+        const auto r = vl::reduceAvatar(doc, scan, vl::uniformFrequencies(scan), settings, write);
+        vl::writeFileAtomically(dir / (stem + "_" + vl::toString(names) + ".glb"), r.glb);
+    }
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    if (argc < 2) {
+        std::fprintf(stderr, "usage: %s OUT_DIR [--bench]\n", argv[0]);
+        return 2;
+    }
+    try {
+        using vl::test::FixtureStorage;
+        const std::filesystem::path dir = argv[1];
+        std::filesystem::create_directories(dir);
+        const std::pair<const char*, FixtureStorage> kinds[] = {{"rpm_plain", FixtureStorage::Plain},
+                                                                {"rpm_quantised", FixtureStorage::Quantised},
+                                                                {"rpm_meshopt", FixtureStorage::Meshopt},
+                                                                {"rpm_sparse", FixtureStorage::Sparse},
+                                                                {"rpm_draco", FixtureStorage::Draco}};
+        for (const auto& [name, storage] : kinds) {
+            vl::test::AvatarFixtureOptions options;
+            options.storage = storage;
+            const std::string glb = vl::test::rpmLikeAvatar(options);
+            vl::writeFileAtomically(dir / (std::string(name) + ".glb"), glb);
+            writeReductions(dir, std::string(name) + "_reduced", glb, 6, "");
+        }
+        for (bool vrm1 : {false, true}) {
+            const std::string stem = vrm1 ? "vroid_vrm1" : "vroid_vrm0",
+                              glb = vl::test::vroidLikeAvatar(vrm1);
+            vl::writeFileAtomically(dir / (stem + ".glb"), glb);
+            writeReductions(dir, stem + "_reduced", glb, 3, "Fcl_MTH_[AIUEO]");
+        }
+        if (argc > 2 && std::strcmp(argv[2], "--bench") == 0) {
+            // About 30,000 vertices on the 4 meshes that carry the 15 visemes.
+            vl::test::AvatarFixtureOptions options;
+            options.headColumns = 180;
+            options.headRows = 140;
+            options.teethColumns = 100;
+            options.teethRows = 20;
+            options.eyeSegments = 48;
+            vl::writeFileAtomically(dir / "rpm_30k.glb", vl::test::rpmLikeAvatar(options));
+        }
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "%s\n", e.what());
+        return 1;
+    }
+    return 0;
+}

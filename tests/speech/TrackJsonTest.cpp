@@ -1,0 +1,75 @@
+#include "core/speech/TrackJson.h"
+#include "core/common/Error.h"
+
+#include <gtest/gtest.h>
+
+using namespace vl;
+
+namespace {
+
+SpeechTrackFile sampleTrack() {
+    SpeechTrackFile t;
+    t.metadata = {"audio.wav", 0.7321, "Hi, you.", "", "en-us", 175, "sample.vlproj", "cubic", 30};
+    t.mouthCues = {{0.0, 0.1 / 3, "sil"}, {0.1 / 3, 0.5, "aa"}, {0.5, 0.7321, "sil"}};
+    t.reducedCues = {{0.0, 0.1 / 3, "sil+PP"}, {0.1 / 3, 0.7321, "aa"}};
+    t.phonemes = {{"sil", 0.0, 0.1 / 3}, {"HH", 0.1 / 3, 0.2}, {"AY", 0.2, 0.5}, {"sil", 0.5, 0.7321}};
+    t.error = TrackError{1.25e-3, 0.017, 0.4, 0.031, {0.0, 1e-17, 0.017, 2.0 / 3}};
+    t.errorCurve = {{1, 102.5, 0.2, 1.5, 0.9}, {2, 20.1, 0.05, 0.9, 0.3}};
+    return t;
+}
+
+void expectError(std::string_view text, const std::string& phrase) {
+    try {
+        parseTrackJson(text, "t.json");
+        FAIL() << "expected InputError: " << phrase;
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find(phrase), std::string::npos) << e.what();
+    }
+}
+
+} // namespace
+
+TEST(TrackJson, RoundTripIsExact) {
+    const SpeechTrackFile track = sampleTrack();
+    const std::string text = formatTrackJson(track);
+    EXPECT_EQ(parseTrackJson(text, "t.json"), track);
+    EXPECT_EQ(formatTrackJson(parseTrackJson(text, "t.json")), text);
+}
+
+TEST(TrackJson, ReadsRhubarbOutput) {
+    // The layout Rhubarb Lip Sync 1.x writes with --exportFormat json.
+    const auto track = parseTrackJson(R"({
+  "metadata": {
+    "soundFile": "C:\\speech\\hello.wav",
+    "duration": 1.05
+  },
+  "mouthCues": [
+    { "start": 0.00, "end": 0.15, "value": "X" },
+    { "start": 0.15, "end": 0.28, "value": "C" },
+    { "start": 0.28, "end": 1.05, "value": "X" }
+  ]
+})",
+                                      "hello.json");
+    EXPECT_EQ(track.metadata.soundFile, "C:\\speech\\hello.wav");
+    EXPECT_EQ(track.metadata.duration, 1.05);
+    ASSERT_EQ(track.mouthCues.size(), 3u);
+    EXPECT_EQ(track.mouthCues[1], (Cue{0.15, 0.28, "C"}));
+    EXPECT_TRUE(track.reducedCues.empty());
+    EXPECT_TRUE(track.phonemes.empty());
+    EXPECT_FALSE(track.error);
+}
+
+TEST(TrackJson, BadTracksNameThePath) {
+    expectError("[1]", "t.json:");
+    expectError(R"({"metadata": {}})", "mouthCues");
+    expectError(
+        R"({"mouthCues": [{"start": 0, "end": 1, "value": "A"}, {"start": 2, "end": 3, "value": "B"}]})",
+        "t.json:/mouthCues/1: starts at");
+    expectError(R"({"mouthCues": [{"start": 0, "end": 1, "value": "A", "extra": 1}]})", "/mouthCues/0");
+    expectError(R"({"mouthCues": [{"start": 0, "end": "x", "value": "A"}]})", "/mouthCues/0/end");
+    expectError(R"({"mouthCues": [{"start": 0, "end": 1, "value": "A"}], "error": {"mean": -1, "max": 0}})",
+                "/error/mean");
+    expectError(R"({"mouthCues": [{"start": 0, "end": 1, "value": "A"}],
+                    "phonemes": [{"start": 0, "end": 0.5, "value": "AA"}, {"start": 0.4, "end": 1, "value": "B"}]})",
+                "phoneme 1");
+}

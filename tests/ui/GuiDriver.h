@@ -1,0 +1,74 @@
+#pragma once
+// Drives the real editor window with real input events, as a user would: a private Xvfb server,
+// the editor process started with --probe (it reports its controls' rectangles and a document
+// summary after every frame, see ui/widgets/GuiProbe.h), and xdotool for mouse and keyboard.
+// Nothing is injected into ImGui: events go through X11, GLFW and the ImGui backend.
+#include <nlohmann/json.hpp>
+
+#include <sys/types.h>
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace vl::test {
+
+// Empty when Xvfb and xdotool are both installed, else what is missing (for GTEST_SKIP).
+std::string missingGuiTools();
+
+class GuiDriver {
+  public:
+    // Starts Xvfb and the editor with `arguments` (plus --probe and --size); waits for its first frames.
+    explicit GuiDriver(const std::vector<std::string>& arguments, int width = 1600, int height = 1000);
+    ~GuiDriver();
+    GuiDriver(const GuiDriver&) = delete;
+    GuiDriver& operator=(const GuiDriver&) = delete;
+
+    // False once the editor process has exited (crashed or quit); exitStatus() says how.
+    bool alive();
+    std::string exitStatus() const;
+    // The editor's stderr so far (for failure messages).
+    std::string log() const;
+
+    // Waits until the editor has drawn `frames` more frames and returns its latest report.
+    const nlohmann::json& waitFrames(int frames = 3);
+    // Waits until no background work runs (reduction, refinement, save ...), at most `seconds`.
+    const nlohmann::json& waitIdle(double seconds = 60.0);
+    const nlohmann::json& report() const { return report_; }
+    const nlohmann::json& document() const { return report_["document"]; }
+
+    // The control whose shown text (or full label) is `text`, optionally of a kind ("button",
+    // "radio", "slider", "tab", "menu", "menuitem", ...) and the n-th such match; null when absent.
+    std::optional<nlohmann::json> find(const std::string& text, const std::string& kind = {},
+                                       int nth = 0) const;
+    // The same, failing the test when the control is not there.
+    nlohmann::json control(const std::string& text, const std::string& kind = {}, int nth = 0) const;
+
+    // Left click at a fraction of the control's rectangle (0.5, 0.5 = its centre).
+    void click(const nlohmann::json& control, double fx = 0.5, double fy = 0.5);
+    void clickAt(double x, double y, int button = 1);
+    // Press at one point, move in steps, release at another (a slider drag or a brush stroke).
+    void drag(double x0, double y0, double x1, double y1, int steps = 8);
+    // Mouse wheel over a point: positive = down.
+    void scroll(double x, double y, int notches);
+    // xdotool key names: "Escape", "Return", "ctrl+z", "Tab".
+    void key(const std::string& keys);
+    void type(const std::string& text);
+
+  private:
+    void xdotool(const std::string& arguments);
+    // Waits (up to 30 s) until the editor's report satisfies `seen`: the event has arrived.
+    template <class Predicate> void waitUntil(const Predicate& seen, const std::string& what);
+    void press(int button, bool down);
+    void moveTo(double x, double y);
+
+    pid_t xvfb_ = -1, editor_ = -1;
+    int editorStatus_ = -1;
+    std::string display_;
+    std::filesystem::path folder_, probeFile_, logFile_;
+    std::string window_;
+    nlohmann::json report_;
+};
+
+} // namespace vl::test
