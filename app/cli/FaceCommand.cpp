@@ -37,7 +37,8 @@ struct FaceBuildCliOptions {
 
 face::UvMesh loadUvMesh(const std::filesystem::path& path) {
     std::string ext = path.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     if (ext == ".glb" || ext == ".gltf") return face::makeUvMesh(readGltf(path).neutral, path.string());
     CornerTexCoords corners;
     const MeshData mesh = readMesh(path, corners);
@@ -49,8 +50,9 @@ face::FaceLandmarks givenLandmarks(const face::UvMesh& mesh, const std::string& 
     if (file.empty()) return given;
     for (const auto& [landmark, input] : readLandmarkFile(file)) {
         const std::string where = file + ": " + std::string(face::landmarkName(landmark));
-        given[landmark] = face::resolveLandmark(mesh, input, face::LandmarkSource::File, 1.0,
-                                                "given in " + std::filesystem::path(file).filename().string(), where);
+        given[landmark] =
+            face::resolveLandmark(mesh, input, face::LandmarkSource::File, 1.0,
+                                  "given in " + std::filesystem::path(file).filename().string(), where);
     }
     return given;
 }
@@ -64,7 +66,8 @@ void printLandmarks(const face::FaceLandmarks& landmarks) {
                         face::isRequired(l) ? "(required)" : "(optional)");
             continue;
         }
-        std::printf("  %-19s %-8s sure %3.0f%%  uv (%.4f, %.4f)  %s\n", std::string(face::landmarkName(l)).c_str(),
+        std::printf("  %-19s %-8s sure %3.0f%%  uv (%.4f, %.4f)  %s\n",
+                    std::string(face::landmarkName(l)).c_str(),
                     std::string(face::sourceName(f.source)).c_str(), 100.0 * f.confidence, f.uv[0], f.uv[1],
                     f.method.c_str());
     }
@@ -87,19 +90,21 @@ void printReport(const face::FaceBuildReport& r) {
     }
     std::printf("UV islands: %zu used of %zu\n%s", used, r.islands.size(), usedText.c_str());
     if (overlapping + notJoined > 0)
-        std::printf("  not used: %zu not joined to the face, %zu overlapping it in (u,v)\n", notJoined, overlapping);
+        std::printf("  not used: %zu not joined to the face, %zu overlapping it in (u,v)\n", notJoined,
+                    overlapping);
     if (r.droppedTriangles > 0) std::printf("  %zu triangles without (u,v) ignored\n", r.droppedTriangles);
     if (!r.holes.empty()) {
         std::printf("holes filled:");
         for (const auto& h : r.holes) std::printf(" %s", h.role.c_str());
         std::printf("\n");
     }
-    std::printf("face size: %.4g mesh units per bundled-face cm (eye distance %.4g, eyes to mouth %.4g): fields "
-                "scaled by it\n",
-                r.scale, r.frame.eyeDistance, r.frame.eyeMouthDistance);
+    std::printf(
+        "face size: %.4g mesh units per bundled-face cm (eye distance %.4g, eyes to mouth %.4g): fields "
+        "scaled by it\n",
+        r.scale, r.frame.eyeDistance, r.frame.eyeMouthDistance);
     std::printf("orientation: right (%.3f, %.3f, %.3f), up (%.3f, %.3f, %.3f), forward (%.3f, %.3f, %.3f)\n",
-                r.frame.right[0], r.frame.right[1], r.frame.right[2], r.frame.up[0], r.frame.up[1], r.frame.up[2],
-                r.frame.forward[0], r.frame.forward[1], r.frame.forward[2]);
+                r.frame.right[0], r.frame.right[1], r.frame.right[2], r.frame.up[0], r.frame.up[1],
+                r.frame.up[2], r.frame.forward[0], r.frame.forward[1], r.frame.forward[2]);
     std::printf("coverage: the mesh covers %.0f%% of the face domain; %.0f%% is drawn in from the border\n",
                 100.0 * r.domainCoverage, 100.0 * r.retracted);
     for (const auto& w : r.warnings) std::printf("warning: %s\n", w.c_str());
@@ -153,10 +158,12 @@ int runFaceBuild(const FaceBuildCliOptions& o) {
     const std::filesystem::path out = o.out;
     if (out.extension() != ".vlproj") throwInputError("--out", "expected a .vlproj project file");
     const std::filesystem::path meshPath = o.mesh;
-    for (const auto& [flag, path] : {std::pair{"--out", o.out}, {"--landmarks-out", o.landmarksOut}, {"--report", o.report}})
+    for (const auto& [flag, path] :
+         {std::pair{"--out", o.out}, {"--landmarks-out", o.landmarksOut}, {"--report", o.report}})
         if (!path.empty() && std::filesystem::exists(path) &&
             (std::filesystem::equivalent(path, meshPath) ||
-             (!o.landmarks.empty() && std::filesystem::exists(o.landmarks) && std::filesystem::equivalent(path, o.landmarks))))
+             (!o.landmarks.empty() && std::filesystem::exists(o.landmarks) &&
+              std::filesystem::equivalent(path, o.landmarks))))
             throwUsage(std::string(flag) + " would overwrite an input file");
 
     const face::UvMesh mesh = loadUvMesh(meshPath);
@@ -201,16 +208,20 @@ void addFaceCommand(CLI::App& app, CommandRunner& run) {
     auto* build = cmd->add_subcommand(
         "build", "Build a deformable face from a mesh with (u,v) on the face (OBJ, PLY, VRML, glb/glTF)");
     build->add_option("mesh", o->mesh, "The face or head mesh")->required()->check(CLI::ExistingFile);
-    build->add_option("--landmarks", o->landmarks,
-                      "Landmark file (JSON); landmarks it leaves out are found automatically")
+    build
+        ->add_option("--landmarks", o->landmarks,
+                     "Landmark file (JSON); landmarks it leaves out are found automatically")
         ->check(CLI::ExistingFile);
     build->add_option("--out", o->out, "Project file to write (.vlproj)")->required();
-    build->add_option("--landmarks-out", o->landmarksOut, "Write the landmarks used (edit and pass back with --landmarks)");
-    build->add_option("--report", o->report, "Write a JSON report (landmarks, islands, holes, scale, coverage)");
+    build->add_option("--landmarks-out", o->landmarksOut,
+                      "Write the landmarks used (edit and pass back with --landmarks)");
+    build->add_option("--report", o->report,
+                      "Write a JSON report (landmarks, islands, holes, scale, coverage)");
     build->add_option("--name", o->name, "Name of the face (default: the mesh file's name)");
     build->add_option("--grid", o->grid, "Samples per side of the base geometry image (17..2049)")
         ->capture_default_str();
-    build->add_option("--resolution", o->resolution, "Grid cells across the face domain for the viseme meshes")
+    build
+        ->add_option("--resolution", o->resolution, "Grid cells across the face domain for the viseme meshes")
         ->capture_default_str();
     build->add_flag("--ignore-layout", o->ignoreLayout,
                     "Find landmarks from the geometry even on a known layout (to compare the two)");

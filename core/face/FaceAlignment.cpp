@@ -84,7 +84,8 @@ FaceAlignment::FaceAlignment(const UvMesh& mesh, const UvLocator& locator, const
         to.push_back(landmarks[l].uv);
     }
     const Affine affine = fitAffine(from, to);
-    const Vec2 gap = affine.inverseLinear(landmarks[Landmark::UpperLipMid].uv - landmarks[Landmark::LowerLipMid].uv);
+    const Vec2 gap =
+        affine.inverseLinear(landmarks[Landmark::UpperLipMid].uv - landmarks[Landmark::LowerLipMid].uv);
     closedGap_ = std::clamp(std::abs(gap[1]) / (2.0 * kMouthHalfHeight), 0.02, 1.0);
 
     // Control points: canonical positions after the squeeze. Lip pairs whose targets (nearly)
@@ -97,8 +98,8 @@ FaceAlignment::FaceAlignment(const UvMesh& mesh, const UvLocator& locator, const
         return Vec2(c[0], squeezedMouthV(c[0], c[1], closedGap_));
     };
     const std::pair<Landmark, Landmark> lipPairs[] = {{Landmark::UpperLipMid, Landmark::LowerLipMid},
-                                                       {Landmark::UpperLipRight, Landmark::LowerLipRight},
-                                                       {Landmark::UpperLipLeft, Landmark::LowerLipLeft}};
+                                                      {Landmark::UpperLipRight, Landmark::LowerLipRight},
+                                                      {Landmark::UpperLipLeft, Landmark::LowerLipLeft}};
     std::vector<bool> used(kLandmarkCount, false);
     for (const auto& [upper, lower] : lipPairs) {
         if (!landmarks[upper].found() || !landmarks[lower].found()) continue;
@@ -164,7 +165,9 @@ void FaceAlignment::measureCoverage(const UvLocator& locator) {
     // Uncovered components that do not reach the grid's border are holes (4-connected flood fill).
     std::vector<int> label(cells, -2); // -2 unvisited
     std::deque<std::size_t> queue;
-    const auto centreOf = [&](Landmark a, Landmark b) { return (canonicalPosition(a) + canonicalPosition(b)) * 0.5; };
+    const auto centreOf = [&](Landmark a, Landmark b) {
+        return (canonicalPosition(a) + canonicalPosition(b)) * 0.5;
+    };
     const Vec2 eyeRight = centreOf(Landmark::EyeOuterRight, Landmark::EyeInnerRight);
     const Vec2 eyeLeft = centreOf(Landmark::EyeOuterLeft, Landmark::EyeInnerLeft);
     for (std::size_t s = 0; s < cells; ++s) {
@@ -233,7 +236,8 @@ void FaceAlignment::findBoundary() {
     // mesh between two sampled directions.
     boundary_.assign(kAngles, 1e9);
     for (int a = 0; a < kAngles; ++a)
-        for (int k = -4; k <= 4; ++k) boundary_[a] = std::min(boundary_[a], radius[(a + k + kAngles) % kAngles]);
+        for (int k = -4; k <= 4; ++k)
+            boundary_[a] = std::min(boundary_[a], radius[(a + k + kAngles) % kAngles]);
 }
 
 Vec2 FaceAlignment::retract(const Vec2& p) const {

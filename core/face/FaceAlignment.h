@@ -22,8 +22,8 @@ namespace vl::face {
 
 struct CoverageHole {
     std::size_t cells = 0;
-    Vec2 centre{0, 0};  // canonical position of its centroid
-    std::string role;   // "eye_right", "eye_left", "mouth", or "other"
+    Vec2 centre{0, 0}; // canonical position of its centroid
+    std::string role;  // "eye_right", "eye_left", "mouth", or "other"
 };
 
 class FaceAlignment {

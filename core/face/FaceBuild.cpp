@@ -49,8 +49,12 @@ class UvOccupancy {
 
   private:
     static constexpr int kSize = 256;
-    int cellX(const Vec2& p) const { return static_cast<int>((p[0] - lo_[0]) / std::max(hi_[0] - lo_[0], 1e-12) * kSize); }
-    int cellY(const Vec2& p) const { return static_cast<int>((p[1] - lo_[1]) / std::max(hi_[1] - lo_[1], 1e-12) * kSize); }
+    int cellX(const Vec2& p) const {
+        return static_cast<int>((p[0] - lo_[0]) / std::max(hi_[0] - lo_[0], 1e-12) * kSize);
+    }
+    int cellY(const Vec2& p) const {
+        return static_cast<int>((p[1] - lo_[1]) / std::max(hi_[1] - lo_[1], 1e-12) * kSize);
+    }
     void mark(const Vec2& p) {
         const int i = std::clamp(cellX(p), 0, kSize - 1), j = std::clamp(cellY(p), 0, kSize - 1);
         cells_[static_cast<std::size_t>(j) * kSize + i] = true;
@@ -220,7 +224,8 @@ DeformationCascade retargetedCascade(const SampledField& base, const FaceFrame& 
 
 BuiltFace buildFace(const UvMesh& mesh, const FaceLandmarks& landmarks, const FaceBuildOptions& options) {
     if (options.gridSize < 17 || options.gridSize > 2049)
-        throwInputError("face build", "grid size " + std::to_string(options.gridSize) + " is outside 17..2049");
+        throwInputError("face build",
+                        "grid size " + std::to_string(options.gridSize) + " is outside 17..2049");
     BuiltFace built;
     built.landmarks = landmarks;
     FaceBuildReport& report = built.report;
@@ -277,7 +282,8 @@ BuiltFace buildFace(const UvMesh& mesh, const FaceLandmarks& landmarks, const Fa
         outside += st == SampleState::Outside;
     }
     if (report.filledSamples == samples.size())
-        throwInputError("face build", "the aligned face domain does not land on the mesh: check the landmarks");
+        throwInputError("face build",
+                        "the aligned face domain does not land on the mesh: check the landmarks");
     fillUnknown(samples, state, n);
 
     // Eye openings become sockets: pushed back behind where the eyeballs sit, deepest in the middle.
@@ -285,8 +291,10 @@ BuiltFace buildFace(const UvMesh& mesh, const FaceLandmarks& landmarks, const Fa
         const auto& role = report.holes[h].role;
         if (role != "eye_right" && role != "eye_left") continue;
         const bool right = role == "eye_right";
-        const Vec3 outer = positions[static_cast<std::size_t>(right ? Landmark::EyeOuterRight : Landmark::EyeOuterLeft)];
-        const Vec3 inner = positions[static_cast<std::size_t>(right ? Landmark::EyeInnerRight : Landmark::EyeInnerLeft)];
+        const Vec3 outer =
+            positions[static_cast<std::size_t>(right ? Landmark::EyeOuterRight : Landmark::EyeOuterLeft)];
+        const Vec3 inner =
+            positions[static_cast<std::size_t>(right ? Landmark::EyeInnerRight : Landmark::EyeInnerLeft)];
         const double depth = 0.45 * (outer - inner).norm();
         std::vector<bool> region(samples.size());
         for (std::size_t s = 0; s < samples.size(); ++s) region[s] = hole[s] == static_cast<int>(h) + 1;
@@ -306,14 +314,17 @@ BuiltFace buildFace(const UvMesh& mesh, const FaceLandmarks& landmarks, const Fa
     base.width = base.height = n;
     base.samples.reserve(samples.size());
     for (const auto& p : samples)
-        base.samples.emplace_back(roundTo(p[0], inverseStep), roundTo(p[1], inverseStep), roundTo(p[2], inverseStep));
+        base.samples.emplace_back(roundTo(p[0], inverseStep), roundTo(p[1], inverseStep),
+                                  roundTo(p[2], inverseStep));
     built.cascade = retargetedCascade(base, report.frame, report.scale, options.name);
 
     if (report.foldedSamples > 0)
-        report.warnings.push_back("the landmarks fold the alignment at " + std::to_string(report.foldedSamples) +
+        report.warnings.push_back("the landmarks fold the alignment at " +
+                                  std::to_string(report.foldedSamples) +
                                   " of 4225 test points: check them (left and right, upper and lower)");
     if (outside > samples.size() / 50)
-        report.warnings.push_back(std::to_string(outside) + " geometry samples fell off the mesh and were filled in");
+        report.warnings.push_back(std::to_string(outside) +
+                                  " geometry samples fell off the mesh and were filled in");
     if (report.domainCoverage < 0.35)
         report.warnings.push_back("the mesh covers only " + std::to_string(int(report.domainCoverage * 100)) +
                                   "% of the face domain: the outer face is stretched over what there is");

@@ -13,11 +13,13 @@ namespace vl::face {
 struct FaceFrame {
     Vec3 origin{0, 0, 0}; // middle of the mouth (between its corners)
     Vec3 right{1, 0, 0}, up{0, 1, 0}, forward{0, 0, 1};
-    double eyeDistance = 0.0;   // between the eye centres (mid-points of the corners)
+    double eyeDistance = 0.0;      // between the eye centres (mid-points of the corners)
     double eyeMouthDistance = 0.0; // from the eyes' middle to the mouth's middle
 
     // Rotation into this frame: the bundled face's x, y, z axes become right, up, forward.
-    Vec3 rotate(const Vec3& bundled) const { return right * bundled[0] + up * bundled[1] + forward * bundled[2]; }
+    Vec3 rotate(const Vec3& bundled) const {
+        return right * bundled[0] + up * bundled[1] + forward * bundled[2];
+    }
     // This face's size relative to `other` (1 for the same size; 0.01 for a face in metres against
     // one in centimetres).
     double scaleTo(const FaceFrame& other) const;

@@ -17,10 +17,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
-#include <map>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
+#include <map>
 #include <optional>
 #include <set>
 
@@ -98,11 +98,13 @@ double eyeScore(const Loop& r, const Loop& l, double size) {
     if (r.centre[0] >= 0.0 || l.centre[0] <= 0.0) return 0.0;
     for (const Loop* e : {&r, &l}) {
         if (e->width() < 0.3 * size || e->width() > 2.5 * size) return 0.0;
-        if (e->centre[1] < -0.5 * size || e->centre[1] > 3.0 * size) return 0.0; // about level with the nose or above
+        if (e->centre[1] < -0.5 * size || e->centre[1] > 3.0 * size)
+            return 0.0; // about level with the nose or above
         if (e->height() > 1.5 * e->width()) return 0.0;
     }
-    const double symmetric = std::max(0.0, 1.0 - (std::abs(r.centre[0] + l.centre[0]) + std::abs(r.centre[1] - l.centre[1])) /
-                                                     (0.5 * (r.width() + l.width())));
+    const double symmetric =
+        std::max(0.0, 1.0 - (std::abs(r.centre[0] + l.centre[0]) + std::abs(r.centre[1] - l.centre[1])) /
+                                (0.5 * (r.width() + l.width())));
     const double similar = std::min(r.width(), l.width()) / std::max(r.width(), l.width());
     return symmetric * similar;
 }
@@ -117,7 +119,8 @@ struct Surfaces {
 FoundLandmark fromPoint(const UvMesh& mesh, const Surfaces& where, const Vec3& p, double confidence,
                         std::string method, LandmarkSource source = LandmarkSource::Geometry) {
     UvHit hit = closestSurfacePoint(mesh, p, where.island);
-    if (!hit.found || (hit.position - p).norm() > where.tolerance) hit = closestSurfacePoint(mesh, p, where.region);
+    if (!hit.found || (hit.position - p).norm() > where.tolerance)
+        hit = closestSurfacePoint(mesh, p, where.region);
     FoundLandmark found;
     if (!hit.found) return found;
     found.source = source;
@@ -141,7 +144,8 @@ class Section {
     }
     // The groove (a local minimum of the front depth between two higher points) nearest `near` on the
     // section x = at between heights yHigh > yLow, if one is at least 0.02 * size deep.
-    std::optional<Vec3> groove(double at, double yHigh, double yLow, double size, std::optional<double> near = {}) const {
+    std::optional<Vec3> groove(double at, double yHigh, double yLow, double size,
+                               std::optional<double> near = {}) const {
         constexpr int kBins = 48;
         const double step = (yHigh - yLow) / kBins;
         std::vector<double> front(kBins, std::numeric_limits<double>::quiet_NaN());
@@ -171,7 +175,8 @@ class Section {
             front[b] = front[l] + (front[r] - front[l]) * (b - l) / double(r - l);
         }
         if (std::getenv("VL_DEBUG") && !near) {
-            for (int b = kBins - 1; b >= 0; --b) std::fprintf(stderr, "%.2f:%.2f ", yLow + (b + 0.5) * step, front[b]);
+            for (int b = kBins - 1; b >= 0; --b)
+                std::fprintf(stderr, "%.2f:%.2f ", yLow + (b + 0.5) * step, front[b]);
             std::fprintf(stderr, "\n");
         }
         std::optional<Vec3> best;
@@ -207,15 +212,17 @@ class Section {
 // Eyes estimated from proportions move to the eye sockets: on each side, the most recessed point of
 // the surface near the estimate (the surface below the mean of its surroundings); both sides move
 // by the mirrored average, keeping the pair symmetric.
-void refineEstimatedEyes(const WeldedSurface& s, const std::vector<std::uint32_t>& outside, const Vec3& centroid,
-                         const Frame& frame, const UvMesh& mesh, const Surfaces& where, FaceLandmarks& lm) {
+void refineEstimatedEyes(const WeldedSurface& s, const std::vector<std::uint32_t>& outside,
+                         const Vec3& centroid, const Frame& frame, const UvMesh& mesh, const Surfaces& where,
+                         FaceLandmarks& lm) {
     const Landmark corners[2][2] = {{Landmark::EyeOuterRight, Landmark::EyeInnerRight},
                                     {Landmark::EyeOuterLeft, Landmark::EyeInnerLeft}};
     for (const auto& side : corners)
         for (const auto l : side)
             if (lm[l].source != LandmarkSource::Estimate) return;
     Vec3 centre[2];
-    for (int k = 0; k < 2; ++k) centre[k] = frame.local((lm[corners[k][0]].position + lm[corners[k][1]].position) * 0.5);
+    for (int k = 0; k < 2; ++k)
+        centre[k] = frame.local((lm[corners[k][0]].position + lm[corners[k][1]].position) * 0.5);
     const double eyeDistance = (centre[1] - centre[0]).norm();
     if (eyeDistance <= 0.0) return;
     const PointIndex index(s.points, outside, eyeDistance / 20.0);
@@ -259,9 +266,10 @@ void refineEstimatedEyes(const WeldedSurface& s, const std::vector<std::uint32_t
             Vec3 local = frame.local(lm[l].position);
             local[0] += k == 0 ? -shift[0] : shift[0];
             local[1] += shift[1];
-            lm[l] = fromPoint(mesh, where, frame.world(local), 0.35,
-                              "eye socket (the most recessed point near the estimate) with the face's proportions",
-                              LandmarkSource::Estimate);
+            lm[l] = fromPoint(
+                mesh, where, frame.world(local), 0.35,
+                "eye socket (the most recessed point near the estimate) with the face's proportions",
+                LandmarkSource::Estimate);
         }
 }
 
@@ -278,7 +286,8 @@ GeometryFinding findLandmarksFromGeometry(const UvMesh& mesh) {
     std::vector<double> islandArea(mesh.islandCount, 0.0), islandSeen(mesh.islandCount, 0.0);
     for (std::size_t t = 0; t < s.triangles.size(); ++t) {
         const auto& w = s.triangles[t];
-        const double a = 0.5 * OpenMesh::cross(s.points[w[1]] - s.points[w[0]], s.points[w[2]] - s.points[w[0]]).norm();
+        const double a =
+            0.5 * OpenMesh::cross(s.points[w[1]] - s.points[w[0]], s.points[w[2]] - s.points[w[0]]).norm();
         islandArea[mesh.island[t]] += a;
         if (visible[t]) islandSeen[mesh.island[t]] += a;
     }
@@ -301,8 +310,8 @@ GeometryFinding findLandmarksFromGeometry(const UvMesh& mesh) {
 
     const SymmetryPlane plane = findSymmetryPlane(s, outside);
     const double symmetryConfidence = std::clamp(1.0 - plane.error / 0.02, 0.0, 1.0);
-    out.notes.push_back("geometry: symmetry plane found, mirror mismatch " + std::to_string(plane.error * 100.0).substr(0, 4) +
-                        "% of the mesh size");
+    out.notes.push_back("geometry: symmetry plane found, mirror mismatch " +
+                        std::to_string(plane.error * 100.0).substr(0, 4) + "% of the mesh size");
 
     // Boundary points of the outside surface (protrusion is not measured across a cut).
     std::vector<Triangle> outsideTriangles;
@@ -436,7 +445,8 @@ GeometryFinding findLandmarksFromGeometry(const UvMesh& mesh) {
         }
         const auto own = [&](std::size_t k) { return k < islandLoops ? 1.5 : 1.0; };
         for (std::size_t k = 0; k < ch.loops.size(); ++k) {
-            if (ch.loops[k].local.size() < 6 || ch.loops[k].perimeter >= longest) continue; // the outer border
+            if (ch.loops[k].local.size() < 6 || ch.loops[k].perimeter >= longest)
+                continue; // the outer border
             const double m = mouthScore(ch.loops[k], size) * own(k);
             if (m > ch.mouth.score) ch.mouth = {m, k};
             for (std::size_t j = 0; j < ch.loops.size(); ++j) {
@@ -445,18 +455,20 @@ GeometryFinding findLandmarksFromGeometry(const UvMesh& mesh) {
                 if (e > ch.eyes.score) ch.eyes = {e, k, j};
             }
         }
-        ch.total = ch.mouth.score + 2.0 * ch.eyes.score + (c == 0 ? 1.0 : -1.0) * (profileCue > 0 ? 0.3 : -0.3);
+        ch.total =
+            ch.mouth.score + 2.0 * ch.eyes.score + (c == 0 ? 1.0 : -1.0) * (profileCue > 0 ? 0.3 : -0.3);
     }
     const Choice& best = choices[0].total >= choices[1].total ? choices[0] : choices[1];
     if (std::getenv("VL_DEBUG"))
-        std::fprintf(stderr, "profileCue %g totals %g %g up %g %g %g fwd %g %g %g size %g\n", profileCue, choices[0].total,
-                     choices[1].total, best.frame.up[0], best.frame.up[1], best.frame.up[2], forward[0], forward[1],
-                     forward[2], size);
+        std::fprintf(stderr, "profileCue %g totals %g %g up %g %g %g fwd %g %g %g size %g\n", profileCue,
+                     choices[0].total, choices[1].total, best.frame.up[0], best.frame.up[1], best.frame.up[2],
+                     forward[0], forward[1], forward[2], size);
     const Frame& frame = best.frame;
     const double orientationConfidence =
-        std::clamp(std::abs(choices[0].total - choices[1].total) / 1.0, 0.3, 1.0) * (0.5 + 0.5 * symmetryConfidence);
-    out.notes.push_back("geometry: nose tip at (" + std::to_string(noseTip[0]) + ", " + std::to_string(noseTip[1]) +
-                        ", " + std::to_string(noseTip[2]) + ")");
+        std::clamp(std::abs(choices[0].total - choices[1].total) / 1.0, 0.3, 1.0) *
+        (0.5 + 0.5 * symmetryConfidence);
+    out.notes.push_back("geometry: nose tip at (" + std::to_string(noseTip[0]) + ", " +
+                        std::to_string(noseTip[1]) + ", " + std::to_string(noseTip[2]) + ")");
 
     Surfaces regionMask;
     regionMask.region.assign(mesh.triangles.size(), false);
@@ -467,9 +479,9 @@ GeometryFinding findLandmarksFromGeometry(const UvMesh& mesh) {
     }
     regionMask.tolerance = 0.05 * size;
     FaceLandmarks& lm = out.landmarks;
-    lm[Landmark::NoseTip] =
-        fromPoint(mesh, regionMask, noseTip, std::min(0.95, 0.5 + bestScore) * (0.6 + 0.4 * symmetryConfidence),
-                  "most prominent point on the symmetry plane");
+    lm[Landmark::NoseTip] = fromPoint(mesh, regionMask, noseTip,
+                                      std::min(0.95, 0.5 + bestScore) * (0.6 + 0.4 * symmetryConfidence),
+                                      "most prominent point on the symmetry plane");
 
     if (best.mouth.score > 0.0) {
         const Loop& m = best.loops[best.mouth.loop];
@@ -481,15 +493,20 @@ GeometryFinding findLandmarksFromGeometry(const UvMesh& mesh) {
             return e;
         };
         const Vec3 cr = extreme(true), cl = extreme(false);
-        const std::string what = "mouth opening (boundary loop of " + std::to_string(m.local.size()) + " vertices)";
-        lm[Landmark::MouthCornerRight] = fromPoint(mesh, regionMask, frame.world(cr), conf, what + ", right end");
-        lm[Landmark::MouthCornerLeft] = fromPoint(mesh, regionMask, frame.world(cl), conf, what + ", left end");
+        const std::string what =
+            "mouth opening (boundary loop of " + std::to_string(m.local.size()) + " vertices)";
+        lm[Landmark::MouthCornerRight] =
+            fromPoint(mesh, regionMask, frame.world(cr), conf, what + ", right end");
+        lm[Landmark::MouthCornerLeft] =
+            fromPoint(mesh, regionMask, frame.world(cl), conf, what + ", left end");
         const auto upperLower = [&](double x, Landmark upper, Landmark lower, const char* where) {
             auto cuts = crossings(m, x);
             if (cuts.size() < 2) return;
             std::sort(cuts.begin(), cuts.end(), [](const Vec3& a, const Vec3& b) { return a[1] < b[1]; });
-            lm[upper] = fromPoint(mesh, regionMask, frame.world(cuts.back()), conf, what + ", upper lip " + where);
-            lm[lower] = fromPoint(mesh, regionMask, frame.world(cuts.front()), conf, what + ", lower lip " + where);
+            lm[upper] =
+                fromPoint(mesh, regionMask, frame.world(cuts.back()), conf, what + ", upper lip " + where);
+            lm[lower] =
+                fromPoint(mesh, regionMask, frame.world(cuts.front()), conf, what + ", lower lip " + where);
         };
         const double middle = 0.5 * (cr[0] + cl[0]);
         upperLower(middle, Landmark::UpperLipMid, Landmark::LowerLipMid, "middle");
@@ -505,8 +522,9 @@ GeometryFinding findLandmarksFromGeometry(const UvMesh& mesh) {
                 if (std::abs(p[0]) < std::abs(inner[0])) inner = p;
                 if (std::abs(p[0]) > std::abs(outer[0])) outer = p;
             }
-            const std::string what = std::string(right ? "right" : "left") + " eye opening (boundary loop of " +
-                                     std::to_string(e.local.size()) + " vertices)";
+            const std::string what = std::string(right ? "right" : "left") +
+                                     " eye opening (boundary loop of " + std::to_string(e.local.size()) +
+                                     " vertices)";
             lm[right ? Landmark::EyeInnerRight : Landmark::EyeInnerLeft] =
                 fromPoint(mesh, regionMask, frame.world(inner), conf, what + ", inner end");
             lm[right ? Landmark::EyeOuterRight : Landmark::EyeOuterLeft] =
@@ -523,7 +541,8 @@ GeometryFinding findLandmarksFromGeometry(const UvMesh& mesh) {
             const auto follow = [&](double sign) {
                 Vec3 last = *groove;
                 for (double x = 0.1 * size; x < 2.5 * size; x += 0.08 * size) {
-                    const auto g = section.groove(sign * x, last[1] + 0.3 * size, last[1] - 0.3 * size, size, last[1]);
+                    const auto g =
+                        section.groove(sign * x, last[1] + 0.3 * size, last[1] - 0.3 * size, size, last[1]);
                     if (!g) break;
                     last = *g;
                 }
@@ -532,9 +551,12 @@ GeometryFinding findLandmarksFromGeometry(const UvMesh& mesh) {
             const Vec3 cr = follow(-1.0), cl = follow(1.0);
             const double conf = 0.5 * orientationConfidence;
             const std::string what = "groove between the lips (closed mouth)";
-            lm[Landmark::MouthCornerRight] = fromPoint(mesh, regionMask, frame.world(cr), conf, what + ", right end");
-            lm[Landmark::MouthCornerLeft] = fromPoint(mesh, regionMask, frame.world(cl), conf, what + ", left end");
-            lm[Landmark::UpperLipMid] = fromPoint(mesh, regionMask, frame.world(*groove), conf, what + ", middle");
+            lm[Landmark::MouthCornerRight] =
+                fromPoint(mesh, regionMask, frame.world(cr), conf, what + ", right end");
+            lm[Landmark::MouthCornerLeft] =
+                fromPoint(mesh, regionMask, frame.world(cl), conf, what + ", left end");
+            lm[Landmark::UpperLipMid] =
+                fromPoint(mesh, regionMask, frame.world(*groove), conf, what + ", middle");
             lm[Landmark::LowerLipMid] = lm[Landmark::UpperLipMid];
             out.notes.push_back("geometry: no mouth opening; the lips' groove followed sideways");
         }
@@ -545,11 +567,14 @@ GeometryFinding findLandmarksFromGeometry(const UvMesh& mesh) {
     static const auto bundledPositions = baseLandmarkPositions(makeBundledFace());
     const FaceFrame& bundled = bundledFaceFrame();
     const auto bundledLocal = [&](Landmark l) {
-        const Vec3 d = bundledPositions[static_cast<std::size_t>(l)] - bundledPositions[static_cast<std::size_t>(Landmark::NoseTip)];
-        return Vec3(OpenMesh::dot(d, bundled.right), OpenMesh::dot(d, bundled.up), OpenMesh::dot(d, bundled.forward));
+        const Vec3 d = bundledPositions[static_cast<std::size_t>(l)] -
+                       bundledPositions[static_cast<std::size_t>(Landmark::NoseTip)];
+        return Vec3(OpenMesh::dot(d, bundled.right), OpenMesh::dot(d, bundled.up),
+                    OpenMesh::dot(d, bundled.forward));
     };
     const auto middle = [&](Landmark a, Landmark b, bool user) {
-        return user ? (frame.local(lm[a].position) + frame.local(lm[b].position)) * 0.5 : (bundledLocal(a) + bundledLocal(b)) * 0.5;
+        return user ? (frame.local(lm[a].position) + frame.local(lm[b].position)) * 0.5
+                    : (bundledLocal(a) + bundledLocal(b)) * 0.5;
     };
     double scale = 0.0;
     if (lm[Landmark::MouthCornerRight].found() && lm[Landmark::MouthCornerLeft].found())
@@ -562,7 +587,8 @@ GeometryFinding findLandmarksFromGeometry(const UvMesh& mesh) {
         for (const auto l : allLandmarks()) {
             if (lm[l].found() || !isRequired(l)) continue; // optional lip points only from an opening
             const Vec3 guess = frame.world(bundledLocal(l) * scale);
-            lm[l] = fromPoint(mesh, regionMask, guess, 0.25, "estimated from the face's proportions", LandmarkSource::Estimate);
+            lm[l] = fromPoint(mesh, regionMask, guess, 0.25, "estimated from the face's proportions",
+                              LandmarkSource::Estimate);
         }
     refineEstimatedEyes(s, outside, centroid, frame, mesh, regionMask, lm);
     return out;

@@ -15,7 +15,8 @@ LandmarkSuggestion suggestLandmarks(const UvMesh& mesh, const FaceLandmarks& giv
             if (!suggestion.landmarks[l].found()) suggestion.landmarks[l] = layout[l];
     }
     bool missing = false;
-    for (const auto l : allLandmarks()) missing = missing || (!suggestion.landmarks[l].found() && isRequired(l));
+    for (const auto l : allLandmarks())
+        missing = missing || (!suggestion.landmarks[l].found() && isRequired(l));
     if (!missing) return suggestion;
     GeometryFinding geometry = findLandmarksFromGeometry(mesh);
     suggestion.notes.insert(suggestion.notes.end(), geometry.notes.begin(), geometry.notes.end());

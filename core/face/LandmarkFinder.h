@@ -20,11 +20,13 @@ FaceLandmarks mediaPipeLandmarks(const UvMesh& mesh);
 struct LandmarkSuggestion {
     FaceLandmarks landmarks;
     std::string layout; // "mediapipe" when a known layout was recognised, else empty
-    std::vector<std::string> notes; // what the finder saw (e.g. "mouth opening: boundary loop of 74 vertices")
+    std::vector<std::string>
+        notes; // what the finder saw (e.g. "mouth opening: boundary loop of 74 vertices")
 };
 
 // Keeps every landmark `given` has and finds the others; `useLayouts` false skips the known layouts
 // (to check the geometry finder on a mesh whose layout gives the answer).
-LandmarkSuggestion suggestLandmarks(const UvMesh& mesh, const FaceLandmarks& given = {}, bool useLayouts = true);
+LandmarkSuggestion suggestLandmarks(const UvMesh& mesh, const FaceLandmarks& given = {},
+                                    bool useLayouts = true);
 
 } // namespace vl::face

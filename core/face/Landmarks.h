@@ -54,8 +54,8 @@ std::string_view sourceName(LandmarkSource source); // "missing", "file", "layou
 
 struct FoundLandmark {
     LandmarkSource source = LandmarkSource::Missing;
-    Vec2 uv{0, 0};         // in the mesh's texture space
-    Vec3 position{0, 0, 0}; // on the mesh
+    Vec2 uv{0, 0};           // in the mesh's texture space
+    Vec3 position{0, 0, 0};  // on the mesh
     double confidence = 0.0; // 0..1: how sure the finder is (1 for landmarks the user gave)
     std::string method;      // how it was found, e.g. "MediaPipe canonical face, vertex 13"
     int island = -1;         // UV island of the mesh it lies on (-1: not resolved yet)

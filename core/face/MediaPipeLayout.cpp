@@ -25,9 +25,9 @@ constexpr LayoutVertex kVertices[] = {
     {Landmark::LowerLipLeft, 402}};
 
 // One triangle of the canonical topology at each landmark vertex (0-based).
-constexpr std::uint32_t kSignature[][3] = {{78, 95, 191},   {308, 415, 324}, {12, 13, 268},  {15, 316, 14},
-                                           {246, 33, 7},    {173, 155, 133}, {382, 398, 362}, {263, 466, 249},
-                                           {4, 275, 5},     {41, 42, 81},    {271, 311, 272}, {178, 88, 179},
+constexpr std::uint32_t kSignature[][3] = {{78, 95, 191},  {308, 415, 324}, {12, 13, 268},   {15, 316, 14},
+                                           {246, 33, 7},   {173, 155, 133}, {382, 398, 362}, {263, 466, 249},
+                                           {4, 275, 5},    {41, 42, 81},    {271, 311, 272}, {178, 88, 179},
                                            {402, 403, 318}};
 
 } // namespace

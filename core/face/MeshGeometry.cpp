@@ -21,12 +21,15 @@ std::vector<std::uint32_t> weldedVertexIds(std::span<const Vec3> positions) {
         }
     };
     struct Equal {
-        bool operator()(const Vec3& a, const Vec3& b) const { return a[0] == b[0] && a[1] == b[1] && a[2] == b[2]; }
+        bool operator()(const Vec3& a, const Vec3& b) const {
+            return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
+        }
     };
     std::unordered_map<Vec3, std::uint32_t, Hash, Equal> first;
     first.reserve(positions.size());
     std::vector<std::uint32_t> ids(positions.size());
-    for (std::uint32_t i = 0; i < positions.size(); ++i) ids[i] = first.emplace(positions[i], i).first->second;
+    for (std::uint32_t i = 0; i < positions.size(); ++i)
+        ids[i] = first.emplace(positions[i], i).first->second;
     return ids;
 }
 

@@ -56,12 +56,14 @@ std::vector<bool> visibleTriangles(const WeldedSurface& s, int directions, int r
         const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
         const double phi = k * M_PI * (3.0 - std::sqrt(5.0));
         const Vec3 d(r * std::cos(phi), r * std::sin(phi), z);
-        const Vec3 a = (std::abs(d[0]) < 0.9 ? OpenMesh::cross(d, Vec3(1, 0, 0)) : OpenMesh::cross(d, Vec3(0, 1, 0))).normalized();
+        const Vec3 a =
+            (std::abs(d[0]) < 0.9 ? OpenMesh::cross(d, Vec3(1, 0, 0)) : OpenMesh::cross(d, Vec3(0, 1, 0)))
+                .normalized();
         const Vec3 b = OpenMesh::cross(d, a);
         for (std::size_t v = 0; v < s.points.size(); ++v) {
             const Vec3 q = s.points[v] - centre;
-            projected[v] = Vec3((OpenMesh::dot(q, a) + radius) / pixel, (OpenMesh::dot(q, b) + radius) / pixel,
-                                OpenMesh::dot(q, d));
+            projected[v] = Vec3((OpenMesh::dot(q, a) + radius) / pixel,
+                                (OpenMesh::dot(q, b) + radius) / pixel, OpenMesh::dot(q, d));
         }
         std::fill(depth.begin(), depth.end(), -std::numeric_limits<double>::max());
         std::fill(id.begin(), id.end(), -1);
@@ -70,9 +72,11 @@ std::vector<bool> visibleTriangles(const WeldedSurface& s, int directions, int r
                        &p2 = projected[s.triangles[t][2]];
             const double area = (p1[0] - p0[0]) * (p2[1] - p0[1]) - (p2[0] - p0[0]) * (p1[1] - p0[1]);
             const int x0 = std::max(0, static_cast<int>(std::floor(std::min({p0[0], p1[0], p2[0]}))));
-            const int x1 = std::min(resolution - 1, static_cast<int>(std::floor(std::max({p0[0], p1[0], p2[0]}))));
+            const int x1 =
+                std::min(resolution - 1, static_cast<int>(std::floor(std::max({p0[0], p1[0], p2[0]}))));
             const int y0 = std::max(0, static_cast<int>(std::floor(std::min({p0[1], p1[1], p2[1]}))));
-            const int y1 = std::min(resolution - 1, static_cast<int>(std::floor(std::max({p0[1], p1[1], p2[1]}))));
+            const int y1 =
+                std::min(resolution - 1, static_cast<int>(std::floor(std::max({p0[1], p1[1], p2[1]}))));
             // Triangles smaller than a pixel still claim the pixel of their centroid.
             const bool tiny = std::abs(area) < 1e-12 || (x1 - x0 < 1 && y1 - y0 < 1);
             for (int y = y0; y <= y1; ++y)
@@ -220,7 +224,8 @@ std::array<Vec3, 3> principalAxes(const std::vector<Vec3>& pts, const Vec3& mean
                     v[k][q] = sn * a + cs * b;
                 }
             }
-    return {Vec3(v[0][0], v[1][0], v[2][0]), Vec3(v[0][1], v[1][1], v[2][1]), Vec3(v[0][2], v[1][2], v[2][2])};
+    return {Vec3(v[0][0], v[1][0], v[2][0]), Vec3(v[0][1], v[1][1], v[2][1]),
+            Vec3(v[0][2], v[1][2], v[2][2])};
 }
 
 double median(std::vector<double> values) {
@@ -284,7 +289,8 @@ SymmetryPlane findSymmetryPlane(const WeldedSurface& s, const std::vector<std::u
         mismatch.clear();
         for (const auto& p : pts) {
             const auto q = index.nearest(plane.reflect(p), reach);
-            mismatch.push_back(q < 0 ? reach : (s.points[static_cast<std::size_t>(q)] - plane.reflect(p)).norm());
+            mismatch.push_back(q < 0 ? reach
+                                     : (s.points[static_cast<std::size_t>(q)] - plane.reflect(p)).norm());
         }
         plane.error = median(mismatch) / size;
         if (plane.error < best.error) best = plane;

@@ -75,7 +75,8 @@ ThinPlateSpline::ThinPlateSpline(std::span<const Vec2> controls, std::span<const
         std::vector<double> b(size, 0.0);
         for (std::size_t i = 0; i < n; ++i) b[i] = targets[i][dim];
         if (!solveLinearSystem(a, b, size))
-            throwInputError("thin-plate spline", "the control points do not determine a map (coincident points?)");
+            throwInputError("thin-plate spline",
+                            "the control points do not determine a map (coincident points?)");
         for (std::size_t i = 0; i < n; ++i) weights_[i][dim] = b[i];
         offset_[dim] = b[n];
         linearX_[dim] = b[n + 1];
@@ -89,7 +90,8 @@ Vec2 ThinPlateSpline::affine(const Vec2& x) const {
 
 Vec2 ThinPlateSpline::operator()(const Vec2& x) const {
     Vec2 f = affine(x);
-    for (std::size_t i = 0; i < controls_.size(); ++i) f += weights_[i] * kernel((x - controls_[i]).sqrnorm());
+    for (std::size_t i = 0; i < controls_.size(); ++i)
+        f += weights_[i] * kernel((x - controls_[i]).sqrnorm());
     return f;
 }
 

@@ -45,11 +45,13 @@ void labelIslands(UvMesh& m) {
         return Vec2(std::numeric_limits<double>::quiet_NaN(), 0.0);
     };
     for (const auto& [key, list] : edges) {
-        const auto a = static_cast<std::uint32_t>(key >> 32), b = static_cast<std::uint32_t>(key & 0xFFFFFFFFu);
+        const auto a = static_cast<std::uint32_t>(key >> 32),
+                   b = static_cast<std::uint32_t>(key & 0xFFFFFFFFu);
         for (std::size_t i = 0; i < list.size(); ++i)
             for (std::size_t j = i + 1; j < list.size(); ++j) {
                 const std::uint32_t s = list[i].first, t = list[j].first;
-                if ((uvAt(s, a) - uvAt(t, a)).sqrnorm() < 1e-14 && (uvAt(s, b) - uvAt(t, b)).sqrnorm() < 1e-14)
+                if ((uvAt(s, a) - uvAt(t, a)).sqrnorm() < 1e-14 &&
+                    (uvAt(s, b) - uvAt(t, b)).sqrnorm() < 1e-14)
                     sets.unite(s, t);
             }
     }
@@ -77,7 +79,8 @@ UvMesh build(const MeshData& mesh, std::span<const Vec2> texCoords, std::span<co
                 throwInputError(source, "triangle " + std::to_string(t) + " has a vertex index out of range");
         bool usable = true;
         for (int k = 0; k < 3; ++k) usable = usable && tex[k] < m.texCoords.size();
-        usable = usable && std::abs(uvCross(m.texCoords[tex[0]], m.texCoords[tex[1]], m.texCoords[tex[2]])) > 1e-20;
+        usable = usable &&
+                 std::abs(uvCross(m.texCoords[tex[0]], m.texCoords[tex[1]], m.texCoords[tex[2]])) > 1e-20;
         if (!usable) {
             ++m.droppedTriangles;
             continue;
@@ -86,8 +89,9 @@ UvMesh build(const MeshData& mesh, std::span<const Vec2> texCoords, std::span<co
         m.texTriangles.push_back(tex);
     }
     if (m.triangles.empty())
-        throwInputError(source, "the mesh has no triangles with texture coordinates (u,v): a face is built by "
-                                "sampling the mesh over its (u,v)");
+        throwInputError(source,
+                        "the mesh has no triangles with texture coordinates (u,v): a face is built by "
+                        "sampling the mesh over its (u,v)");
     labelIslands(m);
     return m;
 }
@@ -154,7 +158,8 @@ double segmentParameter(const Vec2& p, const Vec2& a, const Vec2& b) {
 UvLocator::UvLocator(const UvMesh& mesh, std::span<const std::uint32_t> islands, double tolerance)
     : mesh_(&mesh), priority_(mesh.islandCount, -1), tolerance_(tolerance) {
     for (std::size_t r = 0; r < islands.size(); ++r)
-        if (islands[r] < mesh.islandCount && priority_[islands[r]] < 0) priority_[islands[r]] = static_cast<int>(r);
+        if (islands[r] < mesh.islandCount && priority_[islands[r]] < 0)
+            priority_[islands[r]] = static_cast<int>(r);
     std::vector<std::uint32_t> used;
     Vec2 hi(0, 0);
     double uvArea = 0.0;
@@ -168,12 +173,14 @@ UvLocator::UvLocator(const UvMesh& mesh, std::span<const std::uint32_t> islands,
             hi.maximize(q);
         }
         const auto& tex = mesh.texTriangles[t];
-        uvArea += 0.5 * std::abs(uvCross(mesh.texCoords[tex[0]], mesh.texCoords[tex[1]], mesh.texCoords[tex[2]]));
+        uvArea +=
+            0.5 * std::abs(uvCross(mesh.texCoords[tex[0]], mesh.texCoords[tex[1]], mesh.texCoords[tex[2]]));
     }
     if (used.empty()) return;
     // About two triangles per bucket, at most 1024 x 1024 buckets.
     const Vec2 extent = hi - lo_;
-    cell_ = std::max({std::sqrt(2.0 * uvArea / double(used.size())), extent[0] / 1024.0, extent[1] / 1024.0, 1e-12});
+    cell_ = std::max(
+        {std::sqrt(2.0 * uvArea / double(used.size())), extent[0] / 1024.0, extent[1] / 1024.0, 1e-12});
     lo_ -= Vec2(tolerance_, tolerance_);
     nx_ = std::max(1, static_cast<int>((extent[0] + 2 * tolerance_) / cell_) + 1);
     ny_ = std::max(1, static_cast<int>((extent[1] + 2 * tolerance_) / cell_) + 1);
@@ -266,7 +273,8 @@ UvHit closestSurfacePoint(const UvMesh& m, const Vec3& p, const std::vector<bool
         if (!allowed.empty() && !allowed[t]) continue;
         const auto& tri = m.triangles[t];
         double w[3];
-        const Vec3 q = closestPointOnTriangle(p, m.positions[tri[0]], m.positions[tri[1]], m.positions[tri[2]], w);
+        const Vec3 q =
+            closestPointOnTriangle(p, m.positions[tri[0]], m.positions[tri[1]], m.positions[tri[2]], w);
         const double d = (q - p).sqrnorm();
         if (d >= bestDistance) continue;
         bestDistance = d;

@@ -44,8 +44,7 @@ MeshData readMeshFile(const std::filesystem::path& path, CornerTexCoords* corner
         switch (format) {
         case MeshFormat::Obj:
             return corners ? parseObj(bytes, source, *corners) : parseObj(bytes, source);
-        case MeshFormat::Ply:
-        {
+        case MeshFormat::Ply: {
             MeshData mesh = parsePly(bytes, source);
             if (corners && mesh.hasUVs()) *corners = {mesh.uvs, mesh.triangles};
             return mesh;

@@ -24,13 +24,15 @@ Project makeFaceProject(const DeformationCascade& cascade, const MeshData& domai
 }
 
 void regenerateFaceVisemes(Project& project, const MeshData& domain) {
-    if (!project.deformation.isSet()) throwInputError("project", "has no deformable face to generate visemes from");
+    if (!project.deformation.isSet())
+        throwInputError("project", "has no deformable face to generate visemes from");
     std::vector<VisemeParameters> visemes;
     for (const auto& v : project.visemes) {
         const auto it = std::find_if(project.deformation.visemes.begin(), project.deformation.visemes.end(),
                                      [&](const VisemeParameters& p) { return p.name == v.name; });
         if (it == project.deformation.visemes.end())
-            throwInputError("/visemes", "viseme \"" + v.name + "\" has no parameter vector in /deformation/visemes");
+            throwInputError("/visemes",
+                            "viseme \"" + v.name + "\" has no parameter vector in /deformation/visemes");
         visemes.push_back(*it);
     }
     const VisemeSet set = generateVisemeSet(project.deformation.cascade, domain, visemes);

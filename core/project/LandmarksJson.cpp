@@ -7,7 +7,7 @@
 namespace vl {
 
 std::vector<std::pair<face::Landmark, face::LandmarkInput>> landmarksFromJsonText(std::string_view text,
-                                                                                std::string_view source) {
+                                                                                  std::string_view source) {
     const Json document = parseJsonStrict(text, source);
     const JsonNode root(document, std::string(source) + ":");
     root.expectObject();
@@ -19,7 +19,8 @@ std::vector<std::pair<face::Landmark, face::LandmarkInput>> landmarksFromJsonTex
         const auto landmark = face::parseLandmarkName(name);
         if (!landmark) {
             std::string known;
-            for (const auto l : face::allLandmarks()) known += (known.empty() ? "" : ", ") + std::string(face::landmarkName(l));
+            for (const auto l : face::allLandmarks())
+                known += (known.empty() ? "" : ", ") + std::string(face::landmarkName(l));
             node.fail("unknown landmark \"" + name + "\" (known: " + known + ")");
         }
         node.expectObject();
@@ -42,7 +43,8 @@ std::vector<std::pair<face::Landmark, face::LandmarkInput>> landmarksFromJsonTex
     return result;
 }
 
-std::vector<std::pair<face::Landmark, face::LandmarkInput>> readLandmarkFile(const std::filesystem::path& file) {
+std::vector<std::pair<face::Landmark, face::LandmarkInput>>
+readLandmarkFile(const std::filesystem::path& file) {
     return landmarksFromJsonText(readFileToString(file), file.string());
 }
 

@@ -20,9 +20,10 @@ namespace vl {
 
 // Throws InputError "<file>: <JSON path>: <what>" for unknown landmark names, bad values or
 // a landmark given twice.
-std::vector<std::pair<face::Landmark, face::LandmarkInput>> readLandmarkFile(const std::filesystem::path& file);
+std::vector<std::pair<face::Landmark, face::LandmarkInput>>
+readLandmarkFile(const std::filesystem::path& file);
 std::vector<std::pair<face::Landmark, face::LandmarkInput>> landmarksFromJsonText(std::string_view text,
-                                                                                std::string_view source);
+                                                                                  std::string_view source);
 
 // The found landmarks as a landmark file (uv, position, source, confidence, method).
 std::string landmarksToJsonText(const face::FaceLandmarks& landmarks);
