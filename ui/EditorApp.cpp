@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -52,49 +53,66 @@ void setupFontsAndStyle() {
     style.Colors[ImGuiCol_MenuBarBg] = ImVec4(0.09f, 0.10f, 0.12f, 1.0f);
 }
 
-void applyStartOptions(const EditorOptions& options, EditorSession& session, EditorUi& ui) {
-    if (!options.project.empty()) session.openProject(options.project);
-    if (options.sample) session.loadSample();
-    if (!options.visemeFolder.empty()) session.loadVisemeFolder(options.visemeFolder);
-    if (!options.panel.empty()) {
+// Applies the start options in order, each on its own: a bad one is passed to `failed` (which may
+// throw to stop) and the others still apply, so `--project broken.vlproj --panel Weights` opens the
+// Weights panel with the project's error shown.
+void applyStartOptions(const EditorOptions& options, EditorSession& session, EditorUi& ui,
+                       const std::function<void(const InputError&)>& failed) {
+    const auto step = [&](bool given, const std::function<void()>& apply) {
+        if (!given) return;
+        try {
+            apply();
+        } catch (const InputError& e) {
+            failed(e);
+        }
+    };
+    const auto needFace = [&] {
+        if (!session.face().cascade) session.loadFace();
+    };
+    step(!options.project.empty(), [&] { session.openProject(options.project); });
+    step(options.sample, [&] { session.loadSample(); });
+    step(!options.visemeFolder.empty(), [&] { session.loadVisemeFolder(options.visemeFolder); });
+    step(!options.panel.empty(), [&] {
         const auto panel = panelFromName(options.panel);
         if (!panel) throwInputError("--panel", "unknown panel '" + options.panel + "'");
         ui.selectPanel(*panel);
-        if (*panel == Panel::Deformation && !session.face().cascade) session.loadFace();
-    }
-    if (!options.viseme.empty()) {
+        if (*panel == Panel::Deformation) needFace();
+    });
+    step(!options.viseme.empty(), [&] {
         const int index = session.visemes() ? session.visemes()->find(options.viseme) : -1;
         if (index < 0) throwInputError("--viseme", "no viseme named '" + options.viseme + "'");
         session.selectedViseme = index;
-    }
-    if (!options.refine.empty()) {
-        if (!session.face().cascade) session.loadFace();
+    });
+    bool refine = false; // the refinement starts after the face's other options, if its criterion is valid
+    step(!options.refine.empty(), [&] {
+        needFace();
         CriterionSettings settings = session.project().refinement;
         settings.kind = parseCriterionKind(options.refine, "--refine");
         session.setRefinementSettings(settings);
-    }
-    if (!options.individual.empty()) {
-        if (!session.face().cascade) session.loadFace();
+        refine = true;
+    });
+    step(!options.individual.empty(), [&] {
+        needFace();
         session.setIndividual(face::parseIndividual(options.individual, "--individual"));
-    }
-    if (!options.preset.empty()) {
-        if (!session.face().cascade) session.loadFace();
+    });
+    step(!options.preset.empty(), [&] {
+        needFace();
         session.applyVisemePreset(options.preset);
-    }
-    if (!options.refine.empty()) session.startRefinement(RefineAction::Refine);
-    if (!options.field.empty()) {
-        if (!session.face().cascade) session.loadFace();
+    });
+    step(refine, [&] { session.startRefinement(RefineAction::Refine); });
+    step(!options.field.empty(), [&] {
+        needFace();
         if (!ui.selectField(options.field))
             throwInputError("--field", "no analytic field named '" + options.field + "'");
-    }
+    });
     ui.setWireframe(options.wireframe);
-    if (!options.brush.empty()) {
+    step(!options.brush.empty(), [&] {
         const std::string modes[] = {"add", "subtract", "smooth"};
         const auto it = std::find(std::begin(modes), std::end(modes), options.brush);
         if (it == std::end(modes))
             throwInputError("--brush", "expected add, subtract or smooth, got '" + options.brush + "'");
         ui.enableBrush(static_cast<int>(it - std::begin(modes)));
-    }
+    });
     if (options.play >= 0.0) ui.startPlayback(options.play, options.sequence);
 }
 
@@ -168,14 +186,11 @@ int runEditor(const EditorOptions& options) {
             EditorUi ui(session, window);
             if (!options.probe.empty()) probe::enable(options.probe);
             const bool screenshotMode = !options.screenshot.empty();
-            try {
-                applyStartOptions(options, session, ui);
-            } catch (const InputError& e) {
-                // A script asking for a picture must fail; a person gets the editor with the error
-                // shown (what was applied before the bad option stays).
-                if (screenshotMode) throw;
+            // A script asking for a picture must fail; a person gets the editor with the errors shown.
+            applyStartOptions(options, session, ui, [&](const InputError& e) {
+                if (screenshotMode) throw e;
                 session.error(std::string("Start options: ") + e.what());
-            }
+            });
             for (int frame = 0; !glfwWindowShouldClose(window) || !ui.quitConfirmed(); ++frame) {
                 glfwPollEvents();
                 if (screenshotMode) session.finishBackgroundWork(); // deterministic pictures

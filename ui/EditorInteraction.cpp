@@ -71,9 +71,9 @@ void EditorUi::paint(const ViewportEvents& events) {
     if (!set) return;
     if (events.leftPressed && !ImGui::GetIO().KeyAlt) {
         strokeActive_ = true;
-        const auto& painted = session.project().weights.painted;
-        strokeStart_ =
-            painted.size() == set->vertexCount() ? painted : std::vector<double>(set->vertexCount(), 1.0);
+        // The stroke starts from the weights shown (uniform, area or painted), scaled to [0, 1].
+        const auto& weights = session.project().weights;
+        strokeStart_ = weightsForPainting(weights.mode, set->neutral, weights.painted);
         strokeWeights_ = strokeStart_;
         lastDab_.reset();
     }

@@ -133,6 +133,9 @@ nlohmann::json EditorUi::probeSummary() const {
     nlohmann::json messages = nlohmann::json::array();
     for (const StatusMessage& message : session.messages())
         messages.push_back({{"error", message.kind == StatusMessage::Kind::Error}, {"text", message.text}});
+    const auto& painted = project.weights.painted;
+    double paintedSum = 0.0;
+    for (double w : painted) paintedSum += w;
     return {{"panel", panelName(activePanel_)},
             {"document_id", session.documentId()},
             {"undo", session.undoName()},
@@ -149,6 +152,8 @@ nlohmann::json EditorUi::probeSummary() const {
             {"criterion", kCriteria[static_cast<int>(project.refinement.kind)]},
             {"file_dialog_open", fileDialog_.isOpen()},
             {"brush", brush_.enabled},
+            {"weight_mode", toString(project.weights.mode)},
+            {"painted_mean", painted.empty() ? 0.0 : paintedSum / static_cast<double>(painted.size())},
             {"wireframe", wireframe_},
             {"playing", playback_.playing}};
 }
@@ -474,6 +479,7 @@ void EditorUi::statusBar(float height) {
         const ImVec4 colour = last.kind == StatusMessage::Kind::Error ? ImVec4(1.0f, 0.45f, 0.4f, 1.0f)
                                                                       : ImVec4(0.75f, 0.85f, 0.75f, 1.0f);
         ImGui::TextColored(colour, "%s", last.text.c_str());
+        probe::recordArea(last.text.c_str(), "status");
         if (ImGui::IsItemHovered()) {
             ImGui::BeginTooltip();
             const auto& all = session.messages();

@@ -33,7 +33,28 @@ struct ReduceOptions {
     int target = kTargetNotGiven;
     std::string outDir = "reduced";
     std::string report;
+    std::vector<std::string> pin;      // viseme names
+    std::vector<std::string> apart;    // "a,b"
+    std::vector<std::string> together; // "a,b"
+    std::string method = "auto";
+    double timeLimit = 60;
 };
+
+std::pair<std::string, std::string> splitPair(const std::string& text, const std::string& option) {
+    const auto comma = text.find(',');
+    if (comma == std::string::npos || comma == 0 || comma + 1 == text.size() ||
+        text.find(',', comma + 1) != std::string::npos)
+        throwUsage(option + " expects two viseme names as A,B, got '" + text + "'");
+    return {text.substr(0, comma), text.substr(comma + 1)};
+}
+
+ConstraintNames constraintFlags(const ReduceOptions& o) {
+    ConstraintNames c;
+    c.pinned = o.pin;
+    for (const auto& text : o.apart) c.apart.push_back(splitPair(text, "--apart"));
+    for (const auto& text : o.together) c.together.push_back(splitPair(text, "--together"));
+    return c;
+}
 
 std::pair<std::string, std::string> splitAssignment(const std::string& text, const std::string& option) {
     const auto eq = text.find('=');
@@ -148,6 +169,23 @@ void checkFlagCombinations(const ReduceOptions& o) {
     if (!o.fdp.empty() &&
         (!o.project.empty() || !o.neutral.empty() || !o.visemes.empty() || !o.visemeDir.empty()))
         throwUsage("--fdp already names the meshes; drop --project/--neutral/--viseme/--visemes");
+    if (o.method != "auto" && o.method != "dp" && o.method != "bnb")
+        throwUsage("--method must be auto, dp or bnb, got '" + o.method + "'");
+    if (!(o.timeLimit >= 0)) throwUsage("--time-limit must be >= 0 seconds (0: no limit)");
+    constraintFlags(o); // A,B syntax
+}
+
+// Constraint flags add to the project's constraints; errors name the flags.
+void applySolverFlags(const ReduceOptions& o, ReduceSettings& settings) {
+    const ConstraintNames flags = constraintFlags(o);
+    if (!flags.empty()) {
+        settings.constraintsSource = settings.constraints.empty()
+                                         ? "--pin/--apart/--together"
+                                         : "/reduction/constraints + --pin/--apart/--together";
+        settings.constraints = combineConstraints(settings.constraints, flags);
+    }
+    settings.options.method = reductionMethodFromString(o.method, "--method");
+    settings.options.timeLimitSeconds = o.timeLimit;
 }
 
 ReduceInputs loadInputs(const ReduceOptions& o, bool weightsGiven) {
@@ -158,6 +196,7 @@ ReduceInputs loadInputs(const ReduceOptions& o, bool weightsGiven) {
         in.set = loadSet(o, xface);
         in.frequencies = loadFrequencies(o, in.set, xface);
         in.settings = loadSettings(o);
+        applySolverFlags(o, in.settings);
         return in;
     }
     const Project project = loadProject(o.project);
@@ -166,6 +205,12 @@ ReduceInputs loadInputs(const ReduceOptions& o, bool weightsGiven) {
         (o.freqFile.empty() && o.freqs.empty()) ? project.frequencies : loadFrequencies(o, in.set);
     in.settings = weightsGiven ? loadSettings(o) : projectReduceSettings(project);
     in.settings.target = o.target != kTargetNotGiven ? o.target : project.reduction.target;
+    if (weightsGiven) { // the project's constraints apply whatever the weights
+        const ReduceSettings fromProject = projectReduceSettings(project);
+        in.settings.constraints = fromProject.constraints;
+        in.settings.constraintsSource = fromProject.constraintsSource;
+    }
+    applySolverFlags(o, in.settings);
     return in;
 }
 
@@ -189,12 +234,25 @@ int runReduce(const ReduceOptions& o, bool weightsGiven) {
         o.report.empty() ? outDir / "report.json" : std::filesystem::path(o.report);
     writeFileAtomically(reportPath, reductionReportJson(outcome, settings.weightMode, timings, outputs));
 
-    std::printf("Reduced %zu visemes to %d (weights: %s), optimal cost %.6g\n", set.size(), settings.target,
-                toString(settings.weightMode), outcome.result.best().cost);
+    const Grouping& best = outcome.result.best();
+    std::printf("Reduced %zu visemes to %d (weights: %s, %s): ", set.size(), settings.target,
+                toString(settings.weightMode), toString(outcome.result.method));
+    if (best.optimal)
+        std::printf("optimal cost %.6g (proved)\n", best.cost);
+    else
+        std::printf("best cost found %.6g, lower bound %.6g, gap %.3g %% (time limit reached)\n", best.cost,
+                    best.lowerBound, 100 * best.gap());
     for (std::size_t g = 0; g < outcome.reduced.size(); ++g)
         std::printf("  %2zu: %s\n", g, outcome.reduced[g].name.c_str());
     std::printf("Cost for p = 1..%d:", settings.target);
-    for (const auto& grouping : outcome.result.curve) std::printf(" %.4g", grouping.cost);
+    for (const auto& grouping : outcome.result.curve) {
+        if (!grouping.feasible())
+            std::printf(" -");
+        else if (grouping.optimal)
+            std::printf(" %.4g", grouping.cost);
+        else
+            std::printf(" %.4g(>=%.4g)", grouping.cost, grouping.lowerBound);
+    }
     std::printf("\nMerged meshes (OBJ + VRML) and mapping.json in %s\nReport: %s\n", outDir.string().c_str(),
                 reportPath.string().c_str());
     return kExitOk;
@@ -204,7 +262,7 @@ int runReduce(const ReduceOptions& o, bool weightsGiven) {
 
 void addReduceCommand(CLI::App& app, CommandRunner& run) {
     auto options = std::make_shared<ReduceOptions>();
-    auto* cmd = app.add_subcommand("reduce", "Reduce a viseme set to m merged meshes (exact optimum)");
+    auto* cmd = app.add_subcommand("reduce", "Reduce a viseme set to m merged meshes (certified optimum)");
     cmd->add_option("--project", options->project,
                     "Project file (.vlproj): meshes, frequencies, weights and target; flags override it");
     cmd->add_option("--neutral", options->neutral, "Neutral mesh (OBJ, PLY or VRML)");
@@ -226,6 +284,16 @@ void addReduceCommand(CLI::App& app, CommandRunner& run) {
                     "Number of merged meshes m (1..n); required without --project");
     cmd->add_option("--out", options->outDir, "Output folder")->capture_default_str();
     cmd->add_option("--report", options->report, "JSON report path (default OUT/report.json)");
+    cmd->add_option("--pin", options->pin, "Keep this viseme as its own key, a group of one (repeatable)");
+    cmd->add_option("--apart", options->apart, "Never merge these two visemes: A,B (repeatable)");
+    cmd->add_option("--together", options->together, "Always merge these two visemes: A,B (repeatable)");
+    cmd->add_option("--method", options->method,
+                    "Solver: auto, dp (subset DP, n <= 22) or bnb (branch and bound, n <= 64)")
+        ->capture_default_str();
+    cmd->add_option("--time-limit", options->timeLimit,
+                    "Seconds branch and bound may search for a proof; then the best grouping found is "
+                    "reported with its gap (0: no limit)")
+        ->capture_default_str();
     cmd->callback([&run, options, weights] {
         const bool weightsGiven = weights->count() > 0;
         run = [options, weightsGiven] { return runReduce(*options, weightsGiven); };

@@ -7,10 +7,11 @@
 int main(int argc, char** argv) {
     CLI::App app{"VisemeLab editor: viseme reduction and adaptive deformable faces"};
     vl::ui::EditorOptions options;
-    app.add_option("--project", options.project, "Open this project file")->check(CLI::ExistingFile);
+    // Missing files are not usage errors: the editor opens and shows the error (exit code 3 only
+    // with --screenshot).
+    app.add_option("--project", options.project, "Open this project file");
     app.add_flag("--sample", options.sample, "Load the bundled sample face and its visemes");
-    app.add_option("--visemes", options.visemeFolder, "Load a folder of meshes (one named *neutral*)")
-        ->check(CLI::ExistingDirectory);
+    app.add_option("--visemes", options.visemeFolder, "Load a folder of meshes (one named *neutral*)");
     app.add_option("--screenshot", options.screenshot, "Render --frames frames, save this PNG and exit");
     app.add_option("--frames", options.frames, "Frames rendered before the screenshot")
         ->check(CLI::Range(1, 10000));

@@ -66,7 +66,9 @@ bool sameResult(const std::optional<ReductionResult>& a, const std::optional<Red
     if (!a) return true;
     if (a->curve.size() != b->curve.size()) return false;
     for (std::size_t p = 0; p < a->curve.size(); ++p)
-        if (a->curve[p].cost != b->curve[p].cost || a->curve[p].groups != b->curve[p].groups) return false;
+        if (a->curve[p].cost != b->curve[p].cost || a->curve[p].groups != b->curve[p].groups ||
+            a->curve[p].optimal != b->curve[p].optimal || a->curve[p].lowerBound != b->curve[p].lowerBound)
+            return false;
     return true;
 }
 
@@ -88,6 +90,7 @@ bool operator==(const Project& a, const Project& b) {
            sameFrequencies(a.frequencies, b.frequencies) && a.weights.mode == b.weights.mode &&
            a.weights.painted == b.weights.painted && sameDeformation(a.deformation, b.deformation) &&
            sameRefinement(a.refinement, b.refinement) && a.reduction.target == b.reduction.target &&
+           a.reduction.constraints == b.reduction.constraints &&
            sameResult(a.reduction.result, b.reduction.result) &&
            a.editor.selectedViseme == b.editor.selectedViseme;
 }

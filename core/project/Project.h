@@ -44,6 +44,7 @@ struct ProjectWeights {
 
 struct ProjectReduction {
     int target = 1;                        // m, in 1..n
+    ConstraintNames constraints;           // pins, apart and together pairs by viseme name
     std::optional<ReductionResult> result; // the last run (groups ordered and canonical), if any
 };
 
@@ -91,8 +92,8 @@ inline bool operator!=(const Project& a, const Project& b) {
 Project loadProject(const std::filesystem::path& file);
 
 // Validates the project (the same checks as loading, except that mesh files need not exist) and
-// writes it atomically: on any error the previous file is left untouched. Relative mesh paths are
-// rebased when `file` is in another folder than project.path (see rebaseProject).
+// writes it atomically: on any error the previous file is left untouched. Mesh paths are written
+// relative to `file` (see rebaseProject).
 void saveProject(const std::filesystem::path& file, const Project& project);
 
 // The project as the JSON text saveProject writes (after validation).
@@ -103,8 +104,8 @@ std::string projectToJsonText(const Project& project);
 Project projectFromJsonText(std::string_view text, const std::filesystem::path& projectFile,
                             bool checkFiles = true);
 
-// The same project with relative mesh paths rewritten so they still point to the same files from
-// the folder of `newFile`, and path = newFile.
+// The same project with path = newFile and every mesh path (relative to project.path's folder or
+// absolute) rewritten relative to the folder of `newFile`, pointing to the same files.
 Project rebaseProject(const Project& project, const std::filesystem::path& newFile);
 
 // How a project saved as `projectFile` refers to `file`: relative to the project's folder when both

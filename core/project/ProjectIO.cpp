@@ -103,11 +103,11 @@ std::filesystem::path projectRelativePath(const std::filesystem::path& projectFi
 Project rebaseProject(const Project& project, const std::filesystem::path& newFile) {
     Project rebased = project;
     rebased.path = newFile;
+    // Every mesh path, absolute ones too, is stored relative to the project file so that a project
+    // folder moved or copied as a whole (with its meshes) keeps working.
     const auto oldFolder = std::filesystem::absolute(folderOf(project.path)).lexically_normal();
-    const auto newFolder = std::filesystem::absolute(folderOf(newFile)).lexically_normal();
-    if (oldFolder == newFolder) return rebased;
     const auto rebase = [&](std::filesystem::path& file) {
-        if (!file.empty() && !file.is_absolute()) file = projectRelativePath(newFile, oldFolder / file);
+        if (!file.empty()) file = projectRelativePath(newFile, file.is_absolute() ? file : oldFolder / file);
     };
     rebase(rebased.neutral.file);
     for (auto& viseme : rebased.visemes) rebase(viseme.file);

@@ -30,6 +30,10 @@ ProjectDeformation deformationFromJson(const JsonNode& node);
 Json refinementToJson(const CriterionSettings& settings);
 CriterionSettings refinementFromJson(const JsonNode& node);
 
+// The reduction's optional "constraints" (written only when there are any).
+Json constraintsToJson(const ConstraintNames& constraints);
+ConstraintNames constraintsFromJson(const JsonNode& node, const std::vector<std::string>& visemeNames);
+
 Json reductionToJson(const ProjectReduction& reduction, const std::vector<std::string>& visemeNames);
 ProjectReduction reductionFromJson(const JsonNode& node, const std::vector<std::string>& visemeNames);
 

@@ -67,8 +67,14 @@ VisemeSet loadProjectVisemeSet(const Project& project) {
 }
 
 ReduceSettings projectReduceSettings(const Project& project) {
-    return {project.weights.mode, project.weights.painted, project.reduction.target,
-            projectWhere(project, "/weights/painted")};
+    ReduceSettings settings;
+    settings.weightMode = project.weights.mode;
+    settings.paintedWeights = project.weights.painted;
+    settings.paintedWeightsSource = projectWhere(project, "/weights/painted");
+    settings.target = project.reduction.target;
+    settings.constraints = project.reduction.constraints;
+    settings.constraintsSource = projectWhere(project, "/reduction/constraints");
+    return settings;
 }
 
 ReduceOutcome reduceProject(const Project& project, const VisemeSet& set, const ProgressCallback& progress) {

@@ -12,7 +12,7 @@ namespace vl {
 // "/visemes/3/file (mouth/aa.obj): not interpolable: 1499 vertices (the neutral mesh ... has 1500)".
 VisemeSet loadProjectVisemeSet(const Project& project);
 
-// The reduction settings the project holds (weight mode, painted weights, target).
+// The reduction settings the project holds (weight mode, painted weights, target, constraints).
 ReduceSettings projectReduceSettings(const Project& project);
 
 // Runs the exact reduction of `set` (normally loadProjectVisemeSet(project)) with the project's

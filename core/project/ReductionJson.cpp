@@ -4,6 +4,7 @@
 #include "core/project/ProjectJson.h"
 
 #include <algorithm>
+#include <limits>
 #include <unordered_map>
 
 namespace vl {
@@ -12,6 +13,7 @@ namespace {
 
 Json groupingToJson(const Grouping& grouping, const std::vector<std::string>& visemeNames,
                     std::string_view path) {
+    if (!grouping.feasible()) return Json{{"infeasible", true}}; // the constraints rule this p out
     Json groups = Json::array();
     for (const auto& group : grouping.groups) {
         Json names = Json::array();
@@ -25,6 +27,10 @@ Json groupingToJson(const Grouping& grouping, const std::vector<std::string>& vi
     Json json = Json::object();
     json["cost"] = grouping.cost;
     json["groups"] = std::move(groups);
+    if (!grouping.optimal) { // results without a proof say so; proven ones keep the original layout
+        json["optimal"] = false;
+        json["lowerBound"] = grouping.lowerBound;
+    }
     return json;
 }
 
@@ -34,9 +40,24 @@ using NameIndex = std::unordered_map<std::string_view, std::size_t>;
 
 Grouping groupingFromJson(const JsonNode& node, std::size_t p, const std::vector<std::string>& visemeNames,
                           const NameIndex& indexOf) {
-    node.allowOnly({"cost", "groups"});
+    if (node.has("infeasible")) {
+        node.allowOnly({"infeasible"});
+        if (!node["infeasible"].boolean()) node["infeasible"].fail("expected true (or leave the key out)");
+        const double inf = std::numeric_limits<double>::infinity();
+        return {inf, inf, true, {}};
+    }
+    node.allowOnly({"cost", "groups", "optimal", "lowerBound"});
     Grouping grouping;
     grouping.cost = node["cost"].nonNegativeNumber();
+    grouping.optimal = !node.has("optimal") || node["optimal"].boolean();
+    grouping.lowerBound = grouping.cost;
+    if (!grouping.optimal && node.has("lowerBound")) {
+        grouping.lowerBound = node["lowerBound"].nonNegativeNumber();
+        if (grouping.lowerBound > grouping.cost)
+            node["lowerBound"].fail("the lower bound exceeds the cost of the grouping");
+    } else if (!grouping.optimal) {
+        grouping.lowerBound = 0;
+    }
     const JsonNode groups = node["groups"];
     if (groups.size() != p)
         groups.fail("expected " + std::to_string(p) + " groups (entry " + std::to_string(p) +
@@ -69,6 +90,7 @@ Grouping groupingFromJson(const JsonNode& node, std::size_t p, const std::vector
 Json reductionToJson(const ProjectReduction& reduction, const std::vector<std::string>& visemeNames) {
     Json json = Json::object();
     json["target"] = reduction.target;
+    if (!reduction.constraints.empty()) json["constraints"] = constraintsToJson(reduction.constraints);
     if (!reduction.result) {
         json["result"] = nullptr;
         return json;
@@ -82,11 +104,13 @@ Json reductionToJson(const ProjectReduction& reduction, const std::vector<std::s
 }
 
 ProjectReduction reductionFromJson(const JsonNode& node, const std::vector<std::string>& visemeNames) {
-    node.allowOnly({"target", "result"});
+    node.allowOnly({"target", "constraints", "result"});
     ProjectReduction reduction;
     const auto n = static_cast<std::int64_t>(visemeNames.size());
     // With no visemes yet any m >= 1 is kept; it is checked again once visemes exist.
-    reduction.target = static_cast<int>(node["target"].integerInRange(1, n > 0 ? n : kMaxExactVisemes));
+    reduction.target = static_cast<int>(node["target"].integerInRange(1, n > 0 ? n : kMaxReductionVisemes));
+    if (node.has("constraints"))
+        reduction.constraints = constraintsFromJson(node["constraints"], visemeNames);
     if (!node.has("result") || node["result"].isNull()) return reduction;
 
     const JsonNode result = node["result"];

@@ -32,10 +32,20 @@ ReduceOutcome runReduction(const VisemeSet& set, const FrequencySource& frequenc
     out.weights = computeWeights(settings.weightMode, set.neutral, settings.paintedWeights,
                                  settings.paintedWeightsSource);
 
-    std::vector<std::vector<Vec3>> shapes;
-    shapes.reserve(set.size());
-    for (const auto& v : set.visemes) shapes.push_back(v.positions);
-    out.result = reduceVisemes({shapes, out.frequencies, out.weights, settings.target}, progress);
+    std::vector<std::span<const Vec3>> rows; // a view of the set's positions: no copy of the shapes
+    for (const auto& v : set.visemes) rows.emplace_back(v.positions);
+    const ShapeView shapes(rows);
+    const ReductionConstraints constraints =
+        resolveConstraints(settings.constraints, out.visemeNames, settings.constraintsSource);
+    // Contradictions and a target they rule out are reported by viseme name, at the constraints' source.
+    const ConstraintUnits units = constraintUnits(constraints, static_cast<int>(set.size()), out.visemeNames,
+                                                  settings.constraintsSource);
+    if (settings.target >= 1 && static_cast<std::size_t>(settings.target) <= set.size() &&
+        !units.feasible(settings.target))
+        throwInfeasibleTarget(units, settings.target, settings.constraintsSource);
+    out.result = reduceVisemes({shapes, out.frequencies, out.weights, settings.target, constraints},
+                               settings.options, progress);
+    out.constraints = settings.constraints;
 
     for (const auto& group : out.result.best().groups) {
         ReducedViseme reduced;
@@ -100,13 +110,38 @@ std::string reductionReportJson(const ReduceOutcome& outcome, WeightMode mode, c
     report["n"] = outcome.visemeNames.size();
     report["m"] = outcome.result.curve.size();
     report["weights"] = toString(mode);
-    report["cost"] = outcome.result.best().cost;
+    const Grouping& best = outcome.result.best();
+    report["method"] = toString(outcome.result.method);
+    report["optimal"] = best.optimal;
+    report["cost"] = best.cost;
+    report["lower_bound"] = best.lowerBound;
+    report["gap"] = best.gap();
     nlohmann::ordered_json groups = nlohmann::ordered_json::array();
     for (const auto& reduced : outcome.reduced) groups.push_back(reduced.members);
     report["groups"] = groups;
-    nlohmann::ordered_json curve = nlohmann::ordered_json::array();
-    for (const auto& grouping : outcome.result.curve) curve.push_back(grouping.cost);
+    // Entries p the constraints rule out are null.
+    nlohmann::ordered_json curve = nlohmann::ordered_json::array(), bounds = nlohmann::ordered_json::array(),
+                           optimal = nlohmann::ordered_json::array();
+    for (const auto& grouping : outcome.result.curve) {
+        curve.push_back(grouping.feasible() ? nlohmann::ordered_json(grouping.cost)
+                                            : nlohmann::ordered_json());
+        bounds.push_back(grouping.feasible() ? nlohmann::ordered_json(grouping.lowerBound)
+                                             : nlohmann::ordered_json());
+        optimal.push_back(grouping.optimal);
+    }
     report["cost_curve"] = curve;
+    report["lower_bound_curve"] = bounds;
+    report["optimal_curve"] = optimal;
+    nlohmann::ordered_json pairs = nlohmann::ordered_json::object();
+    pairs["pin"] = outcome.constraints.pinned;
+    auto pairList = [](const std::vector<std::pair<std::string, std::string>>& list) {
+        nlohmann::ordered_json json = nlohmann::ordered_json::array();
+        for (const auto& [a, b] : list) json.push_back({a, b});
+        return json;
+    };
+    pairs["apart"] = pairList(outcome.constraints.apart);
+    pairs["together"] = pairList(outcome.constraints.together);
+    report["constraints"] = pairs;
     nlohmann::ordered_json freq = nlohmann::ordered_json::object();
     for (std::size_t i = 0; i < outcome.visemeNames.size(); ++i)
         freq[outcome.visemeNames[i]] = outcome.frequencies[i];

@@ -16,7 +16,10 @@ struct ReduceSettings {
     WeightMode weightMode = WeightMode::Uniform;
     std::vector<double> paintedWeights; // used when weightMode == Painted
     int target = 1;
-    std::string paintedWeightsSource = "weights"; // the weights' file or JSON path, for messages
+    std::string paintedWeightsSource = "weights";  // the weights' file or JSON path, for messages
+    ConstraintNames constraints{};                 // by viseme name
+    std::string constraintsSource = "constraints"; // where errors about them point (a flag, a JSON path)
+    ReductionOptions options{};                    // solver, time limit
 };
 
 struct ReducedViseme {
@@ -34,6 +37,7 @@ struct ReduceOutcome {
     std::vector<ReducedViseme> reduced; // for the chosen target m
     // phoneme -> reduced index (empty when frequencies were given per viseme).
     std::vector<std::pair<std::string, int>> phonemeToReduced;
+    ConstraintNames constraints; // the constraints the run honoured
 };
 
 ReduceOutcome runReduction(const VisemeSet& set, const FrequencySource& frequencies,
@@ -48,7 +52,9 @@ struct ReduceTimings {
 std::vector<std::string> writeReductionOutputs(const std::filesystem::path& outDir, const VisemeSet& set,
                                                const ReduceOutcome& outcome);
 
-// The JSON report: n, m, weights, cost, groups, cost_curve, frequencies, timing_ms, outputs.
+// The JSON report: n, m, weights, method, optimal, cost, lower_bound, gap, groups, cost_curve (null where
+// the constraints allow no grouping), lower_bound_curve, optimal_curve, constraints, frequencies,
+// timing_ms, outputs.
 std::string reductionReportJson(const ReduceOutcome& outcome, WeightMode mode, const ReduceTimings& timings,
                                 const std::vector<std::string>& outputs);
 

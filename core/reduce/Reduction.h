@@ -1,33 +1,72 @@
 #pragma once
-// Exact optimal viseme reduction (Danihelka, Kencl, Zara: "Reduction of Animated Models for
-// Embedded Devices"): partition n interpolable shapes into p groups minimising
+// Optimal viseme reduction (Danihelka, Kencl, Zara: "Reduction of Animated Models for Embedded
+// Devices"): partition n interpolable shapes into p groups minimising
 //   rho_f = sum_i f_i * rho(A_i, B_group(i)),  rho(A,B) = sum_k w_k |a_k - b_k|^2,
-// where B of a group is the frequency-weighted mean of its members (the paper's eq. 19).
+// where B of a group is the frequency-weighted mean of its members (the paper's eq. 19), optionally
+// under designer constraints (ReductionConstraints.h).
+//
+// Two exact solvers share one cost model (GroupCostModel.h): the paper's subset DP (SubsetDp.h),
+// fastest up to ~16 visemes, and repetitive branch and bound (BranchAndBound.h) for larger sets, up
+// to 64. Every result carries its certificate: `optimal` only with a proof, otherwise the best grouping
+// found with a proven lower bound and the relative gap.
 #include "core/mesh/Mesh.h"
+#include "core/reduce/ReductionConstraints.h"
+#include "core/reduce/ShapeView.h"
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <span>
+#include <string>
 #include <vector>
 
 namespace vl {
 
+// Largest number of visemes a reduction accepts (units after 'together' constraints fit in 64 bits).
+constexpr int kMaxReductionVisemes = 64;
+// Largest set the editor reduces in the background today (its panel follows with issue 10's editor
+// part); the core has no such limit.
 constexpr int kMaxExactVisemes = 20;
 
+enum class ReductionMethod {
+    Auto,           // the subset DP for small sets, branch and bound otherwise
+    SubsetDp,       // the paper's DP (at most 22 units)
+    BranchAndBound, // repetitive branch and bound
+};
+
+const char* toString(ReductionMethod method); // "auto", "dp", "bnb"
+// Throws InputError at `where` for anything else.
+ReductionMethod reductionMethodFromString(std::string_view text, std::string_view where);
+
 struct ReductionProblem {
-    std::span<const std::vector<Vec3>> shapes; // n shapes, same vertex count
-    std::span<const double> frequencies;       // n values >= 0, not all zero
-    std::span<const double> weights;           // one per vertex, >= 0
-    int target = 1;                            // m in 1..n
+    ShapeView shapes;                    // n shapes, same vertex count
+    std::span<const double> frequencies; // n values >= 0, not all zero
+    std::span<const double> weights;     // one per vertex, >= 0
+    int target = 1;                      // m in 1..n
+    ReductionConstraints constraints{};
+};
+
+struct ReductionOptions {
+    ReductionMethod method = ReductionMethod::Auto;
+    double timeLimitSeconds = 0;                  // branch and bound stops after this; 0 = no limit
+    const std::atomic<bool>* cancelled = nullptr; // set from another thread to stop early
 };
 
 struct Grouping {
-    double cost = 0.0;                    // optimal rho_f for this number of groups
+    double cost = 0.0;       // rho_f of `groups` (+inf when no grouping into p groups exists)
+    double lowerBound = 0.0; // proven: no grouping into p groups satisfying the constraints costs less
+    bool optimal = false;    // proven minimal (then lowerBound == cost)
     std::vector<std::vector<int>> groups; // member indices, each ascending; groups ordered by first member
+
+    bool feasible() const { return !groups.empty(); }
+    // (cost - lowerBound) / cost: 0 when optimal, 1 when nothing is known.
+    double gap() const;
 };
 
 struct ReductionResult {
-    std::vector<Grouping> curve; // curve[p-1]: optimal grouping into p groups, p = 1..m
+    std::vector<Grouping> curve;                        // curve[p-1]: grouping into p groups, p = 1..m
+    ReductionMethod method = ReductionMethod::SubsetDp; // the solver that ran
     const Grouping& best() const { return curve.back(); }
     // groupOf[i]: index of the group viseme i belongs to in best().
     std::vector<int> groupOf() const;
@@ -36,20 +75,23 @@ struct ReductionResult {
 // Progress in [0,1]; called from the calling thread only.
 using ProgressCallback = std::function<void(double)>;
 
-// Exact optimum by the subset dynamic programme. Throws InputError when n > kMaxExactVisemes,
-// m is outside 1..n, sizes disagree, or frequencies/weights are invalid.
+// The reduction for p = 1..m. Throws InputError when m is outside 1..n, n > kMaxReductionVisemes,
+// sizes disagree, frequencies/weights are invalid, the constraints contradict themselves, or no
+// grouping into m groups satisfies them (entries p < m that the constraints rule out have no groups).
+ReductionResult reduceVisemes(const ReductionProblem& problem, const ReductionOptions& options,
+                              const ProgressCallback& progress = {});
 ReductionResult reduceVisemes(const ReductionProblem& problem, const ProgressCallback& progress = {});
 
 // The frequency-weighted mean of the members (eq. 19). A group whose frequencies are all zero
 // contributes nothing to the cost; its merged shape is the plain mean.
-std::vector<Vec3> mergeGroup(std::span<const std::vector<Vec3>> shapes, std::span<const double> frequencies,
+std::vector<Vec3> mergeGroup(const ShapeView& shapes, std::span<const double> frequencies,
                              std::span<const int> members);
 
 // rho(A,B) with per-vertex weights.
 double dissimilarity(std::span<const Vec3> a, std::span<const Vec3> b, std::span<const double> weights);
 
 // rho_f of a grouping evaluated directly from the meshes (O(n|V|)): the slow, obvious reference.
-double groupingCost(std::span<const std::vector<Vec3>> shapes, std::span<const double> frequencies,
+double groupingCost(const ShapeView& shapes, std::span<const double> frequencies,
                     std::span<const double> weights, const std::vector<std::vector<int>>& groups);
 
 } // namespace vl

@@ -5,6 +5,7 @@
 #include "core/common/JsonParse.h"
 #include "core/common/TextParsing.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace vl {
@@ -58,6 +59,16 @@ std::vector<double> computeWeights(WeightMode mode, const MeshData& neutral,
         break;
     }
     validateWeights(weights, neutral.positions.size(), where);
+    return weights;
+}
+
+std::vector<double> weightsForPainting(WeightMode mode, const MeshData& neutral,
+                                       const std::vector<double>& painted) {
+    if (mode == WeightMode::Painted && painted.size() == neutral.positions.size()) return painted;
+    std::vector<double> weights =
+        computeWeights(mode == WeightMode::Painted ? WeightMode::Uniform : mode, neutral);
+    const double largest = *std::max_element(weights.begin(), weights.end());
+    for (double& w : weights) w /= largest; // validated: finite, >= 0, not all zero
     return weights;
 }
 

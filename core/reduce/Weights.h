@@ -21,6 +21,12 @@ std::vector<double> computeWeights(WeightMode mode, const MeshData& neutral,
                                    const std::vector<double>& painted = {},
                                    std::string_view where = "weights");
 
+// Where a paint stroke starts: the weights the designer sees in `mode`, scaled so that the largest is
+// 1 (the brush works in [0, 1]); painted weights of the right size are taken as they are. The metric
+// is unchanged by the scale (the optimal grouping does not depend on it).
+std::vector<double> weightsForPainting(WeightMode mode, const MeshData& neutral,
+                                       const std::vector<double>& painted = {});
+
 // Painted weights from a file: JSON (array, or object with a "weights" array) or plain text (one
 // number per line or comma/space separated). Errors name the file and line/element.
 std::vector<double> loadWeightsFile(const std::filesystem::path& path);

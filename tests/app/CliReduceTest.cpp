@@ -172,3 +172,77 @@ TEST(CliReduce, ReducesTheBundledSample) {
     const auto mapping = readJson(dir.path / "out" / "mapping.json");
     EXPECT_GE(mapping["phonemes"].size(), 39u); // every phoneme of the inventory maps to a reduced viseme
 }
+
+TEST(CliReduce, ReportAlwaysCarriesTheCertificate) {
+    TempDir dir("visemelab_cli_certificate");
+    writeSmallSet(dir.path);
+    for (const char* method : {"auto", "dp", "bnb"}) {
+        const auto out = dir.path / method;
+        const auto r = test::runCli("reduce --visemes " + dir.path.string() + " -m 2 --method " + method +
+                                    " --out " + out.string());
+        ASSERT_EQ(r.exitCode, 0) << r.output;
+        const auto report = readJson(out / "report.json");
+        EXPECT_EQ(report["method"], std::string(method) == "bnb" ? "bnb" : "dp");
+        EXPECT_EQ(report["optimal"], true);
+        EXPECT_EQ(report["gap"], 0.0);
+        EXPECT_EQ(report["lower_bound"], report["cost"]);
+        EXPECT_EQ(report["lower_bound_curve"].size(), 2u);
+        EXPECT_EQ(report["optimal_curve"], nlohmann::json::parse("[true,true]"));
+        EXPECT_NE(r.output.find("(proved)"), std::string::npos) << r.output;
+    }
+}
+
+TEST(CliReduce, ConstraintFlagsAreHonouredAndInfeasibleOnesExplained) {
+    TempDir dir("visemelab_cli_constraints");
+    writeSmallSet(dir.path);
+    const std::string set = " --visemes " + dir.path.string() + " --out " + (dir.path / "out").string();
+    // Unconstrained, a and b merge (they are close); pinning a keeps it alone.
+    auto r = test::runCli("reduce" + set + " -m 2 --pin a");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    auto report = readJson(dir.path / "out" / "report.json");
+    EXPECT_EQ(report["groups"], nlohmann::json::parse(R"([["a"],["b","c"]])"));
+    EXPECT_EQ(report["constraints"]["pin"], nlohmann::json::parse(R"(["a"])"));
+    EXPECT_TRUE(report["cost_curve"][0].is_null()); // one group cannot keep a alone
+    r = test::runCli("reduce" + set + " -m 2 --apart a,b --together b,c");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    report = readJson(dir.path / "out" / "report.json");
+    EXPECT_EQ(report["groups"], nlohmann::json::parse(R"([["a"],["b","c"]])"));
+
+    auto expectError = [](const test::CliResult& result, int code, const std::string& fragment) {
+        EXPECT_EQ(result.exitCode, code) << result.output;
+        EXPECT_NE(result.output.find(fragment), std::string::npos) << result.output;
+    };
+    expectError(
+        test::runCli("reduce" + set + " -m 1 --pin a"), 3,
+        "no grouping into 1 groups satisfies the constraints: pinned visemes and 'apart' pairs need at "
+        "least 2 groups");
+    expectError(test::runCli("reduce" + set + " -m 3 --together a,c"), 3,
+                "the 'together' constraints leave 2 separable units");
+    expectError(test::runCli("reduce" + set + " -m 2 --together a,c --apart c,a"), 3,
+                "the constraints contradict");
+    expectError(test::runCli("reduce" + set + " -m 2 --pin zz"), 3,
+                "unknown viseme 'zz' (the visemes are: a, b, c)");
+    expectError(test::runCli("reduce" + set + " -m 2 --apart a"), 2,
+                "--apart expects two viseme names as A,B");
+    expectError(test::runCli("reduce" + set + " -m 2 --method fast"), 2, "--method must be auto, dp or bnb");
+    expectError(test::runCli("reduce" + set + " -m 2 --time-limit -1"), 2, "--time-limit must be >= 0");
+}
+
+TEST(CliReduce, ReducesMoreThanTwentyVisemes) {
+    TempDir dir("visemelab_cli_large");
+    writeMesh(dir.path / "neutral.obj", quad(0));
+    for (int i = 0; i < 26; ++i) { // four clusters of lifts, so the optimum is clear-cut
+        char name[16];
+        std::snprintf(name, sizeof name, "v%02d.obj", i);
+        writeMesh(dir.path / name, quad((i % 4) * 2.0 + 0.01 * i));
+    }
+    const auto r =
+        test::runCli("reduce --visemes " + dir.path.string() + " -m 4 --out " + (dir.path / "out").string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const auto report = readJson(dir.path / "out" / "report.json");
+    EXPECT_EQ(report["n"], 26);
+    EXPECT_EQ(report["method"], "bnb");
+    EXPECT_EQ(report["optimal"], true);
+    ASSERT_EQ(report["groups"].size(), 4u);
+    for (const auto& group : report["groups"]) EXPECT_GE(group.size(), 6u);
+}

@@ -68,6 +68,11 @@ TEST(ProjectRoundTrip, EqualityNoticesEveryKindOfChange) {
         p.reduction.result->curve[0].cost = std::nextafter(p.reduction.result->curve[0].cost, 1e9);
     }));
     EXPECT_TRUE(changed([](Project& p) { p.reduction.result.reset(); }));
+    EXPECT_TRUE(changed(
+        [](Project& p) { p.reduction.result->curve[0].optimal = !p.reduction.result->curve[0].optimal; }));
+    EXPECT_TRUE(changed([](Project& p) { p.reduction.constraints.pinned.push_back(p.visemes[0].name); }));
+    EXPECT_TRUE(changed([](Project& p) { p.reduction.constraints.apart.emplace_back("x", "y"); }));
+    EXPECT_TRUE(changed([](Project& p) { p.reduction.constraints.together.emplace_back("x", "y"); }));
     EXPECT_TRUE(changed([](Project& p) {
         p.editor.selectedViseme = p.editor.selectedViseme.empty() ? p.visemes[0].name : "";
     }));

@@ -3,6 +3,7 @@
 #include "ProjectTestUtil.h"
 
 #include "core/common/AtomicFile.h"
+#include "core/project/ProjectRun.h"
 
 #include <cmath>
 #include <csignal>
@@ -58,9 +59,10 @@ TEST(ProjectSave, InvalidStateIsRefusedWithItsPathAndTheOldFileStays) {
     p.visemes[0].file = "a.obj";
     EXPECT_INPUT_ERROR(saveProject(file, p), "/visemes/0: has both a file and embedded positions");
     p = smallProject(file);
-    p.reduction.result = ReductionResult{{Grouping{0.0, {{1}, {0}}}}};
+    p.reduction.result = ReductionResult{{Grouping{.cost = 0.0, .groups = {{1}, {0}}}}};
     EXPECT_INPUT_ERROR(saveProject(file, p), "/reduction/result/curve/0/groups: expected 1 groups");
-    p.reduction.result = ReductionResult{{Grouping{0.0, {{1, 0}}}}}; // members not ascending
+    p.reduction.result =
+        ReductionResult{{Grouping{.cost = 0.0, .groups = {{1, 0}}}}}; // members not ascending
     EXPECT_INPUT_ERROR(saveProject(file, p), "does not survive a save/load round trip");
 
     EXPECT_EQ(readFileToString(file), before);
@@ -121,7 +123,7 @@ TEST(ProjectSave, SavingElsewhereRebasesRelativeMeshPaths) {
     Project p;
     p.path = dir / "a" / "p.vlproj";
     p.neutral.file = "meshes/n.obj";
-    p.visemes = {{"v", "meshes/v.obj", {}}, {"w", dir / "w.obj", {}}}; // absolute paths stay absolute
+    p.visemes = {{"v", "meshes/v.obj", {}}, {"w", dir / "w.obj", {}}};
     saveProject(p.path, p);
 
     const auto moved = dir / "b" / "c" / "q.vlproj";
@@ -129,9 +131,48 @@ TEST(ProjectSave, SavingElsewhereRebasesRelativeMeshPaths) {
     const Project q = loadProject(moved);
     EXPECT_EQ(q.neutral.file, "../../a/meshes/n.obj");
     EXPECT_EQ(q.visemes[0].file, "../../a/meshes/v.obj");
-    EXPECT_EQ(q.visemes[1].file, dir / "w.obj");
+    EXPECT_EQ(q.visemes[1].file, "../../w.obj");
     EXPECT_EQ(resolveProjectFile(q, q.visemes[0].file), (dir / "a" / "meshes" / "v.obj").lexically_normal());
     EXPECT_TRUE(rebaseProject(q, p.path) == loadProject(p.path));
+}
+
+std::string triangleObj(double z) {
+    const std::string zs = std::to_string(z);
+    return "v 0 0 " + zs + "\nv 1 0 " + zs + "\nv 0 1 " + zs + "\nf 1 2 3\n";
+}
+
+// Absolute paths (as the editor holds them after loading a folder or the bundled sample) are stored
+// relative to the project file, so the project folder can be moved or copied as a whole.
+TEST(ProjectSave, AbsoluteMeshPathsAreStoredRelativeAndSurviveMovingTheFolder) {
+    ScratchDir dir("relative");
+    const auto home = dir / "home";
+    test::writeText(home / "meshes" / "neutral.obj", triangleObj(0));
+    test::writeText(home / "meshes" / "aa.obj", triangleObj(1));
+    test::writeText(home / "oh.obj", triangleObj(2));
+    Project p; // untitled, as after File > Load sample
+    p.neutral.file = home / "meshes" / "neutral.obj";
+    p.visemes = {{"aa", home / "meshes" / "aa.obj", {}}, {"oh", home / "oh.obj", {}}};
+    saveProject(home / "project.vlproj", p);
+
+    const std::string text = readFileToString(home / "project.vlproj");
+    EXPECT_EQ(text.find(home.string()), std::string::npos) << "no absolute path in the file:\n" << text;
+    const Project saved = loadProject(home / "project.vlproj");
+    EXPECT_EQ(saved.neutral.file, "meshes/neutral.obj");
+    EXPECT_EQ(saved.visemes[0].file, "meshes/aa.obj");
+    EXPECT_EQ(saved.visemes[1].file, "oh.obj");
+
+    const auto moved = dir / "elsewhere" / "renamed";
+    std::filesystem::create_directories(moved.parent_path());
+    std::filesystem::rename(home, moved);
+    const Project reopened = loadProject(moved / "project.vlproj");
+    const VisemeSet set = loadProjectVisemeSet(reopened);
+    ASSERT_EQ(set.visemes.size(), 2u);
+    EXPECT_EQ(set.visemes[1].positions[0][2], 2.0);
+    EXPECT_EQ(set.neutralSource, (moved / "meshes" / "neutral.obj").lexically_normal());
+
+    // Saving the moved project again writes the same text: the paths are still relative.
+    saveProject(moved / "project.vlproj", reopened);
+    EXPECT_EQ(readFileToString(moved / "project.vlproj"), text);
 }
 
 } // namespace

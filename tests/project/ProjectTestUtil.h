@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <random>
 #include <string>
 
@@ -259,9 +260,40 @@ inline Project randomProject(std::mt19937_64& rng, const std::filesystem::path& 
     if (n > 0 && rng() % 3 != 0) {
         ReductionResult result;
         const int m = 1 + static_cast<int>(rng() % static_cast<std::uint64_t>(n));
-        for (int p = 1; p <= m; ++p)
-            result.curve.push_back({randomDouble(rng, true), randomPartition(rng, n, p)});
+        for (int p = 1; p <= m; ++p) {
+            Grouping grouping;
+            switch (rng() % 4) {
+            case 0: // ruled out by constraints
+                grouping = {std::numeric_limits<double>::infinity(),
+                            std::numeric_limits<double>::infinity(),
+                            true,
+                            {}};
+                break;
+            case 1: // best found with a bound, no proof
+                grouping.cost = randomDouble(rng, true);
+                grouping.lowerBound = grouping.cost * std::uniform_real_distribution<double>(0.0, 1.0)(rng);
+                grouping.groups = randomPartition(rng, n, p);
+                break;
+            default:
+                grouping.cost = grouping.lowerBound = randomDouble(rng, true);
+                grouping.optimal = true;
+                grouping.groups = randomPartition(rng, n, p);
+            }
+            result.curve.push_back(std::move(grouping));
+        }
         project.reduction.result = std::move(result);
+    }
+    if (n > 1 && rng() % 2 == 0) {
+        auto name = [&] { return names[rng() % names.size()]; };
+        auto pair = [&] {
+            const std::string a = name();
+            std::string b = name();
+            while (b == a) b = name();
+            return std::pair{a, b};
+        };
+        for (auto k = rng() % 3; k > 0; --k) project.reduction.constraints.pinned.push_back(name());
+        for (auto k = rng() % 3; k > 0; --k) project.reduction.constraints.apart.push_back(pair());
+        for (auto k = rng() % 3; k > 0; --k) project.reduction.constraints.together.push_back(pair());
     }
     project.deformation = randomDeformation(rng);
     project.refinement.kind = static_cast<CriterionKind>(rng() % 3);

@@ -149,6 +149,47 @@ TEST_F(ProjectValidation, TargetOutOfRange) {
     EXPECT_LOAD_ERROR("/reduction/target: 0 is outside the allowed range 1..4");
 }
 
+TEST_F(ProjectValidation, ReductionConstraints) {
+    Json constraints = Json::object();
+    constraints["pin"] = Json::array({"aa"});
+    constraints["apart"] = Json::array({Json::array({"sil", "oh"})});
+    constraints["together"] = Json::array({Json::array({"E", "oh"})});
+    doc["reduction"]["constraints"] = constraints;
+    const Project p = load();
+    EXPECT_EQ(p.reduction.constraints.pinned, std::vector<std::string>{"aa"});
+    EXPECT_EQ(p.reduction.constraints.apart,
+              (std::vector<std::pair<std::string, std::string>>{{"sil", "oh"}}));
+    EXPECT_EQ(p.reduction.constraints.together,
+              (std::vector<std::pair<std::string, std::string>>{{"E", "oh"}}));
+    doc["reduction"]["constraints"]["pin"][0] = "PP";
+    EXPECT_LOAD_ERROR("/reduction/constraints/pin/0: unknown viseme \"PP\"");
+    doc["reduction"]["constraints"]["pin"][0] = "aa";
+    doc["reduction"]["constraints"]["apart"][0] = Json{"sil"};
+    EXPECT_LOAD_ERROR("/reduction/constraints/apart/0: expected an array of 2 elements");
+    doc["reduction"]["constraints"]["apart"][0] = Json{"oh", "oh"};
+    EXPECT_LOAD_ERROR("/reduction/constraints/apart/0: \"oh\" is paired with itself");
+    doc["reduction"]["constraints"]["apart"][0] = Json{"oh", "aa"};
+    doc["reduction"]["constraints"]["keep"] = Json::array();
+    EXPECT_LOAD_ERROR("/reduction/constraints/keep: unknown field");
+}
+
+TEST_F(ProjectValidation, ResultCertificates) {
+    auto& curve = doc["reduction"]["result"]["curve"];
+    curve[0] = Json{{"infeasible", true}};
+    curve[1]["optimal"] = false;
+    curve[1]["lowerBound"] = 1.0;
+    const Project p = load();
+    EXPECT_FALSE(p.reduction.result->curve[0].feasible());
+    EXPECT_FALSE(p.reduction.result->curve[1].optimal);
+    EXPECT_EQ(p.reduction.result->curve[1].lowerBound, 1.0);
+    curve[1]["lowerBound"] = 2.0;
+    EXPECT_LOAD_ERROR(
+        "/reduction/result/curve/1/lowerBound: the lower bound exceeds the cost of the grouping");
+    curve[1]["lowerBound"] = 1.0;
+    curve[0]["infeasible"] = false;
+    EXPECT_LOAD_ERROR("/reduction/result/curve/0/infeasible: expected true");
+}
+
 TEST_F(ProjectValidation, MissingMeshFile) {
     doc["visemes"][3]["file"] = "nope.obj";
     EXPECT_LOAD_ERROR("/visemes/3/file: file not found (" + (dir / "nope.obj").string() + ")");

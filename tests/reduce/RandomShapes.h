@@ -2,6 +2,7 @@
 // Random viseme sets for agreement tests.
 #include "core/mesh/Mesh.h"
 
+#include <cmath>
 #include <random>
 #include <vector>
 
@@ -27,6 +28,32 @@ inline RandomInstance randomInstance(std::mt19937& rng, int n, int vertices,
     }
     if (someZeroFrequencies && n > 2) inst.frequencies[1] = 0.0;
     for (int k = 0; k < vertices; ++k) inst.weights.push_back(weight(rng));
+    return inst;
+}
+
+// Shapes whose differences come from a few smooth "muscles", like a rig's visemes (unlike
+// randomInstance, where every shape is about equally far from every other).
+inline RandomInstance rigInstance(std::mt19937& rng, int n, int vertices, int muscles) {
+    std::uniform_real_distribution<double> u(-1, 1), f(0.01, 1), unit(0, 1);
+    RandomInstance inst = randomInstance(rng, 0, vertices);
+    std::vector<Vec3> base(static_cast<std::size_t>(vertices));
+    for (auto& p : base) p = Vec3(u(rng), u(rng), u(rng)) * 10.0;
+    std::vector<std::vector<Vec3>> fields(static_cast<std::size_t>(muscles), base);
+    for (auto& field : fields) {
+        const Vec3 direction(u(rng), u(rng), u(rng)), centre = Vec3(u(rng), u(rng), u(rng)) * 10.0;
+        for (std::size_t k = 0; k < base.size(); ++k)
+            field[k] = direction * std::exp(-(base[k] - centre).sqrnorm() / 25.0);
+    }
+    for (int i = 0; i < n; ++i) {
+        auto shape = base;
+        for (const auto& field : fields)
+            if (unit(rng) < 0.35) {
+                const double amount = unit(rng);
+                for (std::size_t k = 0; k < shape.size(); ++k) shape[k] += amount * field[k];
+            }
+        inst.shapes.push_back(std::move(shape));
+        inst.frequencies.push_back(f(rng));
+    }
     return inst;
 }
 

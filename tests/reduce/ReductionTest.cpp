@@ -1,40 +1,17 @@
+#include "BruteForce.h"
 #include "RandomShapes.h"
 
 #include "core/common/Error.h"
 #include "core/reduce/Reduction.h"
+#include "core/reduce/SubsetDp.h"
 
 #include <gtest/gtest.h>
 
-#include <functional>
 #include <limits>
 
 using namespace vl;
 
 namespace {
-
-// Slow obvious reference: enumerate every set partition of n items into exactly m blocks
-// (restricted growth strings) and evaluate each directly from the meshes.
-double bruteForceBest(const test::RandomInstance& inst, int m) {
-    const int n = static_cast<int>(inst.shapes.size());
-    std::vector<int> block(static_cast<std::size_t>(n), 0);
-    double best = std::numeric_limits<double>::infinity();
-    std::function<void(int, int)> recurse = [&](int i, int used) {
-        if (n - i < m - used) return; // not enough items left to open the missing blocks
-        if (i == n) {
-            if (used != m) return;
-            std::vector<std::vector<int>> groups(static_cast<std::size_t>(m));
-            for (int k = 0; k < n; ++k) groups[static_cast<std::size_t>(block[k])].push_back(k);
-            best = std::min(best, groupingCost(inst.shapes, inst.frequencies, inst.weights, groups));
-            return;
-        }
-        for (int b = 0; b <= used && b < m; ++b) {
-            block[static_cast<std::size_t>(i)] = b;
-            recurse(i + 1, std::max(used, b + 1));
-        }
-    };
-    recurse(0, 0);
-    return best;
-}
 
 ReductionResult reduce(const test::RandomInstance& inst, int m) {
     return reduceVisemes({inst.shapes, inst.frequencies, inst.weights, m});
@@ -86,7 +63,7 @@ TEST(Reduction, DynamicProgrammeEqualsBruteForceOnRandomInstances) {
             for (int m = 1; m <= n; ++m) {
                 const Grouping& g = result.curve[static_cast<std::size_t>(m - 1)];
                 expectIsPartition(g, n, m);
-                const double reference = bruteForceBest(inst, m);
+                const double reference = *test::bruteForceBest(inst, m);
                 const double tolerance = 1e-9 * std::max(1.0, reference);
                 EXPECT_NEAR(g.cost, reference, tolerance) << "n=" << n << " m=" << m;
                 // The reported cost is the direct cost of the reported grouping.
@@ -175,11 +152,37 @@ TEST(Reduction, RejectsBadProblems) {
     inst.shapes[3].pop_back();
     expectError(2, "viseme 3 has 4 vertices");
 
-    auto big = test::randomInstance(rng, kMaxExactVisemes + 1, 2);
+    auto big = test::randomInstance(rng, kMaxReductionVisemes + 1, 2);
     try {
         reduceVisemes({big.shapes, big.frequencies, big.weights, 3});
-        ADD_FAILURE() << "n above the exact limit must be refused";
+        ADD_FAILURE() << "n above the supported limit must be refused";
     } catch (const InputError& e) {
-        EXPECT_NE(std::string(e.what()).find("at most 20"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("at most 64"), std::string::npos) << e.what();
+    }
+    auto large = test::randomInstance(rng, kMaxSubsetDpUnits + 1, 2);
+    ReductionOptions dp;
+    dp.method = ReductionMethod::SubsetDp;
+    try {
+        reduceVisemes({large.shapes, large.frequencies, large.weights, 3}, dp);
+        ADD_FAILURE() << "the DP must refuse sets above its limit when forced";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("use branch and bound"), std::string::npos) << e.what();
+    }
+}
+
+TEST(Reduction, SetsAboveTwentyVisemesAreReducedWithACertificate) {
+    std::mt19937 rng(21);
+    const auto inst = test::rigInstance(rng, 30, 20, 8);
+    ReductionOptions options;
+    options.timeLimitSeconds = 20;
+    const auto result = reduceVisemes({inst.shapes, inst.frequencies, inst.weights, 6}, options);
+    ASSERT_EQ(result.curve.size(), 6u);
+    for (std::size_t p = 0; p < result.curve.size(); ++p) {
+        const Grouping& g = result.curve[p];
+        EXPECT_TRUE(g.optimal);
+        EXPECT_TRUE(test::isValidGrouping(g.groups, 30, static_cast<int>(p) + 1));
+        EXPECT_LE(g.lowerBound, g.cost * (1 + 1e-12));
+        EXPECT_NEAR(groupingCost(inst.shapes, inst.frequencies, inst.weights, g.groups), g.cost,
+                    1e-9 * g.cost);
     }
 }

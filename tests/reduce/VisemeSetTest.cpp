@@ -1,4 +1,5 @@
 #include "core/reduce/VisemeSet.h"
+#include "InputErrorText.h"
 #include "core/common/Error.h"
 #include "core/io/MeshIO.h"
 
@@ -7,6 +8,7 @@
 #include <filesystem>
 
 using namespace vl;
+using vl::test::errorOf;
 
 namespace {
 
@@ -25,15 +27,6 @@ struct TempDir {
     }
     ~TempDir() { std::filesystem::remove_all(path); }
 };
-
-std::string errorOf(const std::function<void()>& fn) {
-    try {
-        fn();
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
-}
 
 } // namespace
 

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
@@ -114,4 +115,21 @@ TEST(Weights, HostileFilesAreDataErrorsNamingTheFile) {
     EXPECT_EQ(loadWeightsFile(writeTemp("bom2.txt", "\xEF\xBB\xBF"
                                                     "1 2\n")),
               (std::vector<double>{1, 2}));
+}
+
+// A stroke starts from the weights shown, scaled to a largest weight of 1, so an "add" stroke over
+// area weights raises them (all ones would swallow it); painted weights are kept as they are.
+TEST(Weights, PaintingStartsFromTheWeightsShownScaledToOne) {
+    const auto mesh = twoRegionMesh();
+    const auto area = computeWeights(WeightMode::Area, mesh);
+    const auto start = weightsForPainting(WeightMode::Area, mesh);
+    const double largest = *std::max_element(area.begin(), area.end());
+    ASSERT_EQ(start.size(), area.size());
+    for (std::size_t k = 0; k < area.size(); ++k) EXPECT_DOUBLE_EQ(start[k], area[k] / largest);
+    EXPECT_LT(start[3], 0.01);
+    EXPECT_EQ(weightsForPainting(WeightMode::Uniform, mesh), std::vector<double>(4, 1.0));
+    const std::vector<double> painted = {0.2, 3.0, 0.0, 1.0};
+    EXPECT_EQ(weightsForPainting(WeightMode::Painted, mesh, painted), painted);
+    // Painted mode without painted weights (a new document) starts from all ones.
+    EXPECT_EQ(weightsForPainting(WeightMode::Painted, mesh, {}), std::vector<double>(4, 1.0));
 }

@@ -8,6 +8,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -299,8 +300,12 @@ void GuiDriver::scroll(double x, double y, int notches) {
 // Held until the editor saw it, as a person holds a key: ImGui 1.86 samples key state once per
 // frame, so a press and release inside one frame (xdotool key) would be missed.
 void GuiDriver::key(const std::string& keys) {
+    // Every key of a chord ("ctrl+s") must be seen down in one frame: waiting for the first one only
+    // could release "s" before the editor sampled it.
+    const int chord = 1 + static_cast<int>(std::count(keys.begin(), keys.end(), '+'));
     xdotool("keydown " + keys);
-    waitUntil([](const nlohmann::json& input) { return input["keys_down"].get<int>() > 0; }, "key " + keys);
+    waitUntil([&](const nlohmann::json& input) { return input["keys_down"].get<int>() >= chord; },
+              "key " + keys);
     xdotool("keyup " + keys);
     waitUntil([](const nlohmann::json& input) { return input["keys_down"].get<int>() == 0; },
               "key " + keys + " released");

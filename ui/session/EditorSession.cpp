@@ -733,8 +733,12 @@ void EditorSession::setWeightMode(WeightMode mode) {
     if (mode == project().weights.mode) return;
     EditorState next = state();
     next.project.weights.mode = mode;
-    if (mode == WeightMode::Painted && next.project.weights.painted.size() != visemes()->vertexCount())
-        next.project.weights.painted.assign(visemes() ? visemes()->vertexCount() : 0, 1.0);
+    // Painting starts from what was shown, not from all ones (an "add" stroke would be lost); weights
+    // painted before are kept.
+    if (mode == WeightMode::Painted && visemes() &&
+        next.project.weights.painted.size() != visemes()->vertexCount())
+        next.project.weights.painted =
+            weightsForPainting(project().weights.mode, visemes()->neutral, project().weights.painted);
     validateInputs(next);
     commit(std::string("Weights: ") + toString(mode), std::move(next));
 }

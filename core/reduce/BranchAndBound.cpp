@@ -1,0 +1,327 @@
+#include "core/reduce/BranchAndBound.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <mutex>
+#include <numeric>
+#include <vector>
+
+namespace vl {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr int kMaxUnits = 64;
+// Subtrees this close to the root of a suffix problem run as parallel tasks, when the suffix is at
+// least kParallelMinUnits long (smaller problems finish faster than tasks start).
+constexpr int kParallelDepth = 3;
+constexpr int kParallelMinUnits = 14;
+
+// The best complete placement found so far, shared by all tasks of one suffix problem.
+class Incumbent {
+  public:
+    explicit Incumbent(double cost) : cost_(cost) {}
+    double cost() const { return cost_.load(std::memory_order_relaxed); }
+    void offer(double cost, std::span<const std::int8_t> labels) {
+        if (cost >= this->cost()) return;
+        std::lock_guard lock(mutex_);
+        if (cost >= cost_.load()) return;
+        labels_.assign(labels.begin(), labels.end());
+        cost_.store(cost);
+    }
+    const std::vector<std::int8_t>& labels() const { return labels_; }
+
+  private:
+    std::atomic<double> cost_;
+    std::mutex mutex_;
+    std::vector<std::int8_t> labels_; // group per position; empty until a placement was offered
+};
+
+// A partial placement: groups 0..k-1 and the group of each placed position.
+struct State {
+    int k = 0;
+    double partial = 0; // sum of the groups' costs
+    std::array<GroupSums, kMaxUnits> sums{};
+    std::array<UnitMask, kMaxUnits> masks{};
+    std::array<std::int8_t, kMaxUnits> labels{};
+};
+
+struct Child {
+    double bound;
+    double delta;
+    int group; // k = open a new group
+    GroupSums sums;
+};
+
+class SuffixSearch {
+  public:
+    SuffixSearch(const GroupCostModel& model, std::span<const int> order, std::span<const double> suffixBound,
+                 int first, int groups, int zeroFrom, const SearchLimits& limits, Incumbent& incumbent)
+        : model_(model), order_(order), suffixBound_(suffixBound), first_(first), q_(groups),
+          n_(static_cast<int>(order.size())), zeroFrom_(std::max(zeroFrom, first)), limits_(limits),
+          incumbent_(incumbent), tolerance_(model.tolerance()) {}
+
+    // Lower bound of the parts of the tree left unexplored (+inf when the search completed).
+    double run() {
+        State s;
+        return explore(s, first_);
+    }
+
+  private:
+    bool expired() {
+        thread_local unsigned counter = 0;
+        if ((++counter & 255u) != 0) return false;
+        if (limits_.expired()) stopped_.store(true, std::memory_order_relaxed);
+        return stopped_.load(std::memory_order_relaxed);
+    }
+
+    int children(const State& s, int t, std::array<Child, kMaxUnits + 1>& out) const {
+        const int u = order_[static_cast<std::size_t>(t)];
+        const int remaining = n_ - t - 1; // units left after this one
+        const double rest = suffixBound_[static_cast<std::size_t>(t + 1)];
+        int count = 0;
+        if (remaining >= q_ - s.k) { // joining keeps enough units to open the missing groups
+            for (int g = 0; g < s.k; ++g) {
+                const UnitMask members = s.masks[static_cast<std::size_t>(g)];
+                if (model_.conflicts[static_cast<std::size_t>(u)] & members) continue;
+                double crossSum = 0;
+                for (UnitMask bits = members; bits; bits &= bits - 1)
+                    crossSum += model_.h(u, std::countr_zero(bits));
+                const GroupSums& before = s.sums[static_cast<std::size_t>(g)];
+                const GroupSums after = before.plus(model_, u, crossSum);
+                const double delta = after.cost() - before.cost();
+                out[static_cast<std::size_t>(count++)] = {s.partial + delta + rest, delta, g, after};
+            }
+        }
+        if (s.k < q_)
+            out[static_cast<std::size_t>(count++)] = {s.partial + rest, 0.0, s.k,
+                                                      GroupSums{}.plus(model_, u, 0.0)};
+        std::sort(out.begin(), out.begin() + count,
+                  [](const Child& a, const Child& b) { return a.bound < b.bound; });
+        return count;
+    }
+
+    static void apply(State& s, int t, int unit, const Child& c) {
+        const auto g = static_cast<std::size_t>(c.group);
+        if (c.group == s.k) ++s.k;
+        s.sums[g] = c.sums;
+        s.masks[g] |= UnitMask{1} << unit;
+        s.partial += c.delta;
+        s.labels[static_cast<std::size_t>(t)] = static_cast<std::int8_t>(c.group);
+    }
+
+    static void undo(State& s, int unit, const Child& c, const GroupSums& before) {
+        const auto g = static_cast<std::size_t>(c.group);
+        s.masks[g] &= ~(UnitMask{1} << unit);
+        s.sums[g] = before;
+        s.partial -= c.delta;
+        if (s.masks[g] == 0) --s.k;
+    }
+
+    // Units of weight 0 cost nothing wherever they go: the first placement of the zero-weight tail
+    // that respects the conflicts and opens the missing groups completes an optimal leaf.
+    bool completeFeasibly(State& s, int t) {
+        if (t == n_) return s.k == q_;
+        const int u = order_[static_cast<std::size_t>(t)];
+        const int remaining = n_ - t - 1;
+        for (int g = 0; g <= s.k && g < q_; ++g) {
+            const bool opens = g == s.k;
+            if (!opens && remaining < q_ - s.k) continue;
+            if (model_.conflicts[static_cast<std::size_t>(u)] & s.masks[static_cast<std::size_t>(g)])
+                continue;
+            if (opens) ++s.k;
+            s.masks[static_cast<std::size_t>(g)] |= UnitMask{1} << u;
+            s.labels[static_cast<std::size_t>(t)] = static_cast<std::int8_t>(g);
+            if (completeFeasibly(s, t + 1)) return true;
+            s.masks[static_cast<std::size_t>(g)] &= ~(UnitMask{1} << u);
+            if (opens) --s.k;
+        }
+        return false;
+    }
+
+    void leaf(State& s) {
+        incumbent_.offer(s.partial,
+                         std::span(s.labels.data() + first_, static_cast<std::size_t>(n_ - first_)));
+    }
+
+    double explore(State& s, int t) {
+        if (t == zeroFrom_) {
+            if (s.partial < incumbent_.cost()) {
+                State copy = s;
+                if (completeFeasibly(copy, t)) leaf(copy);
+            }
+            return kInf;
+        }
+        if (expired()) return s.partial + suffixBound_[static_cast<std::size_t>(t)];
+        std::array<Child, kMaxUnits + 1> list;
+        const int count = children(s, t, list);
+        const int u = order_[static_cast<std::size_t>(t)];
+        if (t - first_ < kParallelDepth && n_ - first_ >= kParallelMinUnits && count > 1) {
+            std::array<double, kMaxUnits + 1> unexplored;
+            tbb::parallel_for(0, count, [&](int i) {
+                const Child& c = list[static_cast<std::size_t>(i)];
+                unexplored[static_cast<std::size_t>(i)] = kInf;
+                if (c.bound >= incumbent_.cost() - tolerance_) return;
+                if (stopped_.load(std::memory_order_relaxed)) {
+                    unexplored[static_cast<std::size_t>(i)] = c.bound;
+                    return;
+                }
+                State copy = s;
+                apply(copy, t, u, c);
+                unexplored[static_cast<std::size_t>(i)] = explore(copy, t + 1);
+            });
+            return *std::min_element(unexplored.begin(), unexplored.begin() + count);
+        }
+        double unexplored = kInf;
+        for (int i = 0; i < count; ++i) {
+            const Child& c = list[static_cast<std::size_t>(i)];
+            if (c.bound >= incumbent_.cost() - tolerance_) break; // sorted: the rest is pruned too
+            if (stopped_.load(std::memory_order_relaxed)) return std::min(unexplored, c.bound);
+            const GroupSums before = s.sums[static_cast<std::size_t>(c.group)];
+            apply(s, t, u, c);
+            if (t + 1 == n_)
+                leaf(s);
+            else
+                unexplored = std::min(unexplored, explore(s, t + 1));
+            undo(s, u, c, before);
+        }
+        return unexplored;
+    }
+
+    const GroupCostModel& model_;
+    std::span<const int> order_;
+    std::span<const double> suffixBound_;
+    const int first_, q_, n_, zeroFrom_;
+    const SearchLimits& limits_;
+    Incumbent& incumbent_;
+    const double tolerance_;
+    std::atomic<bool> stopped_{false};
+};
+
+// The order units are placed in. Units of weight 0 go last (they cost nothing, see
+// completeFeasibly). The others are interleaved across the groups of the starting partition, one
+// member of each group in turn, heaviest groups first: every suffix then holds a share of every
+// group, so its optimum is a large share of the whole optimum and the bounds are tight.
+std::vector<int> placementOrder(const GroupCostModel& model, std::span<const UnitMask> start) {
+    const int n = model.size();
+    std::vector<std::vector<int>> queues;
+    UnitMask covered = 0;
+    for (const UnitMask g : start) {
+        queues.emplace_back();
+        for (UnitMask bits = g; bits; bits &= bits - 1) queues.back().push_back(std::countr_zero(bits));
+        covered |= g;
+    }
+    for (int a = 0; a < n; ++a)
+        if (!(covered >> a & 1)) queues.push_back({a});
+    for (auto& q : queues) // heaviest member first within a group
+        std::stable_sort(q.begin(), q.end(), [&](int a, int b) {
+            return model.weight[static_cast<std::size_t>(a)] > model.weight[static_cast<std::size_t>(b)];
+        });
+    std::vector<int> order, zero;
+    for (std::size_t round = 0; order.size() + zero.size() < static_cast<std::size_t>(n); ++round)
+        for (const auto& q : queues)
+            if (round < q.size())
+                (model.weight[static_cast<std::size_t>(q[round])] > 0 ? order : zero).push_back(q[round]);
+    order.insert(order.end(), zero.begin(), zero.end());
+    return order;
+}
+
+} // namespace
+
+UnitPartition branchAndBound(const GroupCostModel& model, int p, std::span<const UnitMask> start,
+                             const SearchLimits& limits, std::atomic<double>* done) {
+    const int n = model.size();
+    const std::vector<int> order = placementOrder(model, start);
+    int zeroFrom = n;
+    while (zeroFrom > 0 &&
+           !(model.weight[static_cast<std::size_t>(order[static_cast<std::size_t>(zeroFrom - 1)])] > 0))
+        --zeroFrom;
+
+    // suffixBound[t]: lower bound (the optimum once proven) of units order[t..n-1] in min(p, n - t) groups.
+    std::vector<double> suffixBound(static_cast<std::size_t>(n + 1), 0.0);
+    std::vector<std::int8_t> labels; // best placement of the last suffix solved, per position
+    UnitPartition result;
+    for (int first = n - 1; first >= 0; --first) {
+        const int size = n - first;
+        const int groups = std::min(p, size);
+        const int u = order[static_cast<std::size_t>(first)];
+        // Starting bound: the previous suffix's best placement with unit u added where it costs least.
+        double startCost = kInf;
+        std::vector<std::int8_t> startLabels;
+        if (groups == size) { // every unit alone
+            startCost = 0;
+            startLabels.resize(static_cast<std::size_t>(size));
+            std::iota(startLabels.begin(), startLabels.end(), std::int8_t{0});
+        } else if (!labels.empty()) {
+            std::vector<UnitMask> masks(static_cast<std::size_t>(groups), 0);
+            for (std::size_t i = 0; i < labels.size(); ++i)
+                masks[static_cast<std::size_t>(labels[i])] |=
+                    UnitMask{1} << order[static_cast<std::size_t>(first + 1) + i];
+            double base = partitionCost(model, masks);
+            for (int g = 0; g < groups; ++g) {
+                if (model.conflicts[static_cast<std::size_t>(u)] & masks[static_cast<std::size_t>(g)])
+                    continue;
+                const UnitMask grown = masks[static_cast<std::size_t>(g)] | UnitMask{1} << u;
+                const double cost = base - model.cost(masks[static_cast<std::size_t>(g)]) + model.cost(grown);
+                if (cost < startCost) {
+                    startCost = cost;
+                    startLabels.assign(1, static_cast<std::int8_t>(g));
+                    startLabels.insert(startLabels.end(), labels.begin(), labels.end());
+                }
+            }
+        }
+        if (first == 0 && static_cast<int>(start.size()) == p) { // the caller's partition of all units
+            const double cost = partitionCost(model, start);
+            if (cost < startCost) {
+                startCost = cost;
+                startLabels.assign(static_cast<std::size_t>(n), 0);
+                for (int t = 0; t < n; ++t)
+                    for (int g = 0; g < p; ++g)
+                        if (start[static_cast<std::size_t>(g)] >> order[static_cast<std::size_t>(t)] & 1)
+                            startLabels[static_cast<std::size_t>(t)] = static_cast<std::int8_t>(g);
+            }
+        }
+        Incumbent incumbent(startCost);
+        double unexplored = kInf;
+        if (groups < size) {
+            SuffixSearch search(model, order, suffixBound, first, groups, zeroFrom, limits, incumbent);
+            unexplored = search.run();
+        }
+        labels = incumbent.labels().empty() ? startLabels : incumbent.labels();
+        const double best = incumbent.cost();
+        suffixBound[static_cast<std::size_t>(first)] = std::min(best, unexplored);
+        if (done) done->store(static_cast<double>(size) / n, std::memory_order_relaxed);
+        if (unexplored < kInf || first == 0) {
+            // Stopped (or finished): report the whole problem.
+            result.lowerBound = std::max(0.0, std::min(best, unexplored));
+            result.optimal = unexplored == kInf && first == 0;
+            if (first == 0 && !labels.empty()) {
+                result.groups.assign(static_cast<std::size_t>(p), 0);
+                for (int t = 0; t < n; ++t)
+                    result.groups[static_cast<std::size_t>(labels[static_cast<std::size_t>(t)])] |=
+                        UnitMask{1} << order[static_cast<std::size_t>(t)];
+            } else if (static_cast<int>(start.size()) == p) {
+                result.groups.assign(start.begin(), start.end());
+            }
+            break;
+        }
+    }
+    if (!result.groups.empty()) {
+        // Canonical order (by lowest unit) and the cost recomputed the one shared way.
+        std::sort(result.groups.begin(), result.groups.end(),
+                  [](UnitMask a, UnitMask b) { return std::countr_zero(a) < std::countr_zero(b); });
+        result.cost = partitionCost(model, result.groups);
+        if (result.optimal) result.lowerBound = result.cost;
+        result.lowerBound = std::min(result.lowerBound, result.cost);
+    } else {
+        result.cost = kInf;
+        if (result.optimal) result.lowerBound = kInf; // proven: no partition into p groups exists
+    }
+    return result;
+}
+
+} // namespace vl

@@ -1,0 +1,39 @@
+#pragma once
+// Certified optimum of the reduction for any n (up to 64 units) by repetitive branch and bound
+// (Brusco 2006, "A repetitive branch-and-bound procedure for minimum within-cluster sums of squares
+// partitioning"), on the Gram form of the objective (GroupCostModel).
+//
+// Units are placed one at a time in a fixed order into an existing group or a new one (a unit opens
+// group k only after groups 0..k-1 exist: each partition is enumerated once). A partial placement of
+// the first t units is pruned when
+//   c(groups so far) + OPT(units t..n-1)  >=  best cost found,
+// which is valid because the cost is superadditive: splitting a group never raises the cost, so the
+// groups restricted to the last units cost at least their own optimum. The optima of the suffixes
+// t..n-1 come from solving the suffix problems first, smallest to largest, each with the bounds of
+// the smaller ones (the "repetitive" part). When the search is stopped early, the smallest bound of
+// the unexplored subtrees is a valid lower bound on the optimum.
+#include "core/reduce/UnitPartition.h"
+
+#include <atomic>
+#include <chrono>
+#include <span>
+
+namespace vl {
+
+struct SearchLimits {
+    std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
+    const std::atomic<bool>* cancelled = nullptr; // set by another thread to stop early
+    bool expired() const {
+        return (cancelled && cancelled->load(std::memory_order_relaxed)) ||
+               std::chrono::steady_clock::now() >= deadline;
+    }
+};
+
+// The optimal partition of all units into exactly p groups with no conflicting pair in a group.
+// `start` is a feasible partition into p groups (an upper bound) or empty. `done` (optional) is raised
+// towards 1 as the suffix problems complete. Without a proof before the limits expire, the result has
+// optimal = false, the best partition found and a valid lower bound. p must be in 1..model.size().
+UnitPartition branchAndBound(const GroupCostModel& model, int p, std::span<const UnitMask> start,
+                             const SearchLimits& limits = {}, std::atomic<double>* done = nullptr);
+
+} // namespace vl

@@ -1,0 +1,170 @@
+// Branch and bound against the subset DP and brute force, its certificates, and its time limit.
+#include "BruteForce.h"
+#include "RandomShapes.h"
+
+#include "core/reduce/GramMatrix.h"
+#include "core/reduce/GroupCostModel.h"
+#include "core/reduce/ReductionHeuristics.h"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+
+using namespace vl;
+
+namespace {
+
+ReductionResult solve(const test::RandomInstance& inst, int m, ReductionMethod method,
+                      const ReductionConstraints& constraints = {}) {
+    ReductionOptions options;
+    options.method = method;
+    return reduceVisemes({inst.shapes, inst.frequencies, inst.weights, m, constraints}, options);
+}
+
+void expectCertificate(const Grouping& g) {
+    EXPECT_LE(g.lowerBound, g.cost * (1 + 1e-12) + 1e-300);
+    EXPECT_GE(g.lowerBound, 0.0);
+    if (g.optimal) {
+        EXPECT_EQ(g.gap(), 0.0);
+        EXPECT_EQ(g.lowerBound, g.cost);
+    }
+}
+
+} // namespace
+
+TEST(BranchAndBound, AgreesWithDpAndBruteForceOnRandomInstances) {
+    std::mt19937 rng(4242);
+    for (int n = 1; n <= 10; ++n) {
+        for (int trial = 0; trial < (n <= 7 ? 4 : 2); ++trial) {
+            auto inst =
+                trial % 2 ? test::rigInstance(rng, n, 15, 4) : test::randomInstance(rng, n, 10, trial == 2);
+            if (trial == 3 && n >= 3) inst.shapes[2] = inst.shapes[0]; // duplicates tie many groupings
+            const auto bnb = solve(inst, n, ReductionMethod::BranchAndBound);
+            const auto dp = solve(inst, n, ReductionMethod::SubsetDp);
+            EXPECT_EQ(bnb.method, ReductionMethod::BranchAndBound);
+            EXPECT_EQ(dp.method, ReductionMethod::SubsetDp);
+            for (int m = 1; m <= n; ++m) {
+                const double reference = *test::bruteForceBest(inst, m);
+                const double tolerance = 1e-9 * std::max(1.0, reference);
+                for (const ReductionResult* result : {&bnb, &dp}) {
+                    const Grouping& g = result->curve[static_cast<std::size_t>(m - 1)];
+                    SCOPED_TRACE("n=" + std::to_string(n) + " m=" + std::to_string(m) + " " +
+                                 toString(result->method));
+                    EXPECT_TRUE(test::isValidGrouping(g.groups, n, m));
+                    EXPECT_TRUE(g.optimal);
+                    EXPECT_NEAR(g.cost, reference, tolerance);
+                    EXPECT_NEAR(groupingCost(inst.shapes, inst.frequencies, inst.weights, g.groups), g.cost,
+                                tolerance);
+                    expectCertificate(g);
+                }
+            }
+        }
+    }
+}
+
+TEST(BranchAndBound, AgreesWithDpOnLargerSets) {
+    std::mt19937 rng(77);
+    for (const int n : {12, 14, 17}) {
+        for (const bool rig : {false, true}) {
+            if (n == 17 && !rig) continue; // structureless sets of this size are the DP's (seconds for B&B)
+            const auto inst =
+                rig ? test::rigInstance(rng, n, 60, 6) : test::randomInstance(rng, n, 30, n == 14);
+            const int m = n / 2;
+            const auto bnb = solve(inst, m, ReductionMethod::BranchAndBound);
+            const auto dp = solve(inst, m, ReductionMethod::SubsetDp);
+            for (int p = 1; p <= m; ++p) {
+                const Grouping& a = bnb.curve[static_cast<std::size_t>(p - 1)];
+                const Grouping& b = dp.curve[static_cast<std::size_t>(p - 1)];
+                ASSERT_TRUE(a.optimal) << "n=" << n << " p=" << p;
+                EXPECT_NEAR(a.cost, b.cost, 1e-9 * std::max(1.0, b.cost)) << "n=" << n << " p=" << p;
+                EXPECT_TRUE(test::isValidGrouping(a.groups, n, p));
+            }
+        }
+    }
+}
+
+TEST(BranchAndBound, TimeLimitReturnsAValidGroupingWithAGap) {
+    // About equally distant shapes: the hardest case for the bounds, far from finishing in 0.2 s.
+    std::mt19937 rng(5);
+    const auto inst = test::randomInstance(rng, 36, 40);
+    ReductionOptions options;
+    options.method = ReductionMethod::BranchAndBound;
+    options.timeLimitSeconds = 0.2;
+    const int m = 12;
+    const auto result = reduceVisemes({inst.shapes, inst.frequencies, inst.weights, m}, options);
+    ASSERT_EQ(result.curve.size(), static_cast<std::size_t>(m));
+    const Grouping& best = result.best();
+    EXPECT_TRUE(test::isValidGrouping(best.groups, 36, m));
+    EXPECT_FALSE(best.optimal);
+    EXPECT_GT(best.gap(), 0.0);
+    EXPECT_LT(best.gap(), 1.0);
+    EXPECT_GT(best.lowerBound, 0.0);
+    for (const auto& g : result.curve) expectCertificate(g);
+    EXPECT_NEAR(groupingCost(inst.shapes, inst.frequencies, inst.weights, best.groups), best.cost,
+                1e-9 * best.cost);
+}
+
+TEST(BranchAndBound, CancelledSearchStillReturnsAValidGrouping) {
+    std::mt19937 rng(6);
+    const auto inst = test::randomInstance(rng, 30, 20);
+    std::atomic<bool> cancelled{true};
+    ReductionOptions options;
+    options.method = ReductionMethod::BranchAndBound;
+    options.cancelled = &cancelled;
+    const auto result = reduceVisemes({inst.shapes, inst.frequencies, inst.weights, 8}, options);
+    EXPECT_TRUE(test::isValidGrouping(result.best().groups, 30, 8));
+    for (const auto& g : result.curve) expectCertificate(g);
+}
+
+TEST(BranchAndBound, ProvesStructuredSetsBeyondTheDp) {
+    std::mt19937 rng(8);
+    const auto inst = test::rigInstance(rng, 26, 80, 8);
+    const auto result = solve(inst, 8, ReductionMethod::BranchAndBound);
+    for (std::size_t p = 0; p < result.curve.size(); ++p) {
+        EXPECT_TRUE(result.curve[p].optimal) << "p=" << p + 1;
+        EXPECT_TRUE(test::isValidGrouping(result.curve[p].groups, 26, static_cast<int>(p) + 1));
+        if (p > 0) {
+            EXPECT_LE(result.curve[p].cost, result.curve[p - 1].cost * (1 + 1e-12));
+        }
+    }
+}
+
+TEST(BranchAndBound, AutoPicksTheDpForSmallSetsAndProvesLargerOnes) {
+    std::mt19937 rng(9);
+    const auto small = test::randomInstance(rng, 8, 10);
+    EXPECT_EQ(reduceVisemes({small.shapes, small.frequencies, small.weights, 4}).method,
+              ReductionMethod::SubsetDp);
+    const auto large = test::rigInstance(rng, 24, 40, 6);
+    const auto result = reduceVisemes({large.shapes, large.frequencies, large.weights, 6});
+    EXPECT_EQ(result.method, ReductionMethod::BranchAndBound);
+    EXPECT_TRUE(result.best().optimal);
+}
+
+TEST(ReductionHeuristics, PartitionsAreValidAndNeverBelowTheOptimum) {
+    std::mt19937 rng(10);
+    for (int trial = 0; trial < 6; ++trial) {
+        const int n = 6 + trial;
+        const auto inst = test::randomInstance(rng, n, 12, trial % 2 == 1);
+        ReductionConstraints constraints;
+        constraints.apart = {{0, 1}, {1, 2}};
+        const ConstraintUnits units = constraintUnits(constraints, n);
+        const GroupCostModel model = makeGroupCostModel(
+            centredGram(inst.shapes, inst.frequencies, inst.weights), inst.frequencies, units);
+        const auto partitions = heuristicPartitions(model, n);
+        const auto exact = solve(inst, n, ReductionMethod::SubsetDp, constraints);
+        for (int p = 2; p <= n; ++p) {
+            const auto& groups = partitions[static_cast<std::size_t>(p - 1)];
+            ASSERT_EQ(static_cast<int>(groups.size()), p);
+            UnitMask all = 0;
+            for (const UnitMask g : groups) {
+                EXPECT_NE(g, 0u);
+                EXPECT_EQ(all & g, 0u);
+                EXPECT_TRUE(model.allowed(g));
+                all |= g;
+            }
+            EXPECT_EQ(all, (UnitMask{1} << n) - 1);
+            EXPECT_GE(partitionCost(model, groups),
+                      exact.curve[static_cast<std::size_t>(p - 1)].cost * (1 - 1e-12));
+        }
+    }
+}
