@@ -86,7 +86,7 @@ void applyStartOptions(const EditorOptions& options, EditorSession& session, Edi
     bool refine = false; // the refinement starts after the face's other options, if its criterion is valid
     step(!options.refine.empty(), [&] {
         needFace();
-        CriterionSettings settings = session.project().refinement;
+        CriterionSettings settings = session.document().refinement;
         settings.kind = parseCriterionKind(options.refine, "--refine");
         session.setRefinementSettings(settings);
         refine = true;

@@ -35,7 +35,7 @@ std::vector<int> EditorUi::playbackKeys() const {
     std::istringstream tokens(playback_.sequence);
     std::string token;
     while (tokens >> token) {
-        const std::string* viaMap = session.project().frequencies.map.visemeOf(token);
+        const std::string* viaMap = session.document().frequencies.map.visemeOf(token);
         const int index = set->find(viaMap ? *viaMap : token);
         if (index >= 0) keys.push_back(index);
     }
@@ -72,8 +72,8 @@ void EditorUi::paint(const ViewportEvents& events) {
     if (events.leftPressed && !ImGui::GetIO().KeyAlt) {
         strokeActive_ = true;
         // The stroke starts from the weights shown (uniform, area or painted), scaled to [0, 1].
-        const auto& weights = session.project().weights;
-        strokeStart_ = weightsForPainting(weights.mode, set->neutral, weights.painted);
+        const auto& weights = session.document().weights;
+        strokeStart_ = weightsForPainting(weights.mode, set->neutral, weights.paintedOrEmpty());
         strokeWeights_ = strokeStart_;
         lastDab_.reset();
     }

@@ -129,11 +129,11 @@ double EditorUi::millimetresPerModelUnit() const {
 
 nlohmann::json EditorUi::probeSummary() const {
     static const char* const kCriteria[] = {"depth", "normals", "contour"};
-    const Project& project = session.project();
+    const Document& document = session.document();
     nlohmann::json messages = nlohmann::json::array();
     for (const StatusMessage& message : session.messages())
         messages.push_back({{"error", message.kind == StatusMessage::Kind::Error}, {"text", message.text}});
-    const auto& painted = project.weights.painted;
+    const auto& painted = document.weights.paintedOrEmpty();
     double paintedSum = 0.0;
     for (double w : painted) paintedSum += w;
     return {{"panel", panelName(activePanel_)},
@@ -141,25 +141,27 @@ nlohmann::json EditorUi::probeSummary() const {
             {"undo", session.undoName()},
             {"redo", session.redoName()},
             {"modified", session.modified()},
-            {"project_path", project.path.string()},
+            {"project_path", session.path().string()},
             {"messages", std::move(messages)},
             {"busy", session.loading() || session.saving() || session.exporting() ||
                          session.refinementRunning() || session.reductionRunning() ||
                          session.phonemeCountRunning()},
-            {"visemes", project.visemes.size()},
+            {"visemes", document.visemeCount()},
             {"selected_viseme", session.selectedViseme},
-            {"target", project.reduction.target},
-            {"criterion", kCriteria[static_cast<int>(project.refinement.kind)]},
+            {"target", document.target},
+            {"constraints", document.constraints.pinned.size() + document.constraints.apart.size() +
+                                document.constraints.together.size()},
+            {"criterion", kCriteria[static_cast<int>(document.refinement.kind)]},
             {"file_dialog_open", fileDialog_.isOpen()},
             {"brush", brush_.enabled},
-            {"weight_mode", toString(project.weights.mode)},
+            {"weight_mode", toString(document.weights.mode)},
             {"painted_mean", painted.empty() ? 0.0 : paintedSum / static_cast<double>(painted.size())},
             {"wireframe", wireframe_},
             {"playing", playback_.playing}};
 }
 
 void EditorUi::saveProject(bool askForFile, std::function<void()> then) {
-    if (!askForFile && !session.project().path.empty()) {
+    if (!askForFile && !session.path().empty()) {
         session.attempt("Save project", [&] { session.startSaveProject({}, std::move(then)); });
         return;
     }
@@ -190,7 +192,7 @@ void EditorUi::syncGpu() {
             for (const auto& v : set->visemes) targets.push_back(v.positions);
             session.attempt("Display visemes", [&] {
                 visemeMesh_.setGeometry(set->neutral.positions, set->neutral.triangles, targets);
-                if (const auto& colours = session.state().visemeColours) visemeMesh_.setColors(*colours);
+                if (const auto& colours = session.document().visemeColours) visemeMesh_.setColors(*colours);
             });
         } else {
             visemeMesh_.setGeometry({}, {}, {});
@@ -215,12 +217,12 @@ void EditorUi::syncGpu() {
         if (first) framePending_ = true;
     }
     const ReductionResult* curve = session.reductionCurve();
-    const int groups = session.project().reduction.target;
+    const int groups = session.document().target;
     if (curve && (uploadedMerged_ != curve || uploadedMergedGroups_ != groups)) {
         const auto& merged = session.mergedShapes();
         const VisemeSet* set = session.visemes();
         mergedMesh_.setGeometry(set->neutral.positions, set->neutral.triangles, merged);
-        if (const auto& colours = session.state().visemeColours) mergedMesh_.setColors(*colours);
+        if (const auto& colours = session.document().visemeColours) mergedMesh_.setColors(*colours);
         uploadedMerged_ = curve;
         uploadedMergedGroups_ = groups;
         weightsKey_.clear(), errorKey_.clear(), influenceKey_.clear();
@@ -308,8 +310,7 @@ void EditorUi::menuBar() {
                                      session.attempt("Open project", [&] { session.startOpenProject(path); });
                                  });
             });
-        if (ctl::MenuItem("Save project", "Ctrl+S", false, !session.project().path.empty()))
-            saveProject(false);
+        if (ctl::MenuItem("Save project", "Ctrl+S", false, !session.path().empty())) saveProject(false);
         if (ctl::MenuItem("Save project as...", "Ctrl+Shift+S")) saveProject(true);
         ImGui::Separator();
         if (ctl::MenuItem("Load sample face", "Ctrl+L"))
@@ -503,7 +504,7 @@ void EditorUi::unsavedChangesPopup() {
     }
     if (!ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
     ImGui::TextUnformatted("The project has unsaved changes.");
-    const bool hasPath = !session.project().path.empty();
+    const bool hasPath = !session.path().empty();
     if (ctl::Button(hasPath ? "Save" : "Save as...", ImVec2(110, 0))) {
         ImGui::CloseCurrentPopup();
         saveProject(false, std::move(pendingGuarded_));
@@ -524,7 +525,7 @@ void EditorUi::unsavedChangesPopup() {
 // --- views -----------------------------------------------------------------------------------
 
 ColorMode EditorUi::surfaceColours() const {
-    return session.state().visemeColours ? ColorMode::VertexColor : ColorMode::Surface;
+    return session.document().visemeColours ? ColorMode::VertexColor : ColorMode::Surface;
 }
 
 std::vector<float> EditorUi::visemeWeights(int viseme) const {
@@ -591,7 +592,7 @@ void EditorUi::mainView(ImVec2 size) {
                 events.imageMin, events.imageMax,
                 "No viseme set: File > Load sample face (Ctrl+L), or open a project or a viseme folder");
         } else if (activePanel_ == Panel::Weights) {
-            label = std::string("Weights: ") + toString(session.project().weights.mode);
+            label = std::string("Weights: ") + toString(session.document().weights.mode);
             if (showWeightsColours_) colourLegend(events.imageMin, events.imageMax, "0", "largest weight");
         } else if (playback_.playing) {
             label = "Playback (full set)";

@@ -144,6 +144,11 @@ class EditorUi {
         bool percent = false;
         int unit = 0; // 0 auto (guessed from the head size), then m, cm, mm, in
     } costView_;
+    // The Reduction panel's constraint editor: the visemes chosen in its combos (view state).
+    struct ConstraintChoice {
+        int pin = 0, first = 0, second = 1;
+    } constraintChoice_;
+    void constraintsSection();
     double errorLegendMax_ = 0.0; // largest weighted distance of the error colours, model units
     // Millimetres per model unit: the chosen unit, or the guess from the neutral mesh's size.
     double millimetresPerModelUnit() const;

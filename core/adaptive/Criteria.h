@@ -22,17 +22,20 @@ enum class CriterionKind { Depth, Normals, Contour };
 
 struct DepthCriterionParams {
     int depth = 3; // levels of edge bisection below the base mesh
+    bool operator==(const DepthCriterionParams&) const = default;
 };
 
 struct NormalsCriterionParams {
     double dihedralAngleDeg = 20.0; // between the normals of the two faces of an edge
     double normalAngleDeg = 20.0;   // between the averaged face normals at the two endpoints
+    bool operator==(const NormalsCriterionParams&) const = default;
 };
 
 struct ContourCriterionParams {
     double averageError = 0.02; // model units (cm for the bundled faces)
     double maximumError = 0.08; // model units
     int samplesPerSide = 4;     // quadrature: centroids of the n x n sub-triangles of each face
+    bool operator==(const ContourCriterionParams&) const = default;
 };
 
 struct CriterionSettings {
@@ -41,6 +44,7 @@ struct CriterionSettings {
     DepthCriterionParams depth;
     NormalsCriterionParams normals;
     ContourCriterionParams contour;
+    bool operator==(const CriterionSettings&) const = default;
 };
 
 std::string_view criterionName(CriterionKind kind); // "depth", "normals", "contour"

@@ -20,6 +20,7 @@ struct DeformParameter {
     double min = 0.0;
     double max = 1.0;
     double defaultValue = 0.0; // in [min, max]
+    bool operator==(const DeformParameter&) const = default;
 };
 
 enum class StageKind { Constant, AddVector };
@@ -29,6 +30,7 @@ struct DeformationStage {
     std::string name;          // what the field models, e.g. "jaw_open" (for display and files)
     std::size_t parameter = 0; // index into DeformationCascade::parameters (AddVector only)
     VectorField field;
+    bool operator==(const DeformationStage&) const = default;
 };
 
 struct DeformationCascade {
@@ -46,6 +48,7 @@ struct DeformationCascade {
     Vec3 evaluate(double u, double v, std::span<const double> q) const;
     // The same without checking q (the caller has run checkParameterValues once).
     Vec3 evaluateUnchecked(double u, double v, std::span<const double> q) const;
+    bool operator==(const DeformationCascade&) const = default;
 };
 
 // Throws InputError naming the cascade and the offending parameter or stage: empty or duplicate

@@ -23,6 +23,7 @@ struct SampledField {
     const Vec3& sample(int i, int j) const { return samples[static_cast<std::size_t>(j) * width + i]; }
     // Bilinear interpolation; (u,v) outside [0,1]^2 is clamped to the border.
     Vec3 at(double u, double v) const;
+    bool operator==(const SampledField&) const = default;
 };
 
 // How an influence decreases from 1 (inner plateau) to 0 (outer ellipse); all are monotone and
@@ -50,6 +51,7 @@ struct InfluenceField {
     // Scalar weight in [0,1] at (u,v).
     double weight(double u, double v) const;
     Vec3 at(double u, double v) const;
+    bool operator==(const InfluenceField&) const = default;
 };
 
 struct VectorField {
@@ -58,6 +60,7 @@ struct VectorField {
 
     Vec3 at(double u, double v) const;
     bool isZero() const { return sampled.empty() && influences.empty(); }
+    bool operator==(const VectorField&) const = default;
 };
 
 // Throws InputError "<where>: ..." naming the offending element (grid size, region index, radii,

@@ -16,6 +16,7 @@ namespace vl {
 struct VisemeParameters {
     std::string name;
     std::vector<std::pair<std::string, double>> values; // (parameter name, value)
+    bool operator==(const VisemeParameters&) const = default;
 };
 
 // The 15 Oculus/Meta visemes (sil, PP, FF, TH, DD, kk, CH, SS, nn, RR, aa, E, ih, oh, ou) for the

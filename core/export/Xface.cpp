@@ -174,7 +174,7 @@ std::string formatFdp(const ReducedModel& model) {
 
 PhonemeVisemeMap parseXfaceDictionary(std::string_view text, std::string_view source, std::string* language) {
     PhonemeVisemeMap map;
-    map.origin = source;
+    map.origin.text = source;
     std::unordered_set<std::string_view> listed; // linear-time duplicate check
     text = stripUtf8Bom(text); // a file of only a byte order mark is empty, not the language "\xEF\xBB\xBF"
     std::size_t lineNumber = 0, start = 0;

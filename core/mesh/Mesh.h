@@ -36,6 +36,7 @@ struct MeshData {
 
     std::size_t vertexCount() const { return positions.size(); }
     bool hasUVs() const { return !uvs.empty(); }
+    bool operator==(const MeshData&) const = default;
 };
 
 // Builds a half-edge mesh with the same vertex order; throws InputError (naming `where` and the

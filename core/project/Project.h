@@ -27,6 +27,7 @@ struct ProjectNeutral {
     MeshData embedded;          // used when file is empty; no positions = the project has no neutral yet
     bool isEmbedded() const { return file.empty() && !embedded.positions.empty(); }
     bool isSet() const { return !file.empty() || !embedded.positions.empty(); }
+    bool operator==(const ProjectNeutral&) const = default;
 };
 
 // A viseme: a name plus a file, or embedded positions (it shares the neutral's topology and (u,v)).
@@ -35,17 +36,20 @@ struct ProjectViseme {
     std::filesystem::path file;  // empty when embedded
     std::vector<Vec3> positions; // used when file is empty
     bool isEmbedded() const { return file.empty(); }
+    bool operator==(const ProjectViseme&) const = default;
 };
 
 struct ProjectWeights {
     WeightMode mode = WeightMode::Uniform;
     std::vector<double> painted; // one per vertex; kept when another mode is selected
+    bool operator==(const ProjectWeights&) const = default;
 };
 
 struct ProjectReduction {
     int target = 1;                        // m, in 1..n
     ConstraintNames constraints;           // pins, apart and together pairs by viseme name
     std::optional<ReductionResult> result; // the last run (groups ordered and canonical), if any
+    bool operator==(const ProjectReduction&) const = default;
 };
 
 // The deformable face (paper "Adaptive Deformable Models"): its cascade of fields, the current
@@ -56,11 +60,13 @@ struct ProjectDeformation {
     std::vector<VisemeParameters> visemes; // parameters not listed keep their default
 
     bool isSet() const { return !cascade.stages.empty(); }
+    bool operator==(const ProjectDeformation&) const = default;
 };
 
 // Cheap editor state that is worth restoring when a project is reopened.
 struct ProjectEditorState {
     std::string selectedViseme; // empty = none
+    bool operator==(const ProjectEditorState&) const = default;
 };
 
 struct Project {
@@ -78,13 +84,10 @@ struct Project {
     ProjectEditorState editor;
 
     int findViseme(std::string_view name) const; // index or -1
+    // Every field, compared exactly (doubles by value: NaN is never equal); where a table was read
+    // from (Provenance) is not part of the value.
+    bool operator==(const Project&) const = default;
 };
-
-// Exact equality of every field (doubles compared bit-for-bit by value; NaN never equal).
-bool operator==(const Project& a, const Project& b);
-inline bool operator!=(const Project& a, const Project& b) {
-    return !(a == b);
-}
 
 // Reads, migrates (older versions) and validates a project file. Every problem is an InputError
 // "<file>: <JSON path>: <what>", e.g. "p.vlproj: /visemes/3/file: file not found (…/aa.obj)".

@@ -47,9 +47,9 @@ Project projectFromJsonText(std::string_view text, const std::filesystem::path& 
     }
     project.path = projectFile;
     // Later checks of the frequencies (against the loaded meshes) name the project file too.
-    project.frequencies.origin = projectFile.string() + ":/frequencies";
+    project.frequencies.origin.text = projectFile.string() + ":/frequencies";
     if (!project.frequencies.map.entries.empty())
-        project.frequencies.map.origin = project.frequencies.origin + "/map";
+        project.frequencies.map.origin.text = project.frequencies.origin.text + "/map";
     return project;
 }
 

@@ -129,7 +129,7 @@ PhonemeVisemeMap mapFromJson(const Json& node, const std::string& source, const 
     if (!node.is_object())
         throwInputError(jsonWhere(source, path), "expected an object {\"phoneme\": \"viseme\", ...}");
     PhonemeVisemeMap map;
-    map.origin = jsonWhere(source, path);
+    map.origin.text = jsonWhere(source, path);
     for (const auto& [key, value] : node.items()) {
         const std::string where = jsonWhere(source, jsonPathAppend(path, key));
         if (!value.is_string() || value.get_ref<const std::string&>().empty())
@@ -159,7 +159,7 @@ FrequencySource loadFrequencyFile(const std::filesystem::path& path) {
     const std::string source = path.string();
     if (isBlankText(text)) throwInputError(source, "empty frequency file");
     FrequencySource result;
-    result.origin = source;
+    result.origin.text = source;
     if (path.extension() != ".json") {
         result.visemeFrequencies = parseFrequencyCsv(text, source);
         return result;
@@ -187,11 +187,11 @@ PhonemeVisemeMap loadPhonemeMapFile(const std::filesystem::path& path) {
         const Json doc = parseJsonStrict(stripUtf8Bom(text), source);
         const bool nested = doc.is_object() && doc.contains("map");
         PhonemeVisemeMap map = mapFromJson(nested ? doc["map"] : doc, source, nested ? "/map" : "");
-        if (map.entries.empty()) throwInputError(map.origin, "no phoneme -> viseme entries");
+        if (map.entries.empty()) throwInputError(map.origin.text, "no phoneme -> viseme entries");
         return map;
     }
     PhonemeVisemeMap map;
-    map.origin = source;
+    map.origin.text = source;
     std::unordered_set<std::string> mapped;
     forEachCsvRow(text, source, false, [&](const std::vector<std::string>& fields, const std::string& where) {
         if (!mapped.insert(fields[0]).second)
@@ -210,14 +210,15 @@ std::vector<double> visemeFrequencies(const FrequencySource& source,
                            : !origin.empty() ? std::string_view(origin)
                                              : "frequencies");
     };
-    const std::string place = placeOr(source.origin);
+    const std::string place = placeOr(source.origin.text);
     std::unordered_map<std::string_view, std::size_t> indexOf;
     for (std::size_t i = 0; i < visemeNames.size(); ++i) indexOf.emplace(visemeNames[i], i);
     std::vector<double> freq(visemeNames.size(), 0.0);
     if (source.isPhonemeBased()) {
         std::unordered_map<std::string_view, const std::string*> visemeOfPhoneme;
         for (const auto& [phoneme, viseme] : source.map.entries) visemeOfPhoneme.emplace(phoneme, &viseme);
-        const std::string mapPlace = placeOr(source.map.origin.empty() ? source.origin : source.map.origin);
+        const std::string mapPlace =
+            placeOr(source.map.origin.text.empty() ? source.origin.text : source.map.origin.text);
         std::string unmapped;
         for (const auto& [phoneme, value] : source.phonemes.entries) {
             checkFrequency(value, place + ": phoneme '" + phoneme + "'");

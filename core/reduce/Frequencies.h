@@ -1,6 +1,8 @@
 #pragma once
 // Viseme frequencies f_i: given directly, or derived from a phoneme frequency table and a
 // phoneme -> viseme map (a viseme's frequency is the sum of its phonemes').
+#include "core/common/Provenance.h"
+
 #include <filesystem>
 #include <map>
 #include <string>
@@ -13,13 +15,15 @@ struct FrequencyTable {
     std::vector<std::pair<std::string, double>> entries;
     double total() const;
     const double* find(std::string_view name) const;
+    bool operator==(const FrequencyTable&) const = default;
 };
 
 // phoneme -> viseme name, in table order.
 struct PhonemeVisemeMap {
     std::vector<std::pair<std::string, std::string>> entries;
-    std::string origin; // the file (or project JSON path) it was read from, for messages; may be empty
+    Provenance origin; // the file (or project JSON path) it was read from, for messages
     const std::string* visemeOf(std::string_view phoneme) const;
+    bool operator==(const PhonemeVisemeMap&) const = default;
 };
 
 // What a frequency file holds: either viseme frequencies directly, or a phoneme table plus a map.
@@ -27,8 +31,9 @@ struct FrequencySource {
     FrequencyTable visemeFrequencies; // used when phonemes is empty
     FrequencyTable phonemes;
     PhonemeVisemeMap map;
-    std::string origin; // the file (or project JSON path) it was read from, for messages; may be empty
+    Provenance origin; // the file (or project JSON path) it was read from, for messages
     bool isPhonemeBased() const { return !phonemes.entries.empty(); }
+    bool operator==(const FrequencySource&) const = default;
 };
 
 // CSV "name,frequency" lines (a header line and '#' comments allowed) or JSON: either

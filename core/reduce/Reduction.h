@@ -62,6 +62,7 @@ struct Grouping {
     bool feasible() const { return !groups.empty(); }
     // (cost - lowerBound) / cost: 0 when optimal, 1 when nothing is known.
     double gap() const;
+    bool operator==(const Grouping&) const = default;
 };
 
 struct ReductionResult {
@@ -70,6 +71,7 @@ struct ReductionResult {
     const Grouping& best() const { return curve.back(); }
     // groupOf[i]: index of the group viseme i belongs to in best().
     std::vector<int> groupOf() const;
+    bool operator==(const ReductionResult&) const = default;
 };
 
 // Progress in [0,1]; called from the calling thread only.

@@ -122,10 +122,6 @@ class Colouring {
 
 } // namespace
 
-bool operator==(const ConstraintNames& a, const ConstraintNames& b) {
-    return a.pinned == b.pinned && a.apart == b.apart && a.together == b.together;
-}
-
 ReductionConstraints resolveConstraints(const ConstraintNames& names,
                                         std::span<const std::string> visemeNames, std::string_view where) {
     auto indexOf = [&](const std::string& name) {

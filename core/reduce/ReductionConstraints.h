@@ -28,9 +28,8 @@ struct ConstraintNames {
     std::vector<std::pair<std::string, std::string>> together;
 
     bool empty() const { return pinned.empty() && apart.empty() && together.empty(); }
+    bool operator==(const ConstraintNames&) const = default;
 };
-
-bool operator==(const ConstraintNames& a, const ConstraintNames& b);
 
 // Indices of the named visemes; throws InputError at `where` naming an unknown viseme (with the
 // known names) or a pair that names the same viseme twice.

@@ -280,6 +280,35 @@ TEST(EditorClicks, CostPlotClickChoosesTheTarget) {
     EXPECT_NE(gui.document()["target"].get<int>(), n);
 }
 
+// Constraints with real clicks: pin PP through its combo and button, keep two visemes together,
+// undo, and remove a constraint with its x button; every change is one undo step.
+TEST(EditorClicks, ConstraintsArePinnedAndRemovedByClicks) {
+    REQUIRE_GUI_TOOLS();
+    GuiDriver gui({"--sample", "--panel", "Reduction"});
+    gui.waitIdle();
+    ASSERT_EQ(gui.document()["constraints"].get<int>(), 0);
+    gui.click(gui.control("##pinned viseme", "combo"));
+    gui.click(gui.control("PP", "selectable"));
+    gui.click(gui.control("Pin as its own key", "button"));
+    gui.waitIdle();
+    EXPECT_ALIVE(gui);
+    EXPECT_EQ(gui.document()["constraints"].get<int>(), 1) << gui.document().dump();
+    EXPECT_EQ(gui.document()["undo"], "Constraints");
+    gui.click(gui.control("##first of pair", "combo"));
+    gui.click(gui.control("E", "selectable"));
+    gui.click(gui.control("##second of pair", "combo"));
+    gui.click(gui.control("ih", "selectable"));
+    gui.click(gui.control("Keep together", "button"));
+    gui.waitIdle();
+    EXPECT_EQ(gui.document()["constraints"].get<int>(), 2) << gui.document()["messages"].dump();
+    gui.key("ctrl+z");
+    EXPECT_EQ(gui.document()["constraints"].get<int>(), 1);
+    gui.click(gui.control("x", "button"));
+    gui.waitIdle();
+    EXPECT_EQ(gui.document()["constraints"].get<int>(), 0);
+    EXPECT_ALIVE(gui);
+}
+
 std::string fileBytes(const std::filesystem::path& file) {
     std::ifstream in(file, std::ios::binary);
     return std::string(std::istreambuf_iterator<char>(in), {});

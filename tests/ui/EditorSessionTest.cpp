@@ -12,6 +12,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <thread>
 
 namespace vl::ui {
@@ -28,7 +29,7 @@ std::filesystem::path tempDir(const char* name) {
 void loadGeneratedSet(EditorSession& session) {
     session.loadFace();
     session.generateVisemesFromFace();
-    ASSERT_FALSE(session.project().frequencies.isPhonemeBased());
+    ASSERT_FALSE(session.document().frequencies.isPhonemeBased());
 }
 
 // The same with target m and no automatic reduction (no curve until something runs one).
@@ -200,12 +201,12 @@ TEST(EditorSession, PaintStrokeIsOneUndoStep) {
     for (int dab = 0; dab < 3; ++dab)
         applyBrushDab(set.neutral.positions, set.neutral.triangles, brush, set.neutral.positions[100],
                       weights);
-    const WeightMode before = session.project().weights.mode;
+    const WeightMode before = session.document().weights.mode;
     session.setPaintedWeights(weights, "Paint stroke");
-    EXPECT_EQ(session.project().weights.mode, WeightMode::Painted);
+    EXPECT_EQ(session.document().weights.mode, WeightMode::Painted);
     EXPECT_EQ(session.weights(), weights);
     session.undo();
-    EXPECT_EQ(session.project().weights.mode, before);
+    EXPECT_EQ(session.document().weights.mode, before);
 }
 
 TEST(EditorSession, SaveAndReopenProjectKeepsTheState) {
@@ -224,11 +225,12 @@ TEST(EditorSession, SaveAndReopenProjectKeepsTheState) {
     reopened.openProject(dir / "p.vlproj");
     ASSERT_NE(reopened.visemes(), nullptr);
     EXPECT_EQ(reopened.visemeCount(), session.visemeCount());
-    EXPECT_EQ(reopened.project().reduction.target, 7);
+    EXPECT_EQ(reopened.document().target, 7);
     EXPECT_EQ(reopened.visemeFrequencies(), session.visemeFrequencies());
     EXPECT_EQ(reopened.visemes()->visemes[5].positions, session.visemes()->visemes[5].positions);
-    ASSERT_TRUE(reopened.project().reduction.result.has_value());
-    EXPECT_EQ(reopened.project().reduction.result->best().groups, session.currentGrouping()->groups);
+    // The result the file recorded is shown at once (a fresh reduction replaces it).
+    ASSERT_NE(reopened.currentGrouping(), nullptr);
+    EXPECT_EQ(reopened.currentGrouping()->groups, session.currentGrouping()->groups);
 }
 
 TEST(EditorSession, ReopenedProjectKeepsTheRetargetingChoice) {
@@ -274,7 +276,7 @@ TEST(EditorSession, RefinementRunsInTheBackgroundAndIsUndoable) {
     EditorSession session;
     session.loadFace();
     const MeshData* gridDomain = session.face().domain.get();
-    CriterionSettings settings = session.project().refinement;
+    CriterionSettings settings = session.document().refinement;
     settings.kind = CriterionKind::Depth;
     settings.depth.depth = 3;
     session.setRefinementSettings(settings);
@@ -291,7 +293,7 @@ TEST(EditorSession, RefinementRunsInTheBackgroundAndIsUndoable) {
     // Bad thresholds are refused and change nothing.
     settings.contour.averageError = -1.0;
     EXPECT_THROW(session.setRefinementSettings(settings), InputError);
-    EXPECT_EQ(session.project().refinement.contour.averageError, CriterionSettings{}.contour.averageError);
+    EXPECT_EQ(session.document().refinement.contour.averageError, CriterionSettings{}.contour.averageError);
 }
 
 TEST(EditorSession, VisemesGeneratedOnARefinedMeshAreInterpolable) {
@@ -337,11 +339,11 @@ TEST(EditorSession, BundledPhonemeMapDrivesTheVisemeFrequencies) {
     session.loadFace();
     session.generateVisemesFromFace(); // visemes named like the Oculus map
     session.useBundledPhonemeMap("oculus");
-    ASSERT_TRUE(session.project().frequencies.isPhonemeBased());
+    ASSERT_TRUE(session.document().frequencies.isPhonemeBased());
     const auto f = session.visemeFrequencies();
     ASSERT_EQ(f.size(), session.visemeCount());
     // Remapping a phoneme moves its frequency from one viseme to the other; undo restores it.
-    const auto& table = session.project().frequencies.phonemes.entries;
+    const auto& table = session.document().frequencies.phonemes.entries;
     int aa = -1;
     for (std::size_t i = 0; i < table.size(); ++i)
         if (table[i].first == "AA") aa = static_cast<int>(i);
@@ -362,9 +364,9 @@ TEST(EditorSession, CountsPhonemesOfATextFileInTheBackground) {
     session.generateVisemesFromFace();
     session.startPhonemeCount(dir / "text.txt");
     session.finishBackgroundWork();
-    ASSERT_TRUE(session.project().frequencies.isPhonemeBased()) << session.messages().back().text;
+    ASSERT_TRUE(session.document().frequencies.isPhonemeBased()) << session.messages().back().text;
     double total = 0.0;
-    for (const auto& entry : session.project().frequencies.phonemes.entries) total += entry.second;
+    for (const auto& entry : session.document().frequencies.phonemes.entries) total += entry.second;
     EXPECT_GT(total, 30.0);
     EXPECT_TRUE(session.canUndo());
 }
@@ -407,11 +409,11 @@ TEST(EditorSession, SavesOnAWorkerThreadTheStateOfTheRequest) {
     EXPECT_FALSE(session.saving());
     EXPECT_FALSE(ranEarly); // the guarded action waits for a save of the current document
     EXPECT_TRUE(session.modified());
-    EXPECT_EQ(session.project().reduction.target, 3);
+    EXPECT_EQ(session.document().target, 3);
     EXPECT_TRUE(session.canUndo());
     EditorSession reopened;
     reopened.openProject(dir / "p.vlproj");
-    EXPECT_EQ(reopened.project().reduction.target, 7);
+    EXPECT_EQ(reopened.document().target, 7);
 
     // Without edits in between, the saved state is recorded and the held-back action runs.
     bool ran = false;
@@ -419,7 +421,7 @@ TEST(EditorSession, SavesOnAWorkerThreadTheStateOfTheRequest) {
     session.finishBackgroundWork();
     EXPECT_TRUE(ran);
     EXPECT_FALSE(session.modified());
-    EXPECT_EQ(session.project().path, dir / "q.vlproj");
+    EXPECT_EQ(session.path(), dir / "q.vlproj");
     EXPECT_EQ(loadProject(dir / "q.vlproj").reduction.target, 3);
 }
 
@@ -433,7 +435,7 @@ TEST(EditorSession, FailedBackgroundSaveIsReportedAndChangesNothing) {
     session.finishBackgroundWork();
     EXPECT_FALSE(ran);
     EXPECT_TRUE(session.modified());
-    EXPECT_TRUE(session.project().path.empty());
+    EXPECT_TRUE(session.path().empty());
     EXPECT_EQ(session.undoName(), "Target m = 5");
     ASSERT_FALSE(session.messages().empty());
     EXPECT_EQ(session.messages().back().kind, StatusMessage::Kind::Error);
@@ -462,14 +464,14 @@ TEST(EditorSession, ExportsOnAWorkerThreadWithAFreshReduction) {
     session.finishBackgroundWork();
     EXPECT_EQ(session.messages().back().kind, StatusMessage::Kind::Error);
     EXPECT_EQ(session.inputsGeneration(), generation);
-    EXPECT_EQ(session.project().reduction.target, 9);
+    EXPECT_EQ(session.document().target, 9);
 }
 
 TEST(EditorSession, LoadsTheSampleOnAWorkerThread) {
     EditorSession session;
     loadUnreducedSet(session, 3);
     session.startLoadSample();
-    EXPECT_EQ(session.project().reduction.target, 3); // the open document stays until it is loaded
+    EXPECT_EQ(session.document().target, 3); // the open document stays until it is loaded
     session.finishBackgroundWork();
     ASSERT_NE(session.visemes(), nullptr);
     EXPECT_EQ(session.visemeCount(), 15u);
@@ -561,6 +563,120 @@ TEST(EditorSession, AutomaticReAdaptationIsDerivedStateAndNeverAnUndoStep) {
         session.undo();
     }
     EXPECT_FALSE(session.canUndo());
+}
+
+} // namespace
+} // namespace vl::ui
+
+namespace vl::ui {
+namespace {
+
+// Every command type is one undo step: undo gives back exactly the document before it (the same
+// value, shared parts the same objects) and redo exactly the document after it.
+TEST(EditorSession, EveryCommandUndoesAndRedoesToTheExactDocument) {
+    const auto dir = tempDir("undo-every-command");
+    EditorSession session;
+    session.autoReduce = false;
+    session.loadFace(face::Individual::Bundled, 12);
+    session.generateVisemesFromFace();
+    writeMesh(dir / "extra.obj", session.visemes()->meshOf(3));
+    const std::vector<std::pair<std::string, std::function<void()>>> commands = {
+        {"target", [&] { session.setTarget(4); }},
+        {"viseme frequency", [&] { session.setVisemeFrequency(2, 4.5); }},
+        {"weight mode", [&] { session.setWeightMode(WeightMode::Area); }},
+        {"painted weights",
+         [&] {
+             session.setPaintedWeights(std::vector<double>(session.visemes()->vertexCount(), 0.4), "Paint");
+         }},
+        {"parameter", [&] { session.setParameter(0, 0.3); }},
+        {"parameters", [&] { session.setParameters(session.face().cascade->defaults(), "Reset"); }},
+        {"preset", [&] { session.applyVisemePreset("oh"); }},
+        {"field",
+         [&] {
+             InfluenceField field = session.face().cascade->stages[1].field.influences.at(0);
+             field.magnitude *= 1.5;
+             session.setInfluence(1, 0, field);
+         }},
+        {"retarget", [&] { session.setIndividual(face::Individual::Retarget); }},
+        {"refinement settings",
+         [&] {
+             CriterionSettings settings = session.document().refinement;
+             settings.kind = CriterionKind::Normals;
+             session.setRefinementSettings(settings);
+         }},
+        {"import viseme", [&] { session.importViseme("extra", dir / "extra.obj"); }},
+        {"remove viseme", [&] { session.removeViseme(static_cast<int>(session.visemeCount()) - 1); }},
+        {"bundled phoneme map", [&] { session.useBundledPhonemeMap("oculus"); }},
+        {"phoneme frequency", [&] { session.setPhonemeFrequency(0, 2.0); }},
+        {"phoneme map", [&] { session.setPhonemeViseme(0, session.visemes()->visemes[1].name); }},
+        {"generate visemes", [&] { session.generateVisemesFromFace(); }},
+        {"load face", [&] { session.loadFace(face::Individual::Bundled, 10); }},
+    };
+    for (const auto& [what, command] : commands) {
+        SCOPED_TRACE(what);
+        const Document before = session.document();
+        command();
+        session.endEdit();
+        const Document after = session.document();
+        ASSERT_NE(after, before) << "the command changed nothing";
+        session.undo();
+        EXPECT_EQ(session.document(), before);
+        session.redo();
+        EXPECT_EQ(session.document(), after);
+    }
+}
+
+// The export writes the meshes the document shows, even when their files changed on disk since.
+TEST(EditorSession, ExportIsWhatTheDocumentShowsNotWhatTheDiskHolds) {
+    const auto dir = tempDir("export-from-memory");
+    {
+        EditorSession maker;
+        maker.autoReduce = false;
+        maker.loadFace(face::Individual::Bundled, 12);
+        maker.generateVisemesFromFace();
+        writeMesh(dir / "neutral.obj", maker.visemes()->neutral);
+        for (std::size_t i = 0; i < 4; ++i)
+            writeMesh(dir / (maker.visemes()->visemes[i].name + ".obj"), maker.visemes()->meshOf(i));
+    }
+    EditorSession session;
+    session.autoReduce = false;
+    session.loadVisemeFolder(dir);
+    session.setTarget(static_cast<int>(session.visemeCount())); // nothing merged: keys = visemes
+    const VisemeSet shown = *session.visemes();
+    // Another program rewrites one viseme file.
+    MeshData changed = readMesh(dir / (shown.visemes[1].name + ".obj"));
+    for (Vec3& p : changed.positions) p += Vec3(0.0, 1.0, 0.0);
+    writeMesh(dir / (shown.visemes[1].name + ".obj"), changed);
+    session.exportProject(ExportFormat::Glb, dir / "out.glb");
+    EditorSession check;
+    check.importGltf(dir / "out.glb");
+    ASSERT_EQ(check.visemeCount(), shown.size());
+    for (std::size_t i = 0; i < shown.size(); ++i) {
+        const int k = check.visemes()->find(shown.visemes[i].name);
+        ASSERT_GE(k, 0) << shown.visemes[i].name;
+        const auto& exported = check.visemes()->visemes[static_cast<std::size_t>(k)].positions;
+        ASSERT_EQ(exported.size(), shown.visemes[i].positions.size());
+        for (std::size_t v = 0; v < exported.size(); ++v)
+            EXPECT_NEAR((exported[v] - shown.visemes[i].positions[v]).norm(), 0.0, 1e-5)
+                << shown.visemes[i].name;
+    }
+}
+
+// Saving keeps the undo history: the designer can still undo what came before the save.
+TEST(EditorSession, SavingKeepsTheUndoHistory) {
+    const auto dir = tempDir("save-keeps-undo");
+    EditorSession session;
+    loadUnreducedSet(session, 5);
+    session.endEdit(); // a new undo step, not a continued slider drag
+    session.setTarget(6);
+    session.saveProject(dir / "p.vlproj");
+    EXPECT_FALSE(session.modified());
+    ASSERT_TRUE(session.canUndo());
+    session.undo();
+    EXPECT_EQ(session.document().target, 5);
+    EXPECT_TRUE(session.modified());
+    session.redo();
+    EXPECT_FALSE(session.modified());
 }
 
 } // namespace

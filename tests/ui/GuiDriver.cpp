@@ -118,9 +118,10 @@ GuiDriver::GuiDriver(const std::vector<std::string>& arguments, int width, int h
     if (pipe(fds) != 0) throw std::runtime_error("pipe");
     {
         const std::string screen = std::to_string(width) + "x" + std::to_string(height) + "x24";
-        xvfb_ = spawn(
-            {which("Xvfb"), "-displayfd", std::to_string(fds[1]), "-screen", "0", screen, "-nolisten", "tcp"},
-            environmentWithDisplay({}), folder_ / "xvfb.log", fds[1]);
+        xvfb_ =
+            spawn({which("Xvfb"), "-displayfd", std::to_string(fds[1]), "-screen", "0", screen, "-nolisten",
+                   "tcp", "-r"}, // no autorepeat: a key held while the editor is slow must not type twice
+                  environmentWithDisplay({}), folder_ / "xvfb.log", fds[1]);
     }
     close(fds[1]);
     std::string number;
@@ -262,6 +263,10 @@ void GuiDriver::press(int button, bool down) {
 }
 
 void GuiDriver::click(const nlohmann::json& control, double fx, double fy) {
+    // A real user cannot click a row scrolled out of its list (the click lands on something else).
+    if (!control.value("visible", true))
+        throw std::runtime_error("'" + control["label"].get<std::string>() +
+                                 "' is outside its window's visible area");
     clickAt(control["x"].get<double>() + fx * control["width"].get<double>(),
             control["y"].get<double>() + fy * control["height"].get<double>());
 }
@@ -306,7 +311,17 @@ void GuiDriver::key(const std::string& keys) {
     xdotool("keydown " + keys);
     waitUntil([&](const nlohmann::json& input) { return input["keys_down"].get<int>() >= chord; },
               "key " + keys);
-    xdotool("keyup " + keys);
+    // Release in reverse order (the key before its modifiers): releasing ctrl first lets an
+    // autorepeat of a held "a" reach the editor as a plain "a" on a loaded machine.
+    std::vector<std::string> parts;
+    for (std::size_t start = 0; start <= keys.size();) {
+        const std::size_t plus = std::min(keys.find('+', start), keys.size());
+        parts.push_back(keys.substr(start, plus - start));
+        start = plus + 1;
+    }
+    std::string release;
+    for (auto part = parts.rbegin(); part != parts.rend(); ++part) release += " " + *part;
+    xdotool("keyup" + release);
     waitUntil([](const nlohmann::json& input) { return input["keys_down"].get<int>() == 0; },
               "key " + keys + " released");
     waitFrames(2);

@@ -9,8 +9,8 @@ namespace vl::ui {
 
 void EditorUi::exportPanel() {
     sectionHeader("Project");
-    const Project& project = session.project();
-    ImGui::TextWrapped("File: %s", project.path.empty() ? "(not saved yet)" : project.path.string().c_str());
+    const std::filesystem::path& file = session.path();
+    ImGui::TextWrapped("File: %s", file.empty() ? "(not saved yet)" : file.string().c_str());
     if (session.modified()) ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.4f, 1.0f), "Unsaved changes");
     if (ctl::Button("Open project..."))
         guarded([this] {
@@ -32,7 +32,7 @@ void EditorUi::exportPanel() {
     }
     if (grouping)
         ImGui::Text("%zu visemes -> %zu keys (m = %d)", session.visemeCount(), grouping->groups.size(),
-                    session.project().reduction.target);
+                    session.document().target);
     else
         ImGui::TextDisabled("No current reduction: the export runs it with the project's settings.");
     struct Target {

@@ -70,7 +70,7 @@ void EditorUi::frequenciesPanel() {
         ImGui::TextDisabled("%s", names.c_str());
     }
 
-    const FrequencySource& source = session.project().frequencies;
+    const FrequencySource& source = session.document().frequencies;
     if (source.isPhonemeBased()) {
         sectionHeader("Phonemes");
         if (ImGui::BeginTable("##phonemes", 3,

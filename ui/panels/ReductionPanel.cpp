@@ -22,7 +22,7 @@ void EditorUi::reductionPanel() {
         return;
     }
     const int n = static_cast<int>(set->size());
-    int m = session.project().reduction.target;
+    int m = session.document().target;
     sectionHeader("Target");
     ImGui::SetNextItemWidth(-90);
     if (ctl::SliderInt("groups m", &m, 1, n)) session.attempt("Target", [&] { session.setTarget(m); });
@@ -33,11 +33,13 @@ void EditorUi::reductionPanel() {
     if (session.reductionRunning())
         ImGui::ProgressBar(static_cast<float>(session.reductionProgress()), ImVec2(-1, 0), "reducing...");
 
+    constraintsSection();
+
     const ReductionResult* curve = session.reductionCurve();
     const Grouping* grouping = session.currentGrouping();
     if (!curve) {
-        ImGui::TextDisabled(n > kMaxExactVisemes ? "Exact reduction handles at most 20 visemes."
-                                                 : "No result for the current inputs yet.");
+        ImGui::TextDisabled(n > kMaxReductionVisemes ? "The reduction handles at most 64 visemes."
+                                                     : "No result for the current inputs yet.");
         return;
     }
 
@@ -60,7 +62,7 @@ void EditorUi::reductionPanel() {
     std::vector<double> distances;
     for (const Grouping& g : curve->curve)
         distances.push_back(rmsDistance(g.cost, 1.0, weightSum) * millimetres);
-    if (costView_.percent && !distances.empty() && distances[0] > 0.0)
+    if (costView_.percent && !distances.empty() && std::isfinite(distances[0]) && distances[0] > 0.0)
         for (double& d : distances) d = 100.0 * d / distances.front();
     CostPlotOptions options;
     options.logarithmic = costView_.logarithmic;
@@ -71,7 +73,20 @@ void EditorUi::reductionPanel() {
             session.setTarget(picked);
             session.endEdit();
         });
-    if (grouping)
+    if (grouping && grouping->feasible()) {
+        // What is proven about this grouping: optimal, or the best found with its gap to the bound.
+        if (grouping->optimal)
+            ImGui::TextColored(ImVec4(0.55f, 0.85f, 0.55f, 1.0f), "optimal (proved)");
+        else
+            ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.4f, 1.0f), "best found, gap %.2f %% (lower bound %.4g)",
+                               100.0 * grouping->gap(), grouping->lowerBound);
+        ImGui::SameLine();
+        helpMarker("Up to 20 visemes the reduction is exact. Larger sets run branch and bound for at most "
+                   "10 s and show the best grouping found with its proven gap to the lower bound.");
+    } else if (grouping) {
+        ImGui::TextDisabled("m = %d: no grouping satisfies the constraints", m);
+    }
+    if (grouping && grouping->feasible())
         ImGui::Text("m = %d: RMS %.3g mm (%.1f%% of p = 1); click the plot to choose m", m,
                     rmsDistance(grouping->cost, 1.0, weightSum) * millimetres,
                     curve->curve.front().cost > 0.0

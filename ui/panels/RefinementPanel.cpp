@@ -15,7 +15,7 @@ void EditorUi::refinementPanel() {
         if (ctl::Button("Load bundled face")) session.attempt("Load face", [&] { session.loadFace(); });
         return;
     }
-    CriterionSettings settings = session.project().refinement;
+    CriterionSettings settings = session.document().refinement;
     bool changed = false;
     sectionHeader("Criterion");
     int kind = static_cast<int>(settings.kind);

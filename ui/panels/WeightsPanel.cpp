@@ -14,7 +14,7 @@ void EditorUi::weightsPanel() {
         return;
     }
     sectionHeader("Weight mode");
-    int mode = static_cast<int>(session.project().weights.mode);
+    int mode = static_cast<int>(session.document().weights.mode);
     bool changed = ctl::RadioButton("uniform (rho1)", &mode, 0);
     ImGui::SameLine();
     changed |= ctl::RadioButton("area (rho2)", &mode, 1);

@@ -37,6 +37,7 @@ int costPlot(const char* id, std::span<const double> values, const CostPlotOptio
     // Value range: a logarithmic axis starts at the decade below the smallest positive value.
     double hi = 0.0, smallest = 0.0;
     for (const double v : values) {
+        if (!std::isfinite(v)) continue; // a p the constraints rule out has no point
         hi = std::max(hi, v);
         if (v > 0.0) smallest = smallest > 0.0 ? std::min(smallest, v) : v;
     }
@@ -86,11 +87,23 @@ int costPlot(const char* id, std::span<const double> values, const CostPlotOptio
     if (options.unit[0]) draw->AddText(ImVec2(left + 4.0f, top + 2.0f), kText, options.unit);
     draw->AddText(ImVec2(right - ImGui::CalcTextSize("groups p").x - 4.0f, top + 2.0f), kText, "groups p");
 
-    std::vector<ImVec2> points;
-    for (int p = 1; p <= n; ++p)
-        points.push_back(ImVec2(xOf(p), yOf(values[static_cast<std::size_t>(p - 1)])));
-    draw->AddPolyline(points.data(), static_cast<int>(points.size()), kLine, 0, 2.0f);
-    for (const ImVec2& point : points) draw->AddCircleFilled(point, 2.5f, kLine);
+    // Runs of finite values are drawn as lines; a p without a grouping leaves a gap.
+    std::vector<ImVec2> points, run;
+    auto flush = [&] {
+        if (run.size() > 1) draw->AddPolyline(run.data(), static_cast<int>(run.size()), kLine, 0, 2.0f);
+        run.clear();
+    };
+    for (int p = 1; p <= n; ++p) {
+        const double value = values[static_cast<std::size_t>(p - 1)];
+        points.push_back(ImVec2(xOf(p), std::isfinite(value) ? yOf(value) : bottom));
+        if (!std::isfinite(value)) {
+            flush();
+            continue;
+        }
+        run.push_back(points.back());
+        draw->AddCircleFilled(points.back(), 2.5f, kLine);
+    }
+    flush();
     if (options.marked >= 1 && options.marked <= n) {
         const ImVec2 point = points[static_cast<std::size_t>(options.marked - 1)];
         draw->AddLine(ImVec2(point.x, top), ImVec2(point.x, bottom), kMark, 1.5f);
@@ -108,8 +121,12 @@ int costPlot(const char* id, std::span<const double> values, const CostPlotOptio
         const double value = values[static_cast<std::size_t>(under - 1)];
         draw->AddCircle(points[static_cast<std::size_t>(under - 1)], 6.0f, kText);
         ImGui::BeginTooltip();
-        ImGui::Text("p = %d: %.4g %s", under, value, options.unit);
-        if (values[0] > 0.0) ImGui::TextDisabled("%.1f%% of p = 1", 100.0 * value / values[0]);
+        if (!std::isfinite(value))
+            ImGui::Text("p = %d: no grouping satisfies the constraints", under);
+        else
+            ImGui::Text("p = %d: %.4g %s", under, value, options.unit);
+        if (std::isfinite(value) && values[0] > 0.0)
+            ImGui::TextDisabled("%.1f%% of p = 1", 100.0 * value / values[0]);
         ImGui::EndTooltip();
     }
     return clicked ? under : 0;

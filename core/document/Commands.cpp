@@ -1,0 +1,269 @@
+#include "core/document/Commands.h"
+
+#include "core/common/Error.h"
+#include "core/common/TextParsing.h"
+#include "core/deform/BundledFace.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace vl::edit {
+namespace {
+
+// Every command ends here: the edited document must still reduce (frequencies resolve, weights
+// valid, target in range, parameters in range).
+Document checked(Document next) {
+    validateDocument(next);
+    return next;
+}
+
+void requireSet(const Document& document, std::string_view what) {
+    if (!document.visemes) throwInputError(what, "load a viseme set first");
+}
+
+void requireFace(const Document& document, std::string_view what) {
+    if (!document.face.cascade) throwInputError(what, "no face loaded");
+}
+
+std::size_t checkedIndex(int index, std::size_t size, std::string_view what) {
+    if (index < 0 || static_cast<std::size_t>(index) >= size)
+        throwInputError(what, "index " + std::to_string(index) + " is outside 0.." +
+                                  std::to_string(static_cast<long long>(size) - 1));
+    return static_cast<std::size_t>(index);
+}
+
+void requireFrequency(double value, const std::string& what) {
+    if (!std::isfinite(value) || value < 0.0)
+        throwInputError(what, "must be a finite number >= 0, got " + formatDouble(value));
+}
+
+} // namespace
+
+Document addViseme(const Document& document, const std::string& name, const MeshData& mesh,
+                   const std::filesystem::path& file) {
+    const std::string where = file.empty() ? "viseme " + name : file.string();
+    requireSet(document, where);
+    if (name.empty()) throwInputError(where, "the viseme needs a name");
+    if (document.visemes->find(name) >= 0)
+        throwInputError(where, "a viseme named '" + name + "' already exists");
+    checkInterpolable(document.visemes->neutral, document.visemes->neutralSource.string(), mesh, where);
+    Document next = document;
+    auto set = std::make_shared<VisemeSet>(*document.visemes);
+    set->visemes.push_back({name, file, mesh.positions});
+    next.visemes = std::move(set);
+    next.visemeFiles.push_back(file.empty() ? file : std::filesystem::absolute(file));
+    if (!next.frequencies.isPhonemeBased())
+        next.frequencies.visemeFrequencies.entries.emplace_back(name, 1.0);
+    return checked(std::move(next));
+}
+
+Document removeViseme(const Document& document, int index) {
+    requireSet(document, "remove viseme");
+    const std::size_t i = checkedIndex(index, document.visemeCount(), "remove viseme");
+    if (document.visemeCount() <= 2)
+        throwInputError("remove viseme", "a viseme set needs at least 2 visemes");
+    Document next = document;
+    auto set = std::make_shared<VisemeSet>(*document.visemes);
+    const std::string name = set->visemes[i].name;
+    set->visemes.erase(set->visemes.begin() + index);
+    next.visemes = std::move(set);
+    next.visemeFiles.erase(next.visemeFiles.begin() + index);
+    auto& direct = next.frequencies.visemeFrequencies.entries;
+    std::erase_if(direct, [&](const auto& entry) { return entry.first == name; });
+    // Constraints that name it go with it.
+    std::erase(next.constraints.pinned, name);
+    const auto namesIt = [&](const auto& pair) { return pair.first == name || pair.second == name; };
+    std::erase_if(next.constraints.apart, namesIt);
+    std::erase_if(next.constraints.together, namesIt);
+    next.target = std::min(next.target, static_cast<int>(next.visemes->size()));
+    return checked(std::move(next));
+}
+
+Document setVisemeFrequency(const Document& document, int viseme, double value) {
+    requireSet(document, "viseme frequency");
+    const std::string& name =
+        document.visemes->visemes[checkedIndex(viseme, document.visemeCount(), "viseme frequency")].name;
+    requireFrequency(value, "frequency of " + name);
+    if (document.frequencies.isPhonemeBased())
+        throwInputError("frequency of " + name, "frequencies come from the phoneme table: edit the phonemes");
+    Document next = document;
+    auto& entries = next.frequencies.visemeFrequencies.entries;
+    auto it = std::find_if(entries.begin(), entries.end(), [&](const auto& e) { return e.first == name; });
+    if (it == entries.end())
+        entries.emplace_back(name, value);
+    else
+        it->second = value;
+    return checked(std::move(next));
+}
+
+Document setPhonemeFrequency(const Document& document, int phoneme, double value) {
+    const auto& entries = document.frequencies.phonemes.entries;
+    const std::size_t i = checkedIndex(phoneme, entries.size(), "phoneme frequency");
+    requireFrequency(value, "frequency of phoneme " + entries[i].first);
+    Document next = document;
+    next.frequencies.phonemes.entries[i].second = value;
+    return checked(std::move(next));
+}
+
+Document setPhonemeViseme(const Document& document, int phoneme, const std::string& viseme) {
+    const auto& table = document.frequencies.phonemes.entries;
+    const std::size_t i = checkedIndex(phoneme, table.size(), "phoneme map");
+    if (!document.visemes || document.visemes->find(viseme) < 0)
+        throwInputError("phoneme map", "unknown viseme '" + viseme + "'");
+    Document next = document;
+    auto& map = next.frequencies.map.entries;
+    auto it = std::find_if(map.begin(), map.end(), [&](const auto& e) { return e.first == table[i].first; });
+    if (it == map.end())
+        map.emplace_back(table[i].first, viseme);
+    else
+        it->second = viseme;
+    return checked(std::move(next));
+}
+
+Document setFrequencies(const Document& document, FrequencySource source) {
+    Document next = document;
+    next.frequencies = std::move(source);
+    return checked(std::move(next));
+}
+
+Document setWeightMode(const Document& document, WeightMode mode) {
+    Document next = document;
+    next.weights.mode = mode;
+    // Painting starts from what was shown, not from all ones (an "add" stroke would be lost);
+    // weights painted before are kept.
+    if (mode == WeightMode::Painted && document.visemes &&
+        document.weights.paintedOrEmpty().size() != document.visemes->vertexCount())
+        next.weights.painted = std::make_shared<const std::vector<double>>(weightsForPainting(
+            document.weights.mode, document.visemes->neutral, document.weights.paintedOrEmpty()));
+    return checked(std::move(next));
+}
+
+Document setPaintedWeights(const Document& document, std::vector<double> painted) {
+    requireSet(document, "weights");
+    Document next = document;
+    next.weights.mode = WeightMode::Painted;
+    next.weights.painted = std::make_shared<const std::vector<double>>(std::move(painted));
+    return checked(std::move(next));
+}
+
+Document setFace(const Document& document, FaceModel face) {
+    if (!face.cascade || !face.domain) throwInputError("face", "a face needs a cascade and a (u,v) mesh");
+    validateCascade(*face.cascade);
+    Document next = document;
+    next.face = std::move(face);
+    return checked(std::move(next));
+}
+
+Document setParameters(const Document& document, std::vector<double> values) {
+    requireFace(document, "parameters");
+    checkParameterValues(*document.face.cascade, values);
+    Document next = document;
+    next.face.parameters = std::move(values);
+    return checked(std::move(next));
+}
+
+Document setParameter(const Document& document, int parameter, double value) {
+    requireFace(document, "parameter");
+    std::vector<double> q = document.face.parameters;
+    q[checkedIndex(parameter, q.size(), "parameter")] = value;
+    return setParameters(document, std::move(q));
+}
+
+Document applyVisemePreset(const Document& document, const std::string& viseme) {
+    requireFace(document, "viseme preset");
+    const std::vector<VisemeParameters> presets =
+        document.face.presets.empty() ? oculusVisemes() : document.face.presets;
+    for (const VisemeParameters& preset : presets)
+        if (preset.name == viseme)
+            return setParameters(document, parameterVector(*document.face.cascade, preset));
+    throwInputError("viseme preset", "unknown viseme '" + viseme + "'");
+}
+
+Document setInfluence(const Document& document, int stage, int influence, const InfluenceField& field) {
+    requireFace(document, "field");
+    auto cascade = std::make_shared<DeformationCascade>(*document.face.cascade);
+    auto& influences =
+        cascade->stages[checkedIndex(stage, cascade->stages.size(), "field stage")].field.influences;
+    influences[checkedIndex(influence, influences.size(), "influence region")] = field;
+    validateCascade(*cascade);
+    Document next = document;
+    next.face.cascade = std::move(cascade);
+    return checked(std::move(next));
+}
+
+Document retarget(const Document& document, face::Individual individual) {
+    requireFace(document, "base geometry");
+    if (individual == document.face.individual) return document;
+    VectorField base;
+    base.sampled = face::makeFaceGeometry(individual);
+    Document next = document;
+    next.face.cascade = std::make_shared<const DeformationCascade>(
+        vl::retarget(*document.face.cascade, base, std::string(face::individualName(individual))));
+    next.face.individual = individual;
+    return checked(std::move(next));
+}
+
+Document setFaceDomain(const Document& document, std::shared_ptr<const MeshData> domain) {
+    requireFace(document, "face mesh");
+    if (!domain || domain->positions.empty() || domain->uvs.size() != domain->positions.size())
+        throwInputError("face mesh", "a (u,v) mesh with one (u,v) per vertex expected");
+    Document next = document;
+    next.face.domain = std::move(domain);
+    return checked(std::move(next));
+}
+
+Document generateVisemesFromFace(const Document& document) {
+    requireFace(document, "generate visemes");
+    const std::vector<VisemeParameters> presets =
+        document.face.presets.empty() ? oculusVisemes() : document.face.presets;
+    Document next = document;
+    auto set = std::make_shared<VisemeSet>(
+        generateVisemeSet(*document.face.cascade, *document.face.domain, presets));
+    next.neutralFile.clear();
+    next.visemeFiles.assign(set->size(), {});
+    next.frequencies = {};
+    for (const auto& viseme : set->visemes)
+        next.frequencies.visemeFrequencies.entries.emplace_back(viseme.name, 1.0);
+    next.weights = {};
+    next.target = std::max(1, static_cast<int>(set->size()) * 2 / 3);
+    next.visemeColours =
+        std::make_shared<const std::vector<Vec3>>(face::faceColours(document.face.domain->uvs));
+    next.visemes = std::move(set);
+    next = checked(std::move(next));
+    // Keep the frequency table, weight mode and target when they still fit the new set (the visemes
+    // keep their names; painted weights do not survive a new mesh).
+    Document kept = next;
+    kept.frequencies = document.frequencies;
+    if (document.weights.mode != WeightMode::Painted) kept.weights.mode = document.weights.mode;
+    if (document.visemes && document.target <= static_cast<int>(next.visemes->size()))
+        kept.target = document.target;
+    try {
+        return checked(std::move(kept));
+    } catch (const InputError&) {
+        return next;
+    }
+}
+
+Document setRefinementSettings(const Document& document, const CriterionSettings& settings) {
+    validateCriterionSettings(settings);
+    Document next = document;
+    next.refinement = settings;
+    return checked(std::move(next));
+}
+
+Document setTarget(const Document& document, int m) {
+    const int n = static_cast<int>(document.visemeCount());
+    if (m < 1 || m > std::max(n, 1))
+        throwInputError("target", "m must be in 1.." + std::to_string(n) + ", got " + std::to_string(m));
+    Document next = document;
+    next.target = m;
+    return checked(std::move(next));
+}
+
+Document setConstraints(const Document& document, ConstraintNames constraints) {
+    Document next = document;
+    next.constraints = std::move(constraints);
+    return checked(std::move(next));
+}
+
+} // namespace vl::edit

@@ -1,0 +1,52 @@
+#pragma once
+// Edits of a Document as validated functions: each takes the current document and returns the
+// edited one, or throws InputError naming what is wrong and leaves nothing changed. The editor
+// commits the result as one undo step; tests and scripts call them directly.
+#include "core/document/Document.h"
+
+#include <string>
+#include <vector>
+
+namespace vl::edit {
+
+// --- viseme set -------------------------------------------------------------------------------
+// Adds a viseme (interpolable with the neutral, a new non-empty name); `file` is where it came
+// from (empty = embedded). Direct frequency tables get the new name with frequency 1.
+Document addViseme(const Document& document, const std::string& name, const MeshData& mesh,
+                   const std::filesystem::path& file);
+// Removes viseme `index` (at least 2 stay); its direct frequency goes, the target is clamped.
+Document removeViseme(const Document& document, int index);
+
+// --- frequencies ------------------------------------------------------------------------------
+Document setVisemeFrequency(const Document& document, int viseme, double value); // direct tables only
+Document setPhonemeFrequency(const Document& document, int phoneme, double value);
+Document setPhonemeViseme(const Document& document, int phoneme, const std::string& viseme);
+Document setFrequencies(const Document& document, FrequencySource source);
+
+// --- weights ----------------------------------------------------------------------------------
+// Painted mode starts from the weights shown before (weightsForPainting) unless weights were
+// painted already.
+Document setWeightMode(const Document& document, WeightMode mode);
+Document setPaintedWeights(const Document& document, std::vector<double> painted); // mode becomes painted
+
+// --- deformable face --------------------------------------------------------------------------
+Document setFace(const Document& document, FaceModel face);
+Document setParameter(const Document& document, int parameter, double value);
+Document setParameters(const Document& document, std::vector<double> values);
+Document applyVisemePreset(const Document& document, const std::string& viseme); // face.presets or Oculus
+Document setInfluence(const Document& document, int stage, int influence, const InfluenceField& field);
+// The same fields on another individual's base geometry (the paper's retargeting).
+Document retarget(const Document& document, face::Individual individual);
+// The face's display mesh (e.g. a refined (u,v) mesh); the visemes are not regenerated.
+Document setFaceDomain(const Document& document, std::shared_ptr<const MeshData> domain);
+// The face's visemes generated on its (u,v) mesh become the viseme set (embedded meshes); the
+// frequency table, weight mode and target are kept when they still fit.
+Document generateVisemesFromFace(const Document& document);
+
+// --- refinement and reduction -----------------------------------------------------------------
+Document setRefinementSettings(const Document& document, const CriterionSettings& settings);
+Document setTarget(const Document& document, int m);
+// Pins, apart and together pairs by viseme name (checked: known names, no contradictions).
+Document setConstraints(const Document& document, ConstraintNames constraints);
+
+} // namespace vl::edit

@@ -1,0 +1,130 @@
+#include "core/document/Document.h"
+
+#include "core/common/Error.h"
+#include "core/deform/FaceDomain.h"
+#include "core/project/BuiltinGeometry.h"
+#include "core/project/ProjectRun.h"
+
+namespace vl {
+
+const std::vector<double>& DocumentWeights::paintedOrEmpty() const {
+    static const std::vector<double> none;
+    return painted ? *painted : none;
+}
+
+bool sameReductionInputs(const Document& a, const Document& b) {
+    return a.visemes == b.visemes && a.frequencies == b.frequencies && a.weights == b.weights &&
+           a.constraints == b.constraints;
+}
+
+std::vector<std::string> visemeNames(const Document& document) {
+    std::vector<std::string> names;
+    if (document.visemes)
+        for (const Viseme& viseme : document.visemes->visemes) names.push_back(viseme.name);
+    return names;
+}
+
+std::vector<double> documentWeights(const Document& document) {
+    if (!document.visemes) return {};
+    return computeWeights(document.weights.mode, document.visemes->neutral,
+                          document.weights.paintedOrEmpty());
+}
+
+std::vector<double> documentFrequencies(const Document& document) {
+    return visemeFrequencies(document.frequencies, visemeNames(document));
+}
+
+void validateDocument(const Document& document) {
+    if (document.face.cascade) checkParameterValues(*document.face.cascade, document.face.parameters);
+    if (!document.visemes) return;
+    if (document.visemeFiles.size() != document.visemes->size())
+        throwInputError("document", "one mesh source per viseme expected");
+    documentFrequencies(document);
+    documentWeights(document);
+    const std::vector<std::string> names = visemeNames(document);
+    constraintUnits(resolveConstraints(document.constraints, names), static_cast<int>(names.size()), names);
+    const int n = static_cast<int>(document.visemes->size());
+    if (document.target < 1 || document.target > n)
+        throwInputError("target",
+                        "m = " + std::to_string(document.target) + " is outside 1.." + std::to_string(n));
+}
+
+FaceModel makeFaceModel(face::Individual individual, int resolution) {
+    FaceModel model;
+    model.individual = individual;
+    auto cascade = std::make_shared<DeformationCascade>(face::makeFaceCascade(individual));
+    model.parameters = cascade->defaults();
+    model.cascade = std::move(cascade);
+    model.domain =
+        std::make_shared<const MeshData>(face::faceDomainMesh(resolution, face::DomainDensity::MouthFocused));
+    return model;
+}
+
+LoadedProject documentFromProject(const Project& project) {
+    LoadedProject loaded;
+    Document& document = loaded.document;
+    if (project.neutral.isSet()) {
+        document.visemes = std::make_shared<const VisemeSet>(loadProjectVisemeSet(project));
+        const auto absolute = [&](const std::filesystem::path& file) {
+            return file.empty() ? file : std::filesystem::absolute(resolveProjectFile(project, file));
+        };
+        document.neutralFile = absolute(project.neutral.file);
+        for (const ProjectViseme& viseme : project.visemes)
+            document.visemeFiles.push_back(absolute(viseme.file));
+    }
+    document.frequencies = project.frequencies;
+    document.weights.mode = project.weights.mode;
+    if (!project.weights.painted.empty())
+        document.weights.painted = std::make_shared<const std::vector<double>>(project.weights.painted);
+    document.refinement = project.refinement;
+    document.target = project.reduction.target;
+    document.constraints = project.reduction.constraints;
+    if (project.deformation.isSet()) {
+        FaceModel& model = document.face;
+        model.cascade = std::make_shared<const DeformationCascade>(project.deformation.cascade);
+        // The retargeting choice is the base geometry the project saved (a built-in reference).
+        model.individual = builtinIndividualOf(*model.cascade).value_or(face::Individual::Bundled);
+        model.parameters = project.deformation.values;
+        model.presets = project.deformation.visemes;
+        model.domain = std::make_shared<const MeshData>(
+            face::faceDomainMesh(kFaceDomainResolution, face::DomainDensity::MouthFocused));
+        // The face model defines the (u,v) face space: colour the visemes' regions by it.
+        if (document.visemes && document.visemes->neutral.hasUVs())
+            document.visemeColours =
+                std::make_shared<const std::vector<Vec3>>(face::faceColours(document.visemes->neutral.uvs));
+    }
+    validateDocument(document);
+    loaded.reduction = project.reduction.result;
+    loaded.selectedViseme = project.editor.selectedViseme;
+    return loaded;
+}
+
+Project projectFromDocument(const Document& document, const std::optional<ReductionResult>& reduction,
+                            const std::string& selectedViseme) {
+    Project project;
+    if (const VisemeSet* set = document.visemes.get()) {
+        project.neutral.file = document.neutralFile;
+        if (document.neutralFile.empty()) project.neutral.embedded = set->neutral;
+        for (std::size_t i = 0; i < set->size(); ++i) {
+            ProjectViseme viseme{set->visemes[i].name, document.visemeFiles.at(i), {}};
+            if (viseme.file.empty()) viseme.positions = set->visemes[i].positions;
+            project.visemes.push_back(std::move(viseme));
+        }
+    }
+    project.frequencies = document.frequencies;
+    project.weights.mode = document.weights.mode;
+    project.weights.painted = document.weights.paintedOrEmpty();
+    project.refinement = document.refinement;
+    project.reduction.target = document.target;
+    project.reduction.constraints = document.constraints;
+    project.reduction.result = reduction;
+    if (const FaceModel& face = document.face; face.cascade) {
+        project.deformation.cascade = *face.cascade;
+        project.deformation.values = face.parameters;
+        project.deformation.visemes = face.presets.empty() ? oculusVisemes() : face.presets;
+    }
+    project.editor.selectedViseme = selectedViseme;
+    return project;
+}
+
+} // namespace vl

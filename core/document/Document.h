@@ -1,0 +1,110 @@
+#pragma once
+// The editor's document: everything a designer edits, as one immutable value. Every edit makes a
+// new Document (core/document/Commands.h); the heavy parts (meshes, painted weights, the face's
+// cascade and (u,v) mesh, preview colours) are shared immutable pointers, so an undo step costs
+// what changed and two documents compare equal part by part in O(parts), shared parts by identity.
+//
+// A Project (core/project) is the file form of a document: documentFromProject loads the meshes it
+// names, projectFromDocument writes what the document holds (embedded geometry from memory, never
+// re-read from disk). What is derived from a document (the reduction curve, the refined mesh, GPU
+// samples) lives in the services that compute it, keyed by the document's inputs.
+#include "core/adaptive/Criteria.h"
+#include "core/deform/BundledFace.h"
+#include "core/deform/DeformationCascade.h"
+#include "core/deform/Visemes.h"
+#include "core/project/Project.h"
+#include "core/reduce/Frequencies.h"
+#include "core/reduce/Reduction.h"
+#include "core/reduce/ReductionConstraints.h"
+#include "core/reduce/VisemeSet.h"
+#include "core/reduce/Weights.h"
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace vl {
+
+// (u,v) mesh resolution of a face model's display and viseme mesh (cells per side).
+inline constexpr int kFaceDomainResolution = 40;
+
+// The deformable face (paper "Adaptive Deformable Models"): the cascade of fields, the (u,v) mesh
+// it is shown and refined on, the current slider values and the visemes as parameter vectors.
+struct FaceModel {
+    std::shared_ptr<const DeformationCascade> cascade; // null = the document has no face
+    face::Individual individual = face::Individual::Bundled;
+    std::shared_ptr<const MeshData> domain; // (u,v) triangulation; positions unused
+    std::vector<double> parameters;         // one value per cascade parameter
+    std::vector<VisemeParameters> presets;  // empty = the Oculus presets (oculusVisemes())
+
+    bool operator==(const FaceModel&) const = default;
+};
+
+struct DocumentWeights {
+    WeightMode mode = WeightMode::Uniform;
+    std::shared_ptr<const std::vector<double>> painted; // one per vertex, or null; kept in other modes
+
+    const std::vector<double>& paintedOrEmpty() const;
+    bool operator==(const DocumentWeights&) const = default;
+};
+
+struct Document {
+    // The viseme set (null until one is loaded) and where each of its meshes comes from: an
+    // absolute file path, or empty when the geometry exists only here (generated, imported from
+    // glTF, or embedded in the project file), in which case a save embeds it.
+    std::shared_ptr<const VisemeSet> visemes;
+    std::filesystem::path neutralFile;
+    std::vector<std::filesystem::path> visemeFiles; // one per viseme
+    // Per-vertex preview colours (lips, eyes, brows) when the visemes lie in the face's (u,v) space.
+    std::shared_ptr<const std::vector<Vec3>> visemeColours;
+
+    FrequencySource frequencies; // direct viseme frequencies, or phoneme table + phoneme -> viseme map
+    DocumentWeights weights;
+    FaceModel face;
+    CriterionSettings refinement;
+    int target = 1;              // m, the number of merged visemes the reduction keeps
+    ConstraintNames constraints; // pins, apart and together pairs, by viseme name
+
+    std::size_t visemeCount() const { return visemes ? visemes->size() : 0; }
+    bool operator==(const Document&) const = default;
+};
+
+// The inputs of the reduction (meshes, frequencies, weights, constraints): documents with equal
+// inputs share one reduction curve, whatever else differs.
+bool sameReductionInputs(const Document& a, const Document& b);
+
+// Viseme names in set order (empty without a set).
+std::vector<std::string> visemeNames(const Document& document);
+
+// Checks what the reduction needs (frequencies resolve for every viseme, weights valid); throws
+// InputError naming the culprit. Every command runs it, so no edit can break the reduction.
+void validateDocument(const Document& document);
+
+// The per-vertex weights of the metric (throws InputError when invalid; empty without a set).
+std::vector<double> documentWeights(const Document& document);
+
+// Normalised frequency of every viseme (throws InputError when the table does not resolve).
+std::vector<double> documentFrequencies(const Document& document);
+
+// A loaded project: the document, plus what the file held that is not document state.
+struct LoadedProject {
+    Document document;
+    std::optional<ReductionResult> reduction; // the last result the file recorded, if any
+    std::string selectedViseme;               // editor state the file restores
+};
+
+// Reads the meshes a (validated) project names, builds its face model, and checks the result
+// (InputError naming the JSON path and file). Mesh paths become absolute.
+LoadedProject documentFromProject(const Project& project);
+
+// The project a save writes: mesh paths absolute (saveProject makes them relative to its file),
+// embedded geometry taken from the document, the face model's cascade, values and presets.
+Project projectFromDocument(const Document& document, const std::optional<ReductionResult>& reduction = {},
+                            const std::string& selectedViseme = {});
+
+// A fresh face model of the given individual on its (u,v) display mesh.
+FaceModel makeFaceModel(face::Individual individual, int resolution = kFaceDomainResolution);
+
+} // namespace vl

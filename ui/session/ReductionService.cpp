@@ -1,0 +1,94 @@
+#include "ui/session/ReductionService.h"
+
+#include "core/common/Error.h"
+
+#include <algorithm>
+
+namespace vl::ui {
+
+void ReductionService::track(const Document& document, bool fresh) {
+    if (fresh || !sameReductionInputs(tracked_, document)) ++revision_;
+    tracked_ = document;
+}
+
+const ReductionResult* ReductionService::curve() const {
+    return curve_.result && curve_.revision == revision_ ? curve_.result.get() : nullptr;
+}
+
+const Grouping* ReductionService::grouping(int m) const {
+    const ReductionResult* current = curve();
+    if (!current || m < 1 || m > static_cast<int>(current->curve.size())) return nullptr;
+    return &current->curve[static_cast<std::size_t>(m - 1)];
+}
+
+const std::vector<std::vector<Vec3>>& ReductionService::mergedShapes(const Document& document) {
+    const Grouping* groups = grouping(document.target);
+    if (!groups || !document.visemes) {
+        merged_.clear();
+        mergedRevision_ = 0;
+        return merged_;
+    }
+    if (mergedRevision_ != revision_ || mergedGroups_ != document.target) {
+        std::vector<std::vector<Vec3>> shapes;
+        for (const auto& viseme : document.visemes->visemes) shapes.push_back(viseme.positions);
+        const std::vector<double> frequencies = documentFrequencies(document);
+        merged_.clear();
+        for (const auto& group : groups->groups) merged_.push_back(mergeGroup(shapes, frequencies, group));
+        mergedRevision_ = revision_;
+        mergedGroups_ = document.target;
+    }
+    return merged_;
+}
+
+std::size_t ReductionService::curveLength(const Document& document) {
+    const std::vector<std::string> names = visemeNames(document);
+    const int n = static_cast<int>(names.size());
+    try {
+        return static_cast<std::size_t>(std::min(
+            n, constraintUnits(resolveConstraints(document.constraints, names), n, names).maxGroups));
+    } catch (const InputError&) {
+        return names.size();
+    }
+}
+
+void ReductionService::start(const Document& document) {
+    if (document.visemeCount() < 2) throwInputError("reduction", "load a viseme set with at least 2 visemes");
+    track(document);
+    if (complete(document)) return;
+    if (task_.running() && runningRevision_ == revision_) return;
+    const int n = static_cast<int>(document.visemeCount());
+    if (n > kMaxReductionVisemes)
+        throwInputError("reduction", "the reduction handles at most " + std::to_string(kMaxReductionVisemes) +
+                                         " visemes, the set has " + std::to_string(n));
+    const std::vector<std::string> names = visemeNames(document);
+    const ReductionConstraints constraints = resolveConstraints(document.constraints, names);
+    const int groups = static_cast<int>(curveLength(document));
+    // Large sets: branch and bound reports the best grouping found and its proven gap when the time
+    // is up, instead of keeping the designer waiting.
+    ReductionOptions options;
+    if (n > kMaxExactVisemes) options.timeLimitSeconds = kLargeSetSeconds;
+    // The worker holds the document's immutable meshes (viewed, not copied) and its own copies of
+    // the rest.
+    auto set = document.visemes;
+    auto frequencies = std::make_shared<std::vector<double>>(documentFrequencies(document));
+    auto weights = std::make_shared<std::vector<double>>(documentWeights(document));
+    runningRevision_ = revision_;
+    task_.start("Reducing " + std::to_string(n) + " visemes",
+                [set, frequencies, weights, groups, constraints, options](const auto& progress) {
+                    std::vector<std::span<const Vec3>> rows;
+                    for (const auto& viseme : set->visemes) rows.emplace_back(viseme.positions);
+                    const ReductionProblem problem{ShapeView(std::span<const std::span<const Vec3>>(rows)),
+                                                   *frequencies, *weights, groups, constraints};
+                    return std::make_shared<const ReductionResult>(reduceVisemes(problem, options, progress));
+                });
+}
+
+std::optional<std::string> ReductionService::poll() {
+    auto outcome = task_.take();
+    if (!outcome) return std::nullopt;
+    if (outcome->index() == 1) return std::get<1>(*outcome);
+    if (runningRevision_ == revision_) curve_ = {std::get<0>(*outcome), runningRevision_};
+    return std::nullopt;
+}
+
+} // namespace vl::ui

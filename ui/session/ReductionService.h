@@ -1,0 +1,73 @@
+#pragma once
+// The reduction of the current document, as a background job with its result cache. The curve
+// (every p = 1..n) depends only on the document's reduction inputs (meshes, frequencies,
+// weights): the service numbers those inputs with a revision that changes whenever they change,
+// and keeps the curve and the merged shapes for the revision they were computed for.
+#include "core/document/Document.h"
+#include "ui/session/BackgroundTask.h"
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace vl::ui {
+
+class ReductionService {
+  public:
+    ~ReductionService() { task_.cancel(); }
+
+    // Tells the service the current document; the inputs revision changes when its reduction
+    // inputs differ from the last one seen. `fresh` = a new document (never reuses a curve).
+    void track(const Document& document, bool fresh = false);
+    std::uint64_t inputsRevision() const { return revision_; }
+
+    // A curve known for the current inputs (e.g. the result a project file recorded).
+    void seed(std::shared_ptr<const ReductionResult> curve) { curve_ = {std::move(curve), revision_}; }
+
+    // Starts the reduction of the tracked document on a worker thread (no-op when the curve is
+    // current or already being computed). Throws InputError when the document cannot be reduced.
+    void start(const Document& document);
+    bool running() const { return task_.running(); }
+    double progress() const { return task_.progress(); }
+    // True when the last run on the current inputs failed (an automatic re-run would fail again).
+    bool failedOnCurrentInputs() const { return runningRevision_ == revision_ && !task_.running(); }
+    // Collects a finished run; returns the error message of a failed one.
+    std::optional<std::string> poll();
+    void cancel() { task_.cancel(); }
+    void wait() { task_.wait(); }
+
+    // The curve if it is up to date with the inputs, else null. A seeded curve may stop before
+    // p = n (a project records p = 1..m); complete() tells whether it reaches n.
+    const ReductionResult* curve() const;
+    bool complete(const Document& document) const {
+        return curve() && curve()->curve.size() >= curveLength(document);
+    }
+    // Entries of a full curve: p = 1..n, or up to the most groups the constraints allow.
+    static std::size_t curveLength(const Document& document);
+    // Time a reduction of more than kMaxExactVisemes visemes may take before it reports the best
+    // grouping found with its gap.
+    static constexpr double kLargeSetSeconds = 10.0;
+    // The grouping into m groups from the current curve, or null.
+    const Grouping* grouping(int m) const;
+    // Merged shape of each group of grouping(document.target) (frequency-weighted means, eq. 19).
+    const std::vector<std::vector<Vec3>>& mergedShapes(const Document& document);
+
+  private:
+    struct Curve {
+        std::shared_ptr<const ReductionResult> result;
+        std::uint64_t revision = 0;
+    };
+    Document tracked_;
+    std::uint64_t revision_ = 1;
+    Curve curve_;
+    std::uint64_t runningRevision_ = 0;
+    BackgroundTask<std::shared_ptr<const ReductionResult>> task_;
+    // mergedShapes() cache, keyed by the inputs revision and the number of groups.
+    std::uint64_t mergedRevision_ = 0;
+    int mergedGroups_ = 0;
+    std::vector<std::vector<Vec3>> merged_;
+};
+
+} // namespace vl::ui
