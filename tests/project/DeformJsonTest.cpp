@@ -189,8 +189,9 @@ TEST(DeformJson, InconsistentStateIsRefusedOnSave) {
     Project p = faceProject(dir / "p.vlproj", face::makeBundledFace());
     const std::string count = std::to_string(p.deformation.values.size());
     p.deformation.values.pop_back();
-    EXPECT_INPUT_ERROR(saveProject(p.path, p), "/deformation/values: expected one value per parameter (" + count +
-                                                   "), found " + std::to_string(p.deformation.values.size()));
+    EXPECT_INPUT_ERROR(saveProject(p.path, p), "/deformation/values: expected one value per parameter (" +
+                                                   count + "), found " +
+                                                   std::to_string(p.deformation.values.size()));
     p = faceProject(dir / "p.vlproj", face::makeBundledFace());
     p.deformation.values[0] = 7;
     EXPECT_INPUT_ERROR(saveProject(p.path, p), "/deformation/values/frontalis_l: 7 is outside [-0.5, 1]");
