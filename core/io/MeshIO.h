@@ -52,6 +52,8 @@ MeshData readMesh(const std::filesystem::path& path);
 MeshData readMesh(const std::filesystem::path& path, CornerTexCoords& corners);
 // Writes atomically (temp file + rename) in the format of the extension.
 void writeMesh(const std::filesystem::path& path, const MeshData& mesh);
+// The file contents writeMesh writes, for writers that stage files (core/common/OutputSet.h).
+std::string formatMesh(const std::filesystem::path& path, const MeshData& mesh);
 
 // Format-level entry points on in-memory text; `source` names the file in error messages.
 //

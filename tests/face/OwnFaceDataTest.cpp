@@ -1,8 +1,7 @@
 // Faces nobody here made (from VISEMELAB_SHARED_DATA_DIR, skipped loudly when absent): the MediaPipe
 // canonical face builds from its known layout and from its geometry alone (the two agree), deforms
 // with the bundled visemes and refines; the ICT head (82 UV islands, open mouth and eyes) builds from
-// its geometry. Through the CLI: face build, then visemes --project and refine --project.
-#include "../app/CliRunner.h"
+// its geometry. (The CLI end to end: tests/cli/FaceCliTest.cpp.)
 #include "core/adaptive/CascadeSurface.h"
 #include "core/adaptive/ContourError.h"
 #include "core/deform/FaceDomain.h"
@@ -14,7 +13,6 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
 
 namespace vl::face {
 namespace {
@@ -145,50 +143,6 @@ TEST(OwnFaceData, IctHeadBuildsFromItsGeometry) {
     EXPECT_LT(r[0], 0.0);
     EXPECT_GT(l[0], 0.0);
     EXPECT_NEAR(r[0], -l[0], 0.05 * (l - r).norm());
-}
-
-TEST(OwnFaceCli, BuildThenVisemesAndRefineOnTheProject) {
-    SKIP_WITHOUT(kMediaPipe);
-    const fs::path dir = fs::temp_directory_path() / "visemelab_face_cli";
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    const fs::path project = dir / "mp.vlproj";
-    auto r = test::runCli("face build " + kMediaPipe.string() + " --out " + project.string() +
-                          " --landmarks-out " + (dir / "landmarks.json").string());
-    ASSERT_EQ(r.exitCode, 0) << r.output;
-    EXPECT_NE(r.output.find("recognised MediaPipe's canonical face topology"), std::string::npos) << r.output;
-    EXPECT_NE(r.output.find("nose_tip            layout   sure"), std::string::npos) << r.output;
-    ASSERT_TRUE(fs::exists(project));
-
-    // The landmarks written read back: a second build from them says they were given.
-    r = test::runCli("face build " + kMediaPipe.string() + " --landmarks " +
-                     (dir / "landmarks.json").string() + " --out " + (dir / "again.vlproj").string());
-    ASSERT_EQ(r.exitCode, 0) << r.output;
-    EXPECT_NE(r.output.find("nose_tip            file"), std::string::npos) << r.output;
-
-    r = test::runCli("visemes --project " + project.string() + " --out " + (dir / "visemes").string());
-    ASSERT_EQ(r.exitCode, 0) << r.output;
-    EXPECT_TRUE(fs::exists(dir / "visemes" / "aa.obj"));
-    EXPECT_TRUE(fs::exists(dir / "visemes" / "neutral.obj"));
-
-    r = test::runCli("refine --project " + project.string() + " --criterion contour --out " +
-                     (dir / "refined.obj").string());
-    ASSERT_EQ(r.exitCode, 0) << r.output;
-    EXPECT_GT(readMesh(dir / "refined.obj").positions.size(), 100u);
-    fs::remove_all(dir);
-}
-
-TEST(OwnFaceCli, MeshWithoutTextureCoordinatesIsADataError) {
-    const fs::path dir = fs::temp_directory_path() / "visemelab_face_cli_nouv";
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    std::ofstream(dir / "flat.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
-    const auto r = test::runCli("face build " + (dir / "flat.obj").string() + " --out " +
-                                (dir / "flat.vlproj").string());
-    EXPECT_EQ(r.exitCode, 3) << r.output;
-    EXPECT_NE(r.output.find("flat.obj"), std::string::npos) << r.output;
-    EXPECT_FALSE(fs::exists(dir / "flat.vlproj"));
-    fs::remove_all(dir);
 }
 
 } // namespace

@@ -8,6 +8,7 @@
 #include "core/deform/Visemes.h"
 #include "core/document/Commands.h"
 #include "core/export/Gltf.h"
+#include "core/export/ModelFrequencies.h"
 #include "core/io/MeshIO.h"
 #include "core/phonetics/EspeakTranscriber.h"
 #include "core/phonetics/PhonemeMaps.h"
@@ -112,12 +113,12 @@ void EditorSession::redo() {
 // --- messages --------------------------------------------------------------------------------
 
 void EditorSession::info(std::string text) {
-    messages_.push_back({StatusMessage::Kind::Info, std::move(text)});
+    messages_.push_back({StatusMessage::Kind::Info, std::move(text), ++messageSerial_});
     if (messages_.size() > kMaxMessages) messages_.pop_front();
 }
 
 void EditorSession::error(std::string text) {
-    messages_.push_back({StatusMessage::Kind::Error, std::move(text)});
+    messages_.push_back({StatusMessage::Kind::Error, std::move(text), ++messageSerial_});
     if (messages_.size() > kMaxMessages) messages_.pop_front();
 }
 
@@ -138,6 +139,7 @@ void EditorSession::adopt(Loaded loaded) {
     retireCurrent();
     const Document& before = *frameDocuments_.back();
     history_.reset(std::move(loaded.project.document));
+    if (loaded.unsaved) history_.markUnsaved();
     path_ = std::move(loaded.path);
     reduction_.track(document(), true); // a new document never reuses an old curve
     noteChange(before);
@@ -232,11 +234,17 @@ void EditorSession::startLoadSample() {
 }
 
 void EditorSession::importGltf(const std::filesystem::path& file) {
-    auto set = std::make_shared<const VisemeSet>(toVisemeSet(readGltf(file), file));
+    const ReducedModel model = readGltf(file);
+    auto set = std::make_shared<const VisemeSet>(toVisemeSet(model, file));
     Loaded loaded;
     // Embedded: the geometry lives in the document (a save writes it into the project).
     loaded.project.document = documentOfSet(set, {}, std::vector<std::filesystem::path>(set->size()));
-    loaded.message = "Imported " + std::to_string(set->size()) + " morph targets from " + file.string();
+    loaded.project.document.frequencies = modelFrequencies(model, file.string());
+    validateDocument(loaded.project.document);
+    const bool phonemes = loaded.project.document.frequencies.isPhonemeBased();
+    loaded.message = "Imported " + std::to_string(set->size()) + " morph targets from " + file.string() +
+                     (phonemes ? " with its phoneme frequencies and map" : "");
+    loaded.unsaved = true;
     adopt(std::move(loaded));
 }
 

@@ -15,6 +15,7 @@
 #include "ui/session/ReductionService.h"
 #include "ui/session/RefinementService.h"
 
+#include <cstdint>
 #include <deque>
 #include <filesystem>
 #include <functional>
@@ -37,6 +38,7 @@ struct FaceSamples {
 struct StatusMessage {
     enum class Kind { Info, Error } kind = Kind::Info;
     std::string text;
+    std::uint64_t serial = 0; // 1, 2, ... in the order the session posted them
 };
 
 class EditorSession {
@@ -91,7 +93,8 @@ class EditorSession {
     void startExport(ExportFormat format, const std::filesystem::path& out);
     bool exporting() const { return exportTask_.running(); }
     std::string exportingLabel() const { return exportTask_.label(); }
-    // The morph targets of a glTF/GLB file become the viseme set (a new, untitled document).
+    // The morph targets of a glTF/GLB file become the viseme set (a new, untitled document, unsaved:
+    // its geometry exists only in memory) with the frequencies the file carries (ModelFrequencies.h).
     void importGltf(const std::filesystem::path& file);
 
     // --- frequencies -------------------------------------------------------------------------
@@ -211,6 +214,7 @@ class EditorSession {
         LoadedProject project;
         std::filesystem::path path; // empty = untitled
         std::string message;
+        bool unsaved = false; // exists only in memory (imported): modified until saved
     };
     void adopt(Loaded loaded);
     void startLoading(std::string label, std::function<Loaded()> load);
@@ -236,6 +240,7 @@ class EditorSession {
     std::filesystem::path path_;
     std::vector<DocumentPtr> frameDocuments_; // documents replaced this frame
     std::deque<StatusMessage> messages_;
+    std::uint64_t messageSerial_ = 0;
     std::uint64_t geometryGeneration_ = 1;
     ReductionService reduction_;
     RefinementService refinement_;
