@@ -113,7 +113,9 @@ void applyStartOptions(const EditorOptions& options, EditorSession& session, Edi
             throwInputError("--brush", "expected add, subtract or smooth, got '" + options.brush + "'");
         ui.enableBrush(static_cast<int>(it - std::begin(modes)));
     });
+    step(!options.merged.empty(), [&] { ui.setMergedDisplay(options.merged); });
     if (options.play >= 0.0) ui.startPlayback(options.play, options.sequence);
+    step(!options.mapStart.empty(), [&] { ui.startMapFrom(options.mapStart); });
 }
 
 // Replaces the mouse state for this frame by a straight left-button drag: pressed from frame 1,

@@ -24,6 +24,9 @@ int main(int argc, char** argv) {
                    "Significant bits per colour channel in the screenshot (smaller files)")
         ->check(CLI::Range(1, 8));
     app.add_option("--brush", options.brush, "Paint in the Weights panel: add, subtract or smooth");
+    app.add_option(
+        "--merged", options.merged,
+        "How the Reduction panel shows the merged shape: errors, skin or overlay (on the original)");
     app.add_option("--drag", options.drag, "Left-button drag over the frames: x0 y0 x1 y1 (window pixels)")
         ->expected(4);
     bool noWireframe = false;
@@ -34,6 +37,9 @@ int main(int argc, char** argv) {
     app.add_option("--sequence", options.sequence, "Playback sequence: phonemes or viseme names");
     app.add_option("--refine", options.refine,
                    "Refine the face with this criterion: depth, normals, contour");
+    app.add_option("--map-start", options.mapStart,
+                   "Frequencies panel: start a phoneme map from a bundled map (oculus, mpeg4, rhubarb, "
+                   "sample-face) or per-phoneme, showing its assignment");
     app.add_option("--probe", options.probe,
                    "GUI tests: write every control's rectangle and a document summary to this JSON "
                    "file after each frame");

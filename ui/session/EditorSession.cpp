@@ -349,11 +349,15 @@ void EditorSession::importViseme(const std::string& name, const std::filesystem:
     info("Imported " + name + " from " + file.string());
 }
 
-void EditorSession::removeViseme(int index) {
+void EditorSession::removeViseme(int index, const std::string& phonemesGoTo) {
     const std::string name = visemes() && index >= 0 && index < static_cast<int>(visemeCount())
                                  ? visemes()->visemes[static_cast<std::size_t>(index)].name
                                  : std::to_string(index);
-    commit("Remove viseme " + name, edit::removeViseme(document(), index));
+    const std::string selected = selectedViseme >= 0 && selectedViseme != index
+                                     ? visemes()->visemes[static_cast<std::size_t>(selectedViseme)].name
+                                     : std::string();
+    commit("Remove viseme " + name, edit::removeViseme(document(), index, phonemesGoTo));
+    select(selected);
 }
 
 // --- frequencies -----------------------------------------------------------------------------
@@ -618,6 +622,10 @@ void EditorSession::finishBackgroundWork() {
         countTask_.wait();
         refinement_.wait();
         reduction_.wait();
+        poll();
+        if (refinement_.running() || reduction_.running()) continue;
+        // A run poll() started may have finished already (running() is false from the worker's last
+        // step): one more poll collects it, or starts the next automatic run.
         poll();
         if (!refinement_.running() && !reduction_.running()) break;
     }
