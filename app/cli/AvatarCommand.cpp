@@ -52,24 +52,18 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
 }
 
 // Frequencies: a given table (with --map: phonemes), or the bundled American English phoneme table
-// with the given map, or with the bundled Oculus map when the avatar's visemes are Oculus visemes;
-// else equal frequencies. Says what it chose.
+// with the given map; without either, the core's default (the bundled table and Oculus map when the
+// avatar's visemes are Oculus visemes, else equal). Says what it chose.
 FrequencySource avatarFrequencies(const ReduceOptions& o, const AvatarScan& scan, std::string& chosen) {
     const std::filesystem::path assets = VISEMELAB_ASSETS_DIR;
+    if (o.freqFile.empty() && o.mapFile.empty())
+        return defaultAvatarFrequencies(scan, bundledPhonemeFrequencies(assets, "oculus"), &chosen);
     FrequencySource source;
     if (!o.freqFile.empty()) {
         source = loadFrequencyFile(o.freqFile);
         chosen = o.freqFile;
     }
-    std::filesystem::path map = o.mapFile;
-    if (map.empty() && o.freqFile.empty() && scan.oculusNames) {
-        const auto bundled = bundledPhonemeMaps(assets);
-        const auto oculus =
-            std::find_if(bundled.begin(), bundled.end(), [](const auto& m) { return m.id == "oculus"; });
-        if (oculus != bundled.end() && mapFitsAvatar(loadPhonemeMapFile(oculus->file), scan))
-            map = oculus->file;
-    }
-    if (!map.empty()) {
+    if (!o.mapFile.empty()) {
         if (o.freqFile.empty()) {
             source = loadFrequencyFile(defaultPhonemeTablePath(assets));
             chosen = "bundled en-us phoneme table";
@@ -78,17 +72,11 @@ FrequencySource avatarFrequencies(const ReduceOptions& o, const AvatarScan& scan
             source.phonemes = std::move(source.visemeFrequencies);
             source.visemeFrequencies = {};
         }
-        source.map = loadPhonemeMapFile(map);
-        chosen += " + map " + (o.mapFile.empty() ? std::string("oculus (bundled)") : o.mapFile);
+        source.map = loadPhonemeMapFile(o.mapFile);
+        chosen += " + map " + o.mapFile;
     }
     if (source.isPhonemeBased() && source.map.entries.empty())
         throwInputError(o.freqFile, "a phoneme frequency table needs a phoneme -> viseme map (--map FILE)");
-    if (o.freqFile.empty() && map.empty()) {
-        source = uniformFrequencies(scan);
-        chosen = scan.oculusNames
-                     ? "equal (the avatar lacks some of the Oculus map's visemes)"
-                     : "equal (not Oculus viseme names: give --freq-file, or --map for phonemes)";
-    }
     return source;
 }
 
