@@ -26,14 +26,10 @@ bool keyframesFromPhonemes(const Package& package, const std::vector<PhonemeKeyf
     return true;
 }
 
-bool KeyframeAnimation::setKeyframes(const Package& package, std::vector<Keyframe> keyframes,
-                                     Interpolation interpolation, std::string& error, double dominanceRate) {
-    package_ = nullptr;
+bool KeyframeCurve::setKeyframes(std::uint32_t keyCount, std::vector<Keyframe> keyframes,
+                                 Interpolation interpolation, std::string& error, double dominanceRate) {
     keyframes_.clear();
-    if (package.empty()) {
-        error = "the package is not loaded";
-        return false;
-    }
+    keyCount_ = 0;
     if (keyframes.empty()) {
         error = "no keyframes";
         return false;
@@ -56,16 +52,30 @@ bool KeyframeAnimation::setKeyframes(const Package& package, std::vector<Keyfram
             error = "keyframe " + std::to_string(i) + ": dominance must be a finite number > 0";
             return false;
         }
-        if (k.key != kRestKey && k.key >= package.keyCount()) {
+        if (k.key != kRestKey && k.key >= keyCount) {
             error = "keyframe " + std::to_string(i) + ": key " + std::to_string(k.key) + " of " +
-                    std::to_string(package.keyCount());
+                    std::to_string(keyCount);
             return false;
         }
     }
-    package_ = &package;
     keyframes_ = std::move(keyframes);
+    keyCount_ = keyCount;
     interpolation_ = interpolation;
     dominanceRate_ = dominanceRate;
+    return true;
+}
+
+bool KeyframeAnimation::setKeyframes(const Package& package, std::vector<Keyframe> keyframes,
+                                     Interpolation interpolation, std::string& error, double dominanceRate) {
+    package_ = nullptr;
+    if (package.empty()) {
+        curve_ = KeyframeCurve();
+        error = "the package is not loaded";
+        return false;
+    }
+    if (!curve_.setKeyframes(package.keyCount(), std::move(keyframes), interpolation, error, dominanceRate))
+        return false;
+    package_ = &package;
     return true;
 }
 
@@ -82,7 +92,7 @@ double smoothstep(double s) {
 // t_{i-2} to full strength at t_{i-1} and back to 0 at t_{i+2}. So at most 4 keyframes (the
 // Catmull-Rom neighbourhood) contribute at any time and the blend stays continuous where one
 // leaves and another enters. Far keyframes matter little anyway: e^-(theta * gap).
-std::size_t KeyframeAnimation::dominanceWeightsAt(double t, KeyWeight out[4]) const {
+std::size_t KeyframeCurve::dominanceWeightsAt(double t, KeyWeight out[4]) const {
     const std::size_t last = keyframes_.size() - 1;
     t = std::clamp(t, keyframes_.front().time, keyframes_[last].time);
     const auto after = std::upper_bound(keyframes_.begin(), keyframes_.end(), t,
@@ -116,7 +126,7 @@ std::size_t KeyframeAnimation::dominanceWeightsAt(double t, KeyWeight out[4]) co
     return count;
 }
 
-std::size_t KeyframeAnimation::weightsAt(double t, KeyWeight out[4]) const {
+std::size_t KeyframeCurve::weightsAt(double t, KeyWeight out[4]) const {
     if (keyframes_.empty()) return 0;
     if (interpolation_ == Interpolation::Dominance)
         return dominanceWeightsAt(std::isnan(t) ? -HUGE_VAL : t, out);

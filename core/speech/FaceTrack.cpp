@@ -1,34 +1,59 @@
 #include "core/speech/FaceTrack.h"
 
 #include "core/common/Error.h"
-#include "core/export/RuntimePackageWriter.h"
+#include "core/runtime/PackageFormat.h"
 
 #include <algorithm>
 
 namespace vl {
 
-FaceTrack::FaceTrack(const ReducedModel& model, std::span<const TimedPhoneme> phonemes,
-                     const PlaybackSettings& settings, std::string_view where)
-    : package_(std::make_unique<runtime::Package>()) {
-    checkTimedPhonemes(phonemes, where);
+FaceTrack::FaceTrack(ReducedModel model, std::span<const TimedPhoneme> phonemes,
+                     const PlaybackSettings& settings, std::string_view where) {
     keys_ = keysOfPhonemes(phonemes, model, where);
+    init(std::move(model), phonemes, settings, where);
+}
+
+FaceTrack::FaceTrack(ReducedModel model, std::span<const TimedPhoneme> phonemes, std::vector<int> keys,
+                     const PlaybackSettings& settings, std::string_view where)
+    : keys_(std::move(keys)) {
+    init(std::move(model), phonemes, settings, where);
+}
+
+void FaceTrack::init(ReducedModel model, std::span<const TimedPhoneme> phonemes,
+                     const PlaybackSettings& settings, std::string_view where) {
+    checkTimedPhonemes(phonemes, where);
+    validateReducedModel(model, where);
+    if (model.keys.size() > runtime::kMaxKeys)
+        throwInputError(where, std::to_string(model.keys.size()) + " keys; a runtime package holds at most " +
+                                   std::to_string(runtime::kMaxKeys));
+    if (keys_.size() != phonemes.size())
+        throwInputError(where, "one key per phoneme expected, got " + std::to_string(keys_.size()) + " for " +
+                                   std::to_string(phonemes.size()) + " phonemes");
+    for (const int key : keys_)
+        if (key != kNeutralKey && (key < 0 || static_cast<std::size_t>(key) >= model.keys.size()))
+            throwInputError(where, "key " + std::to_string(key) + " of " + std::to_string(model.keys.size()));
     cues_ = cuesOf(phonemes, keys_, model);
     duration_ = phonemes.back().end;
-    const std::string bytes = encodeRuntimePackage(model);
     std::string error;
-    if (!package_->load(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size(), error))
-        throwInputError(where, "runtime package: " + error);
-    if (!animation_.setKeyframes(*package_, keyframesOf(phonemes, keys_, settings), settings.interpolation,
-                                 error, settings.dominanceRate))
+    if (!curve_.setKeyframes(static_cast<std::uint32_t>(model.keys.size()),
+                             keyframesOf(phonemes, keys_, settings), settings.interpolation, error,
+                             settings.dominanceRate))
         throwInputError(where, "animation: " + error);
+    model_ = std::make_shared<const ReducedModel>(std::move(model));
 }
 
 void FaceTrack::keyWeights(double t, float* out) const {
     std::fill(out, out + keyCount(), 0.0f);
     runtime::KeyWeight terms[4];
-    const std::size_t count = animation_.weightsAt(t, terms);
+    const std::size_t count = curve_.weightsAt(t, terms);
     for (std::size_t j = 0; j < count; ++j)
         if (terms[j].key != runtime::kRestKey) out[terms[j].key] += terms[j].weight;
+}
+
+std::vector<float> FaceTrack::keyWeights(double t) const {
+    std::vector<float> weights(keyCount());
+    keyWeights(t, weights.data());
+    return weights;
 }
 
 } // namespace vl

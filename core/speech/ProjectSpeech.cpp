@@ -80,9 +80,9 @@ std::vector<ErrorCurvePoint> projectErrorCurve(const Project& project, std::span
     std::vector<ErrorCurvePoint> curve;
     for (std::size_t p = 0; p < outcome.result.curve.size(); ++p) {
         const Grouping& grouping = outcome.result.curve[p];
-        const ReducedModel model = buildReducedModel(
-            set, outcome.frequencies, groupOfGrouping(grouping, set.size()), project.frequencies);
-        const FaceTrack reduced(model, phonemes, settings, where);
+        ReducedModel model = buildReducedModel(set, outcome.frequencies,
+                                               groupOfGrouping(grouping, set.size()), project.frequencies);
+        const FaceTrack reduced(std::move(model), phonemes, settings, where);
         curve.push_back({static_cast<int>(p + 1), grouping.cost,
                          measureUtteranceError(full, reduced, outcome.weights, fps)});
         if (progress) progress(0.5 + 0.5 * double(p + 1) / double(outcome.result.curve.size()));

@@ -45,7 +45,7 @@ GltfMorphAnimation sampledGltfAnimation(const FaceTrack& face, double fps) {
 }
 
 GltfMorphAnimation gltfAnimationOf(const FaceTrack& face, double fps) {
-    const runtime::KeyframeAnimation& track = face.animation();
+    const runtime::KeyframeCurve& track = face.curve();
     const auto& keyframes = track.keyframes();
     if (track.interpolation() == runtime::Interpolation::Dominance || !floatTimesIncrease(keyframes))
         return sampledGltfAnimation(face, fps);

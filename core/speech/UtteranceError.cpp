@@ -9,9 +9,9 @@ namespace vl {
 
 namespace {
 
-// The distinct key displacements (key - neutral) of both faces, as the runtime decodes them, and
-// for each face's key its index among them. A key the reduction left alone is the same vector in
-// both faces: sharing it makes its terms cancel exactly instead of up to rounding.
+// The distinct key displacements (key - neutral) of both faces. A key the reduction left alone is
+// the same vector in both faces: sharing it makes its terms cancel exactly instead of up to
+// rounding.
 struct Displacements {
     std::vector<std::vector<double>> vectors;
     std::vector<std::size_t> fullIndex, reducedIndex;
@@ -20,15 +20,13 @@ struct Displacements {
 Displacements displacements(const FaceTrack& full, const FaceTrack& reduced) {
     Displacements result;
     for (const FaceTrack* face : {&full, &reduced}) {
-        const runtime::Package& package = face->package();
-        const std::size_t n = 3 * std::size_t(package.vertexCount());
-        std::vector<float> neutral(n), key(n);
-        package.neutralPositions(neutral.data());
+        const ReducedModel& model = face->model();
+        const std::vector<Vec3>& neutral = model.neutral.positions;
         auto& index = face == &full ? result.fullIndex : result.reducedIndex;
-        for (std::uint32_t k = 0; k < package.keyCount(); ++k) {
-            package.keyPositions(k, key.data());
-            std::vector<double> d(n);
-            for (std::size_t i = 0; i < n; ++i) d[i] = double(key[i]) - double(neutral[i]);
+        for (const KeyMesh& key : model.keys) {
+            std::vector<double> d(3 * neutral.size());
+            for (std::size_t v = 0; v < neutral.size(); ++v)
+                for (std::size_t c = 0; c < 3; ++c) d[3 * v + c] = key.positions[v][c] - neutral[v][c];
             const auto same = std::find(result.vectors.begin(), result.vectors.end(), d);
             index.push_back(static_cast<std::size_t>(same - result.vectors.begin()));
             if (same == result.vectors.end()) result.vectors.push_back(std::move(d));
@@ -60,7 +58,7 @@ struct Term {
 void addBlend(const FaceTrack& face, double t, const std::vector<std::size_t>& index, double sign,
               std::vector<Term>& terms) {
     runtime::KeyWeight blend[4];
-    const std::size_t count = face.animation().weightsAt(t, blend);
+    const std::size_t count = face.curve().weightsAt(t, blend);
     for (std::size_t j = 0; j < count; ++j) {
         if (blend[j].key == runtime::kRestKey) continue;
         const std::size_t at = index[blend[j].key];
@@ -97,8 +95,8 @@ UtteranceError measureUtteranceError(const FaceTrack& full, const FaceTrack& red
                                      std::span<const double> vertexWeights, double fps) {
     if (!(fps > 0) || !std::isfinite(fps))
         throwInputError("utterance error", "frames per second must be > 0");
-    const std::size_t vertices = full.package().vertexCount();
-    if (reduced.package().vertexCount() != vertices || vertexWeights.size() != vertices)
+    const std::size_t vertices = full.model().neutral.positions.size();
+    if (reduced.model().neutral.positions.size() != vertices || vertexWeights.size() != vertices)
         throwInputError("utterance error",
                         "the full face, the reduced face and the weights differ in vertex count");
     const Displacements d = displacements(full, reduced);

@@ -3,8 +3,6 @@
 #include "core/common/Error.h"
 #include "tests/export/TestModels.h"
 
-#include "tests/app/CliRunner.h"
-
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -150,30 +148,6 @@ TEST(Xface, DictionaryOfOnlyAByteOrderMarkIsRejected) {
                                                       "bom.dic", &language);
     EXPECT_EQ(language, "english");
     EXPECT_EQ(map.entries.size(), 1u);
-}
-
-// An Xface face is a viseme set for `visemelab reduce --fdp`; its .dic maps a phoneme table.
-TEST(Xface, ReduceReadsAnXfaceFaceFromTheCommandLine) {
-    const ReducedModel model = test::randomModel(6, 5, 4, true, 83);
-    const auto dir = std::filesystem::temp_directory_path() / "visemelab_xface_reduce";
-    std::filesystem::remove_all(dir);
-    writeXfaceFace(dir / "face", model, "face");
-    std::string table = "phoneme,frequency\n";
-    for (const auto& [phoneme, f] : model.phonemeFrequencies)
-        table += phoneme + "," + std::to_string(f) + "\n";
-    table += "#,0.5\n_,0.1\n";
-    writeFileAtomically(dir / "phonemes.csv", table);
-    const auto r =
-        test::runCli("reduce --fdp " + (dir / "face" / "face.fdp").string() + " --freq-file " +
-                     (dir / "phonemes.csv").string() + " --target 2 --out " + (dir / "out").string());
-    ASSERT_EQ(r.exitCode, 0) << r.output;
-    EXPECT_NE(r.output.find("Reduced 4 visemes to 2"), std::string::npos) << r.output;
-    const std::string mapping = readFileToString(dir / "out" / "mapping.json");
-    EXPECT_NE(mapping.find("\"p7\""), std::string::npos) << mapping; // phonemes came through the .dic
-    const auto both =
-        test::runCli("reduce --fdp " + (dir / "face" / "face.fdp").string() + " --neutral x.obj -m 2");
-    EXPECT_EQ(both.exitCode, 2) << both.output;
-    std::filesystem::remove_all(dir);
 }
 
 } // namespace

@@ -240,5 +240,42 @@ TEST_F(AnimationTest, DominanceIsContinuousAndDominantKeysWin) {
     EXPECT_FALSE(a.setKeyframes(package, {{0.0, 0}}, Interpolation::Dominance, error, -1.0));
 }
 
+// The curve alone (what a GPU renderer uses) gives the package's animation its weights: same
+// terms at every time, for every interpolation, and the same checks without any mesh.
+TEST_F(AnimationTest, CurveWithoutPackageGivesTheAnimationsWeights) {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> gap(0.01, 0.3);
+    for (auto interpolation : {Interpolation::Linear, Interpolation::Cubic, Interpolation::Dominance}) {
+        std::vector<Keyframe> keyframes;
+        double t = 0.0;
+        for (int i = 0; i < 30; ++i) {
+            const auto key = static_cast<std::uint32_t>(rng() % 5);
+            keyframes.push_back({t += gap(rng), key == 4 ? kRestKey : key, 0.5f + 0.1f * float(i % 7)});
+        }
+        KeyframeAnimation a;
+        runtime::KeyframeCurve curve;
+        std::string error;
+        ASSERT_TRUE(a.setKeyframes(package, keyframes, interpolation, error, 20.0)) << error;
+        ASSERT_TRUE(curve.setKeyframes(package.keyCount(), keyframes, interpolation, error, 20.0)) << error;
+        for (double u = -0.2; u < t + 0.2; u += 0.0071) {
+            KeyWeight fromCurve[4], fromAnimation[4];
+            const std::size_t count = curve.weightsAt(u, fromCurve);
+            ASSERT_EQ(count, a.weightsAt(u, fromAnimation));
+            std::vector<float> blended(n), expected = evaluate(a, u);
+            package.blend(fromCurve, count, blended.data());
+            expectNear(blended, expected, 0);
+        }
+    }
+    runtime::KeyframeCurve curve;
+    std::string error;
+    KeyWeight out[4];
+    EXPECT_EQ(curve.weightsAt(0.0, out), 0u);
+    EXPECT_FALSE(curve.setKeyframes(3, {{0.0, 3}}, Interpolation::Linear, error));
+    EXPECT_NE(error.find("key 3 of 3"), std::string::npos);
+    EXPECT_TRUE(curve.setKeyframes(3, {{0.0, kRestKey}, {0.1, 2}}, Interpolation::Linear, error));
+    EXPECT_FALSE(curve.setKeyframes(3, {{0.0, 0}, {0.0, 1}}, Interpolation::Cubic, error));
+    EXPECT_TRUE(curve.empty()); // a refused sequence leaves nothing half-set
+}
+
 } // namespace
 } // namespace vl

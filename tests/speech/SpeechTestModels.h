@@ -2,13 +2,18 @@
 // A small viseme set with a phoneme map, its unreduced model and a reduction of it, for the
 // speech tests: visemes v0..v(n-1) on a grid, phonemes P0..P(2n-1) two per viseme, sil -> v0.
 #include "core/export/ReducedModel.h"
+#include "core/export/RuntimePackageWriter.h"
 #include "core/reduce/Frequencies.h"
 #include "core/reduce/Reduction.h"
 #include "core/reduce/VisemeSet.h"
+#include "core/runtime/Animation.h"
+#include "core/speech/FaceTrack.h"
 #include "core/speech/Utterance.h"
 #include "tests/export/TestModels.h"
 
 #include <random>
+#include <stdexcept>
+#include <string>
 
 namespace vl::test {
 
@@ -58,5 +63,27 @@ inline std::vector<TimedPhoneme> timed(const std::vector<std::pair<std::string, 
     }
     return phonemes;
 }
+
+// A face as a device plays it: the model encoded as a runtime package and the track's keyframes
+// played by runtime::KeyframeAnimation.
+struct RuntimeFace {
+    runtime::Package package;
+    runtime::KeyframeAnimation animation;
+
+    explicit RuntimeFace(const FaceTrack& track) {
+        const std::string bytes = encodeRuntimePackage(track.model());
+        std::string error;
+        if (!package.load(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size(), error) ||
+            !animation.setKeyframes(package, track.curve().keyframes(), track.curve().interpolation(), error,
+                                    track.curve().dominanceRate()))
+            throw std::runtime_error(error);
+    }
+    RuntimeFace(const RuntimeFace&) = delete; // the animation points to the package
+    std::vector<float> positions(double t) const {
+        std::vector<float> out(3 * std::size_t(package.vertexCount()));
+        animation.evaluate(t, out.data());
+        return out;
+    }
+};
 
 } // namespace vl::test

@@ -11,13 +11,12 @@ using namespace vl;
 
 namespace {
 
-// The slow obvious reference: both faces evaluated vertex by vertex through the runtime, then
+// The slow obvious reference: both faces evaluated vertex by vertex as a device does (runtime
+// package + KeyframeAnimation), then
 // sum_k w_k |f_k - r_k|^2.
-double bruteForceError(const FaceTrack& full, const FaceTrack& reduced, const std::vector<double>& weights,
-                       double t) {
-    std::vector<float> f(3 * weights.size()), r(3 * weights.size());
-    full.evaluate(t, f.data());
-    reduced.evaluate(t, r.data());
+double bruteForceError(const test::RuntimeFace& full, const test::RuntimeFace& reduced,
+                       const std::vector<double>& weights, double t) {
+    const std::vector<float> f = full.positions(t), r = reduced.positions(t);
     double sum = 0;
     for (std::size_t v = 0; v < weights.size(); ++v)
         for (std::size_t c = 0; c < 3; ++c) {
@@ -52,12 +51,13 @@ TEST(UtteranceError, GramEvaluationMatchesBruteForceForEveryInterpolation) {
             const FaceTrack full(m.full, phonemes, settings, "full"),
                 reduced(m.reduced, phonemes, settings, "reduced");
             const UtteranceError error = measureUtteranceError(full, reduced, weights, 50.0);
+            const test::RuntimeFace fullDevice(full), reducedDevice(reduced);
             ASSERT_EQ(error.frames.size(),
                       static_cast<std::size_t>(std::ceil(full.duration() * 50.0 - 1e-9)) + 1);
             double max = 0;
             for (std::size_t f = 0; f < error.frames.size(); ++f) {
                 const double t = std::min(f / 50.0, full.duration());
-                const double expected = bruteForceError(full, reduced, weights, t);
+                const double expected = bruteForceError(fullDevice, reducedDevice, weights, t);
                 ASSERT_NEAR(error.frames[f], expected, 1e-5 * (1e-3 + expected)) << f;
                 max = std::max(max, expected);
             }
@@ -94,4 +94,40 @@ TEST(UtteranceError, AHeldVisemeCostsItsDissimilarityToItsMergedKey) {
     EXPECT_NEAR(error.mean, rho, 1e-5 * rho);
     EXPECT_THROW(measureUtteranceError(full, reduced, std::vector<double>(3, 1.0), 24.0), InputError);
     EXPECT_THROW(measureUtteranceError(full, reduced, weights, 0.0), InputError);
+}
+
+// One evaluator: the key weights the CLI, the editor and the glTF export take from a FaceTrack
+// blend the model's keys into exactly the mesh a device computes from the exported package.
+TEST(FaceTrack, KeyWeightsAreTheRuntimeAnimation) {
+    std::mt19937 rng(21);
+    for (auto interpolation :
+         {runtime::Interpolation::Linear, runtime::Interpolation::Cubic, runtime::Interpolation::Dominance}) {
+        const auto m = test::speechModels(5, {0, 1, 1, 2, 0}, 30);
+        const auto phonemes = test::timed(randomSpeech(5, 25, rng));
+        for (const ReducedModel* model : {&m.full, &m.reduced}) {
+            const FaceTrack track(*model, phonemes, {interpolation}, "face");
+            const test::RuntimeFace device(track);
+            for (double t = -0.1; t < track.duration() + 0.1; t += 0.0137) {
+                const std::vector<float> w = track.keyWeights(t), onDevice = device.positions(t);
+                for (std::size_t v = 0; v < model->neutral.positions.size(); ++v)
+                    for (std::size_t c = 0; c < 3; ++c) {
+                        double p = model->neutral.positions[v][c];
+                        for (std::size_t k = 0; k < w.size(); ++k)
+                            p += w[k] * (model->keys[k].positions[v][c] - model->neutral.positions[v][c]);
+                        ASSERT_NEAR(p, onDevice[3 * v + c], 1e-5) << toString(interpolation) << " t " << t;
+                    }
+            }
+        }
+    }
+}
+
+TEST(FaceTrack, GivenKeysAreChecked) {
+    const auto m = test::speechModels(3, {0, 0, 1}, 9);
+    const auto phonemes = test::timed({{"P0", 0.2}, {"P3", 0.3}});
+    const FaceTrack track(m.full, phonemes, std::vector<int>{2, kNeutralKey}, {}, "typed");
+    ASSERT_EQ(track.cues().size(), 2u);
+    EXPECT_EQ(track.cues()[0].value, "v2");
+    EXPECT_EQ(track.cues()[1].value, kRestCue);
+    EXPECT_THROW(FaceTrack(m.full, phonemes, std::vector<int>{3, 0}, {}, "typed"), InputError);
+    EXPECT_THROW(FaceTrack(m.full, phonemes, std::vector<int>{0}, {}, "typed"), InputError);
 }

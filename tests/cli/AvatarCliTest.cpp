@@ -1,6 +1,6 @@
 // `visemelab avatar ...` as a user runs it: exit codes 0 / 2 (usage) / 3 (bad file, named).
 #include "core/common/AtomicFile.h"
-#include "tests/app/CliRunner.h"
+#include "tests/cli/CliRunner.h"
 #include "tests/gltf/AvatarFixtures.h"
 #include "tests/gltf/GltfTestSupport.h"
 

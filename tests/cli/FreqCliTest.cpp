@@ -1,5 +1,5 @@
-#include "PhoneticsTestSupport.h"
-#include "tests/app/CliRunner.h"
+#include "tests/cli/CliRunner.h"
+#include "tests/phonetics/PhoneticsTestSupport.h"
 
 #include "core/common/AtomicFile.h"
 #include "core/io/MeshIO.h"

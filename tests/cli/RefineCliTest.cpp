@@ -4,7 +4,7 @@
 #include "core/io/MeshIO.h"
 #include "core/project/Project.h"
 #include "core/reduce/VisemeSet.h"
-#include "tests/app/CliRunner.h"
+#include "tests/cli/CliRunner.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

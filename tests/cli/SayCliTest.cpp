@@ -1,4 +1,4 @@
-#include "tests/app/CliRunner.h"
+#include "tests/cli/CliRunner.h"
 
 #include "core/common/AtomicFile.h"
 #include "core/speech/TrackJson.h"

@@ -1,7 +1,7 @@
 #include "core/deform/FaceDomain.h"
 #include "core/io/MeshIO.h"
 #include "core/reduce/VisemeSet.h"
-#include "tests/app/CliRunner.h"
+#include "tests/cli/CliRunner.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
