@@ -115,6 +115,7 @@ void applyStartOptions(const EditorOptions& options, EditorSession& session, Edi
         ui.enableBrush(static_cast<int>(it - std::begin(modes)));
     });
     if (options.play >= 0.0) ui.startPlayback(options.play, options.sequence);
+    step(!options.mapStart.empty(), [&] { ui.startMapFrom(options.mapStart); });
 }
 
 // Replaces the mouse state for this frame by a straight left-button drag: pressed from frame 1,

@@ -156,30 +156,40 @@ nlohmann::json EditorUi::probeSummary() const {
     const auto& painted = document.weights.paintedOrEmpty();
     double paintedSum = 0.0;
     for (double w : painted) paintedSum += w;
-    return {{"panel", panelName(activePanel_)},
-            {"document_id", session.documentId()},
-            {"undo", session.undoName()},
-            {"redo", session.redoName()},
-            {"modified", session.modified()},
-            {"project_path", session.path().string()},
-            {"messages", std::move(messages)},
-            {"busy", session.loading() || session.saving() || session.exporting() ||
-                         session.refinementRunning() || session.reductionRunning() ||
-                         session.phonemeCountRunning()},
-            {"visemes", document.visemeCount()},
-            {"selected_viseme", session.selectedViseme},
-            {"target", document.target},
-            {"constraints", document.constraints.pinned.size() + document.constraints.apart.size() +
-                                document.constraints.together.size()},
-            {"criterion", kCriteria[static_cast<int>(document.refinement.kind)]},
-            {"file_dialog_open", fileDialog_.isOpen()},
-            {"brush", brush_.enabled},
-            {"weight_mode", toString(document.weights.mode)},
-            {"painted_mean", painted.empty() ? 0.0 : paintedSum / static_cast<double>(painted.size())},
-            {"wireframe", wireframe_},
-            {"playing", playback_.playing},
-            {"avatar", avatarSummary(document)},
-            {"avatar_mesh_report", avatarMeshReport()}};
+    nlohmann::json summary = {
+        {"panel", panelName(activePanel_)},
+        {"document_id", session.documentId()},
+        {"undo", session.undoName()},
+        {"redo", session.redoName()},
+        {"modified", session.modified()},
+        {"project_path", session.path().string()},
+        {"messages", std::move(messages)},
+        {"busy", session.loading() || session.saving() || session.exporting() ||
+                     session.refinementRunning() || session.reductionRunning() ||
+                     session.phonemeCountRunning()},
+        {"visemes", document.visemeCount()},
+        {"selected_viseme", session.selectedViseme},
+        {"target", document.target},
+        {"constraints", document.constraints.pinned.size() + document.constraints.apart.size() +
+                            document.constraints.together.size()},
+        {"criterion", kCriteria[static_cast<int>(document.refinement.kind)]},
+        {"file_dialog_open", fileDialog_.isOpen()},
+        {"brush", brush_.enabled},
+        {"weight_mode", toString(document.weights.mode)},
+        {"painted_mean", painted.empty() ? 0.0 : paintedSum / static_cast<double>(painted.size())},
+        {"wireframe", wireframe_},
+        {"playing", playback_.playing},
+        {"avatar", avatarSummary(document)},
+        {"avatar_mesh_report", avatarMeshReport()}};
+    summary.update(polishSummary());
+    summary.update(authoringProbe());
+    return summary;
+}
+
+nlohmann::json EditorUi::polishSummary() const {
+    const OrbitCamera& camera = subject_ == ViewSubject::Face ? faceCamera_ : visemeCamera_;
+    return {{"paint", paintSummary()},
+            {"camera", {{"yaw", camera.yaw}, {"pitch", camera.pitch}, {"distance", camera.distance}}}};
 }
 
 void EditorUi::saveProject(bool askForFile, std::function<void()> then) {
@@ -221,7 +231,7 @@ void EditorUi::syncGpu() {
         }
         uploadedMerged_ = nullptr;
         weightsKey_.clear(), errorKey_.clear(), influenceKey_.clear();
-        framePending_ = true;
+        frameVisemes_ = true;
     }
     const FaceModel& model = session.face();
     if (uploadedCascade_ != model.cascade.get() || uploadedDomain_ != model.domain.get()) {
@@ -236,7 +246,7 @@ void EditorUi::syncGpu() {
             faceMesh_.setGeometry({}, {}, {});
         }
         weightsKey_.clear(), errorKey_.clear(), influenceKey_.clear();
-        if (first) framePending_ = true;
+        if (first) frameFace_ = true;
     }
     const ReductionResult* curve = session.reductionCurve();
     const int groups = session.document().target;
@@ -260,10 +270,7 @@ void EditorUi::frame() {
     session.poll();
     if (playback_.playing) playback_.time += ImGui::GetIO().DeltaTime;
     syncGpu();
-    if (framePending_) {
-        frameAll();
-        framePending_ = false;
-    }
+    frameNewMeshes();
     if (glfwWindowShouldClose(window_) && !quitConfirmed_) {
         glfwSetWindowShouldClose(window_, GLFW_FALSE);
         requestQuit();
@@ -273,7 +280,7 @@ void EditorUi::frame() {
     const ImGuiIO& io = ImGui::GetIO();
     menuBar();
     const float menuHeight = ImGui::GetFrameHeight();
-    const float statusHeight = ImGui::GetFrameHeight() + 8.0f;
+    const float statusHeight = statusBarHeight();
     const float sideWidth = std::clamp(io.DisplaySize.x * 0.36f, 480.0f, 640.0f);
     const float bodyHeight = std::max(1.0f, io.DisplaySize.y - menuHeight - statusHeight);
     sidePanel(menuHeight, sideWidth, bodyHeight);
@@ -283,19 +290,32 @@ void EditorUi::frame() {
     unsavedChangesPopup();
 }
 
-void EditorUi::frameAll() {
-    auto frameOn = [](Viewport& view, std::span<const Vec3> positions) {
-        Vec3 lo, hi;
-        if (!bounds(positions, lo, hi)) return;
-        view.camera.frame(toGlm(lo), toGlm(hi));
-    };
-    if (const VisemeSet* set = session.visemes()) {
-        frameOn(beforeView_, set->neutral.positions);
-        frameOn(afterView_, set->neutral.positions);
-        if (subject_ == ViewSubject::Visemes) frameOn(mainView_, set->neutral.positions);
+namespace {
+bool frameOn(OrbitCamera& camera, std::span<const Vec3> positions) {
+    Vec3 lo, hi;
+    if (!bounds(positions, lo, hi)) return false;
+    camera.frame(toGlm(lo), toGlm(hi));
+    return true;
+}
+} // namespace
+
+void EditorUi::frameNewMeshes() {
+    // Each subject keeps its camera across tabs; a new mesh (another document) is framed once.
+    if (frameVisemes_) {
+        const VisemeSet* set = session.visemes();
+        if (!set || frameOn(visemeCamera_, set->neutral.positions)) frameVisemes_ = false;
     }
-    if (subject_ == ViewSubject::Face && session.face().cascade)
-        frameOn(mainView_, session.faceSamples().rest);
+    if (frameFace_) {
+        if (!session.face().cascade || frameOn(faceCamera_, session.faceSamples().rest)) frameFace_ = false;
+    }
+}
+
+void EditorUi::frameAll() {
+    if (subject_ == ViewSubject::Face) {
+        if (session.face().cascade) frameOn(faceCamera_, session.faceSamples().rest);
+    } else if (const VisemeSet* set = session.visemes()) {
+        frameOn(visemeCamera_, set->neutral.positions);
+    }
 }
 
 void EditorUi::shortcuts() {
@@ -319,6 +339,13 @@ void EditorUi::shortcuts() {
         frameAll();
     } else if (ImGui::IsKeyPressed(GLFW_KEY_W, false)) {
         wireframe_ = !wireframe_;
+    } else if (activePanel_ == Panel::Weights &&
+               (ImGui::IsKeyPressed(GLFW_KEY_LEFT_BRACKET) || ImGui::IsKeyPressed(GLFW_KEY_RIGHT_BRACKET))) {
+        // Brush size by keyboard, as in painting programs, within the radius slider's range.
+        const bool pixels = brush_.radius.unit == RadiusUnit::ScreenPixels;
+        const double factor = ImGui::IsKeyPressed(GLFW_KEY_RIGHT_BRACKET) ? 1.15 : 1.0 / 1.15;
+        brush_.radius.value =
+            std::clamp(brush_.radius.value * factor, pixels ? 2.0 : 0.5, pixels ? 300.0 : 50.0);
     }
 }
 
@@ -445,10 +472,7 @@ void EditorUi::views(float left, float top, float width, float height) {
     const ViewSubject subject = activePanel_ == Panel::Deformation || activePanel_ == Panel::Refinement
                                     ? ViewSubject::Face
                                     : ViewSubject::Visemes;
-    if (subject != subject_) {
-        subject_ = subject;
-        framePending_ = true;
-    }
+    subject_ = subject;
     ImGui::SetNextWindowPos(ImVec2(left, top));
     ImGui::SetNextWindowSize(ImVec2(width, height));
     ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
@@ -457,67 +481,19 @@ void EditorUi::views(float left, float top, float width, float height) {
                  ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
                      ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoScrollWithMouse);
     const ImVec2 size(width, height);
-    if (activePanel_ == Panel::Reduction)
+    // The views show the subject's kept camera and hand back what the user did with it.
+    OrbitCamera& camera = subject == ViewSubject::Face ? faceCamera_ : visemeCamera_;
+    if (activePanel_ == Panel::Reduction) {
+        beforeView_.camera = afterView_.camera = camera;
         comparisonViews(size);
-    else
+        camera = beforeView_.camera; // the two are synchronised by now
+    } else {
+        mainView_.camera = camera;
         mainView(size);
+        camera = mainView_.camera;
+    }
     ImGui::End();
     ImGui::PopStyleVar(2);
-}
-
-void EditorUi::statusBar(float height) {
-    const ImGuiIO& io = ImGui::GetIO();
-    ImGui::SetNextWindowPos(ImVec2(0, io.DisplaySize.y - height));
-    ImGui::SetNextWindowSize(ImVec2(io.DisplaySize.x, height));
-    ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(8, 4));
-    ImGui::Begin("##status", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove);
-    std::string stats = "No mesh";
-    if (subject_ == ViewSubject::Face && session.face().cascade) {
-        stats = "Face: " + std::to_string(faceMesh_.vertexCount()) + " vertices, " +
-                std::to_string(faceMesh_.triangleCount()) + " triangles, " +
-                std::to_string(session.face().parameters.size()) + " parameters";
-    } else if (const VisemeSet* set = session.visemes()) {
-        stats = std::to_string(set->size()) + " visemes, " + std::to_string(set->vertexCount()) +
-                " vertices, " + std::to_string(set->neutral.triangles.size()) + " triangles";
-    }
-    ImGui::TextUnformatted(stats.c_str());
-    if (session.loading()) {
-        ImGui::SameLine();
-        ImGui::ProgressBar(-1.0f * static_cast<float>(ImGui::GetTime()), ImVec2(200, 0),
-                           session.loadingLabel().c_str());
-    }
-    // File work runs on workers too: an indeterminate bar each while it lasts.
-    for (const auto& [running, label] : {std::pair{session.saving(), session.savingLabel()},
-                                         std::pair{session.exporting(), session.exportingLabel()}}) {
-        if (!running) continue;
-        ImGui::SameLine();
-        ImGui::ProgressBar(-1.0f * static_cast<float>(ImGui::GetTime()), ImVec2(200, 0), label.c_str());
-    }
-    if (session.refinementRunning()) {
-        ImGui::SameLine();
-        ImGui::ProgressBar(-1.0f * static_cast<float>(ImGui::GetTime()), ImVec2(120, 0), "refining");
-    }
-    if (session.reductionRunning()) {
-        ImGui::SameLine();
-        ImGui::ProgressBar(static_cast<float>(session.reductionProgress()), ImVec2(160, 0), "reducing");
-    }
-    if (!session.messages().empty()) {
-        const StatusMessage& last = session.messages().back();
-        ImGui::SameLine(std::max(ImGui::GetCursorPosX() + 30.0f, io.DisplaySize.x * 0.3f));
-        const ImVec4 colour = last.kind == StatusMessage::Kind::Error ? ImVec4(1.0f, 0.45f, 0.4f, 1.0f)
-                                                                      : ImVec4(0.75f, 0.85f, 0.75f, 1.0f);
-        ImGui::TextColored(colour, "%s", last.text.c_str());
-        probe::recordArea(last.text.c_str(), "status");
-        if (ImGui::IsItemHovered()) {
-            ImGui::BeginTooltip();
-            const auto& all = session.messages();
-            for (std::size_t i = all.size() > 12 ? all.size() - 12 : 0; i < all.size(); ++i)
-                ImGui::TextUnformatted(all[i].text.c_str());
-            ImGui::EndTooltip();
-        }
-    }
-    ImGui::End();
-    ImGui::PopStyleVar();
 }
 
 void EditorUi::fileDialogs() {
@@ -629,7 +605,7 @@ void EditorUi::mainView(ImVec2 size) {
             label =
                 s >= 0 ? "Viseme " + session.visemes()->visemes[static_cast<std::size_t>(s)].name : "Neutral";
         }
-        if (painting) paint(events);
+        if (activePanel_ == Panel::Weights) paint(events); // readout always, tools while painting
     }
     if (!label.empty()) viewLabel(events.imageMin, label);
 }

@@ -2,11 +2,15 @@
 // The editor window's contents: menu bar, fixed side panel with one tab per task, the 3D views and
 // the status bar. Everything the user does goes through EditorSession; this class only draws and
 // keeps GPU copies of the session's meshes up to date.
+#include "core/paint/BrushRadius.h"
+#include "core/paint/PaintSurface.h"
+#include "core/paint/RayPick.h"
 #include "ui/render/GlShader.h"
 #include "ui/render/GpuMesh.h"
 #include "ui/render/Viewport.h"
 #include "ui/session/EditorSession.h"
 #include "ui/widgets/FileDialog.h"
+#include "ui/widgets/StatusLine.h"
 
 #include <nlohmann/json.hpp>
 
@@ -28,13 +32,17 @@ std::optional<Panel> panelFromName(std::string_view name); // case-insensitive
 enum class ViewSubject { Visemes, Face };
 
 struct BrushSettings {
-    float radius = 1.0f;   // in model units
+    BrushRadius radius;    // screen pixels or % of the head size
     float strength = 0.5f; // per dab
     int falloff = 1;       // index into the core's falloff kinds
     int mode = 0;          // 0 add, 1 subtract, 2 smooth
     bool symmetric = true;
+    bool frontFacesOnly = true; // no paint through to the back of the head (WeightBrush::eye)
     bool enabled = false;
 };
+
+// What a left drag on the mesh does while painting is on (Weights panel).
+enum class PaintTool { Brush, FillRegion, SelectBox };
 
 struct Playback {
     bool playing = false;
@@ -74,6 +82,8 @@ class EditorUi {
   private:
     friend struct PanelAccess;
     void menuBar();
+    // The status bar: its height this frame (a long message wraps onto more lines), then the bar.
+    float statusBarHeight();
     void statusBar(float height);
     void sidePanel(float top, float width, float height);
     void views(float left, float top, float width, float height);
@@ -81,6 +91,7 @@ class EditorUi {
     void unsavedChangesPopup();
     void fileDialogs();
     void syncGpu();
+    void frameNewMeshes();
 
     void visemesPanel();
     void frequenciesPanel();
@@ -137,7 +148,6 @@ class EditorUi {
     std::function<void()> pendingGuarded_;
     bool openUnsavedPopup_ = false;
     bool quitConfirmed_ = false;
-    bool framePending_ = true;
     // How the Reduction panel shows the cost curve (view state, not saved).
     struct CostView {
         bool logarithmic = true;
@@ -170,6 +180,77 @@ class EditorUi {
     void avatarExportSection(); // Export panel
     void syncContextMesh();
     void drawContext(const glm::mat4& view, const glm::mat4& projection) const;
+
+    // --- issue 14 polish (view state): paint tools, one camera per subject ----------------------
+    struct PaintToolState {
+        PaintTool tool = PaintTool::Brush;
+        float fillValue = 1.0f;
+        float fillTolerance = 0.05f;          // region fill: largest difference to the seed's weight
+        std::vector<std::uint32_t> selection; // selected vertices, increasing
+        std::optional<ImVec2> boxStart;       // screen corner of the box being dragged
+        std::optional<double> readout;        // weight under the cursor (last frame)
+        std::uint32_t readoutVertex = 0;      // the vertex nearest to the cursor's hit
+        double modelRadius = 0.0;             // the brush radius at the cursor, model units
+        double unitsPerPixel = 0.0;           // model units per screen pixel at the cursor
+    } paintTool_;
+    std::vector<double> shownWeights_; // the metric's weights as the colours show them
+    std::shared_ptr<const VisemeSet> paintSurfaceSet_;
+    PaintSurface paintSurface_;
+    const PaintSurface& paintSurface(); // of the viseme set's neutral, rebuilt when the set changes
+    std::vector<double> paintStartWeights() const;
+    void paintBrush(const ViewportEvents& events, const std::optional<RayHit>& hit);
+    void paintBoxSelection(const ViewportEvents& events);
+    void drawSelection(const ViewportEvents& events);
+    void fillVertices(const std::vector<std::uint32_t>& vertices, const char* action);
+    nlohmann::json paintSummary() const;
+    nlohmann::json polishSummary() const; // what the polish tests assert, merged into probeSummary()
+    // The status bar's message (expiring, wrapped to at most kStatusLines lines) as laid out this frame.
+    StatusLine statusLine_;
+    struct StatusLayout {
+        std::string stats, message; // the message as shown: cut with "..." when it needs more lines
+        const StatusMessage* shown = nullptr;
+        float messageX = 0.0f, wrapWidth = 0.0f;
+        int lines = 0;
+    } status_;
+    bool statusHovered_ = false;
+    // The camera of each subject, kept across tabs; framed when its mesh first appears.
+    OrbitCamera visemeCamera_, faceCamera_;
+    bool frameVisemes_ = true, frameFace_ = true;
+
+    // --- viseme authoring and the phoneme map editor (ui/panels/VisemeAuthoring.cpp,
+    // StoreSlidersSection.cpp, PhonemeMapEditor.cpp); view state only, the edits are the session's.
+  public:
+    // Opens the map editor's assignment from a bundled map id ("oculus", ...) or "per-phoneme".
+    void startMapFrom(const std::string& id);
+
+  private:
+    // What the authoring tests check, merged into probeSummary(): viseme names, presets, the map.
+    nlohmann::json authoringProbe() const;
+    void visemeAuthoring(); // Visemes panel: rename, duplicate, move, delete the selected viseme
+    void deleteVisemePopup();
+    void storeSlidersSection(); // Deformation panel: the sliders as a new or existing viseme, presets
+    void phonemeMapEditor();    // Frequencies panel: start a map, one row per phoneme, by viseme
+    void mapStartSection();
+    void openMapStart(std::string title, const PhonemeVisemeMap& map);
+    struct AuthoringView {
+        int nameFor = -2;               // the viseme whose name the rename field holds
+        std::uint64_t nameDocument = 0; // ... in this document state
+        bool editingName = false;       // the field had the keyboard last frame
+        std::string name;               // the rename field
+        bool openDelete = false;        // open the delete popup next frame
+        int deleteIndex = -1;           // the viseme the popup deletes
+        std::string phonemesGoTo;       // where its phonemes go
+        std::string newViseme;          // Deformation: name of a new viseme from the sliders
+        std::string storeInto;          // Deformation: the existing preset or viseme to store into
+        std::string restName = "sil";   // Frequencies: name of a rest viseme to add
+    } authoring_;
+    struct MapStartView {
+        bool open = false;
+        std::string title; // the map it starts from, for the panel and the undo step
+        FrequencyTable table;
+        PhonemeVisemeMap map;
+        std::vector<edit::MapAssignment> rows;
+    } mapStart_;
 };
 
 } // namespace vl::ui

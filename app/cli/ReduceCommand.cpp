@@ -4,6 +4,8 @@
 #include "app/cli/WeightsOption.h"
 #include "core/common/AtomicFile.h"
 #include "core/common/Error.h"
+#include "core/common/InputRegistry.h"
+#include "core/common/OutputSet.h"
 #include "core/common/TextParsing.h"
 #include "core/export/Xface.h"
 #include "core/project/ProjectRun.h"
@@ -228,11 +230,17 @@ int runReduce(const ReduceOptions& o, bool weightsGiven) {
 
     const auto t2 = std::chrono::steady_clock::now();
     const std::filesystem::path outDir = o.outDir;
-    auto outputs = writeReductionOutputs(outDir, set, outcome);
-    timings.writeMs = millisecondsSince(t2);
     const std::filesystem::path reportPath =
         o.report.empty() ? outDir / "report.json" : std::filesystem::path(o.report);
-    writeFileAtomically(reportPath, reductionReportJson(outcome, settings.weightMode, timings, outputs));
+    refuseOverwritingInput(reportPath, "--report"); // before any output changes
+    // The meshes, mapping.json and the default report replace the last run's as one set.
+    OutputSet files(outDir, "reduce");
+    auto outputs = writeReductionOutputs(files, set, outcome);
+    timings.writeMs = millisecondsSince(t2);
+    const std::string report = reductionReportJson(outcome, settings.weightMode, timings, outputs);
+    if (o.report.empty()) files.add("report.json", report);
+    files.commit();
+    if (!o.report.empty()) writeFileAtomically(reportPath, report);
 
     const Grouping& best = outcome.result.best();
     std::printf("Reduced %zu visemes to %d (weights: %s, %s): ", set.size(), settings.target,

@@ -6,6 +6,7 @@
 #include "core/adaptive/CascadeSurface.h"
 #include "core/common/AtomicFile.h"
 #include "core/common/Error.h"
+#include "core/common/OutputSet.h"
 #include "core/common/TextParsing.h"
 #include "core/deform/BundledFace.h"
 #include "core/deform/FaceDomain.h"
@@ -142,11 +143,12 @@ int runVisemes(const VisemesOptions& o) {
     roundCoordinates(set, o.decimals);
 
     const std::filesystem::path out = o.outDir;
-    std::filesystem::create_directories(out);
-    writeMesh(out / "neutral.obj", set.neutral);
+    OutputSet files(out, "visemes"); // visemes of an earlier run that this one does not write are removed
+    files.add("neutral.obj", formatObj(set.neutral));
     for (std::size_t k = 0; k < set.size(); ++k)
-        writeMesh(out / (set.visemes[k].name + ".obj"), set.meshOf(k));
-    writeFileAtomically(out / "visemes.json", describe(o, cascade, set, visemes).dump(2) + "\n");
+        files.add(set.visemes[k].name + ".obj", formatObj(set.meshOf(k)));
+    files.add("visemes.json", describe(o, cascade, set, visemes).dump(2) + "\n");
+    files.commit();
     std::printf("wrote neutral + %zu visemes (%zu vertices, %zu triangles) to %s\n", set.size(),
                 set.vertexCount(), set.neutral.triangles.size(), out.string().c_str());
     return kExitOk;

@@ -1,6 +1,7 @@
 // visemelab: the headless pipeline (reduce, refine, visemes, export, freq, project, avatar, say).
 #include "app/cli/Command.h"
 #include "core/common/Error.h"
+#include "core/common/InputRegistry.h"
 
 #include <cstdio>
 #include <exception>
@@ -27,9 +28,13 @@ int main(int argc, char** argv) {
         return code == 0 ? vl::cli::kExitOk : vl::cli::kExitUsage;
     }
     try {
+        const vl::InputRecording inputs; // every file read is an input no output may overwrite
         return run ? run() : vl::cli::kExitUsage;
     } catch (const vl::cli::UsageError& e) {
         std::fprintf(stderr, "visemelab: usage error: %s (see --help)\n", e.what());
+        return vl::cli::kExitUsage;
+    } catch (const vl::OutputOverwritesInputError& e) {
+        std::fprintf(stderr, "visemelab: usage error: %s\n", e.what());
         return vl::cli::kExitUsage;
     } catch (const vl::InputError& e) {
         std::fprintf(stderr, "visemelab: error: %s\n", e.what());

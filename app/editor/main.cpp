@@ -37,6 +37,9 @@ int main(int argc, char** argv) {
     app.add_option("--sequence", options.sequence, "Playback sequence: phonemes or viseme names");
     app.add_option("--refine", options.refine,
                    "Refine the face with this criterion: depth, normals, contour");
+    app.add_option("--map-start", options.mapStart,
+                   "Frequencies panel: start a phoneme map from a bundled map (oculus, mpeg4, rhubarb, "
+                   "sample-face) or per-phoneme, showing its assignment");
     app.add_option("--probe", options.probe,
                    "GUI tests: write every control's rectangle and a document summary to this JSON "
                    "file after each frame");

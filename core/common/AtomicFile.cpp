@@ -1,13 +1,12 @@
 #include "core/common/AtomicFile.h"
 
+#include "core/common/AtomicFileWriter.h"
 #include "core/common/Error.h"
+#include "core/common/InputRegistry.h"
 #include "core/common/Limits.h"
 
-#include <cstdio>
 #include <fstream>
-#include <random>
 #include <system_error>
-#include <unistd.h>
 
 namespace vl {
 
@@ -37,31 +36,14 @@ std::string readFileToString(const std::filesystem::path& path) {
         in.read(data.data(), size);
     }
     if (!in) throwInputError(path.string(), "read error");
+    noteInputFile(path);
     return data;
 }
 
 void writeFileAtomically(const std::filesystem::path& path, std::string_view contents) {
-    const auto dir = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
-    std::error_code ec;
-    std::filesystem::create_directories(dir, ec);
-    std::random_device rd;
-    const auto temp = dir / ("." + path.filename().string() + ".tmp" + std::to_string(rd() % 1000000));
-    {
-        std::FILE* f = std::fopen(temp.c_str(), "wb");
-        if (!f) throwInputError(path.string(), "cannot create temporary file for writing");
-        const bool ok = std::fwrite(contents.data(), 1, contents.size(), f) == contents.size() &&
-                        std::fflush(f) == 0 && ::fsync(fileno(f)) == 0;
-        std::fclose(f);
-        if (!ok) {
-            std::filesystem::remove(temp, ec);
-            throwInputError(path.string(), "write failed (disk full?); the previous file is unchanged");
-        }
-    }
-    std::filesystem::rename(temp, path, ec);
-    if (ec) {
-        std::filesystem::remove(temp, ec);
-        throwInputError(path.string(), "cannot replace file: " + ec.message());
-    }
+    AtomicFileWriter file(path);
+    file.write(contents);
+    file.commit();
 }
 
 } // namespace vl

@@ -6,11 +6,17 @@
 
 namespace vl {
 
-// Reads a whole file; throws InputError naming the file when it is missing or unreadable.
+// Reads a whole regular file (at most limits::kMaxInputFileBytes) and notes it as an input of the
+// run (core/common/InputRegistry.h); throws InputError naming the file when it is missing,
+// unreadable, not a regular file or too large.
 std::string readFileToString(const std::filesystem::path& path);
 
-// Writes `contents` to a temporary file beside `path`, flushes it, then renames it over `path`,
-// so a crash or a full disk never leaves a half-written file where the old one was.
+// Writes `contents` to a temporary file beside `path`, fsyncs it, renames it over `path` and fsyncs
+// the folder, so a crash, kill -9 or a full disk never leaves a half-written file where the old one
+// was. Keeps the permission bits of the file it replaces; a symlink `path` is written through (its
+// target is replaced, the link kept). Temporaries of earlier saves of `path` whose process died are
+// removed first; a failed save removes its own. Refuses (OutputOverwritesInputError) to overwrite
+// an input of the run. Creates missing parent folders.
 void writeFileAtomically(const std::filesystem::path& path, std::string_view contents);
 
 } // namespace vl

@@ -1,21 +1,29 @@
 #include "core/common/AtomicFileWriter.h"
 
 #include "core/common/Error.h"
+#include "core/common/FileWriting.h"
+#include "core/common/InputRegistry.h"
 
-#include <random>
 #include <system_error>
 #include <unistd.h>
 
 namespace vl {
 
 AtomicFileWriter::AtomicFileWriter(const std::filesystem::path& path) : path_(path) {
-    const auto dir = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+    refuseOverwritingInput(path);
+    target_ = fileio::writeTarget(path);
+    const auto folder = target_.has_parent_path() ? target_.parent_path() : std::filesystem::path(".");
     std::error_code ec;
-    std::filesystem::create_directories(dir, ec);
-    std::random_device rd;
-    temp_ = dir / ("." + path.filename().string() + ".tmp" + std::to_string(rd() % 1000000));
-    file_ = std::fopen(temp_.c_str(), "wb");
-    if (!file_) throwInputError(path.string(), "cannot create temporary file for writing");
+    std::filesystem::create_directories(folder, ec);
+    fileio::sweepStaleTemporaries(folder, target_.filename().string());
+    const fileio::TemporaryFile temp = fileio::createTemporaryFor(target_, path.string());
+    temp_ = temp.path;
+    file_ = ::fdopen(temp.fd, "wb");
+    if (!file_) {
+        ::close(temp.fd);
+        std::filesystem::remove(temp_, ec);
+        throwInputError(path.string(), "cannot open the temporary file for writing");
+    }
 }
 
 AtomicFileWriter::~AtomicFileWriter() {
@@ -26,17 +34,17 @@ AtomicFileWriter::~AtomicFileWriter() {
 }
 
 void AtomicFileWriter::fail(const char* what) {
+    const std::string problem = fileio::lastSystemError();
     std::fclose(file_);
     file_ = nullptr;
     std::error_code ec;
     std::filesystem::remove(temp_, ec);
-    throwInputError(path_.string(), what);
+    throwInputError(path_.string(), std::string(what) + " (" + problem + "); the previous file is unchanged");
 }
 
 void AtomicFileWriter::write(std::string_view bytes) {
     if (!file_) throwInputError(path_.string(), "write after the file was closed");
-    if (std::fwrite(bytes.data(), 1, bytes.size(), file_) != bytes.size())
-        fail("write failed (disk full?); the previous file is unchanged");
+    if (std::fwrite(bytes.data(), 1, bytes.size(), file_) != bytes.size()) fail("write failed");
     size_ += bytes.size();
 }
 
@@ -46,21 +54,22 @@ void AtomicFileWriter::overwrite(std::uint64_t offset, std::string_view bytes) {
     const bool ok = std::fseek(file_, static_cast<long>(offset), SEEK_SET) == 0 &&
                     std::fwrite(bytes.data(), 1, bytes.size(), file_) == bytes.size() &&
                     std::fseek(file_, 0, SEEK_END) == 0;
-    if (!ok) fail("write failed; the previous file is unchanged");
+    if (!ok) fail("write failed");
 }
 
 void AtomicFileWriter::commit() {
     if (!file_) throwInputError(path_.string(), "commit after the file was closed");
     const bool ok = std::fflush(file_) == 0 && ::fsync(fileno(file_)) == 0;
-    if (!ok) fail("write failed (disk full?); the previous file is unchanged");
+    if (!ok) fail("write failed");
     std::fclose(file_);
     file_ = nullptr;
     std::error_code ec;
-    std::filesystem::rename(temp_, path_, ec);
+    std::filesystem::rename(temp_, target_, ec);
     if (ec) {
         std::filesystem::remove(temp_, ec);
         throwInputError(path_.string(), "cannot replace file: " + ec.message());
     }
+    fileio::syncFolder(target_.has_parent_path() ? target_.parent_path() : std::filesystem::path("."));
 }
 
 } // namespace vl

@@ -2,6 +2,8 @@
 // A file written piece by piece (too large to hold in memory) that appears at its path only when
 // commit() succeeds: data goes to a temporary file beside it, which is flushed, synced and renamed
 // over the path. Destroyed without commit(), the temporary file is removed and the path untouched.
+// The same protocol as writeFileAtomically (core/common/AtomicFile.h): inputs of the run refused,
+// mode kept, symlinks written through, the folder synced after the rename, stale temporaries swept.
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
@@ -30,6 +32,7 @@ class AtomicFileWriter {
     [[noreturn]] void fail(const char* what);
 
     std::filesystem::path path_;
+    std::filesystem::path target_; // path_, or the file its symlinks lead to
     std::filesystem::path temp_;
     std::FILE* file_ = nullptr;
     std::uint64_t size_ = 0;

@@ -4,6 +4,9 @@
 #include "core/common/TextParsing.h"
 #include "core/deform/BundledFace.h"
 #include "core/document/AvatarDocument.h"
+#include "core/document/CommandSupport.h"
+#include "core/document/PhonemeMapCommands.h"
+#include "core/document/VisemeCommands.h"
 #include "core/gltf/AvatarReduce.h"
 #include "core/gltf/TargetNames.h"
 
@@ -13,33 +16,11 @@
 namespace vl::edit {
 namespace {
 
-// Every command ends here: the edited document must still reduce (frequencies resolve, weights
-// valid, target in range, parameters in range).
-Document checked(Document next) {
-    validateDocument(next);
-    return next;
-}
-
-void requireSet(const Document& document, std::string_view what) {
-    if (!document.visemes) throwInputError(what, "load a viseme set first");
-}
-
-void refuseAvatar(const Document& document, std::string_view what) {
-    if (document.avatar.isSet())
-        throwInputError(what, "the visemes come from the avatar " + document.avatar.file.filename().string() +
-                                  ": change which targets are visemes with the target pattern");
-}
-
-void requireFace(const Document& document, std::string_view what) {
-    if (!document.face.cascade) throwInputError(what, "no face loaded");
-}
-
-std::size_t checkedIndex(int index, std::size_t size, std::string_view what) {
-    if (index < 0 || static_cast<std::size_t>(index) >= size)
-        throwInputError(what, "index " + std::to_string(index) + " is outside 0.." +
-                                  std::to_string(static_cast<long long>(size) - 1));
-    return static_cast<std::size_t>(index);
-}
+using detail::checked;
+using detail::checkedIndex;
+using detail::refuseAvatar;
+using detail::requireFace;
+using detail::requireSet;
 
 void requireFrequency(double value, const std::string& what) {
     if (!std::isfinite(value) || value < 0.0)
@@ -67,15 +48,26 @@ Document addViseme(const Document& document, const std::string& name, const Mesh
     return checked(std::move(next));
 }
 
-Document removeViseme(const Document& document, int index) {
+Document removeViseme(const Document& document, int index, const std::string& phonemesGoTo) {
     requireSet(document, "remove viseme");
     refuseAvatar(document, "remove viseme");
     const std::size_t i = checkedIndex(index, document.visemeCount(), "remove viseme");
     if (document.visemeCount() <= 2)
         throwInputError("remove viseme", "a viseme set needs at least 2 visemes");
+    const std::string name = document.visemes->visemes[i].name;
     Document next = document;
+    // Phonemes mapped to it would be orphaned: they move where the caller says, or nothing changes.
+    if (const auto orphans = phonemesMappedTo(document.frequencies, name); !orphans.empty()) {
+        if (phonemesGoTo.empty())
+            throwInputError("remove " + name, "phonemes " + phonemeList(document.frequencies, orphans) +
+                                                  " map to it: choose the viseme they map to instead");
+        if (phonemesGoTo == name || document.visemes->find(phonemesGoTo) < 0)
+            throwInputError("remove " + name, "its phonemes cannot go to '" + phonemesGoTo +
+                                                  "' (not another viseme of the set)");
+        for (auto& [phoneme, viseme] : next.frequencies.map.entries)
+            if (viseme == name) viseme = phonemesGoTo;
+    }
     auto set = std::make_shared<VisemeSet>(*document.visemes);
-    const std::string name = set->visemes[i].name;
     set->visemes.erase(set->visemes.begin() + index);
     next.visemes = std::move(set);
     next.visemeFiles.erase(next.visemeFiles.begin() + index);
@@ -86,6 +78,12 @@ Document removeViseme(const Document& document, int index) {
     const auto namesIt = [&](const auto& pair) { return pair.first == name || pair.second == name; };
     std::erase_if(next.constraints.apart, namesIt);
     std::erase_if(next.constraints.together, namesIt);
+    // So does its preset (a viseme and a preset of the same name are one viseme).
+    if (next.face.cascade) {
+        std::vector<VisemeParameters> presets = facePresets(next.face);
+        std::erase_if(presets, [&](const VisemeParameters& preset) { return preset.name == name; });
+        if (!presets.empty() && presets.size() != facePresets(next.face).size()) next.face.presets = presets;
+    }
     next.target = std::min(next.target, static_cast<int>(next.visemes->size()));
     return checked(std::move(next));
 }

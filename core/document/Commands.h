@@ -14,8 +14,10 @@ namespace vl::edit {
 // from (empty = embedded). Direct frequency tables get the new name with frequency 1.
 Document addViseme(const Document& document, const std::string& name, const MeshData& mesh,
                    const std::filesystem::path& file);
-// Removes viseme `index` (at least 2 stay); its direct frequency goes, the target is clamped.
-Document removeViseme(const Document& document, int index);
+// Removes viseme `index` (at least 2 stay); its direct frequency, the constraints and the face
+// preset that name it go, the target is clamped. Phonemes mapped to it move to `phonemesGoTo`;
+// without one, a removal that would leave phonemes unmapped is refused and lists them.
+Document removeViseme(const Document& document, int index, const std::string& phonemesGoTo = {});
 
 // --- frequencies ------------------------------------------------------------------------------
 Document setVisemeFrequency(const Document& document, int viseme, double value); // direct tables only

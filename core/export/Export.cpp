@@ -2,6 +2,7 @@
 
 #include "core/common/AtomicFile.h"
 #include "core/common/Error.h"
+#include "core/common/OutputSet.h"
 #include "core/export/Gltf.h"
 #include "core/export/KeyMeshFiles.h"
 #include "core/export/MappingJson.h"
@@ -40,29 +41,38 @@ std::vector<std::filesystem::path> exportModel(const ReducedModel& model, Export
         for (const std::string& name : names) paths.push_back(out / name);
         return paths;
     };
-    // mapping.json beside every format: inside a folder export, <stem>.mapping.json beside a file.
-    const auto withMapping = [&](std::vector<std::filesystem::path> written, bool folder) {
+    // mapping.json beside every format: <stem>.mapping.json beside a file, inside a folder export.
+    const auto withMapping = [&](const std::filesystem::path& file) {
+        const std::filesystem::path mapping = out.parent_path() / (out.stem().string() + ".mapping.json");
+        writeFileAtomically(mapping, formatMappingJson(model, {}));
+        return std::vector<std::filesystem::path>{file, mapping};
+    };
+    // A folder export replaces the previous export of its format as one set (core/common/OutputSet.h).
+    const auto folderExport = [&](const char* setName, const auto& stage) {
+        OutputSet files(out, setName);
+        std::vector<std::string> names = stage(files);
+        const std::string extension = format == ExportFormat::Vrml ? ".wrl" : ".obj";
         std::vector<std::string> keyFiles;
-        if (folder)
-            for (std::size_t k = 0; k < model.keys.size(); ++k)
-                keyFiles.push_back(keyFileName(model, k, format == ExportFormat::Vrml ? ".wrl" : ".obj"));
-        const std::filesystem::path mapping =
-            folder ? out / "mapping.json" : out.parent_path() / (out.stem().string() + ".mapping.json");
-        writeFileAtomically(mapping, formatMappingJson(model, keyFiles));
-        written.push_back(mapping);
-        return written;
+        for (std::size_t k = 0; k < model.keys.size(); ++k)
+            keyFiles.push_back(keyFileName(model, k, extension));
+        names.push_back("mapping.json");
+        files.add(names.back(), formatMappingJson(model, keyFiles));
+        files.commit();
+        return inFolder(names);
     };
     switch (format) {
     case ExportFormat::Glb:
         writeGlb(out, model);
-        return withMapping({out}, false);
+        return withMapping(out);
     case ExportFormat::Runtime:
         writeRuntimePackage(out, model, {.quantise = options.quantise});
-        return withMapping({out}, false);
+        return withMapping(out);
     case ExportFormat::Vrml:
-        return withMapping(inFolder(writeXfaceFace(out, model, options.faceName)), true);
+        return folderExport("export-vrml",
+                            [&](OutputSet& files) { return addXfaceFace(files, model, options.faceName); });
     case ExportFormat::Obj:
-        return withMapping(inFolder(writeKeyMeshFiles(out, model, ".obj")), true);
+        return folderExport("export-obj",
+                            [&](OutputSet& files) { return addKeyMeshFiles(files, model, ".obj"); });
     }
     return {};
 }

@@ -4,7 +4,6 @@
 #include "core/io/MeshIO.h"
 
 #include <cctype>
-#include <system_error>
 
 namespace vl {
 
@@ -30,19 +29,24 @@ MeshData keyMeshData(const ReducedModel& model, std::size_t key) {
     return mesh;
 }
 
+std::vector<std::string> addKeyMeshFiles(OutputSet& outputs, const ReducedModel& model,
+                                         std::string_view extension) {
+    validateReducedModel(model, "export");
+    std::vector<std::string> names{neutralFileName(extension)};
+    outputs.add(names.back(), formatMesh(names.back(), model.neutral));
+    for (std::size_t k = 0; k < model.keys.size(); ++k) {
+        names.push_back(keyFileName(model, k, extension));
+        outputs.add(names.back(), formatMesh(names.back(), keyMeshData(model, k)));
+    }
+    return names;
+}
+
 std::vector<std::string> writeKeyMeshFiles(const std::filesystem::path& outDir, const ReducedModel& model,
                                            std::string_view extension) {
-    validateReducedModel(model, "export");
-    std::error_code ec;
-    std::filesystem::create_directories(outDir, ec);
-    if (ec) throwInputError(outDir.string(), "cannot create the output folder: " + ec.message());
-    std::vector<std::string> written{neutralFileName(extension)};
-    writeMesh(outDir / written.back(), model.neutral);
-    for (std::size_t k = 0; k < model.keys.size(); ++k) {
-        written.push_back(keyFileName(model, k, extension));
-        writeMesh(outDir / written.back(), keyMeshData(model, k));
-    }
-    return written;
+    OutputSet outputs(outDir, "export-" + std::string(extension.substr(extension.starts_with('.') ? 1 : 0)));
+    std::vector<std::string> names = addKeyMeshFiles(outputs, model, extension);
+    outputs.commit();
+    return names;
 }
 
 } // namespace vl

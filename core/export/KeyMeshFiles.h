@@ -1,6 +1,7 @@
 #pragma once
 // One mesh file per key mesh (plus the neutral), in any format core/io writes: the OBJ export and
 // the VRML meshes of the XfaceEd export.
+#include "core/common/OutputSet.h"
 #include "core/export/ReducedModel.h"
 
 #include <filesystem>
@@ -20,8 +21,13 @@ std::string keyFileName(const ReducedModel& model, std::size_t key, std::string_
 // The key mesh as a full mesh (neutral topology and (u,v), the key's positions).
 MeshData keyMeshData(const ReducedModel& model, std::size_t key);
 
-// Writes the neutral and every key mesh into `outDir` (created if missing) with `extension`
-// (".obj", ".ply" or ".wrl"); returns the file names written, neutral first.
+// Stages the neutral and every key mesh with `extension` (".obj", ".ply" or ".wrl") in `outputs`;
+// returns the file names, neutral first.
+std::vector<std::string> addKeyMeshFiles(OutputSet& outputs, const ReducedModel& model,
+                                         std::string_view extension);
+
+// Writes the neutral and every key mesh into `outDir` (created if missing) as one output set named
+// "export-<format>" (stale key meshes of an earlier export removed); returns the file names written.
 std::vector<std::string> writeKeyMeshFiles(const std::filesystem::path& outDir, const ReducedModel& model,
                                            std::string_view extension);
 

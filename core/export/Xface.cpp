@@ -226,16 +226,24 @@ std::string formatXfaceDictionary(const ReducedModel& model, std::string_view la
     return out;
 }
 
-std::vector<std::string> writeXfaceFace(const std::filesystem::path& outDir, const ReducedModel& model,
-                                        std::string_view faceName) {
+std::vector<std::string> addXfaceFace(OutputSet& outputs, const ReducedModel& model,
+                                      std::string_view faceName) {
     const std::string dictionary = formatXfaceDictionary(model);
     const std::string fdp = formatFdp(model);
-    std::vector<std::string> written = writeKeyMeshFiles(outDir, model, ".wrl");
-    written.push_back(std::string(faceName) + ".fdp");
-    writeFileAtomically(outDir / written.back(), fdp);
-    written.push_back(std::string(faceName) + ".dic");
-    writeFileAtomically(outDir / written.back(), dictionary);
-    return written;
+    std::vector<std::string> names = addKeyMeshFiles(outputs, model, ".wrl");
+    names.push_back(std::string(faceName) + ".fdp");
+    outputs.add(names.back(), fdp);
+    names.push_back(std::string(faceName) + ".dic");
+    outputs.add(names.back(), dictionary);
+    return names;
+}
+
+std::vector<std::string> writeXfaceFace(const std::filesystem::path& outDir, const ReducedModel& model,
+                                        std::string_view faceName) {
+    OutputSet outputs(outDir, "export-vrml"); // the meshes, .fdp and .dic replace the last export as one set
+    std::vector<std::string> names = addXfaceFace(outputs, model, faceName);
+    outputs.commit();
+    return names;
 }
 
 XfaceFace loadXfaceFace(const std::filesystem::path& fdpPath) {

@@ -15,6 +15,7 @@
 // the visemes are the category="Viseme" entities in file order, each entity's mesh files (relative
 // to the .fdp) read with core/io and concatenated. <stem>.dic beside the .fdp, when present, gives
 // the phoneme map. Errors name the file, line and entity.
+#include "core/common/OutputSet.h"
 #include "core/export/ReducedModel.h"
 #include "core/reduce/Frequencies.h"
 #include "core/reduce/VisemeSet.h"
@@ -55,7 +56,10 @@ std::string formatXfaceDictionary(const ReducedModel& model, std::string_view la
 // and never "Rest".
 std::vector<std::string> xfaceAliases(const ReducedModel& model);
 
-// Writes the VRML meshes, <faceName>.fdp and <faceName>.dic into outDir; returns the file names.
+// Stages the VRML meshes, <faceName>.fdp and <faceName>.dic in `outputs`; returns the file names.
+std::vector<std::string> addXfaceFace(OutputSet& outputs, const ReducedModel& model,
+                                      std::string_view faceName = "face");
+// The same written into outDir as the output set "export-vrml".
 std::vector<std::string> writeXfaceFace(const std::filesystem::path& outDir, const ReducedModel& model,
                                         std::string_view faceName = "face");
 

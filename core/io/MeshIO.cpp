@@ -55,16 +55,20 @@ MeshData readMesh(const std::filesystem::path& path) {
     throwInputError(source, "unknown mesh format");
 }
 
-void writeMesh(const std::filesystem::path& path, const MeshData& mesh) {
-    const MeshFormat format = meshFormatFromPath(path);
-    switch (format) {
+std::string formatMesh(const std::filesystem::path& path, const MeshData& mesh) {
+    switch (meshFormatFromPath(path)) {
     case MeshFormat::Obj:
-        return writeFileAtomically(path, formatObj(mesh));
+        return formatObj(mesh);
     case MeshFormat::Ply:
-        return writeFileAtomically(path, formatPly(mesh));
+        return formatPly(mesh);
     case MeshFormat::Vrml:
-        return writeFileAtomically(path, formatVrml(mesh));
+        return formatVrml(mesh);
     }
+    throwInputError(path.string(), "unknown mesh format");
+}
+
+void writeMesh(const std::filesystem::path& path, const MeshData& mesh) {
+    writeFileAtomically(path, formatMesh(path, mesh));
 }
 
 } // namespace vl

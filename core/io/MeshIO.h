@@ -39,6 +39,8 @@ bool isMeshFile(const std::filesystem::path& path);
 MeshData readMesh(const std::filesystem::path& path);
 // Writes atomically (temp file + rename) in the format of the extension.
 void writeMesh(const std::filesystem::path& path, const MeshData& mesh);
+// The file contents writeMesh writes, for writers that stage files (core/common/OutputSet.h).
+std::string formatMesh(const std::filesystem::path& path, const MeshData& mesh);
 
 // Format-level entry points on in-memory text; `source` names the file in error messages.
 //

@@ -1,6 +1,7 @@
 #include "core/phonetics/CorpusText.h"
 
 #include "core/common/Error.h"
+#include "core/common/InputRegistry.h"
 
 #include <fstream>
 #include <string>
@@ -162,6 +163,7 @@ CorpusStats forEachCorpusChunk(const std::filesystem::path& path, const CorpusCh
     if (std::filesystem::is_directory(path, ec)) throwInputError(source, "is a directory, not a file");
     std::ifstream in(path, std::ios::binary);
     if (!in) throwInputError(source, "cannot open file for reading");
+    noteInputFile(path);
     const auto size = std::filesystem::is_regular_file(path, ec) ? std::filesystem::file_size(path, ec) : 0;
     CorpusChunker chunker(source, ec ? 0 : size, chunkBytes, chunk);
     std::vector<char> block(chunkBytes < 16 ? 16 : chunkBytes);

@@ -68,7 +68,7 @@ ReduceOutcome runReduction(const VisemeSet& set, const FrequencySource& frequenc
     return out;
 }
 
-std::vector<std::string> writeReductionOutputs(const std::filesystem::path& outDir, const VisemeSet& set,
+std::vector<std::string> writeReductionOutputs(OutputSet& outputs, const VisemeSet& set,
                                                const ReduceOutcome& outcome) {
     std::vector<std::string> written;
     nlohmann::ordered_json reducedList = nlohmann::ordered_json::array();
@@ -77,8 +77,8 @@ std::vector<std::string> writeReductionOutputs(const std::filesystem::path& outD
         const auto& reduced = outcome.reduced[g];
         const std::string stem = "reduced_" + std::to_string(g) + "_" + fileSafe(reduced.name);
         mesh.positions = reduced.positions;
-        writeMesh(outDir / (stem + ".obj"), mesh);
-        writeMesh(outDir / (stem + ".wrl"), mesh);
+        outputs.add(stem + ".obj", formatObj(mesh));
+        outputs.add(stem + ".wrl", formatVrml(mesh));
         written.push_back(stem + ".obj");
         written.push_back(stem + ".wrl");
         reducedList.push_back({{"index", g},
@@ -99,7 +99,7 @@ std::vector<std::string> writeReductionOutputs(const std::filesystem::path& outD
     for (const auto& [phoneme, index] : outcome.phonemeToReduced) phonemes[phoneme] = index;
     mapping["phonemes"] = phonemes;
     mapping["reduced"] = reducedList;
-    writeFileAtomically(outDir / "mapping.json", mapping.dump(2) + "\n");
+    outputs.add("mapping.json", mapping.dump(2) + "\n");
     written.push_back("mapping.json");
     return written;
 }

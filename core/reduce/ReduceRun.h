@@ -1,6 +1,7 @@
 #pragma once
 // One reduction run from user-level inputs (viseme set, frequencies, weight mode, target) to the
 // merged meshes and the files the CLI and the editor write. Shared so both behave identically.
+#include "core/common/OutputSet.h"
 #include "core/reduce/Frequencies.h"
 #include "core/reduce/Reduction.h"
 #include "core/reduce/VisemeSet.h"
@@ -47,9 +48,10 @@ struct ReduceTimings {
     double loadMs = 0, reduceMs = 0, writeMs = 0;
 };
 
-// Writes into `outDir`: reduced_<i>_<name>.obj and .wrl per merged mesh and mapping.json (each original
-// viseme and phoneme -> reduced index). Returns the written file names (relative to outDir).
-std::vector<std::string> writeReductionOutputs(const std::filesystem::path& outDir, const VisemeSet& set,
+// Stages in `outputs` (an OutputSet of the output folder; the caller commits it, with the report):
+// reduced_<i>_<name>.obj and .wrl per merged mesh and mapping.json (each original viseme and phoneme
+// -> reduced index). Returns the staged file names (relative to the folder).
+std::vector<std::string> writeReductionOutputs(OutputSet& outputs, const VisemeSet& set,
                                                const ReduceOutcome& outcome);
 
 // The JSON report: n, m, weights, method, optimal, cost, lower_bound, gap, groups, cost_curve (null where

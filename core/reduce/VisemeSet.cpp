@@ -1,6 +1,7 @@
 #include "core/reduce/VisemeSet.h"
 
 #include "core/common/Error.h"
+#include "core/common/InputRegistry.h"
 #include "core/common/Limits.h"
 #include "core/io/MeshIO.h"
 
@@ -83,6 +84,7 @@ std::vector<std::pair<std::string, std::filesystem::path>>
 listVisemeFolder(const std::filesystem::path& folder, const std::filesystem::path& excluded) {
     std::error_code ec;
     if (!std::filesystem::is_directory(folder, ec)) throwInputError(folder.string(), "not a folder");
+    noteInputFolder(folder); // its files are inputs, and outputs must not go into it
     std::vector<std::filesystem::path> files;
     for (const auto& entry : std::filesystem::directory_iterator(folder, ec))
         if (entry.is_regular_file() && isMeshFile(entry.path())) files.push_back(entry.path());
@@ -91,6 +93,7 @@ listVisemeFolder(const std::filesystem::path& folder, const std::filesystem::pat
     for (const auto& file : files) {
         if (!excluded.empty() && std::filesystem::equivalent(file, excluded, ec)) continue;
         result.emplace_back(file.stem().string(), file);
+        noteInputFile(file); // named as an input even by commands that do not read it (project new)
     }
     if (result.empty()) throwInputError(folder.string(), "contains no mesh files (.obj, .ply, .wrl)");
     return result;

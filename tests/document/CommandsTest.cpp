@@ -3,6 +3,8 @@
 #include "core/document/Commands.h"
 #include "core/common/Error.h"
 
+#include "DocumentTestSupport.h"
+
 #include <gtest/gtest.h>
 
 #include <functional>
@@ -11,11 +13,7 @@
 namespace vl {
 namespace {
 
-Document faceDocument() {
-    Document document;
-    document.face = makeFaceModel(face::Individual::Bundled, 12);
-    return edit::generateVisemesFromFace(document);
-}
+using test::faceDocument;
 
 FrequencySource phonemeSource(const Document& document) {
     FrequencySource source;

@@ -4,6 +4,8 @@
 #include "core/document/Commands.h"
 #include "core/io/MeshIO.h"
 
+#include "DocumentTestSupport.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -11,18 +13,13 @@
 namespace vl {
 namespace {
 
+using test::faceDocument;
+
 std::filesystem::path tempDir(const char* name) {
     const auto dir = std::filesystem::temp_directory_path() / ("visemelab-document-" + std::string(name));
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     return dir;
-}
-
-// A face document with its generated visemes (embedded geometry).
-Document faceDocument() {
-    Document document;
-    document.face = makeFaceModel(face::Individual::Bundled, 12);
-    return edit::generateVisemesFromFace(document);
 }
 
 TEST(Document, EmbeddedDocumentSurvivesTheProjectFileExactly) {

@@ -1,4 +1,5 @@
 #include "core/paint/WeightBrush.h"
+#include "PaintMeshes.h"
 #include "core/common/Error.h"
 
 #include <gtest/gtest.h>
@@ -8,20 +9,7 @@
 namespace vl {
 namespace {
 
-// A grid of points in the z = 0 plane, triangulated.
-MeshData grid(int n) {
-    MeshData mesh;
-    for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) mesh.positions.emplace_back(i - (n - 1) / 2.0, j, 0.0);
-    for (int j = 0; j + 1 < n; ++j)
-        for (int i = 0; i + 1 < n; ++i) {
-            const auto v = static_cast<std::uint32_t>(j * n + i);
-            const auto w = static_cast<std::uint32_t>(n);
-            mesh.triangles.push_back({v, v + 1, v + w});
-            mesh.triangles.push_back({v + 1, v + w + 1, v + w});
-        }
-    return mesh;
-}
+using test::grid;
 
 TEST(WeightBrush, FootprintMatchesTheDefinitionVertexByVertex) {
     const MeshData mesh = grid(15);
@@ -33,7 +21,7 @@ TEST(WeightBrush, FootprintMatchesTheDefinitionVertexByVertex) {
         brush.strength = 0.7;
         brush.falloff = static_cast<Falloff>(trial % 4);
         const Vec3 centre(coordinate(rng), coordinate(rng) + 7.0, 0.0);
-        const auto footprint = brushFootprint(mesh.positions, brush, centre);
+        const auto footprint = brushFootprint(PaintSurface(mesh.positions, mesh.triangles), brush, centre);
         std::size_t next = 0;
         for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
             const double d = (mesh.positions[v] - centre).norm();

@@ -77,7 +77,7 @@ TEST(ProjectSave, UnwritableDestinationFailsCleanly) {
     // A folder where the file should go cannot be replaced.
     std::filesystem::create_directories(dir / "taken.vlproj");
     EXPECT_INPUT_ERROR(saveProject(dir / "taken.vlproj", smallProject(dir / "p.vlproj")),
-                       "cannot replace file");
+                       "taken.vlproj: is a folder; cannot write a file there");
     EXPECT_TRUE(std::filesystem::is_directory(dir / "taken.vlproj"));
     EXPECT_EQ(filesIn(dir.path), 2u);
 }

@@ -279,6 +279,11 @@ void GuiDriver::clickAt(double x, double y, int button) {
     waitFrames(1);
 }
 
+void GuiDriver::hover(double x, double y) {
+    moveTo(x, y);
+    waitFrames(2);
+}
+
 void GuiDriver::drag(double x0, double y0, double x1, double y1, int steps) {
     moveTo(x0, y0);
     waitFrames(1);

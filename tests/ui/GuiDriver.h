@@ -48,6 +48,8 @@ class GuiDriver {
     // Left click at a fraction of the control's rectangle (0.5, 0.5 = its centre).
     void click(const nlohmann::json& control, double fx = 0.5, double fy = 0.5);
     void clickAt(double x, double y, int button = 1);
+    // Moves the pointer there (no button) and waits until the editor drew a frame with it there.
+    void hover(double x, double y);
     // Press at one point, move in steps, release at another (a slider drag or a brush stroke).
     void drag(double x0, double y0, double x1, double y1, int steps = 8);
     // Mouse wheel over a point: positive = down.

@@ -1,6 +1,8 @@
-// Deformation panel: one live slider per cascade parameter, viseme presets, the base geometry
-// (retargeting) and editing of the analytic influence regions, drawn on the face and in (u,v).
+// Deformation panel: one live slider per cascade parameter, viseme presets (stored from the sliders
+// in StoreSlidersSection.cpp), the base geometry (retargeting) and editing of the analytic influence
+// regions, drawn on the face and in (u,v).
 #include "core/deform/Visemes.h"
+#include "core/document/VisemeCommands.h"
 #include "ui/EditorUi.h"
 #include "ui/panels/PanelWidgets.h"
 #include "ui/widgets/Controls.h"
@@ -45,8 +47,8 @@ void EditorUi::deformationPanel() {
                         [&] { session.setIndividual(static_cast<face::Individual>(individual)); });
 
     sectionHeader("Parameters");
-    if (ctl::BeginCombo("preset", "apply a viseme...")) {
-        for (const VisemeParameters& preset : oculusVisemes())
+    if (ctl::BeginCombo("preset", "apply a viseme...", ImGuiComboFlags_HeightLargest)) {
+        for (const VisemeParameters& preset : edit::facePresets(model))
             if (ctl::Selectable(preset.name.c_str()))
                 session.attempt("Preset", [&] { session.applyVisemePreset(preset.name); });
         ImGui::EndCombo();
@@ -65,6 +67,7 @@ void EditorUi::deformationPanel() {
         endEditOnRelease(session);
         ImGui::PopID();
     }
+    storeSlidersSection();
 
     sectionHeader("Fields");
     ctl::Checkbox("Show influence on the face", &showFieldInfluence_);

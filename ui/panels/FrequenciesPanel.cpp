@@ -1,5 +1,5 @@
-// Frequencies panel: the editable phoneme frequency table with its phoneme -> viseme map (or direct
-// viseme frequencies), the resulting viseme frequencies live, CSV/JSON load and CSV save.
+// Frequencies panel: the phoneme -> viseme map editor (PhonemeMapEditor.cpp) or direct viseme
+// frequencies, the resulting viseme frequencies live, CSV/JSON load and CSV save.
 #include "core/phonetics/PhonemeMaps.h"
 #include "core/phonetics/PhonemeTableIO.h"
 #include "ui/EditorUi.h"
@@ -36,15 +36,7 @@ void EditorUi::frequenciesPanel() {
         "CSV lines 'name,frequency', or JSON {\"phonemes\": {...}, \"map\": {...}}. A phoneme table needs a "
         "map that covers every phoneme; errors name the file and line.");
 
-    sectionHeader("Phoneme frequencies");
-    if (ctl::BeginCombo("##bundled-map", "Bundled en-us table with map...")) {
-        for (const BundledPhonemeMap& map : bundledPhonemeMaps(EditorSession::assetsDirectory()))
-            if (ctl::Selectable(map.title.c_str()))
-                session.attempt("Phoneme map", [&] { session.useBundledPhonemeMap(map.id); });
-        ImGui::EndCombo();
-    }
-    helpMarker("The map's viseme names must be the names of the loaded visemes (the Oculus map fits the "
-               "sample face); otherwise the error lists what does not match and nothing changes.");
+    mapStartSection();
     const bool counting = session.phonemeCountRunning();
     if (counting) ImGui::BeginDisabled();
     if (ctl::Button("Count phonemes in a text file..."))
@@ -71,46 +63,9 @@ void EditorUi::frequenciesPanel() {
     }
 
     const FrequencySource& source = session.document().frequencies;
-    if (source.isPhonemeBased()) {
-        sectionHeader("Phonemes");
-        if (ImGui::BeginTable("##phonemes", 3,
-                              ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY | ImGuiTableFlags_BordersInnerV,
-                              ImVec2(0, ImGui::GetContentRegionAvail().y))) {
-            ImGui::TableSetupScrollFreeze(0, 1);
-            ImGui::TableSetupColumn("Phoneme");
-            ImGui::TableSetupColumn("Frequency");
-            ImGui::TableSetupColumn("Viseme");
-            ImGui::TableHeadersRow();
-            for (std::size_t i = 0; i < source.phonemes.entries.size(); ++i) {
-                const auto& [phoneme, value] = source.phonemes.entries[i];
-                ImGui::PushID(static_cast<int>(i));
-                ImGui::TableNextRow();
-                ImGui::TableNextColumn();
-                const std::string ipa = ipaOf(phoneme);
-                ImGui::AlignTextToFramePadding();
-                ImGui::Text("%s  %s", phoneme.c_str(), ipa.empty() ? "" : ("/" + ipa + "/").c_str());
-                ImGui::TableNextColumn();
-                float f = static_cast<float>(value);
-                ImGui::SetNextItemWidth(-1);
-                if (ctl::DragFloat("##f", &f, 1.0f, 0.0f, 1e9f, "%.6g"))
-                    session.attempt("Phoneme frequency",
-                                    [&] { session.setPhonemeFrequency(static_cast<int>(i), f); });
-                endEditOnRelease(session);
-                ImGui::TableNextColumn();
-                const std::string* mapped = source.map.visemeOf(phoneme);
-                ImGui::SetNextItemWidth(-1);
-                if (ctl::BeginCombo("##viseme", mapped ? mapped->c_str() : "(unmapped)")) {
-                    for (const auto& v : set->visemes)
-                        if (ctl::Selectable(v.name.c_str(), mapped && *mapped == v.name))
-                            session.attempt("Phoneme map",
-                                            [&] { session.setPhonemeViseme(static_cast<int>(i), v.name); });
-                    ImGui::EndCombo();
-                }
-                ImGui::PopID();
-            }
-            ImGui::EndTable();
-        }
-    } else {
+    if (source.isPhonemeBased() && !mapStart_.open) {
+        phonemeMapEditor();
+    } else if (!source.isPhonemeBased()) {
         sectionHeader("Viseme frequencies (direct)");
         if (ImGui::BeginTable("##direct", 2,
                               ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY | ImGuiTableFlags_BordersInnerV,

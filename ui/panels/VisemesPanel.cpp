@@ -1,5 +1,6 @@
 // Visemes panel: the viseme list (frequency, group after reduction), preview on click, loading and
-// importing meshes with the core's interpolability errors shown.
+// importing meshes with the core's interpolability errors shown; under the list, authoring of the
+// selected viseme (VisemeAuthoring.cpp).
 #include "ui/EditorUi.h"
 #include "ui/panels/PanelWidgets.h"
 #include "ui/widgets/Controls.h"
@@ -94,7 +95,9 @@ void EditorUi::visemesPanel() {
     if (ImGui::BeginTable("##visemes", 4,
                           ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_ScrollY |
                               ImGuiTableFlags_SizingStretchProp,
-                          ImVec2(0, ImGui::GetContentRegionAvail().y - 40))) {
+                          ImVec2(0, ImGui::GetContentRegionAvail().y -
+                                        2.0f * ImGui::GetFrameHeightWithSpacing() -
+                                        ImGui::GetStyle().ItemSpacing.y))) {
         ImGui::TableSetupScrollFreeze(0, 1);
         ImGui::TableSetupColumn("Name", ImGuiTableColumnFlags_WidthStretch, 2.0f);
         ImGui::TableSetupColumn("Frequency", ImGuiTableColumnFlags_WidthStretch, 2.0f);
@@ -133,11 +136,11 @@ void EditorUi::visemesPanel() {
         }
         ImGui::EndTable();
     }
-    const bool canRemove = session.selectedViseme >= 0 && !session.document().avatar.isSet();
-    if (!canRemove) ImGui::BeginDisabled();
-    if (ctl::Button("Remove selected"))
-        session.attempt("Remove viseme", [&] { session.removeViseme(session.selectedViseme); });
-    if (!canRemove) ImGui::EndDisabled();
+    // An avatar's visemes are its morph targets, selected by the pattern: no per-viseme authoring.
+    if (session.document().avatar.isSet())
+        ImGui::TextDisabled("Visemes of the avatar: the target pattern selects them.");
+    else
+        visemeAuthoring();
     ImGui::SameLine();
     ctl::Checkbox("Play all", &playback_.playing);
 }

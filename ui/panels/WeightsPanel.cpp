@@ -1,9 +1,15 @@
-// Weights panel: the metric's per-vertex weights (uniform, area, painted) and the painting brush.
+// Weights panel: the metric's per-vertex weights (uniform, area, painted) and the paint tools: a
+// brush (radius in screen pixels or % of the head, front faces only), a region fill and a box
+// selection filled with a value. The weight under the cursor shows beside it in the view.
+#include "core/paint/PaintRegions.h"
 #include "ui/EditorUi.h"
 #include "ui/panels/PanelWidgets.h"
 #include "ui/widgets/Controls.h"
 
 #include <imgui.h>
+
+#include <algorithm>
+#include <numeric>
 
 namespace vl::ui {
 
@@ -24,32 +30,97 @@ void EditorUi::weightsPanel() {
         session.attempt("Weight mode", [&] { session.setWeightMode(static_cast<WeightMode>(mode)); });
     ctl::Checkbox("Show weights as colours", &showWeightsColours_);
     ImGui::TextDisabled("Blue: low weight, red: the largest weight.");
+    if (paintTool_.readout)
+        ImGui::Text("Under the cursor: %.3g (vertex %u)", *paintTool_.readout, paintTool_.readoutVertex);
+    else
+        ImGui::TextDisabled("Under the cursor: point at the mesh to read its weight.");
 
-    sectionHeader("Brush");
+    sectionHeader("Paint");
     ctl::Checkbox("Paint (left drag on the mesh; Alt + drag orbits)", &brush_.enabled);
-    Vec3 lo, hi;
-    bounds(set->neutral.positions, lo, hi);
-    const float size = static_cast<float>((hi - lo).norm());
-    if (brush_.radius <= 0.0f || brush_.radius > size) brush_.radius = 0.08f * size;
-    ImGui::PushItemWidth(-110);
-    ctl::SliderFloat("radius", &brush_.radius, 0.005f * size, 0.5f * size, "%.3f");
+    int tool = static_cast<int>(paintTool_.tool);
+    bool toolChanged = ctl::RadioButton("brush", &tool, 0);
+    ImGui::SameLine();
+    toolChanged |= ctl::RadioButton("fill region", &tool, 1);
+    ImGui::SameLine();
+    toolChanged |= ctl::RadioButton("select box", &tool, 2);
+    if (toolChanged) {
+        paintTool_.tool = static_cast<PaintTool>(tool);
+        brush_.enabled = true; // choosing a tool means using it
+    }
+    ctl::Checkbox("Front faces only (nothing through to the back)", &brush_.frontFacesOnly);
+    helpMarker("The brush and the box reach only the surface facing you: a big brush on the face leaves "
+               "the back of the head, the inside of the mouth and the other lip alone.");
+
+    ImGui::PushItemWidth(-130);
+    sectionHeader("Brush");
+    const bool pixels = brush_.radius.unit == RadiusUnit::ScreenPixels;
+    float radius = static_cast<float>(brush_.radius.value);
+    if (ctl::SliderFloat("radius", &radius, pixels ? 2.0f : 0.5f, pixels ? 300.0f : 50.0f,
+                         pixels ? "%.0f px" : "%.1f %% of head", ImGuiSliderFlags_Logarithmic))
+        brush_.radius.value = radius;
+    int unit = static_cast<int>(brush_.radius.unit);
+    ImGui::TextUnformatted("radius in");
+    ImGui::SameLine();
+    bool unitChanged = ctl::RadioButton("screen pixels", &unit, 0);
+    ImGui::SameLine();
+    unitChanged |= ctl::RadioButton("% of head size", &unit, 1);
+    if (unitChanged && unit != static_cast<int>(brush_.radius.unit)) {
+        // Keep the size the brush has on the face now (known once the cursor was over the mesh).
+        const double headSize = paintSurface().size();
+        const double model = paintTool_.modelRadius, perPixel = paintTool_.unitsPerPixel;
+        if (model > 0.0 && perPixel > 0.0 && headSize > 0.0)
+            brush_.radius.value = unit == 1 ? std::clamp(100.0 * model / headSize, 0.5, 50.0)
+                                            : std::clamp(model / perPixel, 2.0, 300.0);
+        else
+            brush_.radius.value = unit == 1 ? 8.0 : 40.0;
+        brush_.radius.unit = static_cast<RadiusUnit>(unit);
+    }
     ctl::SliderFloat("strength", &brush_.strength, 0.01f, 1.0f, "%.2f");
     const char* falloffs[] = {"linear", "smoothstep", "cosine", "gaussian"};
     ctl::Combo("falloff", &brush_.falloff, falloffs, 4);
     const char* modes[] = {"add", "subtract", "smooth"};
     ctl::Combo("operation", &brush_.mode, modes, 3);
-    ImGui::PopItemWidth();
     ctl::Checkbox("Symmetric left/right", &brush_.symmetric);
-    if (ctl::Button("Fill with 1"))
-        session.attempt("Fill weights", [&] {
-            session.setPaintedWeights(std::vector<double>(set->vertexCount(), 1.0), "Fill weights");
-        });
+    ImGui::TextDisabled("[ and ] shrink and grow the brush. Each stroke is one undo step.");
+
+    sectionHeader("Fill");
+    ctl::SliderFloat("fill value", &paintTool_.fillValue, 0.0f, 1.0f, "%.2f");
+    ctl::SliderFloat("region tolerance", &paintTool_.fillTolerance, 0.0f, 1.0f, "%.2f");
+    helpMarker("Fill region: a click on the mesh sets the connected vertices whose weight is within the "
+               "tolerance of the clicked one (tolerance 1: the whole connected part).");
+    ImGui::PopItemWidth();
+    if (ctl::Button("Fill all")) {
+        std::vector<std::uint32_t> all(set->vertexCount());
+        std::iota(all.begin(), all.end(), 0u);
+        fillVertices(all, "Fill all");
+    }
+
+    sectionHeader("Selection");
+    const std::size_t selected = paintTool_.selection.size();
+    ImGui::Text("%zu of %zu vertices selected", selected, set->vertexCount());
+    helpMarker("Select box: drag a box on the mesh; Shift adds to the selection, Ctrl removes from it.");
+    if (selected == 0) ImGui::BeginDisabled();
+    if (ctl::Button("Fill selection")) fillVertices(paintTool_.selection, "Fill selection");
+    if (selected == 0) ImGui::EndDisabled();
     ImGui::SameLine();
-    if (ctl::Button("Fill with 0.1"))
-        session.attempt("Fill weights", [&] {
-            session.setPaintedWeights(std::vector<double>(set->vertexCount(), 0.1), "Fill weights");
-        });
-    ImGui::TextDisabled("Each stroke is one undo step (Ctrl+Z).");
+    if (ctl::Button("Select all")) {
+        paintTool_.selection.resize(paintSurface().vertexCount());
+        std::iota(paintTool_.selection.begin(), paintTool_.selection.end(), 0u);
+    }
+    ImGui::SameLine();
+    if (ctl::Button("Invert")) {
+        std::vector<std::uint32_t> inverted;
+        std::size_t next = 0;
+        for (std::uint32_t v = 0; v < paintSurface().vertexCount(); ++v) {
+            if (next < paintTool_.selection.size() && paintTool_.selection[next] == v)
+                ++next;
+            else
+                inverted.push_back(v);
+        }
+        paintTool_.selection = std::move(inverted);
+    }
+    ImGui::SameLine();
+    if (ctl::Button("Clear")) paintTool_.selection.clear();
 }
 
 } // namespace vl::ui

@@ -66,6 +66,8 @@ template <class State> class CommandHistory {
         savedIndex_ = 0;
     }
     void markSaved() { savedIndex_ = index_; }
+    // No state is the saved one (a document that exists only in memory, e.g. imported).
+    void markUnsaved() { savedIndex_ = kNever; }
     bool modified() const { return savedIndex_ != index_; }
     std::size_t size() const { return entries_.size(); }
     // Identifies the current document state: it changes with every commit, undo, redo and reset,

@@ -9,6 +9,7 @@
 #include "core/document/AvatarDocument.h"
 #include "core/document/Commands.h"
 #include "core/export/Gltf.h"
+#include "core/export/ModelFrequencies.h"
 #include "core/gltf/AvatarScan.h"
 #include "core/io/MeshIO.h"
 #include "core/phonetics/EspeakTranscriber.h"
@@ -115,12 +116,12 @@ void EditorSession::redo() {
 // --- messages --------------------------------------------------------------------------------
 
 void EditorSession::info(std::string text) {
-    messages_.push_back({StatusMessage::Kind::Info, std::move(text)});
+    messages_.push_back({StatusMessage::Kind::Info, std::move(text), ++messageSerial_});
     if (messages_.size() > kMaxMessages) messages_.pop_front();
 }
 
 void EditorSession::error(std::string text) {
-    messages_.push_back({StatusMessage::Kind::Error, std::move(text)});
+    messages_.push_back({StatusMessage::Kind::Error, std::move(text), ++messageSerial_});
     if (messages_.size() > kMaxMessages) messages_.pop_front();
 }
 
@@ -141,6 +142,7 @@ void EditorSession::adopt(Loaded loaded) {
     retireCurrent();
     const Document& before = *frameDocuments_.back();
     history_.reset(std::move(loaded.project.document));
+    if (loaded.unsaved) history_.markUnsaved();
     path_ = std::move(loaded.path);
     reduction_.track(document(), true); // a new document never reuses an old curve
     noteChange(before);
@@ -235,11 +237,17 @@ void EditorSession::startLoadSample() {
 }
 
 void EditorSession::importGltf(const std::filesystem::path& file) {
-    auto set = std::make_shared<const VisemeSet>(toVisemeSet(readGltf(file), file));
+    const ReducedModel model = readGltf(file);
+    auto set = std::make_shared<const VisemeSet>(toVisemeSet(model, file));
     Loaded loaded;
     // Embedded: the geometry lives in the document (a save writes it into the project).
     loaded.project.document = documentOfSet(set, {}, std::vector<std::filesystem::path>(set->size()));
-    loaded.message = "Imported " + std::to_string(set->size()) + " morph targets from " + file.string();
+    loaded.project.document.frequencies = modelFrequencies(model, file.string());
+    validateDocument(loaded.project.document);
+    const bool phonemes = loaded.project.document.frequencies.isPhonemeBased();
+    loaded.message = "Imported " + std::to_string(set->size()) + " morph targets from " + file.string() +
+                     (phonemes ? " with its phoneme frequencies and map" : "");
+    loaded.unsaved = true;
     adopt(std::move(loaded));
 }
 
@@ -414,11 +422,15 @@ void EditorSession::importViseme(const std::string& name, const std::filesystem:
     info("Imported " + name + " from " + file.string());
 }
 
-void EditorSession::removeViseme(int index) {
+void EditorSession::removeViseme(int index, const std::string& phonemesGoTo) {
     const std::string name = visemes() && index >= 0 && index < static_cast<int>(visemeCount())
                                  ? visemes()->visemes[static_cast<std::size_t>(index)].name
                                  : std::to_string(index);
-    commit("Remove viseme " + name, edit::removeViseme(document(), index));
+    const std::string selected = selectedViseme >= 0 && selectedViseme != index
+                                     ? visemes()->visemes[static_cast<std::size_t>(selectedViseme)].name
+                                     : std::string();
+    commit("Remove viseme " + name, edit::removeViseme(document(), index, phonemesGoTo));
+    select(selected);
 }
 
 // --- frequencies -----------------------------------------------------------------------------

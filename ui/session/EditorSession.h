@@ -5,6 +5,7 @@
 // do the tests. Each edit is a validated command of the core (core/document/Commands.h) committed
 // as one undo step only when it applied, so bad input changes nothing.
 #include "core/document/Document.h"
+#include "core/document/PhonemeMapCommands.h"
 #include "core/export/Export.h"
 #include "core/gltf/AvatarWriter.h"
 #include "core/phonetics/PhonemeCounting.h"
@@ -16,6 +17,7 @@
 #include "ui/session/ReductionService.h"
 #include "ui/session/RefinementService.h"
 
+#include <cstdint>
 #include <deque>
 #include <filesystem>
 #include <functional>
@@ -38,6 +40,7 @@ struct FaceSamples {
 struct StatusMessage {
     enum class Kind { Info, Error } kind = Kind::Info;
     std::string text;
+    std::uint64_t serial = 0; // 1, 2, ... in the order the session posted them
 };
 
 class EditorSession {
@@ -80,7 +83,8 @@ class EditorSession {
     static std::filesystem::path assetsDirectory();
     // Adds one viseme mesh; throws the core's interpolability error and changes nothing on failure.
     void importViseme(const std::string& name, const std::filesystem::path& file);
-    void removeViseme(int index);
+    // Phonemes mapped to the viseme go to `phonemesGoTo`; without one such a removal is refused.
+    void removeViseme(int index, const std::string& phonemesGoTo = {});
     bool modified() const { return history_.modified(); }
     // The project a save would write now: the document, the current reduction and selection.
     Project projectSnapshot() const;
@@ -94,7 +98,8 @@ class EditorSession {
     std::string exportingLabel() const {
         return exportTask_.running() ? exportTask_.label() : avatarExportTask_.label();
     }
-    // The morph targets of a glTF/GLB file become the viseme set (a new, untitled document).
+    // The morph targets of a glTF/GLB file become the viseme set (a new, untitled document, unsaved:
+    // its geometry exists only in memory) with the frequencies the file carries (ModelFrequencies.h).
     void importGltf(const std::filesystem::path& file);
 
     // --- avatar (core/document/AvatarDocument.h) ------------------------------------------------
@@ -177,6 +182,26 @@ class EditorSession {
     const std::vector<std::vector<Vec3>>& mergedShapes() { return reduction_.mergedShapes(document()); }
     bool autoReduce = true; // re-run in the background after every input change
 
+    // --- viseme authoring and the phoneme map editor (core/document/VisemeCommands.h and
+    // PhonemeMapCommands.h); each is one undo step, the selection follows the viseme it names.
+    void renameViseme(int index, const std::string& name);
+    void duplicateViseme(int index, const std::string& name);
+    void moveViseme(int from, int to);
+    void addRestViseme(const std::string& name);
+    // The sliders as a new viseme / into an existing one (preset, and mesh when the set is the face's).
+    void storeSlidersAsNewViseme(const std::string& name);
+    void storeSlidersInViseme(const std::string& name);
+    void removePreset(const std::string& name);
+    // True when the viseme set is the face's own (cached per set and cascade).
+    bool visemeSetMadeByFace();
+    // The phoneme table a new map starts from: the current one, else the bundled en-us table.
+    FrequencyTable startingPhonemeTable() const;
+    void startPhonemeMap(FrequencyTable table, const PhonemeVisemeMap& start,
+                         const std::vector<edit::MapAssignment>& assignment, const std::string& startName);
+    void movePhonemes(const std::string& from, const std::string& to);
+    void useDirectFrequencies();
+    void savePhonemeMap(const std::filesystem::path& file) const;
+
     // --- frame loop --------------------------------------------------------------------------
     // Starts a UI frame: documents replaced during the previous frame may be released now. Every
     // reference into document() taken during a frame stays valid until the next beginFrame(), even
@@ -228,6 +253,7 @@ class EditorSession {
         LoadedProject project;
         std::filesystem::path path; // empty = untitled
         std::string message;
+        bool unsaved = false; // exists only in memory (imported): modified until saved
     };
     void adopt(Loaded loaded);
     void startLoading(std::string label, std::function<Loaded()> load);
@@ -256,6 +282,7 @@ class EditorSession {
     std::filesystem::path path_;
     std::vector<DocumentPtr> frameDocuments_; // documents replaced this frame
     std::deque<StatusMessage> messages_;
+    std::uint64_t messageSerial_ = 0;
     std::uint64_t geometryGeneration_ = 1;
     ReductionService reduction_;
     RefinementService refinement_;
@@ -273,6 +300,14 @@ class EditorSession {
     std::shared_ptr<const DeformationCascade> samplesCascade_;
     std::shared_ptr<const MeshData> samplesDomain_;
     FaceSamples samples_;
+    // visemeSetMadeByFace() cache: the answer for the set and cascade it holds.
+    struct MadeByFace {
+        std::shared_ptr<const VisemeSet> set;
+        std::shared_ptr<const DeformationCascade> cascade;
+        bool value = false;
+    } madeByFace_;
+    // Keeps the selection on viseme `name` after an edit moved it (or clears it when it is gone).
+    void select(const std::string& name);
 };
 
 } // namespace vl::ui

@@ -78,8 +78,12 @@ void recordItem(const Before& before, const char* label, const char* kind) {
         item.y = rect.Min.y;
         item.width = rect.GetWidth();
         item.height = rect.GetHeight();
-        // Visible = inside the clip rectangle of its window (scrolled-out rows are not).
-        item.visible = window->ClipRect.Contains(rect.GetCenter());
+        // Visible = inside the clip rectangle of its window (scrolled-out rows are not), or inside
+        // the window's visible area: in a table the clip rectangle is one column's, and a row's
+        // selectable spanning all columns has its centre outside the first column. (The menu bar
+        // lies outside the visible area, inside its clip rectangle.)
+        const ImVec2 centre = rect.GetCenter();
+        item.visible = window->ClipRect.Contains(centre) || window->InnerClipRect.Contains(centre);
         probe.lastSeen[{item.window, item.label}] = item;
     } else {
         // The popup of this combo or menu is open: the control is where it was last frame.

@@ -1,0 +1,123 @@
+#include "core/common/FileWriting.h"
+
+#include "core/common/Error.h"
+
+#include <cerrno>
+#include <cstring>
+#include <fcntl.h>
+#include <random>
+#include <signal.h>
+#include <string>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace vl::fileio {
+
+namespace {
+
+constexpr std::string_view kTempMarker = ".vltmp-";
+// Long names are cut in the temporary's name, which must stay within NAME_MAX (255).
+constexpr std::size_t kMaxNameInTemp = 200;
+
+std::string tempPrefix(std::string_view name) {
+    return "." + std::string(name.substr(0, kMaxNameInTemp)) + std::string(kTempMarker);
+}
+
+// The pid in ".<name>.vltmp-<pid>-<random>", or -1 when the name is not such a temporary.
+long ownerOfTemporary(std::string_view fileName) {
+    if (!fileName.starts_with('.')) return -1;
+    const auto marker = fileName.rfind(kTempMarker);
+    if (marker == std::string_view::npos) return -1;
+    const std::string_view rest = fileName.substr(marker + kTempMarker.size());
+    const auto dash = rest.find('-');
+    if (dash == 0 || dash == std::string_view::npos) return -1;
+    long pid = 0;
+    for (const char c : rest.substr(0, dash)) {
+        if (c < '0' || c > '9' || pid > 100'000'000) return -1;
+        pid = pid * 10 + (c - '0');
+    }
+    return pid;
+}
+
+bool processExists(long pid) {
+    return ::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM;
+}
+
+} // namespace
+
+std::string lastSystemError() {
+    return std::strerror(errno);
+}
+
+std::filesystem::path writeTarget(const std::filesystem::path& path) {
+    std::filesystem::path target = path;
+    std::error_code ec;
+    for (int links = 0; std::filesystem::is_symlink(std::filesystem::symlink_status(target, ec)); ++links) {
+        if (links == 40) throwInputError(path.string(), "too many levels of symbolic links");
+        const std::filesystem::path next = std::filesystem::read_symlink(target, ec);
+        if (ec) throwInputError(path.string(), "cannot read the symbolic link: " + ec.message());
+        target = next.is_absolute() ? next : target.parent_path() / next;
+    }
+    return target;
+}
+
+TemporaryFile createTemporaryFor(const std::filesystem::path& target, std::string_view reportAs) {
+    const auto folder = target.has_parent_path() ? target.parent_path() : std::filesystem::path(".");
+    struct stat existing {};
+    const bool exists = ::stat(target.c_str(), &existing) == 0;
+    if (exists && S_ISDIR(existing.st_mode))
+        throwInputError(reportAs, "is a folder; cannot write a file there");
+    std::random_device seed;
+    std::mt19937 rng(seed());
+    for (int attempt = 0; attempt < 16; ++attempt) {
+        TemporaryFile temp;
+        temp.path = folder / (tempPrefix(target.filename().string()) + std::to_string(::getpid()) + "-" +
+                              std::to_string(rng() % 1'000'000'000));
+        temp.fd = ::open(temp.path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+        if (temp.fd < 0 && errno == EEXIST) continue;
+        if (temp.fd < 0)
+            throwInputError(reportAs, "cannot create a temporary file in " + folder.string() + ": " +
+                                          lastSystemError());
+        // Replacing a file keeps its permissions (a script stays executable, a private file private).
+        if (exists) (void)::fchmod(temp.fd, existing.st_mode & 07777);
+        return temp;
+    }
+    throwInputError(reportAs, "cannot create a temporary file in " + folder.string());
+}
+
+bool writeAll(int fd, std::string_view data) {
+    while (!data.empty()) {
+        const ssize_t n = ::write(fd, data.data(), data.size());
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) {
+            if (n == 0) errno = ENOSPC;
+            return false;
+        }
+        data.remove_prefix(static_cast<std::size_t>(n));
+    }
+    return true;
+}
+
+void syncFolder(const std::filesystem::path& folder) {
+    const int fd = ::open(folder.empty() ? "." : folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (fd < 0) return;
+    (void)::fsync(fd);
+    ::close(fd);
+}
+
+void sweepStaleTemporaries(const std::filesystem::path& folder, std::string_view name) {
+    std::error_code ec;
+    const std::string wanted = name.empty() ? std::string() : tempPrefix(name);
+    for (std::filesystem::directory_iterator it(folder.empty() ? "." : folder, ec), end; !ec && it != end;
+         it.increment(ec)) {
+        const std::string fileName = it->path().filename().string();
+        if (!wanted.empty() && !fileName.starts_with(wanted)) continue;
+        const long owner = ownerOfTemporary(fileName);
+        if (owner <= 0 || owner == ::getpid() || processExists(owner)) continue;
+        std::error_code ignored;
+        if (std::filesystem::is_regular_file(it->symlink_status(ignored)))
+            std::filesystem::remove(it->path(), ignored);
+    }
+}
+
+} // namespace vl::fileio

@@ -1,0 +1,38 @@
+#pragma once
+// The steps of a safe write shared by writeFileAtomically and OutputSet (internal to core/common):
+// symlinks followed to the file they name, temporaries beside the destination that keep its mode,
+// fsync of the folder after a rename, and the sweep of temporaries left by a killed process.
+#include <filesystem>
+#include <string_view>
+
+namespace vl::fileio {
+
+// The file a write to `path` replaces: `path` itself, or the end of its chain of symlinks (so a
+// symlinked destination is written through, not replaced by a regular file). Throws InputError
+// naming `path` for a loop of links.
+std::filesystem::path writeTarget(const std::filesystem::path& path);
+
+// An open temporary file in the folder of `target` (so that renaming it over `target` is atomic),
+// named ".<name>.vltmp-<pid>-<random>", with the permission bits of `target` when it exists and
+// 0666 less the umask otherwise. Throws InputError naming `reportAs` when it cannot be created.
+struct TemporaryFile {
+    std::filesystem::path path;
+    int fd = -1;
+};
+TemporaryFile createTemporaryFor(const std::filesystem::path& target, std::string_view reportAs);
+
+// Writes every byte (retrying short writes); false on an error, with errno set.
+bool writeAll(int fd, std::string_view data);
+
+// fsync of a folder, so that the renames into it survive a power cut. Errors are ignored: some
+// file systems cannot sync a folder, and the data itself is already durable.
+void syncFolder(const std::filesystem::path& folder);
+
+// Removes the temporaries in `folder` whose writing process no longer exists (killed mid-save);
+// only those for the file `name` when it is given. Temporaries of live processes are left alone.
+void sweepStaleTemporaries(const std::filesystem::path& folder, std::string_view name = {});
+
+// "No space left on device" etc. for the current errno.
+std::string lastSystemError();
+
+} // namespace vl::fileio

@@ -1,0 +1,41 @@
+#pragma once
+// Outputs never overwrite inputs. While an InputRecording is alive (the CLI keeps one for each
+// command it runs), every file the core reads is remembered by identity (device and inode, so hard
+// links, symlinks and "./x" spellings are caught too), and every writer of the core
+// (writeFileAtomically, OutputSet) refuses a destination that is one of them with an
+// OutputOverwritesInputError, before anything is written. Without a recording (the editor saving
+// the project it opened) nothing is remembered and nothing is refused.
+#include "core/common/Error.h"
+
+#include <filesystem>
+
+namespace vl {
+
+// A destination that is an input of the run. It is a usage error (exit code 2), not bad data.
+class OutputOverwritesInputError : public InputError {
+  public:
+    using InputError::InputError;
+};
+
+// Remembers inputs while alive; recordings do not nest (a second one is refused by an assert).
+class InputRecording {
+  public:
+    InputRecording();
+    ~InputRecording();
+    InputRecording(const InputRecording&) = delete;
+    InputRecording& operator=(const InputRecording&) = delete;
+};
+
+// Called by the readers for every file they read; no-op without a recording. Thread-safe.
+void noteInputFile(const std::filesystem::path& file);
+// A folder whose listing was an input (reduce --visemes DIR): outputs may not go into it.
+void noteInputFolder(const std::filesystem::path& folder);
+
+// Throws OutputOverwritesInputError "<destination>: ..." when `destination` (after following
+// symlinks) is a recorded input file. `what` names the output in the message ("--out", "report").
+void refuseOverwritingInput(const std::filesystem::path& destination, std::string_view what = "output");
+// The same for a folder outputs are written into: refused when it is a recorded input folder.
+void refuseWritingIntoInputFolder(const std::filesystem::path& folder,
+                                  std::string_view what = "output folder");
+
+} // namespace vl

@@ -1,0 +1,256 @@
+#include "core/document/VisemeCommands.h"
+
+#include "core/common/Error.h"
+#include "core/deform/CascadeSampler.h"
+#include "core/document/CommandSupport.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace vl::edit {
+namespace {
+
+using detail::checked;
+using detail::checkedIndex;
+using detail::refuseAvatar;
+using detail::requireFace;
+using detail::requireSet;
+
+std::string quoted(const std::string& name) {
+    return "'" + name + "'";
+}
+
+auto findPreset(std::vector<VisemeParameters>& presets, const std::string& name) {
+    return std::find_if(presets.begin(), presets.end(),
+                        [&](const VisemeParameters& preset) { return preset.name == name; });
+}
+
+bool hasPreset(const FaceModel& face, const std::string& name) {
+    if (!face.cascade) return false;
+    std::vector<VisemeParameters> presets = facePresets(face);
+    return findPreset(presets, name) != presets.end();
+}
+
+// Every name in the document that refers to viseme `from` refers to `to` afterwards.
+void renameEverywhere(Document& next, const std::string& from, const std::string& to) {
+    for (auto& [name, value] : next.frequencies.visemeFrequencies.entries)
+        if (name == from) name = to;
+    for (auto& [phoneme, viseme] : next.frequencies.map.entries)
+        if (viseme == from) viseme = to;
+    std::replace(next.constraints.pinned.begin(), next.constraints.pinned.end(), from, to);
+    for (auto* pairs : {&next.constraints.apart, &next.constraints.together})
+        for (auto& [a, b] : *pairs) {
+            if (a == from) a = to;
+            if (b == from) b = to;
+        }
+    if (hasPreset(next.face, from)) {
+        next.face.presets = facePresets(next.face);
+        findPreset(next.face.presets, from)->name = to;
+    }
+}
+
+// Direct frequencies and presets listed in the set's order (names outside the set keep their
+// relative order after those in it).
+template <class Entries, class NameOf>
+void followSetOrder(Entries& entries, const VisemeSet& set, NameOf nameOf) {
+    const auto rank = [&](const auto& entry) {
+        const int index = set.find(nameOf(entry));
+        return index < 0 ? static_cast<int>(set.size()) : index;
+    };
+    std::stable_sort(entries.begin(), entries.end(),
+                     [&](const auto& a, const auto& b) { return rank(a) < rank(b); });
+}
+
+// The face at parameters q on the set's own mesh (its (u,v) and triangles).
+std::vector<Vec3> faceOnSetMesh(const Document& document, const std::vector<double>& q) {
+    return CascadeSampler(*document.face.cascade, document.visemes->neutral.uvs).evaluate(q);
+}
+
+// Inserts viseme `viseme` (from `file`) at `index`, with the same bookkeeping as edit::addViseme.
+void insertViseme(Document& next, std::size_t index, Viseme viseme, const std::filesystem::path& file) {
+    auto set = std::make_shared<VisemeSet>(*next.visemes);
+    set->visemes.insert(set->visemes.begin() + static_cast<std::ptrdiff_t>(index), std::move(viseme));
+    next.visemeFiles.insert(next.visemeFiles.begin() + static_cast<std::ptrdiff_t>(index), file);
+    next.visemes = std::move(set);
+}
+
+} // namespace
+
+void checkNewVisemeName(const Document& document, const std::string& name, std::string_view where) {
+    if (name.empty()) throwInputError(where, "the viseme needs a name");
+    if (std::any_of(name.begin(), name.end(), [](unsigned char c) { return c < 0x20 || c == 0x7f; }))
+        throwInputError(where, "the name " + quoted(name) + " contains a control character");
+    if (name.front() == ' ' || name.back() == ' ')
+        throwInputError(where, "the name " + quoted(name) + " starts or ends with a space");
+    if (name.find('+') != std::string::npos)
+        throwInputError(where, "'+' is reserved for merged visemes (their members joined by '+')");
+    if (document.visemes && document.visemes->find(name) >= 0)
+        throwInputError(where, "a viseme named " + quoted(name) + " already exists");
+    if (hasPreset(document.face, name))
+        throwInputError(where, "the face has a preset named " + quoted(name) + " already");
+}
+
+Document renameViseme(const Document& document, int index, const std::string& name) {
+    requireSet(document, "rename viseme");
+    refuseAvatar(document, "rename viseme");
+    const std::size_t i = checkedIndex(index, document.visemeCount(), "rename viseme");
+    const std::string old = document.visemes->visemes[i].name;
+    if (name == old) throwInputError("rename " + old, "the new name is the same");
+    checkNewVisemeName(document, name, "rename " + old);
+    Document next = document;
+    auto set = std::make_shared<VisemeSet>(*document.visemes);
+    set->visemes[i].name = name;
+    next.visemes = std::move(set);
+    renameEverywhere(next, old, name);
+    return checked(std::move(next));
+}
+
+Document duplicateViseme(const Document& document, int index, const std::string& name) {
+    requireSet(document, "duplicate viseme");
+    refuseAvatar(document, "duplicate viseme");
+    const std::size_t i = checkedIndex(index, document.visemeCount(), "duplicate viseme");
+    const Viseme& original = document.visemes->visemes[i];
+    checkNewVisemeName(document, name, "duplicate " + original.name);
+    Document next = document;
+    Viseme copy = original;
+    copy.name = name;
+    insertViseme(next, i + 1, std::move(copy), document.visemeFiles[i]);
+    if (!next.frequencies.isPhonemeBased()) {
+        auto& entries = next.frequencies.visemeFrequencies.entries;
+        const double* value = document.frequencies.visemeFrequencies.find(original.name);
+        entries.emplace_back(name, value ? *value : 1.0);
+        followSetOrder(entries, *next.visemes, [](const auto& entry) { return entry.first; });
+    }
+    if (hasPreset(document.face, original.name)) {
+        next.face.presets = facePresets(document.face);
+        VisemeParameters preset = *findPreset(next.face.presets, original.name);
+        preset.name = name;
+        next.face.presets.push_back(std::move(preset));
+        followSetOrder(next.face.presets, *next.visemes, [](const auto& p) { return p.name; });
+    }
+    return checked(std::move(next));
+}
+
+Document moveViseme(const Document& document, int from, int to) {
+    requireSet(document, "move viseme");
+    refuseAvatar(document, "move viseme");
+    const std::size_t a = checkedIndex(from, document.visemeCount(), "move viseme");
+    const std::size_t b = checkedIndex(to, document.visemeCount(), "move viseme to");
+    if (a == b) throwInputError("move " + document.visemes->visemes[a].name, "it is already there");
+    Document next = document;
+    auto set = std::make_shared<VisemeSet>(*document.visemes);
+    const auto rotate = [&](auto& items) {
+        if (a < b)
+            std::rotate(items.begin() + static_cast<std::ptrdiff_t>(a),
+                        items.begin() + static_cast<std::ptrdiff_t>(a + 1),
+                        items.begin() + static_cast<std::ptrdiff_t>(b + 1));
+        else
+            std::rotate(items.begin() + static_cast<std::ptrdiff_t>(b),
+                        items.begin() + static_cast<std::ptrdiff_t>(a),
+                        items.begin() + static_cast<std::ptrdiff_t>(a + 1));
+    };
+    rotate(set->visemes);
+    rotate(next.visemeFiles);
+    next.visemes = std::move(set);
+    followSetOrder(next.frequencies.visemeFrequencies.entries, *next.visemes,
+                   [](const auto& entry) { return entry.first; });
+    if (hasPreset(next.face, next.visemes->visemes[b].name)) {
+        next.face.presets = facePresets(next.face);
+        followSetOrder(next.face.presets, *next.visemes, [](const auto& p) { return p.name; });
+    }
+    return checked(std::move(next));
+}
+
+Document addRestViseme(const Document& document, const std::string& name) {
+    requireSet(document, "rest viseme");
+    refuseAvatar(document, "rest viseme");
+    checkNewVisemeName(document, name, "rest viseme");
+    Document next = document;
+    insertViseme(next, next.visemeCount(), Viseme{name, {}, document.visemes->neutral.positions}, {});
+    if (!next.frequencies.isPhonemeBased())
+        next.frequencies.visemeFrequencies.entries.emplace_back(name, 1.0);
+    return checked(std::move(next));
+}
+
+std::vector<VisemeParameters> facePresets(const FaceModel& face) {
+    return face.presets.empty() ? oculusVisemes() : face.presets;
+}
+
+bool visemeSetMadeByFace(const Document& document) {
+    if (!document.visemes || !document.face.cascade) return false;
+    const MeshData& neutral = document.visemes->neutral;
+    if (!neutral.hasUVs() || neutral.uvs.size() != neutral.positions.size()) return false;
+    const std::vector<Vec3> face = faceOnSetMesh(document, document.face.cascade->defaults());
+    // The set's files round positions and (u,v) (6 digits in OBJ): a tolerance relative to its size.
+    Vec3 lo, hi;
+    if (!bounds(neutral.positions, lo, hi)) return false;
+    const double tolerance = 1e-4 * std::max((hi - lo).norm(), 1e-12);
+    for (std::size_t i = 0; i < face.size(); ++i)
+        if (!((face[i] - neutral.positions[i]).norm() <= tolerance)) return false;
+    return true;
+}
+
+VisemeParameters presetOfSliders(const FaceModel& face, const std::string& name) {
+    VisemeParameters preset{name, {}};
+    const auto& parameters = face.cascade->parameters;
+    for (std::size_t k = 0; k < parameters.size(); ++k)
+        if (face.parameters[k] != parameters[k].defaultValue)
+            preset.values.emplace_back(parameters[k].name, face.parameters[k]);
+    return preset;
+}
+
+Document storeSlidersAsNewViseme(const Document& document, const std::string& name) {
+    requireFace(document, "store sliders");
+    checkNewVisemeName(document, name, "store sliders as " + quoted(name));
+    Document next = document;
+    next.face.presets = facePresets(document.face);
+    next.face.presets.push_back(presetOfSliders(document.face, name));
+    if (visemeSetMadeByFace(document)) {
+        insertViseme(next, next.visemeCount(),
+                     Viseme{name, {}, faceOnSetMesh(document, document.face.parameters)}, {});
+        if (!next.frequencies.isPhonemeBased())
+            next.frequencies.visemeFrequencies.entries.emplace_back(name, 1.0);
+    }
+    return checked(std::move(next));
+}
+
+Document storeSlidersInViseme(const Document& document, const std::string& name) {
+    requireFace(document, "store sliders");
+    const std::string where = "store sliders in " + quoted(name);
+    const int index = document.visemes ? document.visemes->find(name) : -1;
+    const bool faceSet = visemeSetMadeByFace(document);
+    if (!hasPreset(document.face, name) && !(index >= 0 && faceSet))
+        throwInputError(where, "no preset or viseme of the face has that name (store as a new viseme)");
+    Document next = document;
+    next.face.presets = facePresets(document.face);
+    VisemeParameters preset = presetOfSliders(document.face, name);
+    if (const auto it = findPreset(next.face.presets, name); it != next.face.presets.end())
+        *it = std::move(preset);
+    else
+        next.face.presets.push_back(std::move(preset));
+    if (index >= 0 && faceSet) {
+        auto set = std::make_shared<VisemeSet>(*document.visemes);
+        Viseme& viseme = set->visemes[static_cast<std::size_t>(index)];
+        viseme.positions = faceOnSetMesh(document, document.face.parameters);
+        viseme.source.clear();
+        next.visemes = std::move(set);
+        next.visemeFiles[static_cast<std::size_t>(index)].clear(); // embedded from now on
+    }
+    return checked(std::move(next));
+}
+
+Document removePreset(const Document& document, const std::string& name) {
+    requireFace(document, "remove preset");
+    if (!hasPreset(document.face, name)) throwInputError("remove preset", "no preset named " + quoted(name));
+    if (document.visemes && document.visemes->find(name) >= 0 && visemeSetMadeByFace(document))
+        throwInputError("remove preset " + quoted(name),
+                        "it is the viseme " + quoted(name) + " of the face's set: remove the viseme instead");
+    Document next = document;
+    next.face.presets = facePresets(document.face);
+    next.face.presets.erase(findPreset(next.face.presets, name));
+    if (next.face.presets.empty())
+        throwInputError("remove preset " + quoted(name), "the face keeps at least one preset");
+    return checked(std::move(next));
+}
+
+} // namespace vl::edit

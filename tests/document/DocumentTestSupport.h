@@ -1,0 +1,29 @@
+#pragma once
+// What the document tests start from and how they read a refusal.
+#include "core/common/Error.h"
+#include "core/document/Commands.h"
+#include "core/document/Document.h"
+
+#include <functional>
+#include <string>
+
+namespace vl::test {
+
+// The bundled face (resolution 12) with its generated visemes (embedded geometry).
+inline Document faceDocument() {
+    Document document;
+    document.face = makeFaceModel(face::Individual::Bundled, 12);
+    return edit::generateVisemesFromFace(document);
+}
+
+// The InputError message of `edit`, or "(not refused)" when it did not throw.
+inline std::string refusal(const std::function<void()>& edit) {
+    try {
+        edit();
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "(not refused)";
+}
+
+} // namespace vl::test

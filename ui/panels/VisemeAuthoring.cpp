@@ -1,0 +1,160 @@
+// Visemes panel, under the list: rename, duplicate, move and delete the selected viseme. A delete
+// that would leave phonemes unmapped asks where they go (a popup listing them) instead of failing.
+#include "core/common/Error.h"
+#include "core/document/PhonemeMapCommands.h"
+#include "core/document/VisemeCommands.h"
+#include "ui/EditorUi.h"
+#include "ui/panels/PanelWidgets.h"
+#include "ui/widgets/Controls.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+
+namespace vl::ui {
+namespace {
+
+constexpr const char* kDeletePopup = "Delete viseme";
+
+// "<name> copy", or "<name> copy 2", ... : the first name the document accepts for a new viseme.
+std::string copyName(const Document& document, const std::string& name) {
+    for (int k = 1;; ++k) {
+        const std::string candidate = name + " copy" + (k == 1 ? "" : " " + std::to_string(k));
+        try {
+            edit::checkNewVisemeName(document, candidate, "copy");
+            return candidate;
+        } catch (const InputError&) {
+        }
+    }
+}
+
+} // namespace
+
+nlohmann::json EditorUi::authoringProbe() const {
+    const Document& document = session.document();
+    nlohmann::json presets = nlohmann::json::object();
+    if (document.face.cascade)
+        for (const VisemeParameters& preset : edit::facePresets(document.face)) {
+            nlohmann::json values = nlohmann::json::object();
+            for (const auto& [parameter, value] : preset.values) values[parameter] = value;
+            presets[preset.name] = std::move(values);
+        }
+    nlohmann::json parameters = nlohmann::json::object();
+    if (document.face.cascade)
+        for (std::size_t k = 0; k < document.face.parameters.size(); ++k)
+            parameters[document.face.cascade->parameters[k].name] = document.face.parameters[k];
+    nlohmann::json phonemes = nlohmann::json::object();
+    for (const auto& [phoneme, value] : document.frequencies.phonemes.entries) phonemes[phoneme] = value;
+    nlohmann::json map = nlohmann::json::object();
+    for (const auto& [phoneme, viseme] : document.frequencies.map.entries) map[phoneme] = viseme;
+    nlohmann::json direct = nlohmann::json::object();
+    for (const auto& [name, value] : document.frequencies.visemeFrequencies.entries) direct[name] = value;
+    return {{"viseme_names", visemeNames(document)},
+            {"presets", std::move(presets)},
+            {"parameters", std::move(parameters)},
+            {"phoneme_frequencies", std::move(phonemes)},
+            {"phoneme_based", document.frequencies.isPhonemeBased()},
+            {"phoneme_map", std::move(map)},
+            {"direct_frequencies", std::move(direct)},
+            {"map_start_open", mapStart_.open},
+            {"map_start_unassigned", std::count_if(mapStart_.rows.begin(), mapStart_.rows.end(),
+                                                   [](const auto& r) { return r.to.empty(); })}};
+}
+
+void EditorUi::visemeAuthoring() {
+    const VisemeSet* set = session.visemes();
+    const int selected = session.selectedViseme;
+    const bool has = set && selected >= 0 && selected < static_cast<int>(set->size());
+    // The field shows the selected viseme's name unless the user is typing a new one.
+    if (!authoring_.editingName &&
+        (authoring_.nameFor != selected || authoring_.nameDocument != session.documentId())) {
+        authoring_.nameFor = selected;
+        authoring_.nameDocument = session.documentId();
+        authoring_.name = has ? set->visemes[static_cast<std::size_t>(selected)].name : std::string();
+    }
+    if (!has) ImGui::BeginDisabled();
+    ImGui::SetNextItemWidth(std::min(200.0f, ImGui::GetContentRegionAvail().x * 0.4f));
+    const bool entered = ctl::InputTextWithHint("##viseme-name", "select a viseme", &authoring_.name,
+                                                ImGuiInputTextFlags_EnterReturnsTrue);
+    authoring_.editingName = ImGui::IsItemActive();
+    ImGui::SameLine();
+    if ((ctl::Button("Rename") || entered) && has)
+        session.attempt("Rename", [&] { session.renameViseme(selected, authoring_.name); });
+    ImGui::SameLine();
+    if (ctl::Button("Duplicate") && has)
+        session.attempt("Duplicate", [&] {
+            const std::string& name = set->visemes[static_cast<std::size_t>(selected)].name;
+            session.duplicateViseme(selected, copyName(session.document(), name));
+        });
+    ImGui::SameLine();
+    if (ctl::Button("Delete...") && has) {
+        // Phonemes mapped to it need a new viseme: ask. Otherwise delete (Ctrl+Z brings it back).
+        if (edit::phonemesMappedTo(session.document().frequencies,
+                                   set->visemes[static_cast<std::size_t>(selected)].name)
+                .empty()) {
+            session.attempt("Delete viseme", [&] { session.removeViseme(selected); });
+        } else {
+            authoring_.openDelete = true;
+            authoring_.deleteIndex = selected;
+            authoring_.phonemesGoTo.clear();
+        }
+    }
+    const int last = has ? static_cast<int>(set->size()) - 1 : 0;
+    if (has && selected == 0) ImGui::BeginDisabled();
+    if (ctl::Button("Move up"))
+        session.attempt("Move viseme", [&] { session.moveViseme(selected, selected - 1); });
+    if (has && selected == 0) ImGui::EndDisabled();
+    ImGui::SameLine();
+    if (has && selected == last) ImGui::BeginDisabled();
+    if (ctl::Button("Move down"))
+        session.attempt("Move viseme", [&] { session.moveViseme(selected, selected + 1); });
+    if (has && selected == last) ImGui::EndDisabled();
+    if (!has) ImGui::EndDisabled();
+    helpMarker("Renames, copies and deletes keep the phoneme map, the frequencies, the constraints and the "
+               "face's preset of the viseme in step. Every change is one undo step (Ctrl+Z).");
+    deleteVisemePopup();
+}
+
+void EditorUi::deleteVisemePopup() {
+    if (authoring_.openDelete) {
+        ImGui::OpenPopup(kDeletePopup);
+        authoring_.openDelete = false;
+    }
+    if (!ImGui::BeginPopupModal(kDeletePopup, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+    const VisemeSet* set = session.visemes();
+    const int index = authoring_.deleteIndex;
+    if (!set || index < 0 || index >= static_cast<int>(set->size())) {
+        ImGui::CloseCurrentPopup();
+        ImGui::EndPopup();
+        return;
+    }
+    const std::string& name = set->visemes[static_cast<std::size_t>(index)].name;
+    const FrequencySource& frequencies = session.document().frequencies;
+    const std::string phonemes = edit::phonemeList(frequencies, edit::phonemesMappedTo(frequencies, name));
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 28.0f);
+    ImGui::Text("Phonemes %s map to %s.", phonemes.c_str(), name.c_str());
+    ImGui::TextUnformatted("Choose the viseme they map to once it is deleted:");
+    ImGui::PopTextWrapPos();
+    ImGui::SetNextItemWidth(200);
+    if (ctl::BeginCombo("##phonemes-go-to",
+                        authoring_.phonemesGoTo.empty() ? "(choose)" : authoring_.phonemesGoTo.c_str(),
+                        ImGuiComboFlags_HeightLargest)) {
+        for (const Viseme& viseme : set->visemes)
+            if (viseme.name != name &&
+                ctl::Selectable(viseme.name.c_str(), viseme.name == authoring_.phonemesGoTo))
+                authoring_.phonemesGoTo = viseme.name;
+        ImGui::EndCombo();
+    }
+    const bool chosen = !authoring_.phonemesGoTo.empty();
+    if (!chosen) ImGui::BeginDisabled();
+    if (ctl::Button("Delete and move the phonemes")) {
+        session.attempt("Delete viseme", [&] { session.removeViseme(index, authoring_.phonemesGoTo); });
+        ImGui::CloseCurrentPopup();
+    }
+    if (!chosen) ImGui::EndDisabled();
+    ImGui::SameLine();
+    if (ctl::Button("Cancel##delete")) ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
+}
+
+} // namespace vl::ui
