@@ -25,6 +25,7 @@ shot weights --screenshot-bits 6 --panel Weights --brush subtract --drag 760 380
 shot deformation --frames 8 --panel Deformation --preset oh --field zygomatic_l --no-wireframe --screenshot-bits 5
 shot refinement --frames 8 --panel Refinement --refine contour --preset aa --screenshot-bits 4
 shot reduction --frames 8 --screenshot-bits 6 --panel Reduction --viseme E --no-wireframe
+shot reduction-overlay --frames 8 --screenshot-bits 6 --panel Reduction --viseme E --merged overlay --no-wireframe
 shot playback --frames 8 --screenshot-bits 6 --panel Reduction --play 1.3 --sequence 'HH EH L OW W ER L D' --no-wireframe
 shot export --frames 8 --screenshot-bits 6 --panel Export --no-wireframe
 

@@ -114,6 +114,7 @@ void applyStartOptions(const EditorOptions& options, EditorSession& session, Edi
             throwInputError("--brush", "expected add, subtract or smooth, got '" + options.brush + "'");
         ui.enableBrush(static_cast<int>(it - std::begin(modes)));
     });
+    step(!options.merged.empty(), [&] { ui.setMergedDisplay(options.merged); });
     if (options.play >= 0.0) ui.startPlayback(options.play, options.sequence);
     step(!options.mapStart.empty(), [&] { ui.startMapFrom(options.mapStart); });
 }

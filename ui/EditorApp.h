@@ -26,6 +26,7 @@ struct EditorOptions {
     std::string brush;           // add, subtract or smooth: paint in the Weights panel
     std::vector<float> drag;     // x0 y0 x1 y1: a left-button drag over the frames (window pixels)
     bool wireframe = true;       // wireframe overlay at start
+    std::string merged;          // errors, skin or overlay: how the Reduction view shows the merged shape
     std::string refine;          // run a refinement with this criterion (depth, normals, contour)
     std::string mapStart;        // open the map editor's assignment from this bundled map id
     std::filesystem::path probe; // GUI tests: write the controls and a document summary here each frame

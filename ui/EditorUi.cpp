@@ -188,7 +188,18 @@ nlohmann::json EditorUi::probeSummary() const {
 
 nlohmann::json EditorUi::polishSummary() const {
     const OrbitCamera& camera = subject_ == ViewSubject::Face ? faceCamera_ : visemeCamera_;
+    nlohmann::json refine;
+    if (const auto& report = session.lastRefinement())
+        refine = {{"vertices_before", report->verticesBefore},
+                  {"vertices_at_start", report->verticesAtStart},
+                  {"from_base_mesh", report->fromBaseMesh},
+                  {"vertices_after", report->vertices},
+                  {"added", report->stats.splits},
+                  {"removed", report->stats.welds}};
     return {{"paint", paintSummary()},
+            {"refine", refine},
+            {"uv_inset_offset", {uvInsetOffset_.x, uvInsetOffset_.y}},
+            {"merged_display", static_cast<int>(mergedDisplay_)},
             {"camera", {{"yaw", camera.yaw}, {"pitch", camera.pitch}, {"distance", camera.distance}}}};
 }
 
@@ -555,23 +566,15 @@ void EditorUi::mainView(ImVec2 size) {
             selectedInfluence_ <
                 static_cast<int>(
                     cascade->stages[static_cast<std::size_t>(selectedStage_)].field.influences.size());
-        if (inset) {
-            // The (u,v) inset (drawn below) takes its own mouse drags.
-            const ImVec2 at = ImGui::GetCursorScreenPos();
-            const float side = std::min(300.0f, 0.35f * size.y);
-            mainView_.excludeFromDrags(ImVec2(at.x + size.x - side - 16.0f, at.y + size.y - side - 16.0f),
-                                       ImVec2(at.x + size.x - 16.0f, at.y + size.y - 16.0f));
-        }
+        // The (u,v) inset (drawn after the view) takes its own mouse drags; where it sits is known
+        // before the view is drawn: the view fills the space from the cursor.
+        const ImVec2 viewMin = ImGui::GetCursorScreenPos();
+        const UvInsetPlace place = uvInsetPlace(viewMin, ImVec2(viewMin.x + size.x, viewMin.y + size.y));
+        if (inset) mainView_.excludeFromDrags(place.min, place.max);
         events = mainView_.show("main", size, [&](const glm::mat4& view, const glm::mat4& projection) {
             faceMesh_.draw(shader_, q, view, projection, style);
         });
-        if (inset) {
-            // A (u,v) inset in the view's lower right corner.
-            const float side = std::min(300.0f, 0.35f * (events.imageMax.y - events.imageMin.y));
-            ImGui::SetCursorScreenPos(
-                ImVec2(events.imageMax.x - side - 16.0f, events.imageMax.y - side - 16.0f));
-            uvView(selectedStage_, selectedInfluence_, side);
-        }
+        if (inset) uvInset(place, selectedStage_, selectedInfluence_);
         if (faceMesh_.empty())
             emptyViewHint(events.imageMin, events.imageMax,
                           "No face loaded: use \"Load bundled face\" in the panel");
@@ -632,14 +635,20 @@ void EditorUi::comparisonViews(ImVec2 size) {
             const int group = groupOf[static_cast<std::size_t>(selected)];
             after.assign(grouping->groups.size(), 0.0f);
             after[static_cast<std::size_t>(group)] = 1.0f;
-            afterLabel = "Merged group " + std::to_string(group + 1) + " (error colours)";
+            static const char* const kShown[] = {" (error colours)", " (skin)", " on the original (cyan)"};
+            afterLabel =
+                "Merged group " + std::to_string(group + 1) + kShown[static_cast<int>(mergedDisplay_)];
         }
     }
     DrawStyle plain;
     plain.wireframe = wireframe_;
     plain.color = surfaceColours();
     DrawStyle errors = plain;
-    if (!playback_.playing) errors.color = ColorMode::Scalar;
+    const bool errorColours = !playback_.playing && mergedDisplay_ == MergedDisplay::ErrorColours;
+    if (errorColours) errors.color = ColorMode::Scalar;
+    DrawStyle ghost = plain;
+    ghost.ghost = true;
+    const bool overlay = !playback_.playing && mergedDisplay_ == MergedDisplay::Overlay;
     const ViewportEvents left =
         beforeView_.show("before", half, [&](const glm::mat4& view, const glm::mat4& projection) {
             visemeMesh_.draw(shader_, before, view, projection, plain);
@@ -655,11 +664,13 @@ void EditorUi::comparisonViews(ImVec2 size) {
     ImGui::SameLine(0.0f, 2.0f);
     const ViewportEvents right =
         afterView_.show("after", half, [&](const glm::mat4& view, const glm::mat4& projection) {
-            if (grouping) mergedMesh_.draw(shader_, after, view, projection, errors);
-            drawContext(view, projection);
+            drawContext(view, projection); // the avatar's meshes without visemes, greyed
+            if (!grouping) return;
+            mergedMesh_.draw(shader_, after, view, projection, errors);
+            if (overlay) visemeMesh_.draw(shader_, before, view, projection, ghost);
         });
     if (session.visemes()) viewLabel(right.imageMin, afterLabel);
-    if (grouping && !playback_.playing)
+    if (grouping && errorColours)
         colourLegend(right.imageMin, right.imageMax, "0 mm",
                      [&] {
                          char text[64];

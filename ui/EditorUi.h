@@ -59,6 +59,8 @@ class EditorUi {
     void frame();
     void selectPanel(Panel panel);
     void setWireframe(bool on) { wireframe_ = on; }
+    // "errors", "skin" or "overlay" (--merged); throws InputError for another name.
+    void setMergedDisplay(const std::string& name);
     // Turns painting on with this operation (0 add, 1 subtract, 2 smooth).
     void enableBrush(int operation) {
         brush_.enabled = true;
@@ -100,6 +102,15 @@ class EditorUi {
     void refinementPanel();
     void reductionPanel();
     void exportPanel();
+    // The (u,v) inset over the face view: a title bar that moves it and the square (u,v) domain,
+    // whose drawing is clipped to its frame. Where it sits is view state (uvInsetOffset_).
+    struct UvInsetPlace {
+        ImVec2 min, max; // the whole inset, title bar included
+        float side = 0.0f, titleHeight = 0.0f;
+        ImVec2 offsetMin, offsetMax; // the offsets that keep it inside the view
+    };
+    UvInsetPlace uvInsetPlace(ImVec2 viewMin, ImVec2 viewMax) const;
+    void uvInset(const UvInsetPlace& place, int stage, int influence);
     void uvView(int stage, int influence, float side);
 
     void mainView(ImVec2 size);
@@ -216,6 +227,11 @@ class EditorUi {
     // The camera of each subject, kept across tabs; framed when its mesh first appears.
     OrbitCamera visemeCamera_, faceCamera_;
     bool frameVisemes_ = true, frameFace_ = true;
+    // The (u,v) inset's top-left corner relative to the view's lower-right default place (moved by
+    // dragging its title bar; kept inside the view).
+    ImVec2 uvInsetOffset_{0.0f, 0.0f};
+    // How the Reduction panel's right view shows the merged shape.
+    enum class MergedDisplay { ErrorColours, Skin, Overlay } mergedDisplay_ = MergedDisplay::ErrorColours;
 
     // --- viseme authoring and the phoneme map editor (ui/panels/VisemeAuthoring.cpp,
     // StoreSlidersSection.cpp, PhonemeMapEditor.cpp); view state only, the edits are the session's.
@@ -232,6 +248,7 @@ class EditorUi {
     void phonemeMapEditor();    // Frequencies panel: start a map, one row per phoneme, by viseme
     void mapStartSection();
     void openMapStart(std::string title, const PhonemeVisemeMap& map);
+    void restVisemeRow(); // a viseme with the neutral's shape, e.g. "sil" for the pause
     struct AuthoringView {
         int nameFor = -2;               // the viseme whose name the rename field holds
         std::uint64_t nameDocument = 0; // ... in this document state

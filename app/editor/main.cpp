@@ -27,6 +27,9 @@ int main(int argc, char** argv) {
                    "Significant bits per colour channel in the screenshot (smaller files)")
         ->check(CLI::Range(1, 8));
     app.add_option("--brush", options.brush, "Paint in the Weights panel: add, subtract or smooth");
+    app.add_option(
+        "--merged", options.merged,
+        "How the Reduction panel shows the merged shape: errors, skin or overlay (on the original)");
     app.add_option("--drag", options.drag, "Left-button drag over the frames: x0 y0 x1 y1 (window pixels)")
         ->expected(4);
     bool noWireframe = false;

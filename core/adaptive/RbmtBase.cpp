@@ -189,7 +189,8 @@ class BlockPairing {
             queue.emplace(key[t] = freeDegree(t), t);
         };
         while (!queue.empty()) {
-            const auto [degree, t] = *queue.begin();
+            // Not a structured binding: clang 14 (the sanitizer build) cannot capture one in a lambda.
+            const int degree = queue.begin()->first, t = queue.begin()->second;
             queue.erase(queue.begin());
             if (degree == 0) continue; // stuck: left to the augmenting-path search
             int best = kNone;

@@ -33,9 +33,11 @@ void setPhonemeMap(ReducedModel& model, const PhonemeVisemeMap& map, std::string
     std::vector<std::pair<std::string, int>> phonemeToKey;
     std::string missing;
     for (const auto& [phoneme, viseme] : map.entries) {
-        const auto key = std::find_if(model.keys.begin(), model.keys.end(), [&](const KeyMesh& k) {
-            return std::find(k.members.begin(), k.members.end(), viseme) != k.members.end();
-        });
+        // Captured by name: clang 14 (the sanitizer build) cannot capture a structured binding.
+        const auto key =
+            std::find_if(model.keys.begin(), model.keys.end(), [&name = viseme](const KeyMesh& k) {
+                return std::find(k.members.begin(), k.members.end(), name) != k.members.end();
+            });
         if (key == model.keys.end()) {
             if (missing.find("'" + viseme + "'") == std::string::npos)
                 missing += (missing.empty() ? "'" : ", '") + viseme + "'";

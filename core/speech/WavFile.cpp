@@ -114,6 +114,13 @@ WavAudio parseWav(std::string_view bytes, std::string_view source) {
             haveFormat = true;
         } else if (id == "data") {
             if (!haveFormat) throwInputError(where + ": chunk 'data'", "comes before the 'fmt ' chunk");
+            // Every sample belongs to a frame of one 16-bit value per channel (found by fuzzing: 16 bytes
+            // of "65535-channel" audio were accepted as 8 samples of no whole frame).
+            const std::uint64_t frameBytes = 2 * static_cast<std::uint64_t>(audio.channels);
+            if (size % frameBytes != 0)
+                throwInputError(where + ": chunk 'data'",
+                                std::to_string(size) + " bytes are not whole frames of " +
+                                    std::to_string(audio.channels) + " channels x 16 bits");
             audio.samples.resize(size / 2);
             for (std::size_t i = 0; i < audio.samples.size(); ++i)
                 audio.samples[i] =

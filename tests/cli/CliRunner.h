@@ -12,8 +12,9 @@ struct CliResult {
     std::string output; // stdout and stderr together
 };
 
-inline CliResult runCli(const std::string& arguments) {
-    const std::string command = std::string(VISEMELAB_CLI) + " " + arguments + " 2>&1";
+// `shellPrefix` runs first in the same shell, e.g. "ulimit -t 20; " to bound the CLI.
+inline CliResult runCliWith(const std::string& shellPrefix, const std::string& arguments) {
+    const std::string command = shellPrefix + std::string(VISEMELAB_CLI) + " " + arguments + " 2>&1";
     CliResult result;
     FILE* pipe = ::popen(command.c_str(), "r");
     if (!pipe) return result;
@@ -23,6 +24,10 @@ inline CliResult runCli(const std::string& arguments) {
     const int status = ::pclose(pipe);
     result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     return result;
+}
+
+inline CliResult runCli(const std::string& arguments) {
+    return runCliWith("", arguments);
 }
 
 } // namespace vl::test

@@ -73,5 +73,8 @@ TEST(WavFile, BadFilesNameTheFileAndChunk) {
     eightBit[34] = 8;
     expectError(eightBit, "only 16-bit PCM");
     expectError(good.substr(0, 12), "no 'fmt ' chunk");
+    std::string threeChannels = good; // 10 samples are not whole frames of 3 channels
+    threeChannels[22] = 3;
+    expectError(threeChannels, "clip.wav: chunk 'data': 20 bytes are not whole frames of 3 channels");
     EXPECT_EQ(parseWav(good, "clip.wav").samples, tone(10));
 }

@@ -9,19 +9,13 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <optional>
 #include <string>
 #include <unistd.h>
 
 namespace vl::test {
 namespace {
-
-#define REQUIRE_GUI_TOOLS()                                                                                  \
-    if (const std::string missing = missingGuiTools(); !missing.empty())                                     \
-    GTEST_SKIP() << "GUI click tests need" << missing
-
-#define EXPECT_ALIVE(gui)                                                                                    \
-    ASSERT_TRUE((gui).alive()) << "editor " << (gui).exitStatus() << ":\n" << (gui).log()
 
 using Json = nlohmann::json;
 
@@ -346,6 +340,53 @@ TEST(AuthoringClicks, AuthoredVisemesAndMapSurviveSaveAndReopen) {
     EXPECT_EQ(names(gui).back(), "wide");
     EXPECT_FALSE(gui.document()["modified"].get<bool>());
     std::filesystem::remove_all(folder);
+}
+
+// Real data nobody here made: the ICT FaceKit mouth shapes have their own names. Started from the
+// Oculus map, the pause gets a rest viseme "sil" (which its row then takes by name), the other rows
+// are assigned by hand; every shape then has the frequency of the phonemes mapped to it.
+TEST(AuthoringClicks, IctMouthShapesGetFrequenciesFromAPhonemeMap) {
+    REQUIRE_GUI_TOOLS();
+    const auto ict = std::filesystem::path(VISEMELAB_SHARED_DATA_DIR) / "ict-facekit-mouth";
+    if (!std::filesystem::is_directory(ict)) GTEST_SKIP() << "shared data folder absent: " << ict;
+    GuiDriver gui({"--visemes", ict.string(), "--panel", "Frequencies", "--map-start", "oculus"});
+    gui.waitIdle(180.0);
+    ASSERT_EQ(names(gui).size(), 7u) << gui.document()["messages"].dump();
+    ASSERT_TRUE(gui.document()["map_start_open"].get<bool>());
+    EXPECT_EQ(gui.document()["map_start_unassigned"], 15); // no name matches
+
+    typeInto(gui, "##rest-name", "sil");
+    gui.click(reveal(gui, "Add rest viseme", "button"));
+    gui.waitIdle(180.0);
+    EXPECT_EQ(names(gui).back(), "sil");
+    EXPECT_EQ(gui.document()["map_start_unassigned"], 14); // the pause row took "sil" by name
+
+    const std::pair<const char*, const char*> shapes[] = {
+        {"aa", "jawOpen"},      {"ih", "mouthStretch_L"}, {"nn", "mouthStretch_L"}, {"DD", "jawOpen"},
+        {"SS", "mouthSmile_L"}, {"RR", "mouthPucker"},    {"TH", "mouthStretch_L"}, {"PP", "mouthClose"},
+        {"E", "mouthSmile_L"},  {"kk", "jawOpen"},        {"FF", "mouthRollLower"}, {"ou", "mouthPucker"},
+        {"oh", "mouthFunnel"},  {"CH", "mouthFunnel"}};
+    for (const auto& [row, shape] : shapes) choose(gui, std::string("##assign-") + row, shape);
+    EXPECT_EQ(gui.document()["map_start_unassigned"], 0);
+    gui.click(reveal(gui, "Apply map", "button"));
+    gui.waitIdle(180.0);
+    EXPECT_ALIVE(gui);
+    ASSERT_TRUE(gui.document()["phoneme_based"].get<bool>()) << gui.document()["messages"].dump();
+    EXPECT_EQ(gui.document()["undo"], "Phoneme map from Oculus / Meta 15 visemes");
+
+    // Reference: each shape's frequency is its phonemes' share of the table.
+    std::map<std::string, double> expected;
+    double total = 0.0;
+    for (const auto& [phoneme, value] : gui.document()["phoneme_frequencies"].items()) {
+        expected[gui.document()["phoneme_map"][phoneme].get<std::string>()] += value.get<double>();
+        total += value.get<double>();
+    }
+    const Json& frequencies = gui.document()["viseme_frequencies"];
+    ASSERT_EQ(frequencies.size(), 8u);
+    for (const auto& [name, value] : frequencies.items()) {
+        EXPECT_NEAR(value.get<double>(), expected[name] / total, 1e-9) << name;
+        EXPECT_GT(value.get<double>(), 0.0) << name;
+    }
 }
 
 } // namespace

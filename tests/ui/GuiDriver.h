@@ -7,6 +7,8 @@
 
 #include <sys/types.h>
 
+#include <cstdint>
+
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -73,4 +75,18 @@ class GuiDriver {
     nlohmann::json report_;
 };
 
+// The editor's document id from the probe summary: it changes with every edit, undo and redo.
+inline std::uint64_t documentId(const GuiDriver& gui) {
+    return gui.document()["document_id"].get<std::uint64_t>();
+}
+
 } // namespace vl::test
+
+// For the click tests: skip with a message without Xvfb/xdotool; fail with the editor's log when it
+// is gone.
+#define REQUIRE_GUI_TOOLS()                                                                                  \
+    if (const std::string missing = ::vl::test::missingGuiTools(); !missing.empty())                         \
+    GTEST_SKIP() << "GUI click tests need" << missing
+
+#define EXPECT_ALIVE(gui)                                                                                    \
+    ASSERT_TRUE((gui).alive()) << "editor " << (gui).exitStatus() << ":\n" << (gui).log()

@@ -11,17 +11,6 @@
 namespace vl::test {
 namespace {
 
-#define REQUIRE_GUI_TOOLS()                                                                                  \
-    if (const std::string missing = missingGuiTools(); !missing.empty())                                     \
-    GTEST_SKIP() << "GUI click tests need" << missing
-
-#define EXPECT_ALIVE(gui)                                                                                    \
-    ASSERT_TRUE((gui).alive()) << "editor " << (gui).exitStatus() << ":\n" << (gui).log()
-
-std::uint64_t documentId(const GuiDriver& gui) {
-    return gui.document()["document_id"].get<std::uint64_t>();
-}
-
 const nlohmann::json& paint(const GuiDriver& gui) {
     return gui.document()["paint"];
 }

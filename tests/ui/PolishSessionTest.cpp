@@ -1,6 +1,7 @@
 // Issue 14's small things, below the GUI: a glTF import keeps its frequencies and is unsaved, the
 // status line's messages expire, the refinement reports refined and coarsened counts.
 #include "ui/session/EditorSession.h"
+#include "ui/widgets/FrequencyHistogram.h"
 #include "ui/widgets/StatusLine.h"
 
 #include <gtest/gtest.h>
@@ -73,6 +74,34 @@ TEST(StatusLine, SessionMessagesAreNumberedInOrder) {
     const auto& all = session.messages();
     EXPECT_EQ(all[all.size() - 1].serial, all[all.size() - 2].serial + 1);
     EXPECT_EQ(all.back().kind, StatusMessage::Kind::Error);
+}
+
+// The histogram's names: the fewest rows in which no two names on a row overlap, checked against
+// the definition on random widths.
+TEST(FrequencyHistogram, LabelRowsAreTheFewestWithoutOverlap) {
+    const std::vector<float> narrow = {20, 18, 22};
+    EXPECT_EQ(labelRows(narrow, 40.0f, 6.0f), 1);
+    const std::vector<float> wide = {50, 50, 50, 50};
+    EXPECT_EQ(labelRows(wide, 30.0f, 6.0f), 2); // 56 > 30 but <= 60
+    EXPECT_EQ(labelRows(wide, 10.0f, 6.0f), 4) << "one name per row at most";
+    std::uint32_t state = 12345;
+    auto next = [&] { return (state = state * 1664525u + 1013904223u) >> 8; };
+    for (int trial = 0; trial < 200; ++trial) {
+        std::vector<float> widths(1 + next() % 40);
+        for (float& w : widths) w = static_cast<float>(5 + next() % 80);
+        const float bar = static_cast<float>(4 + next() % 60);
+        auto overlapFree = [&](int rows) {
+            for (std::size_t i = 0; i < widths.size(); ++i)
+                for (std::size_t j = i + 1; j < widths.size(); ++j)
+                    if ((j - i) % static_cast<std::size_t>(rows) == 0 &&
+                        0.5f * (widths[i] + widths[j]) + 6.0f > static_cast<float>(j - i) * bar)
+                        return false;
+            return true;
+        };
+        const int rows = labelRows(widths, bar, 6.0f);
+        EXPECT_TRUE(overlapFree(rows)) << trial; // one name per row (rows = n) is overlap-free too
+        for (int fewer = 1; fewer < rows; ++fewer) EXPECT_FALSE(overlapFree(fewer)) << trial;
+    }
 }
 
 } // namespace

@@ -150,6 +150,45 @@ void EditorUi::deformationPanel() {
         guarded([this] { session.attempt("Generate visemes", [&] { session.generateVisemesFromFace(); }); });
 }
 
+EditorUi::UvInsetPlace EditorUi::uvInsetPlace(ImVec2 viewMin, ImVec2 viewMax) const {
+    UvInsetPlace place;
+    const float margin = 16.0f;
+    place.titleHeight = ImGui::GetTextLineHeight() + 6.0f;
+    place.side = std::max(40.0f, std::min(300.0f, 0.35f * (viewMax.y - viewMin.y)));
+    const ImVec2 extent(place.side, place.side + place.titleHeight);
+    // The default place is the lower right corner; the user's offset moves it, within the view.
+    const ImVec2 home(viewMax.x - margin - extent.x, viewMax.y - margin - extent.y);
+    place.offsetMin = ImVec2(viewMin.x - home.x, viewMin.y - home.y);
+    place.offsetMax = ImVec2(std::max(place.offsetMin.x, viewMax.x - extent.x - home.x),
+                             std::max(place.offsetMin.y, viewMax.y - extent.y - home.y));
+    place.min = ImVec2(home.x + std::clamp(uvInsetOffset_.x, place.offsetMin.x, place.offsetMax.x),
+                       home.y + std::clamp(uvInsetOffset_.y, place.offsetMin.y, place.offsetMax.y));
+    place.max = ImVec2(place.min.x + extent.x, place.min.y + extent.y);
+    return place;
+}
+
+void EditorUi::uvInset(const UvInsetPlace& place, int stage, int influence) {
+    ImGui::SetCursorScreenPos(place.min);
+    ctl::InvisibleButton("##uv-title", ImVec2(place.side, place.titleHeight));
+    const bool moving = ImGui::IsItemActive();
+    if (moving) {
+        // Kept inside the view as it moves, so a drag past the edge does not have to be undone.
+        const ImVec2 delta = ImGui::GetIO().MouseDelta;
+        uvInsetOffset_ = ImVec2(std::clamp(uvInsetOffset_.x + delta.x, place.offsetMin.x, place.offsetMax.x),
+                                std::clamp(uvInsetOffset_.y + delta.y, place.offsetMin.y, place.offsetMax.y));
+    }
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    draw->AddRectFilled(place.min, ImVec2(place.max.x, place.min.y + place.titleHeight),
+                        ImGui::IsItemHovered() || moving ? IM_COL32(70, 76, 92, 255)
+                                                         : IM_COL32(52, 56, 68, 255));
+    draw->PushClipRect(place.min, ImVec2(place.max.x, place.min.y + place.titleHeight), true);
+    draw->AddText(ImVec2(place.min.x + 6, place.min.y + 3), IM_COL32(220, 220, 230, 255),
+                  "(u,v)   drag this bar to move it");
+    draw->PopClipRect();
+    ImGui::SetCursorScreenPos(ImVec2(place.min.x, place.min.y + place.titleHeight));
+    uvView(stage, influence, place.side);
+}
+
 void EditorUi::uvView(int stage, int influence, float side) {
     const FaceModel& model = session.face();
     const InfluenceField& field = model.cascade->stages[static_cast<std::size_t>(stage)]
@@ -164,6 +203,9 @@ void EditorUi::uvView(int stage, int influence, float side) {
         return ImVec2(origin.x + static_cast<float>(u) * side, origin.y + static_cast<float>(1.0 - v) * side);
     };
     draw->AddRectFilled(origin, ImVec2(origin.x + side, origin.y + side), IM_COL32(30, 32, 38, 255));
+    // Everything of the domain stays inside its frame: an ellipse reaching past u or v = 0..1 is cut
+    // at the frame, not drawn over the face.
+    draw->PushClipRect(origin, ImVec2(origin.x + side, origin.y + side), true);
     const auto& uvs = model.domain->uvs;
     for (const Triangle& t : model.domain->triangles)
         for (int a = 0; a < 3; ++a) {
@@ -187,6 +229,7 @@ void EditorUi::uvView(int stage, int influence, float side) {
     if (field.plateau[0] > 0.0) ellipse(field.plateau, IM_COL32(255, 120, 60, 200));
     const ImVec2 centre = toScreen(field.centre[0], field.centre[1]);
     draw->AddCircleFilled(centre, 5.0f, IM_COL32(255, 220, 120, 255));
+    draw->PopClipRect();
     // Dragging in the view moves the centre.
     if (ImGui::IsItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0.0f)) {
         const ImVec2 mouse = ImGui::GetIO().MousePos;
@@ -196,8 +239,6 @@ void EditorUi::uvView(int stage, int influence, float side) {
         session.attempt("Field", [&] { session.setInfluence(stage, influence, moved); });
     }
     if (ImGui::IsItemDeactivated()) session.endEdit();
-    draw->AddText(ImVec2(origin.x + 6, origin.y + 4), IM_COL32(220, 220, 230, 255),
-                  "(u,v): drag to move the centre");
 }
 
 } // namespace vl::ui

@@ -5,6 +5,7 @@
 #include "ui/EditorUi.h"
 #include "ui/panels/PanelWidgets.h"
 #include "ui/widgets/Controls.h"
+#include "ui/widgets/FrequencyHistogram.h"
 
 #include <imgui.h>
 
@@ -36,6 +37,9 @@ void EditorUi::frequenciesPanel() {
         "CSV lines 'name,frequency', or JSON {\"phonemes\": {...}, \"map\": {...}}. A phoneme table needs a "
         "map that covers every phoneme; errors name the file and line.");
 
+    // Decided before the section draws: applying closes it mid-frame, and the editor below would then
+    // draw its controls a second time in this frame.
+    const bool assigning = mapStart_.open;
     mapStartSection();
     const bool counting = session.phonemeCountRunning();
     if (counting) ImGui::BeginDisabled();
@@ -54,16 +58,13 @@ void EditorUi::frequenciesPanel() {
     const bool ok = session.attempt("Frequencies", [&] { frequencies = session.visemeFrequencies(); });
     sectionHeader("Viseme frequencies (normalised)");
     if (ok) {
-        std::vector<float> values(frequencies.begin(), frequencies.end());
-        ImGui::PlotHistogram("##viseme-frequencies", values.data(), static_cast<int>(values.size()), 0,
-                             nullptr, 0.0f, FLT_MAX, ImVec2(ImGui::GetContentRegionAvail().x, 80));
-        std::string names;
-        for (const auto& v : set->visemes) names += v.name + " ";
-        ImGui::TextDisabled("%s", names.c_str());
+        std::vector<std::string> names;
+        for (const auto& v : set->visemes) names.push_back(v.name);
+        frequencyHistogram("##viseme-frequencies", frequencies, names, 80.0f);
     }
 
     const FrequencySource& source = session.document().frequencies;
-    if (source.isPhonemeBased() && !mapStart_.open) {
+    if (source.isPhonemeBased() && !assigning) {
         phonemeMapEditor();
     } else if (!source.isPhonemeBased()) {
         sectionHeader("Viseme frequencies (direct)");

@@ -49,6 +49,22 @@ bool visemeNameCombo(const char* label, const VisemeSet& set, std::string& curre
 
 } // namespace
 
+void EditorUi::restVisemeRow() {
+    ImGui::SetNextItemWidth(120);
+    ctl::InputTextWithHint("##rest-name", "name", &authoring_.restName);
+    ImGui::SameLine();
+    if (ctl::Button("Add rest viseme") &&
+        session.attempt("Rest viseme", [&] { session.addRestViseme(authoring_.restName); }) &&
+        mapStart_.open) {
+        // A map being assigned: rows still unassigned take the new viseme when it fits their name.
+        const auto suggested = edit::suggestMapAssignment(session.document(), mapStart_.table, mapStart_.map);
+        for (edit::MapAssignment& row : mapStart_.rows)
+            for (const edit::MapAssignment& suggestion : suggested)
+                if (row.to.empty() && suggestion.from == row.from) row.to = suggestion.to;
+    }
+    helpMarker("A viseme with the neutral's shape, for the pause 'sil' when your set has no mouth at rest.");
+}
+
 void EditorUi::openMapStart(std::string title, const PhonemeVisemeMap& map) {
     mapStart_.table = session.startingPhonemeTable();
     mapStart_.map = map;
@@ -109,6 +125,9 @@ void EditorUi::mapStartSection() {
     ImGui::Spacing();
     ImGui::TextColored(ImVec4(0.55f, 0.75f, 1.0f, 1.0f), "Assign the visemes of %s to yours",
                        mapStart_.title.c_str());
+    ImGui::PushID("assigning"); // the editor below may draw its own row in the frame this opens
+    restVisemeRow();
+    ImGui::PopID();
     int unassigned = 0;
     if (ImGui::BeginTable("##map-assignment", 4, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
         ImGui::TableSetupColumn("Map's viseme", ImGuiTableColumnFlags_WidthFixed, 95.0f);
@@ -175,12 +194,7 @@ void EditorUi::phonemeMapEditor() {
     } else {
         ImGui::TextDisabled("Every viseme has at least one phoneme.");
     }
-    ImGui::SetNextItemWidth(120);
-    ctl::InputTextWithHint("##rest-name", "name", &authoring_.restName);
-    ImGui::SameLine();
-    if (ctl::Button("Add rest viseme"))
-        session.attempt("Rest viseme", [&] { session.addRestViseme(authoring_.restName); });
-    helpMarker("A viseme with the neutral's shape, for the pause 'sil' when your set has no mouth at rest.");
+    restVisemeRow();
 
     double total = 0.0;
     for (const auto& entry : source.phonemes.entries) total += entry.second;

@@ -1,5 +1,6 @@
 // Reduction panel: target m, the optimal cost for every p with m marked, the groups, and playback
 // of a phoneme sequence with the full and the reduced set (the views show both side by side).
+#include "core/common/Error.h"
 #include "core/inspect/DistanceUnits.h"
 #include "ui/EditorUi.h"
 #include "ui/panels/PanelWidgets.h"
@@ -141,7 +142,18 @@ void EditorUi::reductionPanel() {
                 session.selectedViseme = i;
         ImGui::EndCombo();
     }
-    ImGui::TextDisabled("Right view: colour = weighted distance to the merged shape");
+    ImGui::TextUnformatted("Right view:");
+    int display = static_cast<int>(mergedDisplay_);
+    ImGui::SameLine();
+    bool displayChanged = ctl::RadioButton("error colours", &display, 0);
+    ImGui::SameLine();
+    displayChanged |= ctl::RadioButton("skin", &display, 1);
+    ImGui::SameLine();
+    displayChanged |= ctl::RadioButton("overlay on original", &display, 2);
+    if (displayChanged) mergedDisplay_ = static_cast<MergedDisplay>(display);
+    helpMarker("Error colours: the weighted distance of each vertex to the merged shape. Skin: the merged "
+               "shape as the face will look. Overlay: the merged shape in skin with the original drawn "
+               "over it as a cyan film; plain skin shows where the merged shape stands out in front.");
 
     sectionHeader("Playback");
     ImGui::SetNextItemWidth(-1);
@@ -155,6 +167,16 @@ void EditorUi::reductionPanel() {
         playback_.playing = !playback_.playing;
         playback_.time = 0.0;
     }
+}
+
+void EditorUi::setMergedDisplay(const std::string& name) {
+    const char* const names[] = {"errors", "skin", "overlay"};
+    for (int i = 0; i < 3; ++i)
+        if (name == names[i]) {
+            mergedDisplay_ = static_cast<MergedDisplay>(i);
+            return;
+        }
+    throwInputError("--merged", "expected errors, skin or overlay, got '" + name + "'");
 }
 
 } // namespace vl::ui

@@ -98,8 +98,16 @@ void EditorUi::refinementPanel() {
                 model.domain->triangles.size());
     if (const auto& report = session.lastRefinement()) {
         ImGui::Text("Last run: %s in %.1f ms", report->action.c_str(), report->milliseconds);
-        ImGui::Text("%zu splits, %zu welds, %zu tests", report->stats.splits, report->stats.welds,
-                    report->stats.tests);
+        // The counts a designer asks about: how big the mesh was and is, and what each way did. An
+        // edge split adds one vertex, a weld removes one.
+        ImGui::Text("Vertices: %zu before, %zu now", report->verticesBefore, report->vertices);
+        if (report->fromBaseMesh)
+            ImGui::TextWrapped("Started again from the %zu-vertex base mesh (a new face or field).",
+                               report->verticesAtStart);
+        ImGui::Text("Refined: %zu vertices added (edge splits)", report->stats.splits);
+        ImGui::Text("Coarsened: %zu vertices removed (welds)", report->stats.welds);
+        ImGui::TextDisabled("Triangles: %zu before, %zu after; %zu refinement tests", report->trianglesBefore,
+                            report->triangles, report->stats.tests);
         if (report->maxLevel >= 0) ImGui::Text("Deepest level: %d", report->maxLevel);
     } else {
         ImGui::TextDisabled("The face is shown on a regular (u,v) grid until you refine.");

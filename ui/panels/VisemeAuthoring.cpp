@@ -49,7 +49,16 @@ nlohmann::json EditorUi::authoringProbe() const {
     for (const auto& [phoneme, viseme] : document.frequencies.map.entries) map[phoneme] = viseme;
     nlohmann::json direct = nlohmann::json::object();
     for (const auto& [name, value] : document.frequencies.visemeFrequencies.entries) direct[name] = value;
-    return {{"viseme_names", visemeNames(document)},
+    // The frequencies the reduction uses, per viseme (empty while they do not resolve).
+    nlohmann::json frequencies = nlohmann::json::object();
+    const std::vector<std::string> names = visemeNames(document);
+    try {
+        const std::vector<double> values = documentFrequencies(document);
+        for (std::size_t i = 0; i < names.size() && i < values.size(); ++i) frequencies[names[i]] = values[i];
+    } catch (const InputError&) {
+    }
+    return {{"viseme_names", names},
+            {"viseme_frequencies", std::move(frequencies)},
             {"presets", std::move(presets)},
             {"parameters", std::move(parameters)},
             {"phoneme_frequencies", std::move(phonemes)},

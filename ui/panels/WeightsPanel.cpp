@@ -86,14 +86,14 @@ void EditorUi::weightsPanel() {
     sectionHeader("Fill");
     ctl::SliderFloat("fill value", &paintTool_.fillValue, 0.0f, 1.0f, "%.2f");
     ctl::SliderFloat("region tolerance", &paintTool_.fillTolerance, 0.0f, 1.0f, "%.2f");
-    helpMarker("Fill region: a click on the mesh sets the connected vertices whose weight is within the "
-               "tolerance of the clicked one (tolerance 1: the whole connected part).");
     ImGui::PopItemWidth();
     if (ctl::Button("Fill all")) {
         std::vector<std::uint32_t> all(set->vertexCount());
         std::iota(all.begin(), all.end(), 0u);
         fillVertices(all, "Fill all");
     }
+    helpMarker("Fill region: a click on the mesh sets the connected vertices whose weight is within the "
+               "tolerance of the clicked one (tolerance 1: the whole connected part).");
 
     sectionHeader("Selection");
     const std::size_t selected = paintTool_.selection.size();

@@ -165,6 +165,27 @@ void GpuMesh::draw(const GlShader& shader, std::span<const float> weights, const
 
     glBindVertexArray(vao_);
     const auto indexCount = static_cast<GLsizei>(3 * triangleCount_);
+    if (style.ghost) {
+        // The line pass's flat colour, on the fill pass, blended; the same polygon offset as a normal
+        // fill so where the shapes coincide the film shows (LEQUAL), and no depth writes.
+        glUniform1i(shader.uniform("uWireframe"), 1);
+        glUniform4fv(shader.uniform("uWireColor"), 1, glm::value_ptr(style.ghostColor));
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        glDepthMask(GL_FALSE);
+        glDepthFunc(GL_LEQUAL);
+        glEnable(GL_POLYGON_OFFSET_FILL);
+        glPolygonOffset(1.0f, 1.0f);
+        glDrawElements(GL_TRIANGLES, indexCount, GL_UNSIGNED_INT, nullptr);
+        glDisable(GL_POLYGON_OFFSET_FILL);
+        glDepthFunc(GL_LESS);
+        glDepthMask(GL_TRUE);
+        glDisable(GL_BLEND);
+        glBindVertexArray(0);
+        glBindTexture(GL_TEXTURE_BUFFER, 0);
+        glUseProgram(0);
+        return;
+    }
     // Fill pass pushed back slightly so the line pass sits on top without z-fighting.
     glUniform1i(shader.uniform("uWireframe"), 0);
     glEnable(GL_POLYGON_OFFSET_FILL);

@@ -23,6 +23,10 @@ struct DrawStyle {
     ColorMode color = ColorMode::Surface; // Scalar: the per-vertex scalar through the colour map
     glm::vec3 surfaceColor{0.86f, 0.72f, 0.64f};
     glm::vec4 wireColor{0.10f, 0.10f, 0.12f, 0.35f};
+    // Drawn as a flat translucent film of ghostColor over what is already drawn, where it lies on
+    // or in front of it (depth tested, not written): an overlay of one shape on another.
+    bool ghost = false;
+    glm::vec4 ghostColor{0.25f, 0.80f, 1.0f, 0.45f};
 };
 
 class GpuMesh {

@@ -703,6 +703,10 @@ void EditorSession::finishBackgroundWork() {
         refinement_.wait();
         reduction_.wait();
         poll();
+        if (refinement_.running() || reduction_.running()) continue;
+        // A run poll() started may have finished already (running() is false from the worker's last
+        // step): one more poll collects it, or starts the next automatic run.
+        poll();
         if (!refinement_.running() && !reduction_.running()) break;
     }
 }

@@ -48,16 +48,21 @@ void RefinementService::start(const Document& document, RefineAction action, boo
         for (const VisemeParameters& viseme :
              document.face.presets.empty() ? oculusVisemes() : document.face.presets)
             poses.push_back(parameterVector(*cascade, viseme));
+    const std::size_t verticesBefore = document.face.domain ? document.face.domain->positions.size() : 0;
+    const std::size_t trianglesBefore = document.face.domain ? document.face.domain->triangles.size() : 0;
     if (automatic) {
         autoCascade_ = cascade;
         autoParameters_ = q;
         autoSettings_ = settings;
     }
-    task_.start("Refining", [work = work_, cascade, q, settings, poses, action, automatic](const auto&) {
+    task_.start("Refining", [work = work_, cascade, q, settings, poses, action, automatic, verticesBefore,
+                             trianglesBefore](const auto&) {
         const auto start = std::chrono::steady_clock::now();
         const std::unique_ptr<Criterion> criterion = makeCriterion(settings);
         Finished outcome;
         outcome.automatic = automatic;
+        outcome.report.verticesBefore = verticesBefore;
+        outcome.report.trianglesBefore = trianglesBefore;
         MeshData result;
         if (action == RefineAction::AllVisemes) {
             result = refineFaceMesh(*cascade, kBaseResolution, settings, poses, &outcome.report.stats);
@@ -70,9 +75,11 @@ void RefinementService::start(const Document& document, RefineAction action, boo
                     std::make_unique<CascadeSurface>(*cascade, face::faceBaseDomain(kBaseResolution), q);
                 work->mesh = std::make_unique<AdaptiveMesh>(*work->surface);
                 work->cascade = cascade;
+                outcome.report.fromBaseMesh = true;
             } else {
                 work->surface->setParameters(q);
             }
+            outcome.report.verticesAtStart = work->mesh->mesh().n_vertices();
             if (action == RefineAction::Refine) {
                 work->mesh->resample();
                 outcome.report.stats = work->mesh->refine(*criterion);

@@ -18,6 +18,12 @@ struct RefinementReport {
     std::string action;
     std::size_t triangles = 0;
     std::size_t vertices = 0;
+    std::size_t verticesBefore = 0; // of the face mesh shown when the run started
+    std::size_t trianglesBefore = 0;
+    // The adaptive mesh the run started from (after = start + splits - welds); a new face or field
+    // starts again from the base mesh. 0 for "for all visemes" (refined from scratch per pose).
+    std::size_t verticesAtStart = 0;
+    bool fromBaseMesh = false;
     int maxLevel = 0;
     AdaptStats stats;
     double milliseconds = 0.0;

@@ -17,7 +17,15 @@ struct Item {
     std::string label, kind, window;
     float x = 0, y = 0, width = 0, height = 0;
     bool visible = false, open = false;
+    bool cut = false; // the whole item (its label too) reaches past its window's clip rectangle sideways
 };
+
+bool cutSideways(const ImRect& whole, const ImRect& clip) {
+    // A selectable spans its row into half the item spacing on each side (ImGui draws its text
+    // inside): that much is not a cut.
+    const float slack = 0.5f * ImGui::GetStyle().ItemSpacing.x + 0.5f;
+    return whole.Min.x < clip.Min.x - slack || whole.Max.x > clip.Max.x + slack;
+}
 
 struct Probe {
     bool enabled = false;
@@ -84,6 +92,9 @@ void recordItem(const Before& before, const char* label, const char* kind) {
         // lies outside the visible area, inside its clip rectangle.)
         const ImVec2 centre = rect.GetCenter();
         item.visible = window->ClipRect.Contains(centre) || window->InnerClipRect.Contains(centre);
+        // Cut: past both (a row's selectable spanning a table's columns passes its column's side).
+        item.cut = cutSideways(g.LastItemData.Rect, window->ClipRect) &&
+                   cutSideways(g.LastItemData.Rect, window->InnerClipRect);
         probe.lastSeen[{item.window, item.label}] = item;
     } else {
         // The popup of this combo or menu is open: the control is where it was last frame.
@@ -103,7 +114,19 @@ void recordArea(const char* label, const char* kind) {
     const ImRect& rect = g.LastItemData.Rect;
     probe.items.push_back({label, kind, window->RootWindow ? window->RootWindow->Name : window->Name,
                            rect.Min.x, rect.Min.y, rect.GetWidth(), rect.GetHeight(),
-                           window->ClipRect.Contains(rect.GetCenter()), false});
+                           window->ClipRect.Contains(rect.GetCenter()), false,
+                           cutSideways(rect, window->ClipRect)});
+}
+
+void recordRect(const char* label, const char* kind, ImVec2 min, ImVec2 max) {
+    Probe& probe = probeState();
+    if (!probe.enabled) return;
+    const ImGuiWindow* window = ImGui::GetCurrentContext()->CurrentWindow;
+    const ImRect rect(min, max);
+    probe.items.push_back({label, kind, window->RootWindow ? window->RootWindow->Name : window->Name, min.x,
+                           min.y, rect.GetWidth(), rect.GetHeight(),
+                           window->ClipRect.Contains(rect.GetCenter()), false,
+                           cutSideways(rect, window->ClipRect)});
 }
 
 void endFrame(const nlohmann::json& document) {
@@ -120,7 +143,8 @@ void endFrame(const nlohmann::json& document) {
                             {"width", item.width},
                             {"height", item.height},
                             {"visible", item.visible},
-                            {"open", item.open}});
+                            {"open", item.open},
+                            {"cut", item.cut}});
     probe.items.clear();
     probe.ids.clear();
     nlohmann::json duplicates = std::move(probe.duplicates);

@@ -27,6 +27,10 @@ Before before(const char* label);
 void recordItem(const Before& before, const char* label, const char* kind);
 // Records the last item whatever its ID (images and other items without one, e.g. a 3D view).
 void recordArea(const char* label, const char* kind);
+// Records a rectangle drawn without an item of its own (a chart's label, say), in screen pixels.
+void recordRect(const char* label, const char* kind, ImVec2 min, ImVec2 max);
+// Every record says whether the whole item, label included, reaches past its window's clip
+// rectangle sideways ("cut": a label the user cannot read in full).
 
 // Writes the frame's controls and `document` (a summary the caller chooses) and starts a new list.
 void endFrame(const nlohmann::json& document);

@@ -1,0 +1,17 @@
+// libFuzzer target: whole avatars (core/gltf): GLB/JSON glTF parsed by parseGltfDocument (tinygltf
+// behind our own limits), then every mesh, node and morph target scanned as `visemelab avatar` does.
+#include "FuzzSupport.h"
+#include "core/gltf/AvatarScan.h"
+#include "core/gltf/GltfDocument.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    vl::fuzz::expectLoadedOrDataError("fuzz.glb", [&] {
+        const vl::GltfDocument doc =
+            vl::parseGltfDocument(std::string(vl::fuzz::asText(data, size)), "fuzz.glb", {});
+        const vl::AvatarScan scan = vl::scanAvatar(doc, {});
+        for (const auto& viseme : scan.set.visemes)
+            if (viseme.positions.size() != scan.set.neutral.positions.size())
+                vl::fuzz::fail("viseme size differs");
+    });
+    return 0;
+}
