@@ -12,16 +12,9 @@ struct CliResult {
     std::string output; // stdout and stderr together
 };
 
-<<<<<<< Updated upstream
 // `shellPrefix` runs first in the same shell, e.g. "ulimit -t 20; " to bound the CLI.
 inline CliResult runCliWith(const std::string& shellPrefix, const std::string& arguments) {
     const std::string command = shellPrefix + std::string(VISEMELAB_CLI) + " " + arguments + " 2>&1";
-=======
-// `environment`: optional NAME=VALUE assignments for this run.
-inline CliResult runCli(const std::string& arguments, const std::string& environment = {}) {
-    const std::string command =
-        (environment.empty() ? "" : environment + " ") + std::string(VISEMELAB_CLI) + " " + arguments + " 2>&1";
->>>>>>> Stashed changes
     CliResult result;
     FILE* pipe = ::popen(command.c_str(), "r");
     if (!pipe) return result;
