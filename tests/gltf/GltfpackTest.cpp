@@ -144,9 +144,9 @@ TEST(Gltfpack, CliRecompressesOnRequestAndSaysHowWhenCompressedInputIsWrittenUnc
     ASSERT_EQ(plain.exitCode, 0) << plain.output;
     EXPECT_NE(plain.output.find("--gltfpack"), std::string::npos) << plain.output;
     // With --gltfpack but none to run: exit 3, how to get it, nothing written.
-    const auto refused =
-        test::runCli("avatar reduce " + in + " --target 5 --gltfpack --out " + (dir / "none.glb").string(),
-                     "VISEMELAB_GLTFPACK=/nonexistent/gltfpack");
+    const auto refused = test::runCliWith("VISEMELAB_GLTFPACK=/nonexistent/gltfpack ",
+                                          "avatar reduce " + in + " --target 5 --gltfpack --out " +
+                                              (dir / "none.glb").string());
     EXPECT_EQ(refused.exitCode, 3) << refused.output;
     EXPECT_NE(refused.output.find("npm install -g gltfpack"), std::string::npos) << refused.output;
     EXPECT_FALSE(std::filesystem::exists(dir / "none.glb"));
