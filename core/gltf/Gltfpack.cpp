@@ -145,8 +145,8 @@ std::string restore(const Json& before, std::string_view packedGlb, std::vector<
         Json& target = meshesAfter[static_cast<std::size_t>(found->second)];
         if (mesh.contains("name")) target["name"] = mesh["name"];
         if (!hasExtras) continue;
-        const auto targetCount = [](const Json& m) {
-            const Json primitives = m.value("primitives", Json::array());
+        const auto targetCount = [](const Json& meshJson) {
+            const Json primitives = meshJson.value("primitives", Json::array());
             return primitives.empty() ? std::size_t{0} : primitives[0].value("targets", Json::array()).size();
         };
         const std::size_t targetsBefore = targetCount(mesh), targetsAfter = targetCount(target);
