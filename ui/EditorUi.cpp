@@ -1,6 +1,7 @@
 #include "ui/EditorUi.h"
 
 #include "core/common/Error.h"
+#include "core/gltf/AvatarScan.h"
 #include "core/inspect/DistanceUnits.h"
 #include "ui/widgets/Controls.h"
 
@@ -127,6 +128,25 @@ double EditorUi::millimetresPerModelUnit() const {
     return millimetresPer(guessLengthUnit(extent));
 }
 
+namespace {
+
+// What the avatar tests check: the file, its pattern, the meshes shown and greyed.
+nlohmann::json avatarSummary(const Document& document) {
+    const DocumentAvatar& avatar = document.avatar;
+    if (!avatar.isSet()) return nullptr;
+    nlohmann::json meshes = nlohmann::json::array();
+    for (const AvatarMesh& mesh : avatar.scan->meshes)
+        meshes.push_back({{"name", mesh.name}, {"visemes", mesh.carriesVisemes}});
+    return {{"file", avatar.file.string()},
+            {"pattern", avatar.pattern},
+            {"visemes", visemeNames(document)},
+            {"meshes", std::move(meshes)},
+            {"viseme_vertices", document.visemes->vertexCount()},
+            {"greyed_vertices", avatar.scan->context.positions.size()}};
+}
+
+} // namespace
+
 nlohmann::json EditorUi::probeSummary() const {
     static const char* const kCriteria[] = {"depth", "normals", "contour"};
     const Document& document = session.document();
@@ -158,7 +178,9 @@ nlohmann::json EditorUi::probeSummary() const {
         {"weight_mode", toString(document.weights.mode)},
         {"painted_mean", painted.empty() ? 0.0 : paintedSum / static_cast<double>(painted.size())},
         {"wireframe", wireframe_},
-        {"playing", playback_.playing}};
+        {"playing", playback_.playing},
+        {"avatar", avatarSummary(document)},
+        {"avatar_mesh_report", avatarMeshReport()}};
     summary.update(polishSummary());
     summary.update(authoringProbe());
     return summary;
@@ -248,6 +270,7 @@ void EditorUi::syncGpu() {
         uploadedMergedGroups_ = groups;
         weightsKey_.clear(), errorKey_.clear(), influenceKey_.clear();
     }
+    syncContextMesh();
     updateScalars();
 }
 
@@ -360,6 +383,10 @@ void EditorUi::menuBar() {
                         session.attempt("Open folder", [&] { session.startLoadVisemeFolder(path); });
                     });
             });
+        ImGui::Separator();
+        if (ctl::MenuItem("Import avatar...")) openAvatarImport();
+        if (ctl::MenuItem("Export avatar...", nullptr, false, session.document().avatar.isSet()))
+            openAvatarExport();
         ImGui::Separator();
         if (ctl::MenuItem("Quit")) requestQuit();
         ImGui::EndMenu();
@@ -564,6 +591,7 @@ void EditorUi::mainView(ImVec2 size) {
             "main", size,
             [&](const glm::mat4& view, const glm::mat4& projection) {
                 visemeMesh_.draw(shader_, weights, view, projection, style);
+                drawContext(view, projection);
             },
             orbit);
         if (visemeMesh_.empty()) {
@@ -624,6 +652,7 @@ void EditorUi::comparisonViews(ImVec2 size) {
     const ViewportEvents left =
         beforeView_.show("before", half, [&](const glm::mat4& view, const glm::mat4& projection) {
             visemeMesh_.draw(shader_, before, view, projection, plain);
+            drawContext(view, projection);
         });
     if (session.visemes())
         viewLabel(left.imageMin,
@@ -635,6 +664,7 @@ void EditorUi::comparisonViews(ImVec2 size) {
     ImGui::SameLine(0.0f, 2.0f);
     const ViewportEvents right =
         afterView_.show("after", half, [&](const glm::mat4& view, const glm::mat4& projection) {
+            drawContext(view, projection); // the avatar's meshes without visemes, greyed
             if (!grouping) return;
             mergedMesh_.draw(shader_, after, view, projection, errors);
             if (overlay) visemeMesh_.draw(shader_, before, view, projection, ghost);

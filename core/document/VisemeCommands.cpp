@@ -13,6 +13,7 @@ namespace {
 
 using detail::checked;
 using detail::checkedIndex;
+using detail::refuseAvatar;
 using detail::requireFace;
 using detail::requireSet;
 
@@ -107,6 +108,7 @@ void checkNewVisemeName(const Document& document, const std::string& name, std::
 
 Document renameViseme(const Document& document, int index, const std::string& name) {
     requireSet(document, "rename viseme");
+    refuseAvatar(document, "rename viseme");
     const std::size_t i = checkedIndex(index, document.visemeCount(), "rename viseme");
     const std::string old = document.visemes->visemes[i].name;
     if (name == old) throwInputError("rename " + old, "the new name is the same");
@@ -121,6 +123,7 @@ Document renameViseme(const Document& document, int index, const std::string& na
 
 Document duplicateViseme(const Document& document, int index, const std::string& name) {
     requireSet(document, "duplicate viseme");
+    refuseAvatar(document, "duplicate viseme");
     const std::size_t i = checkedIndex(index, document.visemeCount(), "duplicate viseme");
     const Viseme& original = document.visemes->visemes[i];
     checkNewVisemeName(document, name, "duplicate " + original.name);
@@ -146,6 +149,7 @@ Document duplicateViseme(const Document& document, int index, const std::string&
 
 Document moveViseme(const Document& document, int from, int to) {
     requireSet(document, "move viseme");
+    refuseAvatar(document, "move viseme");
     const std::size_t a = checkedIndex(from, document.visemeCount(), "move viseme");
     const std::size_t b = checkedIndex(to, document.visemeCount(), "move viseme to");
     if (a == b) throwInputError("move " + document.visemes->visemes[a].name, "it is already there");
@@ -175,6 +179,7 @@ Document moveViseme(const Document& document, int from, int to) {
 
 Document addRestViseme(const Document& document, const std::string& name) {
     requireSet(document, "rest viseme");
+    refuseAvatar(document, "rest viseme");
     checkNewVisemeName(document, name, "rest viseme");
     Document next = document;
     insertViseme(next, next.visemeCount(), Viseme{name, {}, document.visemes->neutral.positions}, {});

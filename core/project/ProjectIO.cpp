@@ -24,10 +24,10 @@ std::string toText(const Project& project) {
     }
 }
 
-} // namespace
-
-Project projectFromJsonText(std::string_view text, const std::filesystem::path& projectFile,
-                            bool checkFiles) {
+// projectFromJsonText without the file name in front of the validation errors (saving checks a
+// project that has no file yet).
+Project projectFromJsonTextAt(std::string_view text, const std::filesystem::path& projectFile,
+                              bool checkFiles) {
     const Json document = parseJsonStrict(text, projectFile.string());
     const JsonNode root(document, "");
     const int version = projectVersionOf(root);
@@ -53,22 +53,29 @@ Project projectFromJsonText(std::string_view text, const std::filesystem::path& 
     return project;
 }
 
-Project loadProject(const std::filesystem::path& file) {
-    const std::string text = readFileToString(file); // its errors already name the file
+} // namespace
+
+Project projectFromJsonText(std::string_view text, const std::filesystem::path& projectFile,
+                            bool checkFiles) {
     try {
-        return projectFromJsonText(text, file, true);
+        return projectFromJsonTextAt(text, projectFile, checkFiles);
     } catch (const InputError& e) {
         const std::string message = e.what();
-        if (message.starts_with(file.string() + ": ")) throw; // JSON syntax errors name the file themselves
-        rethrowWithPrefix(e, file.string() + ": ");
+        if (message.starts_with(projectFile.string() + ": "))
+            throw; // JSON syntax errors name the file themselves
+        rethrowWithPrefix(e, projectFile.string() + ": ");
     }
+}
+
+Project loadProject(const std::filesystem::path& file) {
+    return projectFromJsonText(readFileToString(file), file, true); // read errors name the file too
 }
 
 std::string projectToJsonText(const Project& project) {
     std::string text = toText(project);
     // One set of rules for loading and saving: the text must load back to the same state. This also
     // refuses NaN (written as null by nlohmann) and every other invalid value with its JSON path.
-    const Project reloaded = projectFromJsonText(text, project.path, false);
+    const Project reloaded = projectFromJsonTextAt(text, project.path, false);
     Project expected = project;
     expected.path = reloaded.path;
     if (reloaded != expected)
@@ -111,6 +118,7 @@ Project rebaseProject(const Project& project, const std::filesystem::path& newFi
     };
     rebase(rebased.neutral.file);
     for (auto& viseme : rebased.visemes) rebase(viseme.file);
+    rebase(rebased.avatar.file);
     return rebased;
 }
 

@@ -16,6 +16,9 @@ struct ProjectReadContext {
     bool checkFiles = true;       // referenced mesh files must exist
 };
 
+// A mesh or avatar file named at `node`: must exist when context.checkFiles.
+std::filesystem::path fileFromJson(const JsonNode& node, const ProjectReadContext& context);
+
 Json projectToJson(const Project& project);
 Project projectFromJson(const JsonNode& root, const ProjectReadContext& context); // version already checked
 
@@ -36,6 +39,10 @@ ConstraintNames constraintsFromJson(const JsonNode& node, const std::vector<std:
 
 Json reductionToJson(const ProjectReduction& reduction, const std::vector<std::string>& visemeNames);
 ProjectReduction reductionFromJson(const JsonNode& node, const std::vector<std::string>& visemeNames);
+
+// The optional "avatar" object: {"file": "avatar.glb", "targets": "Fcl_MTH_[AIUEO]"}.
+Json avatarToJson(const ProjectAvatar& avatar);
+ProjectAvatar avatarFromJson(const JsonNode& node, const ProjectReadContext& context);
 
 // Version handling: the version of a document, and the upgrade of an older one to the current layout.
 int projectVersionOf(const JsonNode& root); // checks "format" too; refuses newer versions

@@ -331,5 +331,14 @@ TEST_F(ProjectValidation, EmbeddedMeshErrors) {
     EXPECT_LOAD_ERROR("/weights/painted: expected 3 weights (one per vertex), found 2");
 }
 
+// Found by fuzz_project: validation errors of projects parsed from memory named only the JSON path.
+TEST(ProjectText, ErrorsNameTheFileItStandsFor) {
+    const std::string text = R"({"format": "visemelab-project", "version": 0, "neutral": "n.obj",
+        "visemes": {"aa": "aa.obj"}, "wekghts": [1], "target": 1})";
+    EXPECT_INPUT_ERROR(projectFromJsonText(text, "/nowhere/typo.vlproj", false),
+                       "/nowhere/typo.vlproj: /wekghts: unknown field");
+    EXPECT_INPUT_ERROR(projectFromJsonText("[1, 2", "/nowhere/cut.vlproj", false), "/nowhere/cut.vlproj: ");
+}
+
 } // namespace
 } // namespace vl
