@@ -18,13 +18,6 @@
 namespace vl::test {
 namespace {
 
-#define REQUIRE_GUI_TOOLS()                                                                                  \
-    if (const std::string missing = missingGuiTools(); !missing.empty())                                     \
-    GTEST_SKIP() << "GUI click tests need" << missing
-
-#define EXPECT_ALIVE(gui)                                                                                    \
-    ASSERT_TRUE((gui).alive()) << "editor " << (gui).exitStatus() << ":\n" << (gui).log()
-
 // A folder of its own per test, with the generated avatar in it.
 struct AvatarFolder {
     std::filesystem::path dir, avatar;
