@@ -34,3 +34,22 @@ for face in bundled retarget; do
 done
 "$cli" render "$tmp"/bundled/{neutral,aa,PP,ou,FF,E}.obj "$tmp"/retarget/{neutral,aa,PP,ou,FF,E}.obj \
   --face-colours --yaw 15 --pitch 3 --size 170x200 --columns 6 --out docs/images/retarget-visemes.png
+
+# Bring your own face: the same parameters on faces nobody here made (docs/deformable-face.md),
+# when the shared data is present (VISEMELAB_SHARED_DATA_DIR, default ../shared/data).
+shared=${VISEMELAB_SHARED_DATA_DIR:-../shared/data}
+if [ -f "$shared/mediapipe-canonical-face/canonical_face_model.obj" ]; then
+  rows=("$tmp"/bundled/{neutral,aa,PP,ou,FF,E}.obj)
+  for mesh in "$shared/mediapipe-canonical-face/canonical_face_model.obj" \
+              "$shared/ict-facekit-mouth/generic_neutral_mesh.obj"; do
+    [ -f "$mesh" ] || continue
+    name=$(basename "$mesh" .obj)
+    "$cli" face build "$mesh" --out "$tmp/$name.vlproj" >/dev/null
+    "$cli" visemes --project "$tmp/$name.vlproj" --resolution 110 --density mouth --out "$tmp/$name" >/dev/null
+    rows+=("$tmp/$name"/{neutral,aa,PP,ou,FF,E}.obj)
+  done
+  "$cli" render "${rows[@]}" --face-colours --yaw 15 --pitch 3 --size 170x200 --columns 6 \
+    --out docs/images/own-face-visemes.png
+else
+  echo "generate-sample: no shared data at $shared: docs/images/own-face-visemes.png not regenerated" >&2
+fi

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Regenerates the user guide's editor pictures (docs/images/editor-*.png) from the current build:
-# each picture is the editor's --screenshot mode on the bundled sample under a private Xvfb.
+# each picture is the editor's --screenshot mode on the bundled sample (the avatar picture: a generated
+# avatar) under a private Xvfb.
 # Usage: scripts/guide-pictures.sh [build/release]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -27,3 +28,13 @@ shot reduction --frames 8 --screenshot-bits 6 --panel Reduction --viseme E --no-
 shot reduction-overlay --frames 8 --screenshot-bits 6 --panel Reduction --viseme E --merged overlay --no-wireframe
 shot playback --frames 8 --screenshot-bits 6 --panel Reduction --play 1.3 --sequence 'HH EH L OW W ER L D' --no-wireframe
 shot export --frames 8 --screenshot-bits 6 --panel Export --no-wireframe
+
+# docs/avatars.md: the generated Ready Player Me-like avatar (tests/gltf/AvatarFixtures.h) in the
+# Reduction panel's before/after views, its body greyed.
+fixtures=$(mktemp -d)
+trap 'rm -rf "$fixtures"' EXIT
+"$build/tests/gltf/write_avatar_fixtures" "$fixtures" >/dev/null
+xvfb-run -a -s '-screen 0 1600x1000x24' "$editor" --size 1280 800 --avatar "$fixtures/rpm_plain.glb" \
+  --frames 10 --screenshot-bits 6 --panel Reduction --viseme viseme_aa --no-wireframe \
+  --screenshot docs/images/editor-avatar.png >/dev/null
+echo docs/images/editor-avatar.png

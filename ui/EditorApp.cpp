@@ -72,6 +72,7 @@ void applyStartOptions(const EditorOptions& options, EditorSession& session, Edi
     step(!options.project.empty(), [&] { session.openProject(options.project); });
     step(options.sample, [&] { session.loadSample(); });
     step(!options.visemeFolder.empty(), [&] { session.loadVisemeFolder(options.visemeFolder); });
+    step(!options.avatar.empty(), [&] { session.importAvatar(options.avatar, options.avatarTargets); });
     step(!options.panel.empty(), [&] {
         const auto panel = panelFromName(options.panel);
         if (!panel) throwInputError("--panel", "unknown panel '" + options.panel + "'");

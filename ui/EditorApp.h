@@ -11,6 +11,8 @@ struct EditorOptions {
     std::filesystem::path project;      // open this project at start
     bool sample = false;                // load the bundled sample at start
     std::filesystem::path visemeFolder; // load a folder of meshes at start
+    std::filesystem::path avatar;       // import an avatar (glTF, GLB, VRM) at start
+    std::string avatarTargets;          // its viseme target pattern (empty: the Oculus names)
     std::filesystem::path screenshot;   // non-empty: render `frames` frames, save a PNG, exit
     int frames = 6;
     int screenshotBits = 8;      // < 8: fewer colour levels, much smaller files

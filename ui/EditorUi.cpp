@@ -1,6 +1,7 @@
 #include "ui/EditorUi.h"
 
 #include "core/common/Error.h"
+#include "core/gltf/AvatarScan.h"
 #include "core/inspect/DistanceUnits.h"
 #include "ui/widgets/Controls.h"
 
@@ -133,6 +134,25 @@ double EditorUi::millimetresPerModelUnit() const {
     return millimetresPer(guessLengthUnit(extent));
 }
 
+namespace {
+
+// What the avatar tests check: the file, its pattern, the meshes shown and greyed.
+nlohmann::json avatarSummary(const Document& document) {
+    const DocumentAvatar& avatar = document.avatar;
+    if (!avatar.isSet()) return nullptr;
+    nlohmann::json meshes = nlohmann::json::array();
+    for (const AvatarMesh& mesh : avatar.scan->meshes)
+        meshes.push_back({{"name", mesh.name}, {"visemes", mesh.carriesVisemes}});
+    return {{"file", avatar.file.string()},
+            {"pattern", avatar.pattern},
+            {"visemes", visemeNames(document)},
+            {"meshes", std::move(meshes)},
+            {"viseme_vertices", document.visemes->vertexCount()},
+            {"greyed_vertices", avatar.scan->context.positions.size()}};
+}
+
+} // namespace
+
 nlohmann::json EditorUi::probeSummary() {
     static const char* const kCriteria[] = {"depth", "normals", "contour"};
     const Document& document = session.document();
@@ -165,7 +185,9 @@ nlohmann::json EditorUi::probeSummary() {
         {"painted_mean", painted.empty() ? 0.0 : paintedSum / static_cast<double>(painted.size())},
         {"wireframe", wireframe_},
         {"playing", say_.playing},
-        {"say", sayProbe()}};
+        {"say", sayProbe()},
+        {"avatar", avatarSummary(document)},
+        {"avatar_mesh_report", avatarMeshReport()}};
     summary.update(polishSummary());
     summary.update(authoringProbe());
     return summary;
@@ -255,6 +277,7 @@ void EditorUi::syncGpu() {
         uploadedMergedGroups_ = groups;
         weightsKey_.clear(), errorKey_.clear(), influenceKey_.clear();
     }
+    syncContextMesh();
     updateScalars();
 }
 
@@ -367,6 +390,10 @@ void EditorUi::menuBar() {
                         session.attempt("Open folder", [&] { session.startLoadVisemeFolder(path); });
                     });
             });
+        ImGui::Separator();
+        if (ctl::MenuItem("Import avatar...")) openAvatarImport();
+        if (ctl::MenuItem("Export avatar...", nullptr, false, session.document().avatar.isSet()))
+            openAvatarExport();
         ImGui::Separator();
         if (ctl::MenuItem("Quit")) requestQuit();
         ImGui::EndMenu();
@@ -572,6 +599,7 @@ void EditorUi::mainView(ImVec2 size) {
             "main", size,
             [&](const glm::mat4& view, const glm::mat4& projection) {
                 visemeMesh_.draw(shader_, weights, view, projection, style);
+                drawContext(view, projection);
             },
             orbit);
         if (visemeMesh_.empty()) {
@@ -649,6 +677,7 @@ void EditorUi::comparisonViews(ImVec2 size) {
     const ViewportEvents left =
         beforeView_.show("before", half, [&](const glm::mat4& view, const glm::mat4& projection) {
             visemeMesh_.draw(shader_, before, view, projection, plain);
+            drawContext(view, projection);
         });
     if (session.visemes())
         viewLabel(left.imageMin, beforeLabel);
@@ -657,6 +686,7 @@ void EditorUi::comparisonViews(ImVec2 size) {
     ImGui::SameLine(0.0f, 2.0f);
     const ViewportEvents right =
         afterView_.show("after", half, [&](const glm::mat4& view, const glm::mat4& projection) {
+            drawContext(view, projection); // the avatar's meshes without visemes, greyed
             if (!grouping) return;
             mergedMesh_.draw(shader_, after, view, projection, errors);
             if (overlay) visemeMesh_.draw(shader_, before, view, projection, ghost);

@@ -195,6 +195,22 @@ class EditorUi {
     std::string importName_;
     std::string importError_; // the core's message for the last failed import, shown in the panel
 
+    // --- avatars (File > Import avatar..., panels/AvatarPanel.cpp) ---------------------------------
+    GpuMesh contextMesh_;                     // the avatar's meshes without visemes, drawn greyed
+    const void* uploadedContext_ = nullptr;   // the scan contextMesh_ shows
+    std::string avatarPattern_;               // the target pattern being typed (view state)
+    const void* avatarPatternScan_ = nullptr; // the scan avatarPattern_ was last reset from
+    int avatarNames_ = 0;                     // export: 0 original names, 1 merged
+    bool avatarTargetNormals_ = true;         // export: NORMAL/TANGENT displacements of the keys
+    int avatarMeshRow_ = -1;                  // the mesh whose import report is shown
+    std::string avatarMeshReport() const;     // that report (empty: none selected)
+    void openAvatarImport();
+    void openAvatarExport();
+    void avatarSection();       // Visemes panel: file, target pattern, meshes and their targets
+    void avatarExportSection(); // Export panel
+    void syncContextMesh();
+    void drawContext(const glm::mat4& view, const glm::mat4& projection) const;
+
     // --- issue 14 polish (view state): paint tools, one camera per subject ----------------------
     struct PaintToolState {
         PaintTool tool = PaintTool::Brush;

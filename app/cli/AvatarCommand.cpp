@@ -8,6 +8,7 @@
 #include "core/gltf/AvatarReport.h"
 #include "core/gltf/AvatarScan.h"
 #include "core/gltf/GltfDocument.h"
+#include "core/gltf/Gltfpack.h"
 #include "core/gltf/TargetNames.h"
 #include "core/phonetics/PhonemeMaps.h"
 
@@ -45,31 +46,35 @@ struct ReduceOptions {
     std::string names = "original";
     bool noTargetNormals = false;
     int maxTargets = 0;
+    bool gltfpack = false;
 };
+
+// True when the avatar was stored compressed or quantised (its reduced keys are written as floats).
+bool compressedInput(const AvatarScan& scan) {
+    for (const AvatarMesh& mesh : scan.meshes)
+        for (const AvatarPrimitive& primitive : mesh.primitives)
+            for (const std::string& storage : primitive.storage)
+                if (storage != "sparse targets") return true;
+    return false;
+}
 
 double millisecondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
 // Frequencies: a given table (with --map: phonemes), or the bundled American English phoneme table
-// with the given map, or with the bundled Oculus map when the avatar's visemes are Oculus visemes;
-// else equal frequencies. Says what it chose.
+// with the given map; without either, the core's default (the bundled table and Oculus map when the
+// avatar's visemes are Oculus visemes, else equal). Says what it chose.
 FrequencySource avatarFrequencies(const ReduceOptions& o, const AvatarScan& scan, std::string& chosen) {
     const std::filesystem::path assets = VISEMELAB_ASSETS_DIR;
+    if (o.freqFile.empty() && o.mapFile.empty())
+        return defaultAvatarFrequencies(scan, bundledPhonemeFrequencies(assets, "oculus"), &chosen);
     FrequencySource source;
     if (!o.freqFile.empty()) {
         source = loadFrequencyFile(o.freqFile);
         chosen = o.freqFile;
     }
-    std::filesystem::path map = o.mapFile;
-    if (map.empty() && o.freqFile.empty() && scan.oculusNames) {
-        const auto bundled = bundledPhonemeMaps(assets);
-        const auto oculus =
-            std::find_if(bundled.begin(), bundled.end(), [](const auto& m) { return m.id == "oculus"; });
-        if (oculus != bundled.end() && mapFitsAvatar(loadPhonemeMapFile(oculus->file), scan))
-            map = oculus->file;
-    }
-    if (!map.empty()) {
+    if (!o.mapFile.empty()) {
         if (o.freqFile.empty()) {
             source = loadFrequencyFile(defaultPhonemeTablePath(assets));
             chosen = "bundled en-us phoneme table";
@@ -78,17 +83,11 @@ FrequencySource avatarFrequencies(const ReduceOptions& o, const AvatarScan& scan
             source.phonemes = std::move(source.visemeFrequencies);
             source.visemeFrequencies = {};
         }
-        source.map = loadPhonemeMapFile(map);
-        chosen += " + map " + (o.mapFile.empty() ? std::string("oculus (bundled)") : o.mapFile);
+        source.map = loadPhonemeMapFile(o.mapFile);
+        chosen += " + map " + o.mapFile;
     }
     if (source.isPhonemeBased() && source.map.entries.empty())
         throwInputError(o.freqFile, "a phoneme frequency table needs a phoneme -> viseme map (--map FILE)");
-    if (o.freqFile.empty() && map.empty()) {
-        source = uniformFrequencies(scan);
-        chosen = scan.oculusNames
-                     ? "equal (the avatar lacks some of the Oculus map's visemes)"
-                     : "equal (not Oculus viseme names: give --freq-file, or --map for phonemes)";
-    }
     return source;
 }
 
@@ -122,10 +121,22 @@ int runReduce(const ReduceOptions& o) {
 
     const auto t1 = std::chrono::steady_clock::now();
     ProgressLine progress("reducing");
-    const AvatarReduction r = reduceAvatar(doc, scan, frequencies, settings, write, progress.callback());
+    AvatarReduction r = reduceAvatar(doc, scan, frequencies, settings, write, progress.callback());
     progress.finish();
     timings.reduceMs = millisecondsSince(t1);
     const auto t2 = std::chrono::steady_clock::now();
+    if (o.gltfpack) {
+        Recompressed packed = recompressWithGltfpack(r.glb, findGltfpack(), {o.targets});
+        r.glb = std::move(packed.glb);
+        r.summary.notes.insert(r.summary.notes.end(), packed.notes.begin(), packed.notes.end());
+    } else if (compressedInput(scan)) {
+        const std::filesystem::path gltfpack = findGltfpack();
+        r.summary.notes.push_back(
+            gltfpack.empty()
+                ? std::string("--gltfpack would re-compress the output; gltfpack is not found: ") +
+                      kGltfpackHint
+                : "--gltfpack re-compresses the output (with " + gltfpack.string() + ")");
+    }
     writeFileAtomically(o.out, r.glb);
     timings.writeMs = millisecondsSince(t2);
     if (!o.report.empty())
@@ -142,9 +153,9 @@ int runReduce(const ReduceOptions& o) {
                     m.mesh, m.name.c_str(), m.targetsBefore, m.targetsAfter, m.visemeTargets, m.keys,
                     toString(write.names));
     for (const std::string& note : r.summary.notes) std::printf("note: %s\n", note.c_str());
-    std::printf("Wrote %s (%zu bytes of binary data, was %zu)%s%s\n", o.out.c_str(),
-                r.summary.binaryBytesAfter, r.summary.binaryBytesBefore, o.report.empty() ? "" : "; report ",
-                o.report.c_str());
+    std::printf("Wrote %s (%zu bytes; %zu bytes of binary data before%s, was %zu)%s%s\n", o.out.c_str(),
+                r.glb.size(), r.summary.binaryBytesAfter, o.gltfpack ? " re-compression" : "",
+                r.summary.binaryBytesBefore, o.report.empty() ? "" : "; report ", o.report.c_str());
     return kExitOk;
 }
 
@@ -201,6 +212,9 @@ void addAvatarCommand(CLI::App& app, CommandRunner& run) {
         ->capture_default_str();
     r->add_flag("--no-target-normals", reduce->noTargetNormals,
                 "Write the keys without NORMAL/TANGENT displacements");
+    r->add_flag(
+        "--gltfpack", reduce->gltfpack,
+        "Re-compress the output with gltfpack (EXT_meshopt_compression; $VISEMELAB_GLTFPACK or on PATH)");
     r->add_option("--max-targets", reduce->maxTargets,
                   "Refuse when a primitive would have more morph targets (engines that cap them)");
     r->callback([&run, reduce] { run = [reduce] { return runReduce(*reduce); }; });

@@ -31,6 +31,7 @@ void addRenderCommand(CLI::App& app, CommandRunner& run);
 void addRefineCommand(CLI::App& app, CommandRunner& run);
 void addExportCommand(CLI::App& app, CommandRunner& run);
 void addProjectCommand(CLI::App& app, CommandRunner& run);
+void addFaceCommand(CLI::App& app, CommandRunner& run);
 void addAvatarCommand(CLI::App& app, CommandRunner& run);
 void addSayCommand(CLI::App& app, CommandRunner& run);
 

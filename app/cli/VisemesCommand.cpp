@@ -12,8 +12,10 @@
 #include "core/deform/FaceDomain.h"
 #include "core/deform/Visemes.h"
 #include "core/export/KeyMeshFiles.h"
+#include "core/face/HeadParts.h"
 #include "core/io/MeshIO.h"
 #include "core/project/JsonRead.h"
+#include "core/project/Project.h"
 
 #include <nlohmann/json.hpp>
 
@@ -28,12 +30,14 @@ namespace {
 
 struct VisemesOptions {
     std::string face = "bundled";
+    std::string project; // a project's deformable face instead of a bundled one
     std::string outDir = "visemes";
     int resolution = 38;
     std::string density = "mouth";
     CriterionOptions adaptive; // --criterion given: adaptive refinement instead of the grid
     int decimals = 6;
     std::string visemeFile; // empty: the 15 Oculus visemes
+    bool skinOnly = false;  // leave out the eyeballs, teeth, tongue and mouth cavity
 };
 
 // Viseme parameter vectors from a JSON file in the format visemes.json is written in:
@@ -111,7 +115,7 @@ MeshData buildVisemeMesh(const VisemesOptions& o, const DeformationCascade& face
 nlohmann::json describe(const VisemesOptions& o, const DeformationCascade& face, const VisemeSet& set,
                         const std::vector<VisemeParameters>& visemes) {
     nlohmann::json j;
-    j["face"] = o.face;
+    j["face"] = o.project.empty() ? o.face : o.project;
     j["resolution"] = o.resolution;
     j["density"] = o.density;
     j["decimals"] = o.decimals;
@@ -132,14 +136,24 @@ nlohmann::json describe(const VisemesOptions& o, const DeformationCascade& face,
 }
 
 int runVisemes(const VisemesOptions& o) {
-    const auto individual = face::parseIndividual(o.face, "--face");
-    const DeformationCascade cascade = face::makeFaceCascade(individual);
-    const auto visemes = o.visemeFile.empty() ? oculusVisemes() : readVisemeFile(o.visemeFile, cascade);
+    DeformationCascade cascade;
+    std::vector<VisemeParameters> visemes;
+    if (!o.project.empty()) {
+        const Project project = loadProject(o.project);
+        if (!project.deformation.isSet()) throwInputError(o.project, "the project has no deformable face");
+        cascade = project.deformation.cascade;
+        visemes = project.deformation.visemes.empty() ? oculusVisemes() : project.deformation.visemes;
+    } else {
+        cascade = face::makeFaceCascade(face::parseIndividual(o.face, "--face"));
+        visemes = oculusVisemes();
+    }
+    if (!o.visemeFile.empty()) visemes = readVisemeFile(o.visemeFile, cascade);
     const MeshData uvMesh = buildVisemeMesh(o, cascade, visemes);
     checkVisemeSetSize(visemes.size(), uvMesh.positions.size(),
                        o.visemeFile.empty() ? std::string("visemes") : o.visemeFile);
     if (o.decimals > 15) throwInputError("--decimals", "must be at most 15 (or negative for exact values)");
-    VisemeSet set = generateVisemeSet(cascade, uvMesh, visemes);
+    const auto parts = o.skinOnly ? std::vector<face::HeadPart>{} : face::makeHeadParts(cascade);
+    VisemeSet set = face::generateHeadVisemeSet(cascade, uvMesh, visemes, parts);
     roundCoordinates(set, o.decimals);
 
     const std::filesystem::path out = o.outDir;
@@ -161,6 +175,9 @@ void addVisemesCommand(CLI::App& app, CommandRunner& run) {
     auto* cmd =
         app.add_subcommand("visemes", "Write the interpolable viseme set of a bundled deformable face");
     cmd->add_option("--face", options->face, "Individual: bundled or retarget")->capture_default_str();
+    cmd->add_option(
+        "--project", options->project,
+        "Use the deformable face and viseme parameter vectors of this project (e.g. from `face build`)");
     cmd->add_option("--out", options->outDir, "Output folder (neutral.obj, <viseme>.obj, visemes.json)")
         ->capture_default_str();
     cmd->add_option("--resolution", options->resolution, "Grid cells across the (u,v) domain (10..4096)")
@@ -172,6 +189,8 @@ void addVisemesCommand(CLI::App& app, CommandRunner& run) {
     cmd->add_option(
         "--viseme-file", options->visemeFile,
         "JSON with the visemes' parameter vectors (the format of visemes.json; default: Oculus 15)");
+    cmd->add_flag("--skin-only", options->skinOnly,
+                  "Only the face's skin: leave out the eyeballs, teeth, tongue and mouth cavity");
     cmd->add_option("--decimals", options->decimals,
                     "Round coordinates to this many decimals (centimetres; negative: exact doubles)")
         ->capture_default_str();

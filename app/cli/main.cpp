@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
     vl::cli::addRefineCommand(app, run);
     vl::cli::addExportCommand(app, run);
     vl::cli::addProjectCommand(app, run);
+    vl::cli::addFaceCommand(app, run);
     vl::cli::addAvatarCommand(app, run);
     vl::cli::addSayCommand(app, run);
 

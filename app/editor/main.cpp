@@ -12,6 +12,9 @@ int main(int argc, char** argv) {
     app.add_option("--project", options.project, "Open this project file");
     app.add_flag("--sample", options.sample, "Load the bundled sample face and its visemes");
     app.add_option("--visemes", options.visemeFolder, "Load a folder of meshes (one named *neutral*)");
+    app.add_option("--avatar", options.avatar, "Import an avatar (glTF, GLB, VRM): its viseme morph targets");
+    app.add_option("--targets", options.avatarTargets,
+                   "With --avatar: glob selecting the viseme targets (default: the Oculus viseme names)");
     app.add_option("--screenshot", options.screenshot, "Render --frames frames, save this PNG and exit");
     app.add_option("--frames", options.frames, "Frames rendered before the screenshot")
         ->check(CLI::Range(1, 10000));

@@ -29,7 +29,13 @@ DeformationCascade makeFaceCascade(Individual who);
 DeformationCascade makeBundledFace();  // makeFaceCascade(Individual::Bundled)
 DeformationCascade makeRetargetFace(); // retarget(makeBundledFace(), its geometry): same fields
 
-// Preview colours (RGB in [0,1]) of the face regions at each (u,v): skin, lips, eyes, brows.
+// The eyeball an individual's lids rest on (core/face/HeadParts.h puts the eyeball part there): its
+// centre for the eye on `side` (+1 the face's left, -1 its right), in centimetres.
+Vec3 eyeballCentre(Individual who, double side);
+constexpr double kEyeballRadius = 1.2;
+
+// Preview colours (RGB in [0,1]) at each (u,v): on the skin the regions (lips, brows, nostrils, eye
+// openings), and the head's parts by their tile (face::HeadTile): eyeballs, teeth, tongue, cavity.
 std::vector<Vec3> faceColours(std::span<const Vec2> uvs);
 
 } // namespace vl::face

@@ -12,12 +12,24 @@ namespace vl::face {
 double mouthHoleHalfHeight(double u) {
     // The tolerance makes the corners exactly 0 although 0.5 - 0.1 is not exact in binary.
     const double t = std::abs(u - kMouthU) / kMouthHalfWidth;
-    return t >= 1.0 - 1e-12 ? 0.0 : kMouthHalfHeight * (1.0 - t);
+    if (t >= 1.0 - 1e-12) return 0.0;
+    return t <= kMouthFlat ? kMouthHalfHeight : kMouthHalfHeight * (1.0 - t) / (1.0 - kMouthFlat);
 }
 
 bool insideMouthHole(double u, double v) {
     // The tolerance keeps rim vertices (computed as kMouthV -/+ half-height) outside despite rounding.
     return std::abs(v - kMouthV) < mouthHoleHalfHeight(u) - 1e-12;
+}
+
+double squeezedMouthV(double u, double v, double closedGap) {
+    constexpr double kReach = 0.035;
+    const double h = mouthHoleHalfHeight(u);
+    const double d = v - kMouthV;
+    if (h == 0.0) return v;
+    if (std::abs(d) < h) return kMouthV + closedGap * d;
+    const double s = std::abs(d) - h;
+    const double shift = (1.0 - closedGap) * h * std::exp(-(s / kReach) * (s / kReach));
+    return v - std::copysign(shift, d);
 }
 
 namespace {
@@ -85,7 +97,9 @@ MeshData faceDomainMesh(int resolution, DomainDensity density) {
                        : 1.0;
     };
     const auto us =
-        gridLines({0.0, kMouthU - kMouthHalfWidth, kMouthU, kMouthU + kMouthHalfWidth, 1.0}, resolution, du);
+        gridLines({0.0, kMouthU - kMouthHalfWidth, kMouthU - kMouthFlat * kMouthHalfWidth, kMouthU,
+                   kMouthU + kMouthFlat * kMouthHalfWidth, kMouthU + kMouthHalfWidth, 1.0},
+                  resolution, du);
     const auto vs = gridLines({0.0, kMouthV, 1.0}, resolution, dv);
     const int nu = static_cast<int>(us.size()), nv = static_cast<int>(vs.size());
     const int mouthRow = static_cast<int>(std::find(vs.begin(), vs.end(), kMouthV) - vs.begin());

@@ -9,7 +9,7 @@ namespace vl::face {
 
 namespace {
 
-using detail::kEyeU;
+using detail::kEyeCentreU;
 
 InfluenceField region(Vec2 centre, Vec2 radii, Vec3 direction, double magnitude, Vec2 plateau = Vec2(0, 0),
                       Falloff falloff = Falloff::Smoothstep) {
@@ -36,12 +36,16 @@ struct Builder {
         stage.field.influences = std::move(regions);
         cascade.stages.push_back(std::move(stage));
     }
+    // A parameter that moves a head part only (no field on the skin; core/face/HeadParts.h).
+    void addPartParameter(std::string name, double min, double max) {
+        cascade.parameters.push_back({name, min, max, 0.0});
+    }
 };
 
 // side = +1 for the face's left (viewer's right, +x, u > 0.5), -1 for its right.
 std::vector<InfluenceField> frontalis(double side) {
     // Raises the brow; strongest on the brow itself, fading up the forehead and down to the lid.
-    return {region({kMouthU + side * kEyeU, 0.675}, {0.13, 0.1}, {0, 1, 0.15}, 0.75, {0.06, 0.025})};
+    return {region({kMouthU + side * kEyeCentreU, 0.675}, {0.13, 0.1}, {0, 1, 0.15}, 0.75, {0.06, 0.025})};
 }
 
 std::vector<InfluenceField> zygomatic(double side) {
@@ -57,43 +61,47 @@ std::vector<InfluenceField> risorius(double side) {
     return {region(corner, {0.11, 0.075}, {side * 1.0, -0.05, -0.35}, 0.9, {0.015, 0.012})};
 }
 
+// Regions that act on the lips' rims are level along them (the hole's flat top and bottom edges)
+// or centred on a lip's middle: a field sloping along a rim would fold the lip into a V. The upper
+// rim's middle lies outside every region that moves the lower lip (and the other way round).
+constexpr Vec2 kUpperMid{kMouthU, kMouthV + kMouthHalfHeight};
+constexpr Vec2 kLowerMid{kMouthU, kMouthV - kMouthHalfHeight};
+
 std::vector<InfluenceField> jawOpen() {
-    // Constant over the chin and the lower lip, zero at the upper lip; the outer ellipse meets the
-    // mouth line at the corners, so the lower rim opens in an arc; decreasing to the border.
-    return {region({kMouthU, 0.12}, {0.42, 0.186}, {0, -1, -0.3}, 2.1, {0.22, 0.16}),
-            // rounds the lower lip's arc, and lifts the upper lip a little as the lips part
-            region({kMouthU, kMouthV - kMouthHalfHeight}, {0.12, 0.03}, {0, -1, -0.1}, 0.5, {0, 0},
-                   Falloff::Cosine),
-            region({kMouthU, kMouthV + kMouthHalfHeight}, {0.12, 0.03}, {0, 1, 0.1}, 0.3, {0, 0},
-                   Falloff::Cosine),
-            // thin regions hugging the lower rim half-way to each corner (too thin to reach the upper
-            // rim): they widen the opening from a V into a U
-            region({kMouthU - 0.055, kMouthV - 0.013}, {0.05, 0.017}, {0, -1, -0.1}, 0.8),
-            region({kMouthU + 0.055, kMouthV - 0.013}, {0.05, 0.017}, {0, -1, -0.1}, 0.8)};
+    return {// The mandible: constant over the chin and the lower lip's flat rim, falling off to zero just
+            // below the upper rim; the corners follow about a quarter of the way. The opening is a
+            // rounded U; the field decreases to the jaw line.
+            region({kMouthU, 0.12}, {0.45, 0.197}, {0, -1, -0.28}, 2.0, {0.35, 0.163}),
+            // The lower lip drops a little further than the teeth, uncovering their edges.
+            region(kLowerMid, {0.1, 0.035}, {0, -1, -0.05}, 0.2, {0.07, 0.015}),
+            // The upper lip arches up a little as the lips part.
+            region(kUpperMid, {0.1, 0.03}, {0, 1, 0.1}, 0.2, {0.05, 0.01})};
 }
 
 std::vector<InfluenceField> lipPucker() {
-    // Forward over the lips, corners drawn to the middle, lips rounded slightly apart.
+    // Lips pushed forward, corners drawn towards the middle, and the lips apart in a small rounded
+    // opening (flat-topped regions on both middles).
     return {region({kMouthU, kMouthV}, {0.17, 0.11}, {0, 0, 1}, 1.0, {0.06, 0.035}),
             region({kMouthU - kMouthHalfWidth, kMouthV}, {0.075, 0.06}, {1, 0, 0.3}, 0.85),
             region({kMouthU + kMouthHalfWidth, kMouthV}, {0.075, 0.06}, {-1, 0, 0.3}, 0.85),
-            region({kMouthU, kMouthV + 0.035}, {0.07, 0.035}, {0, 1, 0.2}, 0.25),
-            region({kMouthU, kMouthV - 0.035}, {0.07, 0.035}, {0, -1, 0.2}, 0.25)};
+            region(kUpperMid, {0.065, 0.03}, {0, 1, 0.15}, 0.32, {0.025, 0.01}),
+            region(kLowerMid, {0.065, 0.03}, {0, -1, 0.15}, 0.32, {0.025, 0.01})};
 }
 
 std::vector<InfluenceField> lipPress() {
     // Lips rolled in and pressed together: thinner, the rims meeting.
-    return {region({kMouthU, kMouthV + 0.035}, {0.11, 0.045}, {0, -0.1, -1}, 0.4, {0.05, 0.012}),
-            region({kMouthU, kMouthV - 0.035}, {0.11, 0.045}, {0, 0.1, -1}, 0.4, {0.05, 0.012})};
+    return {region({kMouthU, kMouthV + 0.035}, {0.11, 0.045}, {0, -0.1, -1}, 0.35, {0.05, 0.012}),
+            region({kMouthU, kMouthV - 0.035}, {0.11, 0.045}, {0, 0.1, -1}, 0.35, {0.05, 0.012})};
 }
 
 std::vector<InfluenceField> upperLipRaise() {
-    return {region({kMouthU, kMouthV + 0.045}, {0.12, 0.06}, {0, 1, 0.25}, 0.55, {0.05, 0.02})};
+    // The upper lip's middle lifts (the plateau holds its rim), uncovering the upper teeth.
+    return {region({kMouthU, kMouthV + 0.045}, {0.12, 0.06}, {0, 1, 0.25}, 0.55, {0.06, 0.025})};
 }
 
 std::vector<InfluenceField> lowerLipTuck() {
     // The lower lip rises and rolls back under the upper teeth (F, V).
-    return {region({kMouthU, kMouthV - 0.035}, {0.11, 0.05}, {0, 0.45, -1}, 0.6, {0.05, 0.015})};
+    return {region(kLowerMid, {0.11, 0.038}, {0, 0.6, -1}, 0.5, {0.05, 0.015})};
 }
 
 } // namespace
@@ -117,6 +125,8 @@ DeformationCascade makeFaceCascade(Individual who) {
     b.add("lip_press", 0.0, 1.0, lipPress());
     b.add("upper_lip_raise", 0.0, 1.0, upperLipRaise());
     b.add("lower_lip_tuck", 0.0, 1.0, lowerLipTuck());
+    b.addPartParameter("tongue_up", 0.0, 1.0);
+    b.addPartParameter("tongue_out", 0.0, 1.0);
     return b.cascade;
 }
 

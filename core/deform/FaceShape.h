@@ -2,6 +2,7 @@
 // Internal to the bundled face: the analytic shapes behind its geometry image and preview colours.
 #include "core/deform/BundledFace.h"
 #include "core/deform/FaceDomain.h"
+#include "core/mesh/Mesh.h"
 
 #include <cmath>
 
@@ -29,15 +30,29 @@ inline double bump(double u, double v, double cu, double cv, double ru, double r
     return std::exp(-(a * a + b * b));
 }
 
-// Landmarks in the normalised (u,v) space (the same for every individual).
-constexpr double kEyeU = 0.135; // eye centres at 0.5 -/+ kEyeU
-constexpr double kEyeV = 0.585;
-constexpr double kBrowV = 0.66;
-constexpr double kNoseTipV = 0.415;
-constexpr double kSubnasaleV = 0.372;
+// Feature positions in the normalised (u,v) space (the same for every individual); the eye corners,
+// mouth and nose tip are the landmarks of core/deform/FaceDomain.h.
+constexpr double kEyeCentreU = 0.5 * (kEyeInnerU + kEyeOuterU); // eye centres at 0.5 -/+ this
+constexpr double kEyeCentreV = 0.5 * (kEyeInnerV + kEyeOuterV);
+constexpr double kEyeHalfLength = 0.5 * (kEyeOuterU - kEyeInnerU); // in u
+constexpr double kBrowV = 0.655;
+constexpr double kSubnasaleV = 0.378;
 constexpr double kNasionV = 0.615;
 constexpr double kUpperLipV = 0.333; // centre of the upper vermilion
 constexpr double kLowerLipV = 0.268; // centre of the lower vermilion
+
+// The eye opening (palpebral fissure) of the eye on `side` (+1 the face's left, u > 0.5): a lens
+// between the corners. Returns the position along the corner-to-corner axis in [-1 inner, 1 outer]
+// (outside that range for points beyond the corners) and the opening's upper and lower half-heights
+// there (in v); `offset` is the point's height above the axis.
+struct EyeLens {
+    double along = 0.0;
+    double offset = 0.0;
+    double upper = 0.0, lower = 0.0;
+    // Where the point is inside the opening: 1 on the axis, 0 on the lid margins, < 0 outside.
+    double inside() const;
+};
+EyeLens eyeLens(double u, double v);
 
 // The two vermilion rolls (height profile of the lips, before fullness) and, from them, the weight
 // in [0,1] of lip colour at (u,v).
@@ -48,10 +63,11 @@ inline double lowerLipBump(double u, double v) {
     return bump(u, v, kMouthU, kLowerLipV, 0.08, 0.02);
 }
 double lipWeight(double u, double v);
-// Weight of the visible eyeball (between the lids) and of the iris, for colours.
-double eyeWhiteWeight(double u, double v);
-double irisWeight(double u, double v);
 double browWeight(double u, double v);
 double nostrilWeight(double u, double v);
+
+// The eyeball of an individual (core/face/HeadParts.h places the eyeball part there): its centre in
+// the face's coordinates. The lids rest on it, the opening between them shows it.
+Vec3 eyeballCentre(const Proportions& p, double side);
 
 } // namespace vl::face::detail

@@ -20,6 +20,14 @@ inline void requireSet(const Document& document, std::string_view what) {
     if (!document.visemes) throwInputError(what, "load a viseme set first");
 }
 
+// An avatar's visemes are its morph targets, chosen by the target pattern (edit::setAvatarPattern):
+// they are not added, removed, renamed or reshaped one by one.
+inline void refuseAvatar(const Document& document, std::string_view what) {
+    if (document.avatar.isSet())
+        throwInputError(what, "the visemes come from the avatar " + document.avatar.file.filename().string() +
+                                  ": change which targets are visemes with the target pattern");
+}
+
 inline void requireFace(const Document& document, std::string_view what) {
     if (!document.face.cascade) throwInputError(what, "no face loaded");
 }

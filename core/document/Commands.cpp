@@ -3,9 +3,12 @@
 #include "core/common/Error.h"
 #include "core/common/TextParsing.h"
 #include "core/deform/BundledFace.h"
+#include "core/document/AvatarDocument.h"
 #include "core/document/CommandSupport.h"
 #include "core/document/PhonemeMapCommands.h"
 #include "core/document/VisemeCommands.h"
+#include "core/gltf/AvatarReduce.h"
+#include "core/gltf/TargetNames.h"
 
 #include <algorithm>
 #include <cmath>
@@ -15,6 +18,7 @@ namespace {
 
 using detail::checked;
 using detail::checkedIndex;
+using detail::refuseAvatar;
 using detail::requireFace;
 using detail::requireSet;
 
@@ -29,6 +33,7 @@ Document addViseme(const Document& document, const std::string& name, const Mesh
                    const std::filesystem::path& file) {
     const std::string where = file.empty() ? "viseme " + name : file.string();
     requireSet(document, where);
+    refuseAvatar(document, where);
     if (name.empty()) throwInputError(where, "the viseme needs a name");
     if (document.visemes->find(name) >= 0)
         throwInputError(where, "a viseme named '" + name + "' already exists");
@@ -45,6 +50,7 @@ Document addViseme(const Document& document, const std::string& name, const Mesh
 
 Document removeViseme(const Document& document, int index, const std::string& phonemesGoTo) {
     requireSet(document, "remove viseme");
+    refuseAvatar(document, "remove viseme");
     const std::size_t i = checkedIndex(index, document.visemeCount(), "remove viseme");
     if (document.visemeCount() <= 2)
         throwInputError("remove viseme", "a viseme set needs at least 2 visemes");
@@ -125,7 +131,8 @@ Document setPhonemeViseme(const Document& document, int phoneme, const std::stri
 
 Document setFrequencies(const Document& document, FrequencySource source) {
     Document next = document;
-    next.frequencies = std::move(source);
+    next.frequencies = document.avatar.isSet() ? matchVisemeNames(std::move(source), *document.avatar.scan)
+                                               : std::move(source);
     return checked(std::move(next));
 }
 
@@ -220,6 +227,7 @@ Document generateVisemesFromFace(const Document& document) {
     const std::vector<VisemeParameters> presets =
         document.face.presets.empty() ? oculusVisemes() : document.face.presets;
     Document next = document;
+    next.avatar = {}; // the face's visemes replace the avatar's
     auto set = std::make_shared<VisemeSet>(
         generateVisemeSet(*document.face.cascade, *document.face.domain, presets));
     next.neutralFile.clear();
@@ -273,6 +281,56 @@ Document setSpeech(const Document& document, SpeechSettings speech) {
     checkSpeechSettings(speech, "speech");
     Document next = document;
     next.speech = std::move(speech);
+    return next;
+}
+
+Document setAvatarPattern(const Document& document, const std::string& pattern,
+                          const FrequencySource& oculusTable) {
+    if (!document.avatar.isSet()) throwInputError("target pattern", "the document has no avatar");
+    if (!pattern.empty()) checkGlobPattern(pattern, "target pattern '" + pattern + "'");
+    DocumentAvatar avatar = document.avatar;
+    avatar.pattern = pattern;
+    avatar.scan = std::make_shared<const AvatarScan>(scanAvatar(*avatar.gltf, {pattern, true}));
+    if (avatar.scan->visemes.size() < 2)
+        throwInputError("target pattern '" + pattern + "'",
+                        "selects " + std::to_string(avatar.scan->visemes.size()) +
+                            " viseme(s) of the avatar; at least 2 are needed");
+    Document next = documentFromAvatar(std::move(avatar), oculusTable);
+    // Keep what still fits: each on its own, so one that no longer applies does not drop the others.
+    const auto keep = [&](auto&& apply) {
+        Document kept = next;
+        apply(kept);
+        try {
+            validateDocument(kept);
+            next = std::move(kept);
+        } catch (const InputError&) {
+        }
+    };
+    const bool sameGeometry = document.visemes && next.visemes->neutral == document.visemes->neutral;
+    keep([&](Document& d) { d.frequencies = document.frequencies; });
+    keep([&](Document& d) {
+        d.weights.mode = document.weights.mode;
+        if (sameGeometry)
+            d.weights = document.weights;
+        else if (d.weights.mode == WeightMode::Painted)
+            d.weights = {};
+    });
+    keep([&](Document& d) {
+        const std::vector<std::string> names = visemeNames(d);
+        const auto known = [&](const std::string& name) {
+            return std::find(names.begin(), names.end(), name) != names.end();
+        };
+        d.constraints = document.constraints;
+        std::erase_if(d.constraints.pinned, [&](const std::string& name) { return !known(name); });
+        const auto unknownPair = [&](const auto& pair) { return !known(pair.first) || !known(pair.second); };
+        std::erase_if(d.constraints.apart, unknownPair);
+        std::erase_if(d.constraints.together, unknownPair);
+    });
+    keep([&](Document& d) { d.target = std::min(document.target, static_cast<int>(d.visemeCount())); });
+    keep([&](Document& d) {
+        d.face = document.face;
+        d.refinement = document.refinement;
+    });
     return next;
 }
 

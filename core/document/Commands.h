@@ -55,5 +55,14 @@ Document setConstraints(const Document& document, ConstraintNames constraints);
 // What the Say panel speaks (checkSpeechSettings; whether espeak-ng knows the voice is checked when
 // it speaks).
 Document setSpeech(const Document& document, SpeechSettings speech);
+// --- avatar (core/document/AvatarDocument.h) -----------------------------------------------------
+// The avatar's visemes selected by another target pattern (empty: the Oculus visemes), from the
+// avatar in memory. Frequencies, painted weights, constraints and the target are kept where they
+// still fit the new set; otherwise the defaults of documentFromAvatar (with `oculusTable`) apply.
+// Refused (InputError naming the pattern) when it selects fewer than 2 visemes.
+// The viseme set of an avatar document is the avatar's: addViseme and removeViseme refuse it, and
+// setFrequencies reads viseme names by meaning (a table naming "aa" applies to "viseme_aa").
+Document setAvatarPattern(const Document& document, const std::string& pattern,
+                          const FrequencySource& oculusTable);
 
 } // namespace vl::edit

@@ -2,6 +2,8 @@
 
 #include "core/common/Error.h"
 #include "core/deform/FaceDomain.h"
+#include "core/document/AvatarDocument.h"
+#include "core/gltf/AvatarScan.h"
 #include "core/project/BuiltinGeometry.h"
 #include "core/project/ProjectRun.h"
 
@@ -63,7 +65,19 @@ FaceModel makeFaceModel(face::Individual individual, int resolution) {
 LoadedProject documentFromProject(const Project& project) {
     LoadedProject loaded;
     Document& document = loaded.document;
-    if (project.neutral.isSet()) {
+    if (project.avatar.isSet()) {
+        // The meshes come from the avatar, read once; the project only names its visemes.
+        try {
+            document.avatar =
+                loadDocumentAvatar(resolveProjectFile(project, project.avatar.file), project.avatar.targets);
+        } catch (const InputError& e) {
+            throwInputError((project.path.empty() ? "" : project.path.string() + ": ") + "/avatar/file",
+                            e.what());
+        }
+        checkAvatarVisemeNames(project, document.avatar.scan->visemes);
+        document.visemes = std::shared_ptr<const VisemeSet>(document.avatar.scan, &document.avatar.scan->set);
+        document.visemeFiles.assign(project.visemes.size(), {});
+    } else if (project.neutral.isSet()) {
         document.visemes = std::make_shared<const VisemeSet>(loadProjectVisemeSet(project));
         const auto absolute = [&](const std::filesystem::path& file) {
             return file.empty() ? file : std::filesystem::absolute(resolveProjectFile(project, file));
@@ -103,7 +117,10 @@ LoadedProject documentFromProject(const Project& project) {
 Project projectFromDocument(const Document& document, const std::optional<ReductionResult>& reduction,
                             const std::string& selectedViseme) {
     Project project;
-    if (const VisemeSet* set = document.visemes.get()) {
+    if (document.avatar.isSet()) {
+        project.avatar = {document.avatar.file, document.avatar.pattern};
+        for (const std::string& name : visemeNames(document)) project.visemes.push_back({name, {}, {}});
+    } else if (const VisemeSet* set = document.visemes.get()) {
         project.neutral.file = document.neutralFile;
         if (document.neutralFile.empty()) project.neutral.embedded = set->neutral;
         for (std::size_t i = 0; i < set->size(); ++i) {

@@ -12,6 +12,7 @@
 #include "core/deform/BundledFace.h"
 #include "core/deform/DeformationCascade.h"
 #include "core/deform/Visemes.h"
+#include "core/document/DocumentAvatar.h"
 #include "core/project/Project.h"
 #include "core/reduce/Frequencies.h"
 #include "core/reduce/Reduction.h"
@@ -67,6 +68,9 @@ struct Document {
     int target = 1;              // m, the number of merged visemes the reduction keeps
     ConstraintNames constraints; // pins, apart and together pairs, by viseme name
     SpeechSettings speech;       // what the Say panel speaks (text, voice, rate)
+    // Set when the viseme set was read from an avatar (core/document/AvatarDocument.h): the set is
+    // the avatar's visemes over the concatenated world-space geometry of the meshes carrying them.
+    DocumentAvatar avatar;
 
     std::size_t visemeCount() const { return visemes ? visemes->size() : 0; }
     bool operator==(const Document&) const = default;

@@ -3,6 +3,7 @@
 #include "core/common/Error.h"
 #include "core/deform/CascadeSampler.h"
 #include "core/document/CommandSupport.h"
+#include "core/face/HeadParts.h"
 
 #include <algorithm>
 #include <cmath>
@@ -12,6 +13,7 @@ namespace {
 
 using detail::checked;
 using detail::checkedIndex;
+using detail::refuseAvatar;
 using detail::requireFace;
 using detail::requireSet;
 
@@ -60,9 +62,24 @@ void followSetOrder(Entries& entries, const VisemeSet& set, NameOf nameOf) {
                      [&](const auto& a, const auto& b) { return rank(a) < rank(b); });
 }
 
-// The face at parameters q on the set's own mesh (its (u,v) and triangles).
+// The face at parameters q on the set's own mesh (its (u,v) and triangles). A whole-head set (as
+// `visemes` writes it: the skin, then the parts in their (u,v) tiles) gets its parts from
+// face::HeadParts, which carries them with the jaw and skull rather than sampling the skin there.
 std::vector<Vec3> faceOnSetMesh(const Document& document, const std::vector<double>& q) {
-    return CascadeSampler(*document.face.cascade, document.visemes->neutral.uvs).evaluate(q);
+    const DeformationCascade& cascade = *document.face.cascade;
+    const std::vector<Vec2>& uvs = document.visemes->neutral.uvs;
+    const std::vector<face::HeadPart> parts = face::makeHeadParts(cascade);
+    const face::HeadPartsSampler partSampler(cascade, parts);
+    const std::size_t partCount = partSampler.vertexCount();
+    if (partCount > 0 && uvs.size() > partCount && uvs[uvs.size() - partCount][0] >= 1.0 &&
+        uvs[uvs.size() - partCount - 1][0] <= 1.0) {
+        const std::vector<Vec2> skinUvs(uvs.begin(), uvs.end() - static_cast<std::ptrdiff_t>(partCount));
+        std::vector<Vec3> head = CascadeSampler(cascade, skinUvs).evaluate(q);
+        const std::vector<Vec3> partPositions = partSampler.evaluate(q);
+        head.insert(head.end(), partPositions.begin(), partPositions.end());
+        return head;
+    }
+    return CascadeSampler(cascade, uvs).evaluate(q);
 }
 
 // Inserts viseme `viseme` (from `file`) at `index`, with the same bookkeeping as edit::addViseme.
@@ -91,6 +108,7 @@ void checkNewVisemeName(const Document& document, const std::string& name, std::
 
 Document renameViseme(const Document& document, int index, const std::string& name) {
     requireSet(document, "rename viseme");
+    refuseAvatar(document, "rename viseme");
     const std::size_t i = checkedIndex(index, document.visemeCount(), "rename viseme");
     const std::string old = document.visemes->visemes[i].name;
     if (name == old) throwInputError("rename " + old, "the new name is the same");
@@ -105,6 +123,7 @@ Document renameViseme(const Document& document, int index, const std::string& na
 
 Document duplicateViseme(const Document& document, int index, const std::string& name) {
     requireSet(document, "duplicate viseme");
+    refuseAvatar(document, "duplicate viseme");
     const std::size_t i = checkedIndex(index, document.visemeCount(), "duplicate viseme");
     const Viseme& original = document.visemes->visemes[i];
     checkNewVisemeName(document, name, "duplicate " + original.name);
@@ -130,6 +149,7 @@ Document duplicateViseme(const Document& document, int index, const std::string&
 
 Document moveViseme(const Document& document, int from, int to) {
     requireSet(document, "move viseme");
+    refuseAvatar(document, "move viseme");
     const std::size_t a = checkedIndex(from, document.visemeCount(), "move viseme");
     const std::size_t b = checkedIndex(to, document.visemeCount(), "move viseme to");
     if (a == b) throwInputError("move " + document.visemes->visemes[a].name, "it is already there");
@@ -159,6 +179,7 @@ Document moveViseme(const Document& document, int from, int to) {
 
 Document addRestViseme(const Document& document, const std::string& name) {
     requireSet(document, "rest viseme");
+    refuseAvatar(document, "rest viseme");
     checkNewVisemeName(document, name, "rest viseme");
     Document next = document;
     insertViseme(next, next.visemeCount(), Viseme{name, {}, document.visemes->neutral.positions}, {});

@@ -40,6 +40,21 @@ FrequencySource uniformFrequencies(const AvatarScan& scan) {
     return source;
 }
 
+FrequencySource defaultAvatarFrequencies(const AvatarScan& scan, const FrequencySource& oculusTable,
+                                         std::string* chosen) {
+    const bool fits = oculusTable.isPhonemeBased() && !oculusTable.map.entries.empty() &&
+                      mapFitsAvatar(oculusTable.map, scan);
+    if (scan.oculusNames && fits) {
+        if (chosen) *chosen = "bundled en-us phoneme table + map oculus (bundled)";
+        return matchVisemeNames(oculusTable, scan);
+    }
+    if (chosen)
+        *chosen = scan.oculusNames
+                      ? "equal (the avatar lacks some of the Oculus map's visemes)"
+                      : "equal (not Oculus viseme names: give --freq-file, or --map for phonemes)";
+    return uniformFrequencies(scan);
+}
+
 AvatarReduction reduceAvatar(const GltfDocument& doc, const AvatarScan& scan,
                              const FrequencySource& frequencies, const ReduceSettings& settings,
                              const AvatarWriteOptions& write, const ProgressCallback& progress) {

@@ -26,6 +26,13 @@ bool mapFitsAvatar(const PhonemeVisemeMap& map, const AvatarScan& scan);
 // Equal frequencies for every viseme of the avatar.
 FrequencySource uniformFrequencies(const AvatarScan& scan);
 
+// What an avatar reduces with when the user gave no table: `oculusTable` (a phoneme table with an
+// Oculus phoneme -> viseme map, e.g. the bundled en-us table and map) matched to the avatar's names
+// when its visemes are Oculus visemes and the map names only visemes the avatar has; else equal
+// frequencies. `chosen` (optional) says which, for messages.
+FrequencySource defaultAvatarFrequencies(const AvatarScan& scan, const FrequencySource& oculusTable,
+                                         std::string* chosen = nullptr);
+
 struct AvatarReduction {
     ReduceOutcome outcome;
     ReducedModel model; // keys over the concatenated geometry, phoneme -> key

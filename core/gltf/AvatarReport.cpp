@@ -47,6 +47,43 @@ std::vector<std::string> suggestedPatterns(const AvatarScan& scan) {
     return out;
 }
 
+std::string formatAvatarMeshReport(const AvatarMesh& m) {
+    std::string out;
+    out += "mesh " + std::to_string(m.index) + " \"" + m.name + "\"";
+    if (m.node >= 0) out += " at node " + std::to_string(m.node);
+    if (m.skin >= 0) out += ", skinned (skin " + std::to_string(m.skin) + ")";
+    out += ": " + std::to_string(m.primitives.size()) + " primitive" + (m.primitives.size() == 1 ? "" : "s") +
+           ", " + std::to_string(m.targets.size()) + " morph targets";
+    if (!m.note.empty()) out += " (" + m.note + ")";
+    out += "\n";
+    for (std::size_t p = 0; p < m.primitives.size(); ++p) {
+        const AvatarPrimitive& prim = m.primitives[p];
+        out += "  primitive " + std::to_string(p) + ": " + modeName(prim.mode) + ", " +
+               withCommas(prim.vertices) + " vertices";
+        if (m.carriesVisemes) out += ", " + withCommas(prim.triangles) + " triangles";
+        if (!prim.storage.empty()) out += " [" + joined(prim.storage) + "]";
+        out += "\n";
+    }
+    std::vector<std::string> visemes;
+    std::vector<std::pair<std::string, std::vector<std::string>>> ignored; // by reason, in order met
+    for (const AvatarTarget& t : m.targets) {
+        if (t.viseme >= 0) {
+            visemes.push_back(t.name);
+            continue;
+        }
+        auto it =
+            std::find_if(ignored.begin(), ignored.end(), [&](const auto& r) { return r.first == t.ignored; });
+        if (it == ignored.end()) it = ignored.insert(ignored.end(), {t.ignored, {}});
+        it->second.push_back(t.name);
+    }
+    if (!visemes.empty()) out += "  visemes: " + joined(visemes, " ") + "\n";
+    if (m.carriesVisemes || visemes.empty())
+        for (const auto& [reason, names] : ignored)
+            if (m.carriesVisemes || reason.rfind("same", 0) == 0)
+                out += "  kept as they are (" + reason + "): " + joined(names, " ") + "\n";
+    return out;
+}
+
 std::string formatAvatarReport(const AvatarScan& scan) {
     std::size_t primitives = 0;
     for (const AvatarMesh& m : scan.meshes) primitives += m.primitives.size();
@@ -73,41 +110,7 @@ std::string formatAvatarReport(const AvatarScan& scan) {
         if (!patterns.empty()) out += "; targets match --targets '" + joined(patterns, "' or '") + "'";
         out += "\n";
     }
-    for (const AvatarMesh& m : scan.meshes) {
-        out += "mesh " + std::to_string(m.index) + " \"" + m.name + "\"";
-        if (m.node >= 0) out += " at node " + std::to_string(m.node);
-        if (m.skin >= 0) out += ", skinned (skin " + std::to_string(m.skin) + ")";
-        out += ": " + std::to_string(m.primitives.size()) + " primitive" +
-               (m.primitives.size() == 1 ? "" : "s") + ", " + std::to_string(m.targets.size()) +
-               " morph targets";
-        if (!m.note.empty()) out += " (" + m.note + ")";
-        out += "\n";
-        for (std::size_t p = 0; p < m.primitives.size(); ++p) {
-            const AvatarPrimitive& prim = m.primitives[p];
-            out += "  primitive " + std::to_string(p) + ": " + modeName(prim.mode) + ", " +
-                   withCommas(prim.vertices) + " vertices";
-            if (m.carriesVisemes) out += ", " + withCommas(prim.triangles) + " triangles";
-            if (!prim.storage.empty()) out += " [" + joined(prim.storage) + "]";
-            out += "\n";
-        }
-        std::vector<std::string> visemes;
-        std::vector<std::pair<std::string, std::vector<std::string>>> ignored; // by reason, in order met
-        for (const AvatarTarget& t : m.targets) {
-            if (t.viseme >= 0) {
-                visemes.push_back(t.name);
-                continue;
-            }
-            auto it = std::find_if(ignored.begin(), ignored.end(),
-                                   [&](const auto& r) { return r.first == t.ignored; });
-            if (it == ignored.end()) it = ignored.insert(ignored.end(), {t.ignored, {}});
-            it->second.push_back(t.name);
-        }
-        if (!visemes.empty()) out += "  visemes: " + joined(visemes, " ") + "\n";
-        if (m.carriesVisemes || visemes.empty())
-            for (const auto& [reason, names] : ignored)
-                if (m.carriesVisemes || reason.rfind("same", 0) == 0)
-                    out += "  kept as they are (" + reason + "): " + joined(names, " ") + "\n";
-    }
+    for (const AvatarMesh& m : scan.meshes) out += formatAvatarMeshReport(m);
     return out;
 }
 

@@ -12,6 +12,9 @@
 namespace vl {
 
 std::string formatAvatarReport(const AvatarScan& scan);
+// The part of it about one mesh: node, skin, primitives (vertices, storage), its visemes and the
+// targets kept as they are, with why.
+std::string formatAvatarMeshReport(const AvatarMesh& mesh);
 nlohmann::ordered_json avatarReportJson(const AvatarScan& scan);
 
 // Patterns of known naming conventions that match some target of the file (e.g. VRoid's

@@ -216,35 +216,42 @@ AvatarScan scan(const GltfDocument& doc, const AvatarSelection& selection) {
     if (n > kMaxAvatarVisemes)
         doc.fail("", std::to_string(n) + " distinct targets selected as visemes (" + scan.selection +
                          "); at most " + std::to_string(kMaxAvatarVisemes) + " are supported");
-    // Geometry of the meshes carrying visemes, primitive by primitive. Everything allocated grows with
-    // data already read and checked, never with a declared count.
+    // Geometry of the meshes carrying visemes, primitive by primitive, and (when asked) of the others,
+    // for showing them. Everything allocated grows with data already read and checked, never with a
+    // declared count.
     std::vector<std::vector<Vec3>> deltas(n);
     scan.set.neutralSource = doc.source;
     for (AvatarMesh& mesh : scan.meshes) {
-        if (!mesh.carriesVisemes) continue;
+        if (!mesh.carriesVisemes && !selection.context) continue;
+        MeshData& out = mesh.carriesVisemes ? scan.set.neutral : scan.context;
         Placement placement;
         if (mesh.node >= 0) placement.node = scene.world[static_cast<std::size_t>(mesh.node)];
         if (mesh.skin >= 0) placement.joints = skinRestMatrices(doc, reader, scene, mesh.skin);
-        if (mesh.uses > 1)
+        if (mesh.carriesVisemes && mesh.uses > 1)
             mesh.note = "measured at node " + std::to_string(mesh.node) + " (one of " +
                         std::to_string(mesh.uses) + ")";
-        if (mesh.uses == 0) mesh.note = "not placed by any node: measured untransformed";
+        if (mesh.carriesVisemes && mesh.uses == 0)
+            mesh.note = "not placed by any node: measured untransformed";
         const tinygltf::Mesh& gm = doc.model.meshes[static_cast<std::size_t>(mesh.index)];
         for (std::size_t p = 0; p < gm.primitives.size(); ++p) {
             const tinygltf::Primitive& prim = gm.primitives[p];
             AvatarPrimitive& info = mesh.primitives[p];
             const std::string where = primitiveWhere(mesh.index, p);
             const int position = attribute(prim.attributes, "POSITION");
-            if (position < 0) doc.fail(where, "has morph targets but no POSITION");
+            if (position < 0) {
+                if (!mesh.carriesVisemes) continue; // nothing to show
+                doc.fail(where, "has morph targets but no POSITION");
+            }
             std::vector<std::uint32_t> indices;
             const bool draco = hasDraco(doc, mesh.index, static_cast<int>(p));
             if (draco) indices = decodeDracoPrimitive(doc, views, reader, mesh.index, static_cast<int>(p));
             const std::vector<float> local = reader.floats(position, TINYGLTF_TYPE_VEC3, where + "/POSITION");
             info.vertices = local.size() / 3;
-            info.firstVertex = scan.set.neutral.positions.size();
-            if (info.firstVertex + info.vertices > 0xFFFFFFFFu)
+            const std::size_t first = out.positions.size();
+            if (mesh.carriesVisemes) info.firstVertex = first;
+            if (first + info.vertices > 0xFFFFFFFFu)
                 doc.fail(where, "more than 2^32 vertices in the meshes carrying visemes");
-            if (n > 0 && (info.firstVertex + info.vertices) > kMaxAvatarVisemeBytes / (24 * n))
+            if (n > 0 && (first + info.vertices) > kMaxAvatarVisemeBytes / (24 * n))
                 doc.fail(where, "the viseme set would exceed " + std::to_string(kMaxAvatarVisemeBytes >> 20) +
                                     " MiB");
             if (!draco) {
@@ -259,10 +266,9 @@ AvatarScan scan(const GltfDocument& doc, const AvatarSelection& selection) {
             if (info.mode == TINYGLTF_MODE_TRIANGLES && indices.size() % 3 != 0)
                 doc.fail(where, "TRIANGLES with " + std::to_string(indices.size()) +
                                     " indices (not a multiple of 3)");
-            const std::vector<Triangle> triangles = trianglesOf(indices, info.mode, info.firstVertex);
+            const std::vector<Triangle> triangles = trianglesOf(indices, info.mode, first);
             info.triangles = triangles.size();
-            scan.set.neutral.triangles.insert(scan.set.neutral.triangles.end(), triangles.begin(),
-                                              triangles.end());
+            out.triangles.insert(out.triangles.end(), triangles.begin(), triangles.end());
 
             std::vector<glm::dmat4> perVertex;
             if (!placement.joints.empty())
@@ -273,9 +279,10 @@ AvatarScan scan(const GltfDocument& doc, const AvatarSelection& selection) {
             for (std::size_t v = 0; v < info.vertices; ++v) {
                 const glm::dvec4 w =
                     matrixOf(v) * glm::dvec4(local[3 * v], local[3 * v + 1], local[3 * v + 2], 1.0);
-                scan.set.neutral.positions.emplace_back(w.x, w.y, w.z);
+                out.positions.emplace_back(w.x, w.y, w.z);
             }
-            for (auto& d : deltas) d.resize(scan.set.neutral.positions.size(), Vec3(0, 0, 0));
+            if (!mesh.carriesVisemes) continue;
+            for (auto& d : deltas) d.resize(out.positions.size(), Vec3(0, 0, 0));
             for (std::size_t k = 0; k < mesh.targets.size(); ++k) {
                 const int viseme = mesh.targets[k].viseme;
                 const int delta = viseme < 0 ? -1 : attribute(prim.targets[k], "POSITION");
@@ -283,10 +290,10 @@ AvatarScan scan(const GltfDocument& doc, const AvatarSelection& selection) {
                 const std::vector<float> d =
                     reader.floats(delta, TINYGLTF_TYPE_VEC3,
                                   where + "/targets/" + std::to_string(k) + "/POSITION", info.vertices);
-                auto& out = deltas[static_cast<std::size_t>(viseme)];
+                auto& target = deltas[static_cast<std::size_t>(viseme)];
                 for (std::size_t v = 0; v < info.vertices; ++v) {
                     const glm::dvec4 w = matrixOf(v) * glm::dvec4(d[3 * v], d[3 * v + 1], d[3 * v + 2], 0.0);
-                    out[info.firstVertex + v] += Vec3(w.x, w.y, w.z);
+                    target[first + v] += Vec3(w.x, w.y, w.z);
                 }
             }
         }

@@ -24,7 +24,8 @@ inline constexpr std::size_t kMaxAvatarVisemes = 64;
 inline constexpr std::size_t kMaxAvatarVisemeBytes = std::size_t{3} << 30;
 
 struct AvatarSelection {
-    std::string pattern; // glob over target names (core/gltf/TargetNames.h); empty: the Oculus visemes
+    std::string pattern;  // glob over target names (core/gltf/TargetNames.h); empty: the Oculus visemes
+    bool context = false; // also read the meshes without visemes (AvatarScan::context), e.g. to show them
 };
 
 struct AvatarTarget {
@@ -62,6 +63,7 @@ struct AvatarScan {
     std::vector<std::string> visemeKeys; // the joining key of each (core/gltf/TargetNames)
     bool oculusNames = false;            // every viseme is an Oculus viseme
     VisemeSet set;                       // world-space geometry of the meshes carrying visemes
+    MeshData context; // with AvatarSelection::context: the other meshes, world space (rest pose)
     std::vector<std::string> extensionsUsed, extensionsRequired;
     std::size_t fileVertices = 0; // POSITION counts of every primitive of every mesh
 };

@@ -34,18 +34,23 @@ bool isMeshFile(const std::filesystem::path& path) {
     return formatOfExtension(path).has_value();
 }
 
-MeshData readMesh(const std::filesystem::path& path) {
+namespace {
+
+MeshData readMeshFile(const std::filesystem::path& path, CornerTexCoords* corners) {
     const MeshFormat format = meshFormatFromPath(path);
     const std::string bytes = readFileToString(path);
     const std::string source = path.string();
     try {
         switch (format) {
         case MeshFormat::Obj:
-            return parseObj(bytes, source);
-        case MeshFormat::Ply:
-            return parsePly(bytes, source);
+            return corners ? parseObj(bytes, source, *corners) : parseObj(bytes, source);
+        case MeshFormat::Ply: {
+            MeshData mesh = parsePly(bytes, source);
+            if (corners && mesh.hasUVs()) *corners = {mesh.uvs, mesh.triangles};
+            return mesh;
+        }
         case MeshFormat::Vrml:
-            return parseVrml(bytes, source);
+            return corners ? parseVrml(bytes, source, *corners) : parseVrml(bytes, source);
         }
     } catch (const std::bad_alloc&) {
         // Memory grows linearly with the file's size; a machine short of it still gets the file's name.
@@ -53,6 +58,17 @@ MeshData readMesh(const std::filesystem::path& path) {
                         "not enough memory to read this mesh (" + std::to_string(bytes.size()) + " bytes)");
     }
     throwInputError(source, "unknown mesh format");
+}
+
+} // namespace
+
+MeshData readMesh(const std::filesystem::path& path) {
+    return readMeshFile(path, nullptr);
+}
+
+MeshData readMesh(const std::filesystem::path& path, CornerTexCoords& corners) {
+    corners = {};
+    return readMeshFile(path, &corners);
 }
 
 std::string formatMesh(const std::filesystem::path& path, const MeshData& mesh) {

@@ -30,6 +30,17 @@ namespace vl {
 
 enum class MeshFormat { Obj, Ply, Vrml };
 
+// Texture coordinates as the file indexes them, per triangle corner: what a tool needs that samples
+// a surface over its (u,v) and so must see the UV seams that one (u,v) per vertex hides (core/face).
+// triangles[f][k] indexes texCoords for corner k of mesh triangle f (the same fan triangulation);
+// a corner the file gives no texture coordinate is kNoTexCoord. Both are empty for a file without
+// texture coordinates. For PLY (one (u,v) per vertex) texCoords are the vertices' (u,v).
+struct CornerTexCoords {
+    static constexpr std::uint32_t kNoTexCoord = 0xFFFFFFFFu;
+    std::vector<Vec2> texCoords;
+    std::vector<Triangle> triangles;
+};
+
 // Chooses the format from the extension (.obj, .ply, .wrl/.vrml, any letter case); throws
 // InputError otherwise.
 MeshFormat meshFormatFromPath(const std::filesystem::path& path);
@@ -37,6 +48,8 @@ bool isMeshFile(const std::filesystem::path& path);
 
 // Reads any supported format; the result has at least one vertex and one triangle.
 MeshData readMesh(const std::filesystem::path& path);
+// The same, and the file's per-corner texture coordinates.
+MeshData readMesh(const std::filesystem::path& path, CornerTexCoords& corners);
 // Writes atomically (temp file + rename) in the format of the extension.
 void writeMesh(const std::filesystem::path& path, const MeshData& mesh);
 // The file contents writeMesh writes, for writers that stage files (core/common/OutputSet.h).
@@ -50,6 +63,8 @@ std::string formatMesh(const std::filesystem::path& path, const MeshData& mesh);
 // unknown ones starting with v or f (say `V` or `vx`), which are rejected: skipping a line that may
 // be a vertex would renumber every vertex after it. Line continuations ('\') are not supported.
 MeshData parseObj(std::string_view text, std::string_view source);
+// The same, and the file's per-corner texture coordinates.
+MeshData parseObj(std::string_view text, std::string_view source, CornerTexCoords& corners);
 // `v` lines, `vt` lines when the mesh has (u,v), and `f a b c` or `f a/a b/b c/c`.
 std::string formatObj(const MeshData& mesh);
 
@@ -68,6 +83,7 @@ std::string formatPly(const MeshData& mesh); // binary little-endian, float64: b
 // TextureCoordinate nodes is resolved; a USE of a whole IndexedFaceSet does not add its geometry
 // again. PROTO declarations are skipped. VRML 1.0 and gzip-compressed files are rejected.
 MeshData parseVrml(std::string_view text, std::string_view source);
+MeshData parseVrml(std::string_view text, std::string_view source, CornerTexCoords& corners);
 // `#VRML V2.0 utf8` with one Shape { IndexedFaceSet } holding all vertices and triangles, and a
 // TextureCoordinate with one (u,v) per vertex (no texCoordIndex) when the mesh has them.
 std::string formatVrml(const MeshData& mesh);

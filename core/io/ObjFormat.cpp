@@ -25,7 +25,8 @@ std::string_view nextToken(std::string_view line, std::size_t& pos) {
 
 class ObjParser {
   public:
-    ObjParser(std::string_view text, std::string_view source) : text_(text), source_(source) {}
+    ObjParser(std::string_view text, std::string_view source, CornerTexCoords* corners)
+        : text_(text), source_(source), cornerTexCoords_(corners) {}
 
     MeshData run() {
         meshio::requireNotBlank(text_, source_);
@@ -114,6 +115,7 @@ class ObjParser {
 
     void parseFace(std::string_view line, std::size_t pos) {
         corners_.clear();
+        texCorners_.clear();
         for (std::string_view token = nextToken(line, pos); !token.empty(); token = nextToken(line, pos)) {
             // Corner forms: v, v/vt, v//vn, v/vt/vn. Normals are not used.
             const std::size_t slash = token.find('/');
@@ -131,8 +133,9 @@ class ObjParser {
             const auto v =
                 static_cast<std::uint32_t>(resolveIndex(vertexToken, mesh_.positions.size(), false));
             corners_.push_back(v);
+            std::int64_t t = -1;
             if (!textureToken.empty()) {
-                const std::int64_t t = resolveIndex(textureToken, texCoords_.size(), true);
+                t = resolveIndex(textureToken, texCoords_.size(), true);
                 if (v < mesh_.positions.size()) {
                     // Grown only to vertices that exist: a huge index in a tiny file allocates nothing.
                     if (v >= cornerUV_.size()) cornerUV_.resize(mesh_.positions.size(), -1);
@@ -141,9 +144,13 @@ class ObjParser {
                     forwardUV_.push_back({v, t});
                 }
             }
+            texCorners_.push_back(t < 0 ? CornerTexCoords::kNoTexCoord : static_cast<std::uint32_t>(t));
         }
         const std::string problem = meshio::appendPolygonFan(corners_, faceCount_++, 1, mesh_.triangles);
         if (!problem.empty()) throwInputError(where(), problem);
+        if (cornerTexCoords_) // the same fan over the texture corners
+            for (std::size_t k = 2; k < texCorners_.size(); ++k)
+                cornerTexCoords_->triangles.push_back({texCorners_[0], texCorners_[k - 1], texCorners_[k]});
     }
 
     MeshData finish() {
@@ -162,6 +169,12 @@ class ObjParser {
         for (auto it = forwardUV_.rbegin(); it != forwardUV_.rend(); ++it)
             cornerUV_[it->vertex] = it->texCoord;
         mesh_.uvs = meshio::uvsFromFirstCorners(cornerUV_, texCoords_);
+        if (cornerTexCoords_) {
+            if (mesh_.uvs.empty())
+                *cornerTexCoords_ = {};
+            else
+                cornerTexCoords_->texCoords = texCoords_;
+        }
         return std::move(mesh_);
     }
 
@@ -173,6 +186,8 @@ class ObjParser {
     std::vector<Vec2> texCoords_;
     std::vector<std::int64_t> cornerUV_; // per vertex (grown on use): first corner's texture coordinate or -1
     std::vector<std::uint32_t> corners_;
+    std::vector<std::uint32_t> texCorners_; // the face's texture coordinate per corner, or kNoTexCoord
+    CornerTexCoords* cornerTexCoords_;      // filled when the caller asks for corner texture coordinates
     std::vector<ForwardReference> forward_;
     // Texture coordinates of corners whose vertex is defined further down (range-checked in finish()).
     struct ForwardUV {
@@ -185,7 +200,12 @@ class ObjParser {
 } // namespace
 
 MeshData parseObj(std::string_view text, std::string_view source) {
-    return ObjParser(text, source).run();
+    return ObjParser(text, source, nullptr).run();
+}
+
+MeshData parseObj(std::string_view text, std::string_view source, CornerTexCoords& corners) {
+    corners = {};
+    return ObjParser(text, source, &corners).run();
 }
 
 std::string formatObj(const MeshData& mesh) {

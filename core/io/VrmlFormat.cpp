@@ -44,8 +44,8 @@ bool looksNumeric(std::string_view token) {
 
 class VrmlParser {
   public:
-    VrmlParser(std::string_view text, std::string_view source)
-        : source_(source), tokens_(meshio::tokenizeVrml(text, source)) {}
+    VrmlParser(std::string_view text, std::string_view source, CornerTexCoords* corners)
+        : source_(source), tokens_(meshio::tokenizeVrml(text, source)), cornerTexCoords_(corners) {}
 
     MeshData run() {
         while (i_ < tokens_.size()) {
@@ -65,6 +65,12 @@ class VrmlParser {
         meshio::requireVerticesAndFaces(mesh_, source_);
         cornerUV_.resize(mesh_.positions.size(), -1);
         mesh_.uvs = meshio::uvsFromFirstCorners(cornerUV_, texCoords_);
+        if (cornerTexCoords_) {
+            if (mesh_.uvs.empty())
+                *cornerTexCoords_ = {};
+            else
+                cornerTexCoords_->texCoords = texCoords_;
+        }
         return std::move(mesh_);
     }
 
@@ -291,7 +297,7 @@ class VrmlParser {
         if (set.hasTexCoord && !separateTexIndex) // coordIndex indexes the texture coordinates too
             for (std::size_t k = 0; k < std::min(pointCount, texCount); ++k)
                 cornerUV_[vertexOffset + k] = static_cast<std::int64_t>(texOffset + k);
-        std::vector<std::uint32_t> corners;
+        std::vector<std::uint32_t> corners, texCorners;
         std::vector<Triangle> triangles;
         for (std::size_t k = 0; k < set.coordIndex.size(); ++k) {
             const IndexEntry& entry = set.coordIndex[k];
@@ -303,12 +309,22 @@ class VrmlParser {
                 auto& uv = cornerUV_[vertexOffset + static_cast<std::size_t>(entry.value)];
                 if (separateTexIndex && uv < 0) // first corner wins
                     uv = static_cast<std::int64_t>(texOffset) + set.texCoordIndex[k].value;
+                const std::int64_t texture = !set.hasTexCoord   ? -1
+                                             : separateTexIndex ? set.texCoordIndex[k].value
+                                                                : entry.value;
+                texCorners.push_back(texture < 0 ? CornerTexCoords::kNoTexCoord
+                                                 : static_cast<std::uint32_t>(texOffset + texture));
             }
             // The last face may omit its closing -1.
             if (entry.value == -1 || k + 1 == set.coordIndex.size()) {
                 const std::string problem = meshio::appendPolygonFan(corners, faceCount_++, 0, triangles);
                 if (!problem.empty()) throwInputError(whereLine(entry.line), problem);
+                if (cornerTexCoords_) // the same fan over the texture corners
+                    for (std::size_t c = 2; c < texCorners.size(); ++c)
+                        cornerTexCoords_->triangles.push_back(
+                            {texCorners[0], texCorners[c - 1], texCorners[c]});
                 corners.clear();
+                texCorners.clear();
             }
         }
         for (const auto& t : triangles)
@@ -327,18 +343,32 @@ class VrmlParser {
     MeshData mesh_;
     std::vector<Vec2> texCoords_;
     std::vector<std::int64_t> cornerUV_;
+    CornerTexCoords* cornerTexCoords_; // filled when the caller asks for corner texture coordinates
 };
 
 } // namespace
 
-MeshData parseVrml(std::string_view text, std::string_view source) {
+namespace {
+
+MeshData parseVrmlText(std::string_view text, std::string_view source, CornerTexCoords* corners) {
     meshio::requireNotBlank(text, source);
     if (text.size() >= 2 && static_cast<unsigned char>(text[0]) == 0x1f &&
         static_cast<unsigned char>(text[1]) == 0x8b)
         throwInputError(source, "gzip-compressed VRML is not supported; decompress it first (gunzip)");
     if (text.starts_with("#VRML V1.0"))
         throwInputError(fileLine(source, 1), "VRML 1.0 is not supported; only VRML97 (#VRML V2.0 utf8)");
-    return VrmlParser(text, source).run();
+    return VrmlParser(text, source, corners).run();
+}
+
+} // namespace
+
+MeshData parseVrml(std::string_view text, std::string_view source) {
+    return parseVrmlText(text, source, nullptr);
+}
+
+MeshData parseVrml(std::string_view text, std::string_view source, CornerTexCoords& corners) {
+    corners = {};
+    return parseVrmlText(text, source, &corners);
 }
 
 // The layout XfacePlayer's VRML loader reads (it loops on other legal VRML97): values separated by

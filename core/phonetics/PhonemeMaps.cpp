@@ -2,6 +2,7 @@
 
 #include "core/common/Error.h"
 #include "core/phonetics/Arpabet.h"
+#include "core/phonetics/PhonemeTableIO.h"
 #include "core/speech/Utterance.h"
 
 #include <algorithm>
@@ -79,6 +80,12 @@ std::vector<BundledPhonemeMap> bundledPhonemeMaps(const std::filesystem::path& a
 
 std::filesystem::path defaultPhonemeTablePath(const std::filesystem::path& assetsDir) {
     return assetsDir / "phonemes" / "en-us_frequencies.csv";
+}
+
+FrequencySource bundledPhonemeFrequencies(const std::filesystem::path& assetsDir, const std::string& mapId) {
+    for (const BundledPhonemeMap& map : bundledPhonemeMaps(assetsDir))
+        if (map.id == mapId) return loadPhonemeFrequencySource(defaultPhonemeTablePath(assetsDir), map.file);
+    throwInputError("phoneme map", "no bundled map '" + mapId + "'");
 }
 
 } // namespace vl

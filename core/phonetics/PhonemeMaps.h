@@ -39,4 +39,7 @@ std::vector<BundledPhonemeMap> bundledPhonemeMaps(const std::filesystem::path& a
 // The bundled American English phoneme frequency table (CSV).
 std::filesystem::path defaultPhonemeTablePath(const std::filesystem::path& assetsDir);
 
+// That table with the bundled map `mapId` (throws InputError for an unknown id).
+FrequencySource bundledPhonemeFrequencies(const std::filesystem::path& assetsDir, const std::string& mapId);
+
 } // namespace vl

@@ -70,6 +70,16 @@ struct ProjectEditorState {
     bool operator==(const ProjectEditorState&) const = default;
 };
 
+// An avatar the viseme meshes come from (the editor's File > Import avatar...): the neutral and every
+// viseme are read from the file (core/gltf/AvatarScan.h); the project's visemes only name them, in
+// the avatar's order.
+struct ProjectAvatar {
+    std::filesystem::path file; // relative to the project file's folder, or absolute; empty = none
+    std::string targets;        // glob selecting the viseme targets; empty = the Oculus visemes
+    bool isSet() const { return !file.empty(); }
+    bool operator==(const ProjectAvatar&) const = default;
+};
+
 struct Project {
     // The project file this state belongs to. Not stored in the file; relative mesh paths resolve
     // against its folder. Empty for a project that has never been saved.
@@ -84,6 +94,7 @@ struct Project {
     ProjectReduction reduction;
     SpeechSettings speech; // what the editor's Say speaks; the file's "speech" section (optional)
     ProjectEditorState editor;
+    ProjectAvatar avatar; // set: neutral is unset and every viseme has only its name
 
     int findViseme(std::string_view name) const; // index or -1
     // Every field, compared exactly (doubles by value: NaN is never equal); where a table was read

@@ -118,6 +118,7 @@ Project rebaseProject(const Project& project, const std::filesystem::path& newFi
     };
     rebase(rebased.neutral.file);
     for (auto& viseme : rebased.visemes) rebase(viseme.file);
+    rebase(rebased.avatar.file);
     return rebased;
 }
 

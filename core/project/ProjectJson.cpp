@@ -33,12 +33,6 @@ void checkFile(const JsonNode& node, const std::filesystem::path& file, const Pr
         node.fail("file not found (" + resolved.string() + ")");
 }
 
-std::filesystem::path fileFromJson(const JsonNode& node, const ProjectReadContext& context) {
-    const std::filesystem::path file(node.nonEmptyString());
-    checkFile(node, file, context);
-    return file;
-}
-
 Json neutralToJson(const ProjectNeutral& neutral) {
     if (!neutral.file.empty() && !neutral.embedded.positions.empty())
         throwInputError("/neutral", "has both a file and embedded data; clear one of them");
@@ -159,6 +153,12 @@ ProjectWeights weightsFromJson(const JsonNode& node, const ProjectNeutral& neutr
 
 } // namespace
 
+std::filesystem::path fileFromJson(const JsonNode& node, const ProjectReadContext& context) {
+    const std::filesystem::path file(node.nonEmptyString());
+    checkFile(node, file, context);
+    return file;
+}
+
 Json projectToJson(const Project& project) {
     std::vector<std::string> names;
     for (const auto& v : project.visemes) names.push_back(v.name);
@@ -169,7 +169,8 @@ Json projectToJson(const Project& project) {
     root["neutral"] = neutralToJson(project.neutral);
     Json visemes = Json::array();
     for (std::size_t i = 0; i < project.visemes.size(); ++i)
-        visemes.push_back(visemeToJson(project.visemes[i], i));
+        visemes.push_back(project.avatar.isSet() ? Json{{"name", project.visemes[i].name}}
+                                                 : visemeToJson(project.visemes[i], i));
     root["visemes"] = std::move(visemes);
     root["frequencies"] = frequenciesToJson(project.frequencies);
     root["weights"] = weightsToJson(project.weights);
@@ -178,25 +179,36 @@ Json projectToJson(const Project& project) {
     root["reduction"] = reductionToJson(project.reduction, names);
     if (!project.speech.isDefault()) root["speech"] = speechToJson(project.speech);
     root["editor"] = Json{{"selectedViseme", project.editor.selectedViseme}};
+    if (project.avatar.isSet()) root["avatar"] = avatarToJson(project.avatar);
     return root;
 }
 
 Project projectFromJson(const JsonNode& root, const ProjectReadContext& context) {
     root.allowOnly({"format", "version", "neutral", "visemes", "frequencies", "weights", "deformation",
-                    "refinement", "reduction", "speech", "editor"});
+                    "refinement", "reduction", "speech", "editor", "avatar"});
     Project project;
     project.neutral = neutralFromJson(root["neutral"], context);
+    if (root.has("avatar")) {
+        project.avatar = avatarFromJson(root["avatar"], context);
+        if (project.neutral.isSet())
+            root["neutral"].fail("must be null: the meshes of an avatar project come from /avatar/file");
+    }
 
     const JsonNode visemes = root["visemes"];
     std::vector<std::string> names;
     std::unordered_set<std::string> seen; // linear-time duplicate check, however many visemes
     for (const JsonNode& v : visemes.elements()) {
-        project.visemes.push_back(visemeFromJson(v, project.neutral, context));
+        if (project.avatar.isSet()) { // the avatar holds the meshes: a viseme is its name
+            v.allowOnly({"name"});
+            project.visemes.push_back({v["name"].nonEmptyString(), {}, {}});
+        } else {
+            project.visemes.push_back(visemeFromJson(v, project.neutral, context));
+        }
         const std::string& name = project.visemes.back().name;
         if (!seen.insert(name).second) v["name"].fail("duplicate viseme name \"" + name + "\"");
         names.push_back(name);
     }
-    if (!names.empty() && !project.neutral.isSet())
+    if (!names.empty() && !project.neutral.isSet() && !project.avatar.isSet())
         root["neutral"].fail("a neutral mesh is required when visemes are listed");
 
     if (root.has("frequencies")) project.frequencies = frequenciesFromJson(root["frequencies"], names);

@@ -16,6 +16,9 @@ struct ProjectReadContext {
     bool checkFiles = true;       // referenced mesh files must exist
 };
 
+// A mesh or avatar file named at `node`: must exist when context.checkFiles.
+std::filesystem::path fileFromJson(const JsonNode& node, const ProjectReadContext& context);
+
 Json projectToJson(const Project& project);
 Project projectFromJson(const JsonNode& root, const ProjectReadContext& context); // version already checked
 
@@ -40,6 +43,9 @@ ProjectReduction reductionFromJson(const JsonNode& node, const std::vector<std::
 // The optional "speech" section (written only when it differs from the defaults).
 Json speechToJson(const SpeechSettings& speech);
 SpeechSettings speechFromJson(const JsonNode& node);
+// The optional "avatar" object: {"file": "avatar.glb", "targets": "Fcl_MTH_[AIUEO]"}.
+Json avatarToJson(const ProjectAvatar& avatar);
+ProjectAvatar avatarFromJson(const JsonNode& node, const ProjectReadContext& context);
 
 // Version handling: the version of a document, and the upgrade of an older one to the current layout.
 int projectVersionOf(const JsonNode& root); // checks "format" too; refuses newer versions

@@ -1,6 +1,8 @@
 #include "core/project/ProjectRun.h"
 
 #include "core/common/Error.h"
+#include "core/gltf/AvatarScan.h"
+#include "core/gltf/GltfDocument.h"
 #include "core/io/MeshIO.h"
 #include "core/project/JsonRead.h"
 
@@ -31,7 +33,34 @@ MeshData readProjectMesh(const Project& project, std::string_view jsonPath,
 
 } // namespace
 
+void checkAvatarVisemeNames(const Project& project, const std::vector<std::string>& avatarVisemes) {
+    std::vector<std::string> listed;
+    for (const ProjectViseme& viseme : project.visemes) listed.push_back(viseme.name);
+    if (listed == avatarVisemes) return;
+    const auto join = [](const std::vector<std::string>& names) {
+        std::string text;
+        for (const std::string& name : names) text += (text.empty() ? "" : " ") + name;
+        return text.empty() ? std::string("none") : text;
+    };
+    throwInputError(
+        projectWhere(project, "/visemes"),
+        "the project lists the visemes " + join(listed) + " but the avatar " +
+            project.avatar.file.generic_string() + " now has " + join(avatarVisemes) + " (selected by " +
+            (project.avatar.targets.empty() ? "Oculus names" : "'" + project.avatar.targets + "'") + ")");
+}
+
 VisemeSet loadProjectVisemeSet(const Project& project) {
+    if (project.avatar.isSet()) {
+        AvatarScan scan;
+        try {
+            scan = scanAvatar(loadGltfDocument(resolveProjectFile(project, project.avatar.file)),
+                              {project.avatar.targets});
+        } catch (const InputError& e) {
+            throwInputError(projectWhere(project, "/avatar/file"), e.what());
+        }
+        checkAvatarVisemeNames(project, scan.visemes);
+        return std::move(scan.set);
+    }
     if (!project.neutral.isSet())
         throwInputError(projectWhere(project, "/neutral"), "the project has no neutral mesh");
     VisemeSet set;

@@ -7,10 +7,15 @@
 
 namespace vl {
 
-// Reads the neutral mesh and every viseme (files resolved against the project's folder, or
+// Reads the neutral mesh and every viseme (of an avatar project: the avatar's viseme set, checked
+// against the names the project lists) (files resolved against the project's folder, or
 // embedded data) and checks interpolability. Errors name the JSON path and the file, e.g.
 // "/visemes/3/file (mouth/aa.obj): not interpolable: 1499 vertices (the neutral mesh ... has 1500)".
 VisemeSet loadProjectVisemeSet(const Project& project);
+
+// An avatar project's visemes are the avatar's, in its order: throws InputError naming /visemes
+// when the avatar file (read with the project's pattern) now yields others.
+void checkAvatarVisemeNames(const Project& project, const std::vector<std::string>& avatarVisemes);
 
 // The reduction settings the project holds (weight mode, painted weights, target, constraints).
 ReduceSettings projectReduceSettings(const Project& project);

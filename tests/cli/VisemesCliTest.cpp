@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <stb_image.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -32,7 +33,13 @@ TEST(CliVisemes, WritesAnInterpolableSetAndItsParameterVectors) {
     const auto files = listVisemeFolder(dir, dir / "neutral.obj");
     ASSERT_EQ(files.size(), 15u);
     const VisemeSet set = loadVisemeSet(dir / "neutral.obj", files);
-    EXPECT_EQ(set.neutral.triangles, face::faceDomainMesh(14).triangles);
+    // The skin (the face domain's triangles) comes first, then the head's parts (eyeballs, teeth,
+    // tongue, mouth cavity) with their (u,v) in tiles right of the face domain.
+    const auto skin = face::faceDomainMesh(14);
+    ASSERT_GT(set.neutral.triangles.size(), skin.triangles.size());
+    EXPECT_TRUE(std::equal(skin.triangles.begin(), skin.triangles.end(), set.neutral.triangles.begin()));
+    for (std::size_t i = skin.positions.size(); i < set.vertexCount(); ++i)
+        EXPECT_NE(face::headTileOf(set.neutral.uvs[i][0]), face::HeadTile::Skin) << i;
     std::ifstream in(dir / "visemes.json");
     const auto j = nlohmann::json::parse(in);
     EXPECT_EQ(j["face"], "retarget");
@@ -76,6 +83,16 @@ TEST(CliVisemes, ReadsEditedParameterVectors) {
         test::runCli("visemes --viseme-file " + file.string() + " --out " + (dir / "bad").string());
     EXPECT_EQ(range.exitCode, 3);
     EXPECT_NE(range.output.find("jaw_open: value 2 is outside [0, 1]"), std::string::npos) << range.output;
+    fs::remove_all(dir);
+}
+
+TEST(CliVisemes, SkinOnlyLeavesOutTheHeadsParts) {
+    const auto dir = freshDir("cli_visemes_skin");
+    const auto r =
+        test::runCli("visemes --skin-only --resolution 14 --density uniform --out " + dir.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const VisemeSet set = loadVisemeSet(dir / "neutral.obj", listVisemeFolder(dir, dir / "neutral.obj"));
+    EXPECT_EQ(set.neutral.triangles, face::faceDomainMesh(14).triangles);
     fs::remove_all(dir);
 }
 

@@ -47,14 +47,15 @@ TEST_P(FaceDomainTest, IsAValidTriangulationOfTheSquareWithTheMouthHole) {
         EXPECT_GT(a, 0.0); // counter-clockwise in (u,v), none flipped by the mouth opening
         total += a;
     }
-    const double hole = 2.0 * face::kMouthHalfWidth * face::kMouthHalfHeight; // rhombus area
+    // The flat hexagon: a rectangle over the flat part, a triangle at each corner.
+    const double hole = 2.0 * face::kMouthHalfWidth * face::kMouthHalfHeight * (1.0 + face::kMouthFlat);
     EXPECT_NEAR(total, 1.0 - hole, 1e-9);
     for (const auto& uv : m.uvs) {
         EXPECT_TRUE(uv[0] >= 0.0 && uv[0] <= 1.0 && uv[1] >= 0.0 && uv[1] <= 1.0);
         EXPECT_FALSE(face::insideMouthHole(uv[0], uv[1]))
             << uv[0] << " " << uv[1] << " h=" << face::mouthHoleHalfHeight(uv[0]);
     }
-    // Every boundary edge is on the square or on the rhombus; the rhombus rim is a closed loop.
+    // Every boundary edge is on the square or on the hexagon; the hexagon's rim is a closed loop.
     int rim = 0;
     for (const auto& [a, b] : boundaryEdges(m)) {
         const Vec2 pa = m.uvs[a], pb = m.uvs[b];
@@ -79,8 +80,9 @@ TEST(FaceDomain, BaseDomainHasSimilarSizedTriangles) {
         lo = std::min(lo, signedArea(m, t));
         hi = std::max(hi, signedArea(m, t));
     }
-    EXPECT_EQ(m.triangles.size(), 200u);
-    EXPECT_LT(hi / lo, 2.0);
+    // 10 x 10 cells, and a narrow column each side where the lips' flat rims bend to the corners.
+    EXPECT_EQ(m.triangles.size(), 240u);
+    EXPECT_LT(hi / lo, 5.0);
     EXPECT_THROW(face::faceDomainMesh(5), InputError);
 }
 
@@ -128,8 +130,10 @@ TEST(BundledFace, LipsAlmostCloseOverTheMouthHoleAndTheJawOpensThem) {
     EXPECT_GT(gap(0.05), 0.0);
     q[static_cast<std::size_t>(c.findParameter("jaw_open"))] = 1.0;
     EXPECT_GT(gap(0.0), 1.5); // wide open
-    EXPECT_GT(gap(0.0), gap(0.05));
-    EXPECT_GT(gap(0.05), gap(0.09)); // an elliptic opening, narrowing to the corners
+    // A rounded U, not a V: nearly as open half-way to the corners as in the middle, then closing.
+    EXPECT_GE(gap(0.0), gap(0.05) - 1e-9);
+    EXPECT_GT(gap(0.05), 0.8 * gap(0.0));
+    EXPECT_GT(gap(0.05), gap(0.09));
 }
 
 TEST(RetargetFace, UsesTheSameFieldsOnAnotherBase) {

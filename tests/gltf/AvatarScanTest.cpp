@@ -176,6 +176,27 @@ TEST(AvatarScan, VRoidMouthShapesNeedAPatternAndAreReadFromPrimitiveExtras) {
     EXPECT_GT(energy(scan, 0), 0.0);
 }
 
+// ARKit blendshapes (jawOpen, mouthSmileLeft, ...) are left alone by default and become the set only
+// when a pattern selects them; a shape on several meshes (jawOpen: head and teeth) is one viseme.
+TEST(AvatarScan, ARKitShapesAreVisemesOnlyWhenAPatternSelectsThem) {
+    const std::string glb = fixture(FixtureStorage::Plain);
+    const AvatarScan scan = test::scanGlb(glb, "[jm]*");
+    EXPECT_EQ(scan.visemes, (std::vector<std::string>{"jawOpen", "mouthSmileLeft", "mouthSmileRight"}));
+    EXPECT_FALSE(scan.oculusNames);
+    std::vector<std::string> carriers;
+    for (const AvatarMesh& m : scan.meshes)
+        if (m.carriesVisemes) carriers.push_back(m.name);
+    EXPECT_EQ(carriers, (std::vector<std::string>{"Wolf3D_Head", "Wolf3D_Teeth"}));
+    const AvatarMesh& head = meshNamed(scan, "Wolf3D_Head");
+    EXPECT_EQ(head.targets[2].name, "viseme_sil");
+    EXPECT_EQ(head.targets[2].ignored, "does not match '[jm]*'");
+    EXPECT_EQ(head.targets[0].ignored, "does not match '[jm]*'"); // browInnerUp
+    EXPECT_GT(energy(scan, 0), 0.0);
+    // The teeth lack the smiles: zero displacement there, as for a viseme a mesh lacks.
+    const auto teeth = meshVertices(scan, "Wolf3D_Teeth", scan.set.visemes[1].positions);
+    EXPECT_EQ(teeth, meshVertices(scan, "Wolf3D_Teeth", scan.set.neutral.positions));
+}
+
 TEST(AvatarScan, VisemesJoinAcrossMeshesByMeaningNotSpelling) {
     // The teeth spell ih/oh as the Oculus SDK does, the head as Ready Player Me does.
     const std::string glb = test::editGlb(fixture(FixtureStorage::Plain), [](nlohmann::ordered_json& j) {

@@ -1,8 +1,11 @@
 // Writes the avatar fixtures (tests/gltf/AvatarFixtures.h) into a folder: for the Khronos validator
 // test, the avatar CLI tests, the benchmark (--bench: a 30,000-vertex avatar) and manual checks.
 #include "core/common/AtomicFile.h"
+#include "core/document/AvatarDocument.h"
+#include "core/document/Commands.h"
 #include "core/gltf/AvatarReduce.h"
 #include "core/gltf/GltfDocument.h"
+#include "core/project/ProjectRun.h"
 #include "tests/gltf/AvatarFixtures.h"
 
 #include <cstdio>
@@ -26,6 +29,19 @@ void writeReductions(const std::filesystem::path& dir, const std::string& stem, 
         const auto r = vl::reduceAvatar(doc, scan, vl::uniformFrequencies(scan), settings, write);
         vl::writeFileAtomically(dir / (stem + "_" + vl::toString(names) + ".glb"), r.glb);
     }
+}
+
+// <stem>_editor.glb: what the editor's File > Export avatar... writes for the avatar file, imported
+// as a document (equal frequencies: no bundled table here), reduced to m keys by the document's settings.
+void writeEditorExport(const std::filesystem::path& dir, const std::string& stem, const std::string& pattern,
+                       int m, vl::AvatarNames names) {
+    const vl::Document document = vl::edit::setTarget(
+        vl::documentFromAvatar(vl::loadDocumentAvatar(dir / (stem + ".glb"), pattern), {}), m);
+    const std::vector<int> groupOf =
+        vl::reduceProject(vl::projectFromDocument(document), *document.visemes).result.groupOf();
+    vl::AvatarWriteOptions options;
+    options.names = names;
+    vl::writeFileAtomically(dir / (stem + "_editor.glb"), vl::reducedAvatarGlb(document, groupOf, options));
 }
 
 } // namespace
@@ -57,6 +73,8 @@ int main(int argc, char** argv) {
             vl::writeFileAtomically(dir / (stem + ".glb"), glb);
             writeReductions(dir, stem + "_reduced", glb, 3, "Fcl_MTH_[AIUEO]");
         }
+        writeEditorExport(dir, "rpm_plain", "", 5, vl::AvatarNames::Original);
+        writeEditorExport(dir, "vroid_vrm0", "Fcl_MTH_[AIUEO]", 3, vl::AvatarNames::Merged);
         if (argc > 2 && std::strcmp(argv[2], "--bench") == 0) {
             // About 30,000 vertices on the 4 meshes that carry the 15 visemes.
             vl::test::AvatarFixtureOptions options;

@@ -68,6 +68,8 @@ void EditorUi::exportPanel() {
         ImGui::TextDisabled("%s", target.help);
     }
 
+    if (session.document().avatar.isSet()) avatarExportSection();
+
     sectionHeader("Import");
     if (ctl::Button("Import glTF morph targets...", ImVec2(200, 0)))
         guarded([this] {
@@ -78,6 +80,9 @@ void EditorUi::exportPanel() {
         });
     ImGui::SameLine();
     ImGui::TextDisabled("the targets become the visemes");
+    if (ctl::Button("Import avatar...", ImVec2(200, 0))) openAvatarImport();
+    ImGui::SameLine();
+    ImGui::TextDisabled("visemes of every mesh; export writes the same avatar back");
 }
 
 } // namespace vl::ui

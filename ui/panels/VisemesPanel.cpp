@@ -25,48 +25,59 @@ void EditorUi::visemesPanel() {
                              });
         });
 
+    ImGui::SameLine();
+    if (ctl::Button("Import avatar...")) openAvatarImport();
+
     const VisemeSet* set = session.visemes();
     if (!set) {
         ImGui::Spacing();
-        ImGui::TextWrapped("No viseme set yet. Load the sample face, open a project (Ctrl+O) or a folder of "
-                           "interpolable meshes (OBJ/PLY/VRML) with one file named *neutral*.");
+        ImGui::TextWrapped("No viseme set yet. Load the sample face, open a project (Ctrl+O), a folder of "
+                           "interpolable meshes (OBJ/PLY/VRML) with one file named *neutral*, or an avatar "
+                           "(glTF, GLB, VRM) with viseme morph targets.");
         return;
     }
 
-    sectionHeader("Import a viseme mesh");
-    ImGui::SetNextItemWidth(150);
-    ctl::InputTextWithHint("##import-name", "name", &importName_);
-    ImGui::SameLine();
-    if (ctl::Button("Choose file...")) {
-        if (importName_.empty()) {
-            session.error("Import: type a name for the new viseme first");
-        } else {
-            fileDialog_.open(
-                "Import viseme " + importName_, FileDialog::Mode::OpenFile, {".obj", ".ply", ".wrl", ".vrml"},
-                [this](const auto& path) {
-                    importError_.clear();
-                    if (session.attempt("Import", [&] { session.importViseme(importName_, path); }))
-                        importName_.clear();
-                    else
-                        importError_ = session.messages().back().text;
-                });
+    // An avatar's visemes are its morph targets (chosen by the pattern); other sets take meshes.
+    const auto importSection = [&] {
+        sectionHeader("Import a viseme mesh");
+        ImGui::SetNextItemWidth(150);
+        ctl::InputTextWithHint("##import-name", "name", &importName_);
+        ImGui::SameLine();
+        if (ctl::Button("Choose file...")) {
+            if (importName_.empty()) {
+                session.error("Import: type a name for the new viseme first");
+            } else {
+                fileDialog_.open(
+                    "Import viseme " + importName_, FileDialog::Mode::OpenFile,
+                    {".obj", ".ply", ".wrl", ".vrml"}, [this](const auto& path) {
+                        importError_.clear();
+                        if (session.attempt("Import", [&] { session.importViseme(importName_, path); }))
+                            importName_.clear();
+                        else
+                            importError_ = session.messages().back().text;
+                    });
+            }
         }
-    }
-    ImGui::SameLine();
-    if (ctl::Button("glTF..."))
-        guarded([this] {
-            fileDialog_.open("Import glTF morph targets", FileDialog::Mode::OpenFile, {".glb", ".gltf"},
-                             [this](const auto& path) {
-                                 session.attempt("Import glTF", [&] { session.importGltf(path); });
-                             });
-        });
-    if (!importError_.empty()) {
-        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
-        ImGui::TextWrapped("%s", importError_.c_str());
-        ImGui::PopStyleColor();
-    }
-    helpMarker("The mesh must have the neutral's vertex count and triangles (same order); otherwise the "
-               "core's error names the first mismatch and nothing changes.");
+        ImGui::SameLine();
+        if (ctl::Button("glTF..."))
+            guarded([this] {
+                fileDialog_.open("Import glTF morph targets", FileDialog::Mode::OpenFile, {".glb", ".gltf"},
+                                 [this](const auto& path) {
+                                     session.attempt("Import glTF", [&] { session.importGltf(path); });
+                                 });
+            });
+        if (!importError_.empty()) {
+            ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
+            ImGui::TextWrapped("%s", importError_.c_str());
+            ImGui::PopStyleColor();
+        }
+        helpMarker("The mesh must have the neutral's vertex count and triangles (same order); otherwise the "
+                   "core's error names the first mismatch and nothing changes.");
+    };
+    if (session.document().avatar.isSet())
+        avatarSection();
+    else
+        importSection();
 
     std::vector<double> frequencies;
     const bool frequenciesOk =
@@ -125,7 +136,11 @@ void EditorUi::visemesPanel() {
         }
         ImGui::EndTable();
     }
-    visemeAuthoring();
+    // An avatar's visemes are its morph targets, selected by the pattern: no per-viseme authoring.
+    if (session.document().avatar.isSet())
+        ImGui::TextDisabled("Visemes of the avatar: the target pattern selects them.");
+    else
+        visemeAuthoring();
     ImGui::SameLine();
     const auto& clip = session.speechClip();
     bool playAll = speechShown() && say_.playing && clip->loops && clip->sequence.empty();

@@ -6,13 +6,16 @@
 #include "core/deform/CascadeSampler.h"
 #include "core/deform/FaceDomain.h"
 #include "core/deform/Visemes.h"
+#include "core/document/AvatarDocument.h"
 #include "core/document/Commands.h"
 #include "core/export/Gltf.h"
 #include "core/export/ModelFrequencies.h"
+#include "core/gltf/AvatarScan.h"
 #include "core/io/MeshIO.h"
 #include "core/phonetics/EspeakTranscriber.h"
 #include "core/phonetics/PhonemeMaps.h"
 #include "core/phonetics/PhonemeTableIO.h"
+#include "core/project/ProjectRun.h"
 #include "core/reduce/Frequencies.h"
 
 #include <algorithm>
@@ -246,6 +249,76 @@ void EditorSession::importGltf(const std::filesystem::path& file) {
                      (phonemes ? " with its phoneme frequencies and map" : "");
     loaded.unsaved = true;
     adopt(std::move(loaded));
+}
+
+EditorSession::Loaded EditorSession::loadAvatarFile(const std::filesystem::path& file,
+                                                    const std::string& pattern) {
+    Loaded loaded;
+    loaded.project.document = documentFromAvatar(loadDocumentAvatar(file, pattern),
+                                                 bundledPhonemeFrequencies(assetsDirectory(), "oculus"));
+    const Document& document = loaded.project.document;
+    std::size_t meshes = 0;
+    for (const AvatarMesh& mesh : document.avatar.scan->meshes) meshes += mesh.carriesVisemes ? 1 : 0;
+    loaded.message = "Imported the avatar " + file.filename().string() + ": " +
+                     std::to_string(document.visemeCount()) + " visemes on " + std::to_string(meshes) +
+                     " mesh(es), " + std::to_string(document.visemes->vertexCount()) + " vertices";
+    return loaded;
+}
+
+void EditorSession::importAvatar(const std::filesystem::path& file, const std::string& pattern) {
+    adopt(loadAvatarFile(file, pattern));
+}
+
+void EditorSession::startImportAvatar(const std::filesystem::path& file, const std::string& pattern) {
+    startLoading("Importing " + file.filename().string(),
+                 [file, pattern] { return loadAvatarFile(file, pattern); });
+}
+
+void EditorSession::setAvatarPattern(const std::string& pattern) {
+    if (document().avatar.isSet() && pattern == document().avatar.pattern) return;
+    commit(
+        pattern.empty() ? std::string("Viseme targets: Oculus names") : "Viseme targets '" + pattern + "'",
+        edit::setAvatarPattern(document(), pattern, bundledPhonemeFrequencies(assetsDirectory(), "oculus")));
+    info(std::to_string(visemeCount()) + " visemes selected by " + document().avatar.scan->selection);
+}
+
+std::string EditorSession::writeAvatarExport(const Document& document, const Project& snapshot,
+                                             const std::filesystem::path& out,
+                                             const AvatarWriteOptions& options) {
+    checkAvatarOutput(document, out);
+    // The grouping shown (recorded in the snapshot), else a fresh reduction with the document's settings.
+    const auto& stored = snapshot.reduction.result;
+    const std::vector<int> groupOf =
+        stored && static_cast<int>(stored->curve.size()) == snapshot.reduction.target
+            ? stored->groupOf()
+            : reduceProject(snapshot, *document.visemes).result.groupOf();
+    AvatarWriteSummary summary;
+    writeFileAtomically(out, reducedAvatarGlb(document, groupOf, options, &summary));
+    int keys = 0;
+    for (int g : groupOf) keys = std::max(keys, g + 1);
+    std::string message = "Exported the avatar: " + std::to_string(document.visemeCount()) + " visemes -> " +
+                          std::to_string(keys) + " keys (names " + toString(options.names) + ") to " +
+                          out.string();
+    for (const std::string& note : summary.notes) message += "; " + note;
+    return message;
+}
+
+std::vector<std::string> EditorSession::exportAvatar(const std::filesystem::path& out,
+                                                     const AvatarWriteOptions& options) {
+    const std::string message = writeAvatarExport(document(), projectSnapshot(), out, options);
+    info(message);
+    return {message};
+}
+
+void EditorSession::startExportAvatar(const std::filesystem::path& out, const AvatarWriteOptions& options) {
+    if (!document().avatar.isSet())
+        throwInputError("export avatar", "the document has no avatar: use File > Import avatar... first");
+    if (avatarExportTask_.running()) throwInputError("export avatar", "an export is still running");
+    avatarExportTask_.start(
+        "Exporting " + out.filename().string(),
+        [out, options, document = history_.currentShared(), snapshot = projectSnapshot()](const auto&) {
+            return writeAvatarExport(*document, snapshot, out, options);
+        });
 }
 
 bool EditorSession::isBundled(const std::filesystem::path& file) {
@@ -590,6 +663,12 @@ void EditorSession::poll() {
             error(exportTask_.label() + ": " + std::get<1>(*outcome));
     }
     if (auto failed = speech_.poll()) error("Say: " + *failed);
+    if (auto outcome = avatarExportTask_.take()) {
+        if (outcome->index() == 0)
+            info(std::get<0>(*outcome));
+        else
+            error(avatarExportTask_.label() + ": " + std::get<1>(*outcome));
+    }
     if (auto outcome = countTask_.take()) {
         if (outcome->index() == 0) {
             const PhonemeCountResult& counted = std::get<0>(*outcome);
@@ -630,6 +709,7 @@ void EditorSession::finishBackgroundWork() {
         loadTask_.wait();
         saveTask_.wait();
         exportTask_.wait();
+        avatarExportTask_.wait();
         countTask_.wait();
         speech_.wait();
         refinement_.wait();

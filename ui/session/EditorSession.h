@@ -7,6 +7,7 @@
 #include "core/document/Document.h"
 #include "core/document/PhonemeMapCommands.h"
 #include "core/export/Export.h"
+#include "core/gltf/AvatarWriter.h"
 #include "core/phonetics/PhonemeCounting.h"
 #include "core/project/Project.h"
 #include "core/reduce/Reduction.h"
@@ -94,11 +95,27 @@ class EditorSession {
     // The same on a worker thread (it may run a fresh reduction) from a snapshot taken now; the
     // result or the error is a message in poll().
     void startExport(ExportFormat format, const std::filesystem::path& out);
-    bool exporting() const { return exportTask_.running(); }
-    std::string exportingLabel() const { return exportTask_.label(); }
+    bool exporting() const { return exportTask_.running() || avatarExportTask_.running(); }
+    std::string exportingLabel() const {
+        return exportTask_.running() ? exportTask_.label() : avatarExportTask_.label();
+    }
     // The morph targets of a glTF/GLB file become the viseme set (a new, untitled document, unsaved:
     // its geometry exists only in memory) with the frequencies the file carries (ModelFrequencies.h).
     void importGltf(const std::filesystem::path& file);
+
+    // --- avatar (core/document/AvatarDocument.h) ------------------------------------------------
+    // Opens an avatar (glTF, GLB, VRM) as a new untitled document: its visemes selected by `pattern`
+    // (empty: the Oculus names) over every mesh carrying them; the others are shown greyed.
+    void importAvatar(const std::filesystem::path& file, const std::string& pattern = {});
+    void startImportAvatar(const std::filesystem::path& file, const std::string& pattern = {});
+    // Another target pattern for the avatar's visemes (one undo step; refused when < 2 visemes).
+    void setAvatarPattern(const std::string& pattern);
+    // Writes the avatar with its visemes reduced (the current grouping, else a fresh reduction with
+    // the document's settings) as a GLB; never over the avatar it was read from. Returns notes.
+    std::vector<std::string> exportAvatar(const std::filesystem::path& out,
+                                          const AvatarWriteOptions& options);
+    // The same on a worker thread from a snapshot taken now; the result is a message in poll().
+    void startExportAvatar(const std::filesystem::path& out, const AvatarWriteOptions& options);
 
     // --- frequencies -------------------------------------------------------------------------
     // Normalised viseme frequencies from the current table (throws InputError when invalid).
@@ -261,6 +278,9 @@ class EditorSession {
     static Loaded loadProjectFile(const std::filesystem::path& file);
     static Loaded loadFolder(const std::filesystem::path& folder);
     static Loaded loadSampleFiles();
+    static Loaded loadAvatarFile(const std::filesystem::path& file, const std::string& pattern);
+    static std::string writeAvatarExport(const Document& document, const Project& snapshot,
+                                         const std::filesystem::path& out, const AvatarWriteOptions& options);
     // True when `file` lies inside the bundled assets folder (never written by the editor).
     static bool isBundled(const std::filesystem::path& file);
     // The target of a save request (throws InputError when there is none).
@@ -294,6 +314,7 @@ class EditorSession {
     BackgroundTask<std::vector<std::filesystem::path>> exportTask_;
     ExportFormat exportFormat_ = ExportFormat::Glb;
     std::filesystem::path exportOut_;
+    BackgroundTask<std::string> avatarExportTask_; // its result is the message to show
     // faceSamples() cache, for the cascade and mesh it holds.
     std::shared_ptr<const DeformationCascade> samplesCascade_;
     std::shared_ptr<const MeshData> samplesDomain_;

@@ -1,0 +1,257 @@
+// Avatars in the editor, driven with real clicks (xdotool on a private Xvfb): File > Import avatar...
+// opens a generated Ready Player Me-like avatar (skinned, several meshes, ARKit targets around the
+// visemes) as a document, the target pattern selects the visemes (undoable), weights are painted on
+// the concatenated geometry, the project refers to the avatar by a relative path, and File > Export
+// avatar... writes the same avatar with its visemes reduced.
+#include "GuiDriver.h"
+#include "core/common/AtomicFile.h"
+#include "core/gltf/GltfDocument.h"
+#include "tests/gltf/AvatarFixtures.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <unistd.h>
+
+namespace vl::test {
+namespace {
+
+// A folder of its own per test, with the generated avatar in it.
+struct AvatarFolder {
+    std::filesystem::path dir, avatar;
+    explicit AvatarFolder(const std::string& name) {
+        dir = std::filesystem::temp_directory_path() /
+              ("visemelab-avatar-clicks-" + name + "-" + std::to_string(getpid()));
+        std::filesystem::remove_all(dir);
+        std::filesystem::create_directories(dir / "avatars");
+        avatar = dir / "avatars" / "rpm.glb";
+        writeFileAtomically(avatar, rpmLikeAvatar());
+    }
+    ~AvatarFolder() { std::filesystem::remove_all(dir); }
+};
+
+std::string fileBytes(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+bool hasError(const GuiDriver& gui) {
+    for (const auto& message : gui.document()["messages"])
+        if (message["error"].get<bool>()) return true;
+    return false;
+}
+
+std::string lastMessage(const GuiDriver& gui) {
+    const auto& messages = gui.document()["messages"];
+    return messages.empty() ? std::string() : messages.back()["text"].get<std::string>();
+}
+
+// The file dialog's own control (the side panel has a "Save" button too).
+nlohmann::json dialogControl(const GuiDriver& gui, const std::string& label, const std::string& kind) {
+    for (const auto& control : gui.report()["controls"])
+        if (control["label"] == label && control["kind"] == kind &&
+            control["window"].get<std::string>().ends_with("###file-dialog"))
+            return control;
+    ADD_FAILURE() << "no " << kind << " '" << label << "' in the file dialog";
+    return gui.control(label, kind);
+}
+
+// A control of the side panel, scrolled into view first (as a user scrolls the panel to reach it).
+nlohmann::json revealed(GuiDriver& gui, const std::string& text, const std::string& kind) {
+    for (int attempt = 0; attempt < 12; ++attempt) {
+        const nlohmann::json control = gui.control(text, kind);
+        if (control.value("visible", true)) return control;
+        // Below the fold when it lies low in the window, else above it.
+        gui.scroll(control["x"].get<double>() + 20, 400, control["y"].get<double>() > 400 ? 3 : -3);
+    }
+    return gui.control(text, kind);
+}
+
+// Types a path into the open file dialog's name field and presses its button ("Open" or "Save").
+void chooseFile(GuiDriver& gui, const std::filesystem::path& file, const std::string& button) {
+    ASSERT_TRUE(gui.document()["file_dialog_open"].get<bool>()) << gui.document().dump();
+    gui.click(dialogControl(gui, "##name", "text"));
+    gui.key("ctrl+a");
+    gui.type(file.string());
+    gui.click(dialogControl(gui, button, "button"));
+    gui.waitIdle();
+}
+
+TEST(AvatarClicks, FileMenuImportsAnAvatarWithEveryMeshShown) {
+    REQUIRE_GUI_TOOLS();
+    const AvatarFolder folder("import");
+    GuiDriver gui({});
+    gui.waitIdle();
+    ASSERT_TRUE(gui.document()["avatar"].is_null());
+    gui.click(gui.control("File", "menu"));
+    gui.click(gui.control("Import avatar...", "menuitem"));
+    chooseFile(gui, folder.avatar, "Open");
+    EXPECT_ALIVE(gui);
+    const auto& avatar = gui.document()["avatar"];
+    ASSERT_TRUE(avatar.is_object()) << gui.document()["messages"].dump();
+    EXPECT_EQ(avatar["file"], folder.avatar.string());
+    EXPECT_EQ(avatar["pattern"], "");
+    EXPECT_EQ(avatar["visemes"].get<std::vector<std::string>>(), rpmVisemeNames());
+    EXPECT_EQ(gui.document()["visemes"].get<int>(), 15);
+    // The head, teeth and eyes carry the visemes; the body is drawn greyed.
+    int carriers = 0;
+    bool bodyGreyed = false;
+    for (const auto& mesh : avatar["meshes"]) {
+        carriers += mesh["visemes"].get<bool>() ? 1 : 0;
+        if (mesh["name"] == "Wolf3D_Body") bodyGreyed = !mesh["visemes"].get<bool>();
+    }
+    EXPECT_EQ(carriers, 4);
+    EXPECT_TRUE(bodyGreyed) << avatar.dump();
+    EXPECT_GT(avatar["greyed_vertices"].get<int>(), 0);
+    // The import report: a row of the meshes table shows that mesh's primitives and targets, and why
+    // the targets that are not visemes were left alone.
+    EXPECT_EQ(gui.document()["avatar_mesh_report"], "");
+    gui.click(revealed(gui, "Wolf3D_Head", "selectable"));
+    const std::string head = gui.document()["avatar_mesh_report"].get<std::string>();
+    EXPECT_NE(head.find("skinned"), std::string::npos) << head;
+    EXPECT_NE(head.find("visemes: viseme_sil viseme_PP"), std::string::npos) << head;
+    EXPECT_NE(head.find("kept as they are (not an Oculus viseme name): browInnerUp jawOpen"),
+              std::string::npos)
+        << head;
+    gui.click(revealed(gui, "Wolf3D_Body (greyed)", "selectable"));
+    EXPECT_NE(gui.document()["avatar_mesh_report"].get<std::string>().find("Wolf3D_Body"), std::string::npos);
+    EXPECT_FALSE(hasError(gui)) << gui.document()["messages"].dump();
+    // The Visemes panel's button imports too (the document is unmodified: nothing to confirm).
+    gui.click(revealed(gui, "Import avatar...", "button"));
+    EXPECT_TRUE(gui.document()["file_dialog_open"].get<bool>());
+    gui.click(dialogControl(gui, "Cancel", "button"));
+    EXPECT_ALIVE(gui);
+}
+
+TEST(AvatarClicks, TargetPatternSelectsTheVisemesAndUndoes) {
+    REQUIRE_GUI_TOOLS();
+    const AvatarFolder folder("pattern");
+    GuiDriver gui({"--avatar", folder.avatar.string()});
+    gui.waitIdle();
+    ASSERT_EQ(gui.document()["visemes"].get<int>(), 15) << gui.document()["messages"].dump();
+    const auto setPattern = [&](const std::string& pattern) {
+        gui.click(gui.control("##avatar-pattern", "text"));
+        gui.key("ctrl+a");
+        if (!pattern.empty()) gui.type(pattern);
+        gui.click(gui.control("Apply pattern", "button"));
+        gui.waitIdle();
+    };
+    setPattern("viseme_[aEIOU]*");
+    EXPECT_ALIVE(gui);
+    EXPECT_EQ(gui.document()["visemes"].get<int>(), 5) << gui.document()["messages"].dump();
+    EXPECT_EQ(gui.document()["avatar"]["pattern"], "viseme_[aEIOU]*");
+    EXPECT_EQ(gui.document()["undo"], "Viseme targets 'viseme_[aEIOU]*'");
+    EXPECT_TRUE(gui.document()["modified"].get<bool>());
+    // A pattern that selects one viseme is refused with the core's message; nothing changes.
+    const auto before = gui.document()["document_id"];
+    setPattern("viseme_si*");
+    EXPECT_TRUE(hasError(gui));
+    EXPECT_NE(lastMessage(gui).find("at least 2"), std::string::npos) << lastMessage(gui);
+    EXPECT_EQ(gui.document()["document_id"], before);
+    EXPECT_EQ(gui.document()["visemes"].get<int>(), 5);
+    // Undo restores the Oculus selection, and the field shows it again.
+    gui.key("ctrl+z");
+    gui.waitIdle();
+    EXPECT_EQ(gui.document()["visemes"].get<int>(), 15);
+    EXPECT_EQ(gui.document()["avatar"]["pattern"], "");
+    gui.key("ctrl+y");
+    gui.waitIdle();
+    EXPECT_EQ(gui.document()["visemes"].get<int>(), 5);
+    EXPECT_ALIVE(gui);
+}
+
+TEST(AvatarClicks, WeightsArePaintedOnTheConcatenatedGeometry) {
+    REQUIRE_GUI_TOOLS();
+    const AvatarFolder folder("paint");
+    // The brush starts as a subtracting one (the operation combo's items are not probed controls).
+    GuiDriver gui({"--avatar", folder.avatar.string(), "--panel", "Weights", "--brush", "subtract"});
+    gui.waitIdle();
+    ASSERT_EQ(gui.document()["weight_mode"], "uniform");
+    ASSERT_TRUE(gui.document()["brush"].get<bool>());
+    const auto view = gui.control("main", "view");
+    const double cx = view["x"].get<double>() + 0.5 * view["width"].get<double>();
+    const double cy = view["y"].get<double>() + 0.5 * view["height"].get<double>();
+    gui.drag(cx - 40, cy, cx + 40, cy + 10, 12);
+    EXPECT_ALIVE(gui);
+    EXPECT_EQ(gui.document()["undo"], "Paint stroke") << gui.document().dump();
+    EXPECT_EQ(gui.document()["weight_mode"], "painted");
+    const double mean = gui.document()["painted_mean"].get<double>();
+    EXPECT_GT(mean, 0.0);
+    EXPECT_LT(mean, 1.0); // subtracted under the brush, one per vertex of all four meshes
+    EXPECT_FALSE(hasError(gui)) << gui.document()["messages"].dump();
+}
+
+TEST(AvatarClicks, ReducedAvatarIsExportedAndTheProjectRefersToTheAvatar) {
+    REQUIRE_GUI_TOOLS();
+    const AvatarFolder folder("export");
+    const std::string input = fileBytes(folder.avatar);
+    {
+        GuiDriver gui({"--avatar", folder.avatar.string(), "--panel", "Reduction"});
+        gui.waitIdle();
+        gui.click(gui.control("groups m", "slider"), 0.3);
+        gui.waitIdle();
+        const int m = gui.document()["target"].get<int>();
+        ASSERT_GT(m, 1);
+        ASSERT_LT(m, 15);
+
+        // Export panel: merged names, then File > Export avatar... (the default name is beside the input).
+        gui.click(gui.control("Export", "tab"));
+        gui.click(gui.control("merged (one target per key)", "radio"));
+        gui.click(gui.control("File", "menu"));
+        gui.click(gui.control("Export avatar...", "menuitem"));
+        const auto out = folder.dir / "out" / "rpm_reduced.glb";
+        std::filesystem::create_directories(out.parent_path());
+        chooseFile(gui, out, "Save");
+        EXPECT_ALIVE(gui);
+        ASSERT_TRUE(std::filesystem::is_regular_file(out)) << gui.document().dump();
+        EXPECT_NE(lastMessage(gui).find("Exported the avatar: 15 visemes -> " + std::to_string(m) + " keys"),
+                  std::string::npos)
+            << lastMessage(gui);
+        // The same avatar: every mesh, the visemes merged into m targets on each mesh carrying them.
+        const GltfDocument in = loadGltfDocument(folder.avatar);
+        const GltfDocument written = loadGltfDocument(out);
+        EXPECT_EQ(written.model.meshes.size(), in.model.meshes.size());
+        EXPECT_EQ(written.model.skins.size(), in.model.skins.size());
+        EXPECT_EQ(written.model.materials.size(), in.model.materials.size());
+        for (std::size_t i = 0; i < in.model.meshes.size(); ++i) {
+            if (in.model.meshes[i].primitives[0].targets.empty()) continue;
+            EXPECT_LT(written.model.meshes[i].primitives[0].targets.size(),
+                      in.model.meshes[i].primitives[0].targets.size())
+                << in.model.meshes[i].name;
+        }
+        EXPECT_TRUE(written.json["extras"].contains("visemelab"));
+        EXPECT_EQ(written.json["extras"]["visemelab"]["names"], "merged");
+        EXPECT_EQ(written.json["extras"]["visemelab"]["keys"].size(), static_cast<std::size_t>(m));
+
+        // The export button refuses the input itself; the input is untouched.
+        gui.click(gui.control("Export avatar...", "button"));
+        chooseFile(gui, folder.avatar, "Save");
+        EXPECT_TRUE(hasError(gui));
+        EXPECT_NE(lastMessage(gui).find("is the avatar the document was read from"), std::string::npos)
+            << lastMessage(gui);
+        EXPECT_EQ(fileBytes(folder.avatar), input);
+
+        // Saved, the project names the avatar relative to itself.
+        std::filesystem::create_directories(folder.dir / "project");
+        gui.key("ctrl+s");
+        chooseFile(gui, folder.dir / "project" / "avatar.vlproj", "Save");
+        EXPECT_FALSE(gui.document()["modified"].get<bool>()) << gui.document()["messages"].dump();
+    }
+    const auto saved = nlohmann::json::parse(fileBytes(folder.dir / "project" / "avatar.vlproj"));
+    EXPECT_EQ(saved["avatar"]["file"], "../avatars/rpm.glb");
+    EXPECT_TRUE(saved["neutral"].is_null());
+    // Reopened, it is the avatar again with its visemes and target.
+    GuiDriver again({"--project", (folder.dir / "project" / "avatar.vlproj").string()});
+    again.waitIdle();
+    EXPECT_ALIVE(again);
+    ASSERT_TRUE(again.document()["avatar"].is_object()) << again.document()["messages"].dump();
+    EXPECT_EQ(again.document()["avatar"]["file"], folder.avatar.string());
+    EXPECT_EQ(again.document()["visemes"].get<int>(), 15);
+    EXPECT_EQ(again.document()["target"], saved["reduction"]["target"]);
+    EXPECT_FALSE(hasError(again)) << again.document()["messages"].dump();
+}
+
+} // namespace
+} // namespace vl::test

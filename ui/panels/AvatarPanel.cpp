@@ -1,0 +1,162 @@
+// Avatars in the editor: File > Import avatar... opens a glTF/GLB/VRM as a document (its visemes over
+// every mesh carrying them), the Visemes panel shows the avatar's meshes and the target pattern that
+// selects the visemes, the views show the meshes without visemes greyed, and File > Export avatar...
+// writes the same avatar with its visemes reduced. The work is the core's (core/document/AvatarDocument.h).
+#include "core/gltf/AvatarReport.h"
+#include "core/gltf/AvatarScan.h"
+#include "ui/EditorUi.h"
+#include "ui/panels/PanelWidgets.h"
+#include "ui/widgets/Controls.h"
+
+#include <imgui.h>
+
+namespace vl::ui {
+
+void EditorUi::openAvatarImport() {
+    guarded([this] {
+        fileDialog_.open("Import avatar", FileDialog::Mode::OpenFile, {".glb", ".gltf", ".vrm"},
+                         [this](const auto& path) {
+                             session.attempt("Import avatar", [&] { session.startImportAvatar(path); });
+                         });
+    });
+}
+
+void EditorUi::openAvatarExport() {
+    const DocumentAvatar& avatar = session.document().avatar;
+    if (!avatar.isSet()) {
+        session.error("Export avatar: the document has no avatar: use File > Import avatar... first");
+        return;
+    }
+    std::string extension = avatar.file.extension().string();
+    if (extension != ".vrm") extension = ".glb";
+    AvatarWriteOptions options;
+    options.names = avatarNames_ == 1 ? AvatarNames::Merged : AvatarNames::Original;
+    options.targetNormals = avatarTargetNormals_;
+    fileDialog_.open(
+        "Export avatar", FileDialog::Mode::SaveFile, {".glb", ".vrm"},
+        [this, options](const auto& path) {
+            session.attempt("Export avatar", [&] { session.startExportAvatar(path, options); });
+        },
+        avatar.file.stem().string() + "_reduced" + extension);
+}
+
+void EditorUi::syncContextMesh() {
+    const DocumentAvatar& avatar = session.document().avatar;
+    const void* scan = avatar.scan.get();
+    if (scan == uploadedContext_) return;
+    uploadedContext_ = scan;
+    if (!avatar.isSet() || avatar.scan->context.positions.empty()) {
+        contextMesh_.setGeometry({}, {}, {});
+        return;
+    }
+    const MeshData& context = avatar.scan->context;
+    session.attempt("Display the avatar",
+                    [&] { contextMesh_.setGeometry(context.positions, context.triangles, {}); });
+}
+
+void EditorUi::drawContext(const glm::mat4& view, const glm::mat4& projection) const {
+    if (contextMesh_.empty()) return;
+    // Greyed: the meshes the reduction does not touch (body, hair, outfit), for orientation only.
+    DrawStyle grey;
+    grey.wireframe = false;
+    grey.color = ColorMode::Surface;
+    grey.surfaceColor = glm::vec3(0.36f, 0.37f, 0.40f);
+    contextMesh_.draw(shader_, {}, view, projection, grey);
+}
+
+void EditorUi::avatarSection() {
+    const DocumentAvatar& avatar = session.document().avatar;
+    const AvatarScan& scan = *avatar.scan;
+    if (avatarPatternScan_ != avatar.scan.get()) { // a new avatar, an applied pattern, an undo
+        avatarPattern_ = avatar.pattern;
+        if (avatarPatternScan_ && avatarMeshRow_ >= static_cast<int>(scan.meshes.size())) avatarMeshRow_ = -1;
+        avatarPatternScan_ = avatar.scan.get();
+    }
+    sectionHeader("Avatar");
+    ImGui::TextWrapped("%s", avatar.file.filename().string().c_str());
+    ImGui::Text("%zu meshes, %zu vertices in the file; %zu visemes selected by %s", scan.meshes.size(),
+                scan.fileVertices, scan.visemes.size(), scan.selection.c_str());
+
+    ImGui::AlignTextToFramePadding();
+    ImGui::TextUnformatted("Viseme targets");
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(200);
+    const bool entered = ctl::InputTextWithHint("##avatar-pattern", "Oculus viseme names", &avatarPattern_,
+                                                ImGuiInputTextFlags_EnterReturnsTrue);
+    ImGui::SameLine();
+    if (ctl::Button("Apply pattern") || entered)
+        session.attempt("Viseme targets", [&] { session.setAvatarPattern(avatarPattern_); });
+    helpMarker("A glob over the morph target names, case-insensitive: * any text, ? one character, [AIUEO] "
+               "one of, e.g. Fcl_MTH_[AIUEO] for VRoid, V_* for Character Creator. Empty: the Oculus visemes "
+               "(viseme_sil ... viseme_U, with or without the prefix). Other targets (ARKit, expressions) "
+               "are kept as they are.");
+
+    // The import report, mesh by mesh: a row selects the mesh whose targets are listed below.
+    if (ImGui::BeginTable("##avatar-meshes", 5,
+                          ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV |
+                              ImGuiTableFlags_SizingStretchProp)) {
+        ImGui::TableSetupColumn("Mesh", ImGuiTableColumnFlags_WidthStretch, 2.0f);
+        ImGui::TableSetupColumn("Primitives", ImGuiTableColumnFlags_WidthStretch, 0.8f);
+        ImGui::TableSetupColumn("Vertices", ImGuiTableColumnFlags_WidthStretch, 0.9f);
+        ImGui::TableSetupColumn("Visemes", ImGuiTableColumnFlags_WidthStretch, 0.8f);
+        ImGui::TableSetupColumn("Other targets", ImGuiTableColumnFlags_WidthStretch, 1.1f);
+        ImGui::TableHeadersRow();
+        for (std::size_t row = 0; row < scan.meshes.size(); ++row) {
+            const AvatarMesh& mesh = scan.meshes[row];
+            std::size_t vertices = 0, visemes = 0;
+            for (const AvatarPrimitive& primitive : mesh.primitives) vertices += primitive.vertices;
+            for (const AvatarTarget& target : mesh.targets) visemes += target.viseme >= 0 ? 1 : 0;
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            const std::string name = (mesh.name.empty() ? "mesh " + std::to_string(mesh.index) : mesh.name) +
+                                     (mesh.carriesVisemes ? "" : " (greyed)") + "##avatar-mesh" +
+                                     std::to_string(row);
+            if (!mesh.carriesVisemes)
+                ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+            // The first column only (not spanning the row): a table clips each column on its own.
+            if (ctl::Selectable(name.c_str(), avatarMeshRow_ == static_cast<int>(row)))
+                avatarMeshRow_ = static_cast<int>(row);
+            if (!mesh.carriesVisemes) ImGui::PopStyleColor();
+            ImGui::TableNextColumn();
+            ImGui::Text("%zu", mesh.primitives.size());
+            ImGui::TableNextColumn();
+            ImGui::Text("%zu", vertices);
+            ImGui::TableNextColumn();
+            ImGui::Text("%zu", visemes);
+            ImGui::TableNextColumn();
+            ImGui::Text("%zu", mesh.targets.size() - visemes);
+        }
+        ImGui::EndTable();
+    }
+    if (avatarMeshRow_ >= 0 && static_cast<std::size_t>(avatarMeshRow_) < scan.meshes.size())
+        ImGui::TextWrapped("%s", avatarMeshReport().c_str());
+    else
+        ImGui::TextDisabled("Click a mesh for its primitives and which targets are visemes (and why the "
+                            "others are not).");
+}
+
+std::string EditorUi::avatarMeshReport() const {
+    const DocumentAvatar& avatar = session.document().avatar;
+    if (!avatar.isSet() || avatarMeshRow_ < 0 ||
+        static_cast<std::size_t>(avatarMeshRow_) >= avatar.scan->meshes.size())
+        return {};
+    return formatAvatarMeshReport(avatar.scan->meshes[static_cast<std::size_t>(avatarMeshRow_)]);
+}
+
+void EditorUi::avatarExportSection() {
+    sectionHeader("Avatar (the same avatar, visemes reduced)");
+    ImGui::TextWrapped("Every mesh, skin, material, animation and extension is kept; the viseme targets of "
+                       "%s become the m keys.",
+                       session.document().avatar.file.filename().string().c_str());
+    ImGui::TextUnformatted("Target names:");
+    ImGui::SameLine();
+    ctl::RadioButton("original (every viseme name stays)", &avatarNames_, 0);
+    ImGui::SameLine();
+    ctl::RadioButton("merged (one target per key)", &avatarNames_, 1);
+    ctl::Checkbox("normals of the keys (NORMAL/TANGENT displacements)", &avatarTargetNormals_);
+    if (ctl::Button("Export avatar...", ImVec2(200, 0))) openAvatarExport();
+    ImGui::SameLine();
+    ImGui::TextDisabled("a .glb (or .vrm), never the file it was read from");
+}
+
+} // namespace vl::ui
