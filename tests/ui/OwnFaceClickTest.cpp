@@ -29,9 +29,8 @@ std::string messagesOf(const GuiDriver& gui) {
     return gui.document()["messages"].dump();
 }
 
-TEST(FaceClicks, UseMyMeshConfirmsLandmarksThenBuildsTheFace) {
-    if (const std::string missing = missingGuiTools(); !missing.empty())
-        GTEST_SKIP() << "GUI click tests need" << missing;
+TEST(OwnFaceClicks, UseMyMeshConfirmsLandmarksThenBuildsTheFace) {
+    REQUIRE_GUI_TOOLS();
     if (!std::filesystem::exists(kMediaPipe))
         GTEST_SKIP() << "shared data missing: " << kMediaPipe << " (set VISEMELAB_SHARED_DATA_DIR)";
     GuiDriver gui({"--panel", "Deformation"});
@@ -56,8 +55,8 @@ TEST(FaceClicks, UseMyMeshConfirmsLandmarksThenBuildsTheFace) {
     const double u0 = step["landmarks"]["nose_tip"]["u"];
 
     // Drag the nose tip's u to the right: the landmark is now the user's, the document unchanged.
-    const auto nose = gui.control("nose_tip", "drag");
-    const double x = nose["x"].get<double>() + 0.25 * nose["width"].get<double>();
+    const auto nose = gui.control("u##nose_tip", "drag");
+    const double x = nose["x"].get<double>() + 0.5 * nose["width"].get<double>();
     const double y = nose["y"].get<double>() + 0.5 * nose["height"].get<double>();
     gui.drag(x, y, x + 12, y, 6);
     gui.waitFrames();
@@ -69,7 +68,7 @@ TEST(FaceClicks, UseMyMeshConfirmsLandmarksThenBuildsTheFace) {
 
     gui.click(gui.control("Build face from these landmarks", "button"));
     gui.waitIdle();
-    ASSERT_TRUE(gui.alive()) << gui.log();
+    EXPECT_ALIVE(gui);
     EXPECT_TRUE(gui.document()["own_face_step"].is_null());
     EXPECT_EQ(gui.document()["face_name"], "canonical_face_model") << messagesOf(gui);
     EXPECT_EQ(gui.document()["undo"], "Use my mesh canonical_face_model");
@@ -86,7 +85,7 @@ TEST(FaceClicks, UseMyMeshConfirmsLandmarksThenBuildsTheFace) {
     gui.click(gui.control("Back to the bundled face", "button"));
     gui.waitIdle();
     EXPECT_EQ(gui.document()["face_name"], bundledName);
-    ASSERT_TRUE(gui.alive()) << gui.log();
+    EXPECT_ALIVE(gui);
 }
 
 } // namespace

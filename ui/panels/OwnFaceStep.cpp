@@ -8,6 +8,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <string>
 
 namespace vl::ui {
@@ -29,23 +30,35 @@ void EditorUi::ownFaceStep() {
     ImGui::TextWrapped("Each landmark is a point of your mesh's (u,v). Drag a value to move it; right and "
                        "left are the face's own (its right eye is on the viewer's left).");
 
+    // One row per landmark: its name, u and v (two drags, each a control the GUI tests can find as
+    // "u##<name>" and "v##<name>"), then where it came from and how sure the finder is.
+    const float column = ImGui::CalcTextSize("mouth_corner_right ").x;
+    const float dragWidth = std::max(60.0f, (ImGui::GetContentRegionAvail().x - column) * 0.28f);
     for (const face::Landmark landmark : face::allLandmarks()) {
         const face::FoundLandmark& found = candidate.landmarks()[landmark];
         const std::string name(face::landmarkName(landmark));
-        ImGui::PushID(name.c_str());
-        float uv[2] = {static_cast<float>(found.uv[0]), static_cast<float>(found.uv[1])};
-        ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.42f);
-        if (ctl::DragFloat2(name.c_str(), uv, 0.001f, -10.0f, 10.0f, "%.4f"))
-            session.attempt("Place landmark",
-                            [&] { candidate = placeLandmark(candidate, landmark, Vec2(uv[0], uv[1])); });
+        ImGui::TextUnformatted(name.c_str());
+        Vec2 uv = found.uv;
+        bool moved = false;
+        for (int k = 0; k < 2; ++k) {
+            ImGui::SameLine(column + static_cast<float>(k) * (dragWidth + 6.0f));
+            ImGui::SetNextItemWidth(dragWidth);
+            float value = static_cast<float>(uv[k]);
+            const std::string label = (k == 0 ? "u##" : "v##") + name;
+            if (ctl::DragFloat(label.c_str(), &value, 0.001f, -10.0f, 10.0f, "%.4f")) {
+                uv[k] = value;
+                moved = true;
+            }
+        }
+        if (moved)
+            session.attempt("Place landmark", [&] { candidate = placeLandmark(candidate, landmark, uv); });
         ImGui::SameLine();
         if (!found.found())
-            ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.35f, 1.0f), face::isRequired(landmark) ? "missing" : "-");
+            ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.35f, 1.0f), "%s", face::isRequired(landmark) ? "missing" : "-");
         else
             ImGui::TextDisabled("%s %3.0f%%", std::string(face::sourceName(found.source)).c_str(),
                                 100.0 * found.confidence);
         if (found.found() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", found.method.c_str());
-        ImGui::PopID();
     }
 
     const std::string missing = candidate.missingRequired();
