@@ -158,9 +158,9 @@ class EditorUi {
     void openOwnFaceMesh();
     void ownFaceStep();
     nlohmann::json ownFaceProbe() const;
-    std::optional<OwnFaceCandidate> ownFace_; // the mesh whose landmarks await confirmation
+    std::optional<OwnFaceCandidate> ownFace_;                  // the mesh whose landmarks await confirmation
     std::shared_ptr<const DeformationCascade> ownFaceCascade_; // the cascade ownFaceLoaded_ was found for
-    bool ownFaceLoaded_ = false;                          // the face is built from a user's mesh
+    bool ownFaceLoaded_ = false;                               // the face is built from a user's mesh
     // How the Reduction panel shows the cost curve (view state, not saved).
     struct CostView {
         bool logarithmic = true;

@@ -3,14 +3,14 @@
 #include "core/common/Error.h"
 #include "core/common/TextParsing.h"
 #include "core/deform/BundledFace.h"
+#include "core/deform/FaceDomain.h"
 #include "core/document/AvatarDocument.h"
 #include "core/document/CommandSupport.h"
 #include "core/document/PhonemeMapCommands.h"
 #include "core/document/VisemeCommands.h"
+#include "core/face/FaceFrame.h"
 #include "core/gltf/AvatarReduce.h"
 #include "core/gltf/TargetNames.h"
-#include "core/deform/FaceDomain.h"
-#include "core/face/FaceFrame.h"
 
 #include <algorithm>
 #include <cmath>
@@ -336,7 +336,8 @@ Document setAvatarPattern(const Document& document, const std::string& pattern,
     return next;
 }
 
-Document useOwnFace(const Document& document, const OwnFaceCandidate& candidate, face::FaceBuildReport* report) {
+Document useOwnFace(const Document& document, const OwnFaceCandidate& candidate,
+                    face::FaceBuildReport* report) {
     if (!candidate.mesh) throwInputError("own face", "no mesh loaded");
     if (const std::string missing = candidate.missingRequired(); !missing.empty())
         throwInputError(candidate.file.string(), "place the landmarks " + missing + " first");
@@ -345,7 +346,8 @@ Document useOwnFace(const Document& document, const OwnFaceCandidate& candidate,
     face::BuiltFace built = face::buildFace(*candidate.mesh, candidate.landmarks(), options);
 
     const double previousScale =
-        document.face.cascade ? face::faceFrameOf(*document.face.cascade).scaleTo(face::bundledFaceFrame()) : 1.0;
+        document.face.cascade ? face::faceFrameOf(*document.face.cascade).scaleTo(face::bundledFaceFrame())
+                              : 1.0;
     FaceModel model;
     model.cascade = std::make_shared<const DeformationCascade>(std::move(built.cascade));
     model.domain = document.face.domain ? document.face.domain

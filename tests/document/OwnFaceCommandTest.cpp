@@ -39,7 +39,8 @@ OwnFaceCandidate analyticCandidate() {
     candidate.file = "big_face.obj";
     candidate.name = "big_face";
     candidate.mesh = std::make_shared<const face::UvMesh>(face::makeUvMesh(grid, "big_face.obj"));
-    for (const auto l : face::allLandmarks()) candidate = placeLandmark(candidate, l, face::canonicalPosition(l));
+    for (const auto l : face::allLandmarks())
+        candidate = placeLandmark(candidate, l, face::canonicalPosition(l));
     return candidate;
 }
 
@@ -95,7 +96,8 @@ TEST(OwnFaceCommand, ReplacesTheFaceAndScalesTheCriterion) {
 }
 
 TEST(OwnFaceCommand, OwnFaceSurvivesTheProjectFile) {
-    const Document document = edit::generateVisemesFromFace(edit::useOwnFace(bundledDocument(), analyticCandidate()));
+    const Document document =
+        edit::generateVisemesFromFace(edit::useOwnFace(bundledDocument(), analyticCandidate()));
     const auto dir = std::filesystem::temp_directory_path() / "visemelab-document-ownface";
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);

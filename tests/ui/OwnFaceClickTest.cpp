@@ -12,8 +12,8 @@
 namespace vl::test {
 namespace {
 
-const std::filesystem::path kMediaPipe =
-    std::filesystem::path(VISEMELAB_SHARED_DATA_DIR) / "mediapipe-canonical-face" / "canonical_face_model.obj";
+const std::filesystem::path kMediaPipe = std::filesystem::path(VISEMELAB_SHARED_DATA_DIR) /
+                                         "mediapipe-canonical-face" / "canonical_face_model.obj";
 
 void chooseFile(GuiDriver& gui, const std::filesystem::path& file) {
     gui.click(gui.control("Use my mesh...", "button"));
@@ -72,7 +72,8 @@ TEST(OwnFaceClicks, UseMyMeshConfirmsLandmarksThenBuildsTheFace) {
     EXPECT_TRUE(gui.document()["own_face_step"].is_null());
     EXPECT_EQ(gui.document()["face_name"], "canonical_face_model") << messagesOf(gui);
     EXPECT_EQ(gui.document()["undo"], "Use my mesh canonical_face_model");
-    EXPECT_NE(messagesOf(gui).find("Face 'canonical_face_model' built"), std::string::npos) << messagesOf(gui);
+    EXPECT_NE(messagesOf(gui).find("Face 'canonical_face_model' built"), std::string::npos)
+        << messagesOf(gui);
     EXPECT_TRUE(gui.find("Back to the bundled face", "button").has_value());
 
     gui.key("ctrl+z");

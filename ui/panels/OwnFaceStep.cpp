@@ -15,7 +15,8 @@ namespace vl::ui {
 
 void EditorUi::openOwnFaceMesh() {
     fileDialog_.open("Use my mesh (with (u,v) on the face)", FileDialog::Mode::OpenFile,
-                     {".obj", ".ply", ".wrl", ".vrml", ".glb", ".gltf"}, [this](const std::filesystem::path& path) {
+                     {".obj", ".ply", ".wrl", ".vrml", ".glb", ".gltf"},
+                     [this](const std::filesystem::path& path) {
                          session.attempt("Use my mesh", [&] { ownFace_ = loadOwnFaceCandidate(path); });
                      });
 }
@@ -54,7 +55,8 @@ void EditorUi::ownFaceStep() {
             session.attempt("Place landmark", [&] { candidate = placeLandmark(candidate, landmark, uv); });
         ImGui::SameLine();
         if (!found.found())
-            ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.35f, 1.0f), "%s", face::isRequired(landmark) ? "missing" : "-");
+            ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.35f, 1.0f), "%s",
+                               face::isRequired(landmark) ? "missing" : "-");
         else
             ImGui::TextDisabled("%s %3.0f%%", std::string(face::sourceName(found.source)).c_str(),
                                 100.0 * found.confidence);
@@ -80,7 +82,9 @@ nlohmann::json EditorUi::ownFaceProbe() const {
         landmarks[std::string(face::landmarkName(landmark))] = {
             {"source", face::sourceName(found.source)}, {"u", found.uv[0]}, {"v", found.uv[1]}};
     }
-    return {{"file", ownFace_->file.string()}, {"missing", ownFace_->missingRequired()}, {"landmarks", landmarks}};
+    return {{"file", ownFace_->file.string()},
+            {"missing", ownFace_->missingRequired()},
+            {"landmarks", landmarks}};
 }
 
 } // namespace vl::ui

@@ -5,8 +5,8 @@
 // do the tests. Each edit is a validated command of the core (core/document/Commands.h) committed
 // as one undo step only when it applied, so bad input changes nothing.
 #include "core/document/Document.h"
-#include "core/document/PhonemeMapCommands.h"
 #include "core/document/OwnFace.h"
+#include "core/document/PhonemeMapCommands.h"
 #include "core/export/Export.h"
 #include "core/gltf/AvatarWriter.h"
 #include "core/phonetics/PhonemeCounting.h"
