@@ -17,12 +17,7 @@ const std::filesystem::path kMediaPipe = std::filesystem::path(VISEMELAB_SHARED_
 
 void chooseFile(GuiDriver& gui, const std::filesystem::path& file) {
     gui.click(gui.control("Use my mesh...", "button"));
-    ASSERT_TRUE(gui.document()["file_dialog_open"].get<bool>());
-    gui.click(gui.control("##name", "text"));
-    gui.key("ctrl+a");
-    gui.type(file.string());
-    gui.click(gui.control("Open", "button"));
-    gui.waitIdle();
+    gui.chooseFile(file);
 }
 
 std::string messagesOf(const GuiDriver& gui) {
