@@ -40,8 +40,9 @@ int costPlot(const char* id, std::span<const double> values, const CostPlotOptio
     double hi = 0.0, smallest = 0.0;
     for (const double v : values)
         if (std::isfinite(v)) hi = std::max(hi, v); // a p the constraints rule out has no point
+    const double zero = 1e-5 * hi;
     for (const double v : values)
-        if (std::isfinite(v) && v > 1e-5 * hi) smallest = smallest > 0.0 ? std::min(smallest, v) : v;
+        if (std::isfinite(v) && v > zero) smallest = smallest > 0.0 ? std::min(smallest, v) : v;
     const bool logarithmic = options.logarithmic && smallest > 0.0 && hi > smallest;
     const double lo = logarithmic ? std::pow(10.0, std::floor(std::log10(smallest))) : 0.0;
     if (logarithmic)
@@ -128,6 +129,8 @@ int costPlot(const char* id, std::span<const double> values, const CostPlotOptio
         ImGui::BeginTooltip();
         if (!std::isfinite(value))
             ImGui::Text("p = %d: no grouping satisfies the constraints", under);
+        else if (value <= zero)
+            ImGui::Text("p = %d: 0 %s", under, options.unit);
         else
             ImGui::Text("p = %d: %.4g %s", under, value, options.unit);
         if (std::isfinite(value) && values[0] > 0.0)
