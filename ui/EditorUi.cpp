@@ -188,6 +188,7 @@ nlohmann::json EditorUi::probeSummary() {
         {"say", sayProbe()},
         {"avatar", avatarSummary(document)},
         {"avatar_mesh_report", avatarMeshReport()},
+        {"avatar_gltfpack", avatarGltfpackChosen()},
         {"face_name", document.face.cascade ? document.face.cascade->name : std::string()},
         {"own_face_step", ownFaceProbe()}};
     summary.update(polishSummary());

@@ -204,14 +204,19 @@ class EditorUi {
     std::string importError_; // the core's message for the last failed import, shown in the panel
 
     // --- avatars (File > Import avatar..., panels/AvatarPanel.cpp) ---------------------------------
-    GpuMesh contextMesh_;                     // the avatar's meshes without visemes, drawn greyed
-    const void* uploadedContext_ = nullptr;   // the scan contextMesh_ shows
-    std::string avatarPattern_;               // the target pattern being typed (view state)
-    const void* avatarPatternScan_ = nullptr; // the scan avatarPattern_ was last reset from
-    int avatarNames_ = 0;                     // export: 0 original names, 1 merged
-    bool avatarTargetNormals_ = true;         // export: NORMAL/TANGENT displacements of the keys
-    int avatarMeshRow_ = -1;                  // the mesh whose import report is shown
-    std::string avatarMeshReport() const;     // that report (empty: none selected)
+    GpuMesh contextMesh_;                      // the avatar's meshes without visemes, drawn greyed
+    const void* uploadedContext_ = nullptr;    // the scan contextMesh_ shows
+    std::string avatarPattern_;                // the target pattern being typed (view state)
+    const void* avatarPatternScan_ = nullptr;  // the scan avatarPattern_ was last reset from
+    int avatarNames_ = 0;                      // export: 0 original names, 1 merged
+    bool avatarTargetNormals_ = true;          // export: NORMAL/TANGENT displacements of the keys
+    int avatarGltfpack_ = -1;                  // export: re-compress (1), not (0), -1: as the input was
+    std::filesystem::path avatarGltfpackPath_; // found once (core/gltf/Gltfpack.h); empty: none
+    bool avatarGltfpackSearched_ = false;
+    void avatarGltfpackOption();
+    bool avatarGltfpackChosen() const;
+    int avatarMeshRow_ = -1;              // the mesh whose import report is shown
+    std::string avatarMeshReport() const; // that report (empty: none selected)
     void openAvatarImport();
     void openAvatarExport();
     void avatarSection();       // Visemes panel: file, target pattern, meshes and their targets

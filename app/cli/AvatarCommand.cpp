@@ -49,15 +49,6 @@ struct ReduceOptions {
     bool gltfpack = false;
 };
 
-// True when the avatar was stored compressed or quantised (its reduced keys are written as floats).
-bool compressedInput(const AvatarScan& scan) {
-    for (const AvatarMesh& mesh : scan.meshes)
-        for (const AvatarPrimitive& primitive : mesh.primitives)
-            for (const std::string& storage : primitive.storage)
-                if (storage != "sparse targets") return true;
-    return false;
-}
-
 double millisecondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
@@ -129,7 +120,7 @@ int runReduce(const ReduceOptions& o) {
         Recompressed packed = recompressWithGltfpack(r.glb, findGltfpack(), {o.targets});
         r.glb = std::move(packed.glb);
         r.summary.notes.insert(r.summary.notes.end(), packed.notes.begin(), packed.notes.end());
-    } else if (compressedInput(scan)) {
+    } else if (avatarStoredCompressed(scan)) {
         const std::filesystem::path gltfpack = findGltfpack();
         r.summary.notes.push_back(
             gltfpack.empty()

@@ -316,4 +316,12 @@ AvatarScan scanAvatar(const GltfDocument& doc, const AvatarSelection& selection)
     }
 }
 
+bool avatarStoredCompressed(const AvatarScan& scan) {
+    for (const AvatarMesh& mesh : scan.meshes)
+        for (const AvatarPrimitive& primitive : mesh.primitives)
+            for (const std::string& storage : primitive.storage)
+                if (storage != "sparse targets") return true;
+    return false;
+}
+
 } // namespace vl

@@ -75,4 +75,8 @@ std::string visemeJoinKey(std::string_view targetName);
 // The viseme set may hold fewer than 2 visemes (a report still describes the file).
 AvatarScan scanAvatar(const GltfDocument& doc, const AvatarSelection& selection);
 
+// True when the avatar was stored compressed or quantised (Draco, meshopt, quantised accessors): its
+// reduced keys are written as plain floats, so re-compression (core/gltf/Gltfpack.h) is worth offering.
+bool avatarStoredCompressed(const AvatarScan& scan);
+
 } // namespace vl

@@ -10,6 +10,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -251,6 +253,69 @@ TEST(AvatarClicks, ReducedAvatarIsExportedAndTheProjectRefersToTheAvatar) {
     EXPECT_EQ(again.document()["visemes"].get<int>(), 15);
     EXPECT_EQ(again.document()["target"], saved["reduction"]["target"]);
     EXPECT_FALSE(hasError(again)) << again.document()["messages"].dump();
+}
+
+// The Export panel offers gltfpack re-compression: on by default for an avatar read compressed
+// (meshopt), so it goes out compressed; a real click turns it off. Without gltfpack the option is
+// greyed with a note saying how to get it. Skips loudly when the build folder has no gltfpack
+// (installed by the gltfpack_install test).
+TEST(AvatarClicks, ExportRecompressesWithGltfpackWhenChosen) {
+    REQUIRE_GUI_TOOLS();
+    const std::filesystem::path gltfpack = VISEMELAB_GLTFPACK_INSTALLED;
+    if (!std::filesystem::exists(gltfpack))
+        GTEST_SKIP() << "no gltfpack at " << gltfpack << " (ctest -R gltfpack_install installs it)";
+    AvatarFolder folder("gltfpack");
+    writeFileAtomically(folder.avatar, rpmLikeAvatar({.storage = FixtureStorage::Meshopt}));
+    const auto usesMeshopt = [](const std::filesystem::path& file) {
+        const GltfDocument written = loadGltfDocument(file);
+        const auto used = written.json.value("extensionsUsed", nlohmann::json::array());
+        return std::find(used.begin(), used.end(), "EXT_meshopt_compression") != used.end();
+    };
+    const auto exportTo = [](GuiDriver& gui, const std::filesystem::path& out) {
+        gui.click(gui.control("Export avatar...", "button"));
+        chooseFile(gui, out, "Save");
+        for (int i = 0; i < 600 && !std::filesystem::exists(out) && !hasError(gui); ++i) gui.waitFrames(1);
+        gui.waitIdle();
+    };
+    std::filesystem::create_directories(folder.dir / "out");
+    const std::string option = "re-compress with gltfpack (meshopt + quantised, like real exporters)";
+    {
+        ::setenv("VISEMELAB_GLTFPACK", gltfpack.c_str(), 1);
+        GuiDriver gui({"--avatar", folder.avatar.string(), "--panel", "Export"});
+        ::unsetenv("VISEMELAB_GLTFPACK");
+        gui.waitIdle();
+        gui.control(option, "checkbox");
+        EXPECT_TRUE(gui.document()["avatar_gltfpack"].get<bool>())
+            << "a compressed avatar goes out compressed";
+        const auto packed = folder.dir / "out" / "packed.glb";
+        exportTo(gui, packed);
+        ASSERT_TRUE(std::filesystem::is_regular_file(packed)) << gui.document()["messages"].dump();
+        EXPECT_NE(lastMessage(gui).find("re-compressed with gltfpack"), std::string::npos)
+            << lastMessage(gui);
+        EXPECT_TRUE(usesMeshopt(packed));
+
+        gui.click(gui.control(option, "checkbox"));
+        EXPECT_FALSE(gui.document()["avatar_gltfpack"].get<bool>());
+        const auto plain = folder.dir / "out" / "plain.glb";
+        exportTo(gui, plain);
+        ASSERT_TRUE(std::filesystem::is_regular_file(plain)) << gui.document()["messages"].dump();
+        // Untouched meshes keep their meshopt buffers either way; only the re-compressed file is smaller.
+        EXPECT_EQ(lastMessage(gui).find("re-compressed with gltfpack"), std::string::npos)
+            << lastMessage(gui);
+        EXPECT_LT(std::filesystem::file_size(packed), std::filesystem::file_size(plain));
+        EXPECT_FALSE(hasError(gui)) << gui.document()["messages"].dump();
+    }
+    ::setenv("VISEMELAB_GLTFPACK", "/nonexistent/gltfpack", 1);
+    GuiDriver without({"--avatar", folder.avatar.string(), "--panel", "Export"});
+    ::unsetenv("VISEMELAB_GLTFPACK");
+    without.waitIdle();
+    EXPECT_TRUE(
+        without.find("gltfpack not found: install it with `npm install -g gltfpack` (or a native build "
+                     "from meshoptimizer), or set VISEMELAB_GLTFPACK to its path",
+                     "text"))
+        << without.report()["controls"].dump();
+    EXPECT_FALSE(without.document()["avatar_gltfpack"].get<bool>());
+    EXPECT_ALIVE(without);
 }
 
 } // namespace

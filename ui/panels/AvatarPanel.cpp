@@ -4,6 +4,7 @@
 // writes the same avatar with its visemes reduced. The work is the core's (core/document/AvatarDocument.h).
 #include "core/gltf/AvatarReport.h"
 #include "core/gltf/AvatarScan.h"
+#include "core/gltf/Gltfpack.h"
 #include "ui/EditorUi.h"
 #include "ui/panels/PanelWidgets.h"
 #include "ui/widgets/Controls.h"
@@ -29,9 +30,10 @@ void EditorUi::openAvatarExport() {
     }
     std::string extension = avatar.file.extension().string();
     if (extension != ".vrm") extension = ".glb";
-    AvatarWriteOptions options;
-    options.names = avatarNames_ == 1 ? AvatarNames::Merged : AvatarNames::Original;
-    options.targetNormals = avatarTargetNormals_;
+    EditorSession::AvatarExport options;
+    options.write.names = avatarNames_ == 1 ? AvatarNames::Merged : AvatarNames::Original;
+    options.write.targetNormals = avatarTargetNormals_;
+    options.gltfpack = avatarGltfpackChosen();
     fileDialog_.open(
         "Export avatar", FileDialog::Mode::SaveFile, {".glb", ".vrm"},
         [this, options](const auto& path) {
@@ -154,9 +156,40 @@ void EditorUi::avatarExportSection() {
     ImGui::SameLine();
     ctl::RadioButton("merged (one target per key)", &avatarNames_, 1);
     ctl::Checkbox("normals of the keys (NORMAL/TANGENT displacements)", &avatarTargetNormals_);
+    avatarGltfpackOption();
     if (ctl::Button("Export avatar...", ImVec2(200, 0))) openAvatarExport();
     ImGui::SameLine();
     noteText("a .glb (or .vrm), never the file it was read from");
+}
+
+// Re-compression offered where it can run: gltfpack found, and not a VRM (gltfpack renumbers what
+// the VRM extension addresses). Checked by default when the avatar came in compressed, so a
+// compressed avatar goes out compressed unless the designer says otherwise.
+void EditorUi::avatarGltfpackOption() {
+    const DocumentAvatar& avatar = session.document().avatar;
+    if (!avatarGltfpackSearched_) {
+        avatarGltfpackPath_ = findGltfpack();
+        avatarGltfpackSearched_ = true;
+    }
+    const bool vrm = avatar.file.extension() == ".vrm";
+    const bool available = !avatarGltfpackPath_.empty() && !vrm;
+    bool chosen = avatarGltfpackChosen();
+    ImGui::BeginDisabled(!available);
+    if (ctl::Checkbox("re-compress with gltfpack (meshopt + quantised, like real exporters)", &chosen))
+        avatarGltfpack_ = chosen ? 1 : 0;
+    ImGui::EndDisabled();
+    if (vrm)
+        noteText("not for a VRM: gltfpack renumbers the nodes and meshes its extension refers to");
+    else if (avatarGltfpackPath_.empty())
+        noteText((std::string("gltfpack not found: ") + kGltfpackHint).c_str());
+    else if (avatarStoredCompressed(*avatar.scan))
+        noteText("the avatar was read compressed; without this its keys are written as plain floats");
+}
+
+bool EditorUi::avatarGltfpackChosen() const {
+    const DocumentAvatar& avatar = session.document().avatar;
+    if (!avatar.isSet() || avatarGltfpackPath_.empty() || avatar.file.extension() == ".vrm") return false;
+    return avatarGltfpack_ < 0 ? avatarStoredCompressed(*avatar.scan) : avatarGltfpack_ == 1;
 }
 
 } // namespace vl::ui

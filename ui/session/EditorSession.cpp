@@ -11,6 +11,7 @@
 #include "core/export/Gltf.h"
 #include "core/export/ModelFrequencies.h"
 #include "core/gltf/AvatarScan.h"
+#include "core/gltf/Gltfpack.h"
 #include "core/io/MeshIO.h"
 #include "core/phonetics/EspeakTranscriber.h"
 #include "core/phonetics/PhonemeMaps.h"
@@ -283,8 +284,7 @@ void EditorSession::setAvatarPattern(const std::string& pattern) {
 }
 
 std::string EditorSession::writeAvatarExport(const Document& document, const Project& snapshot,
-                                             const std::filesystem::path& out,
-                                             const AvatarWriteOptions& options) {
+                                             const std::filesystem::path& out, const AvatarExport& options) {
     checkAvatarOutput(document, out);
     // The grouping shown (recorded in the snapshot), else a fresh reduction with the document's settings.
     const auto& stored = snapshot.reduction.result;
@@ -293,24 +293,34 @@ std::string EditorSession::writeAvatarExport(const Document& document, const Pro
             ? stored->groupOf()
             : reduceProject(snapshot, *document.visemes).result.groupOf();
     AvatarWriteSummary summary;
-    writeFileAtomically(out, reducedAvatarGlb(document, groupOf, options, &summary));
+    std::string glb = reducedAvatarGlb(document, groupOf, options.write, &summary);
+    if (options.gltfpack) {
+        const std::filesystem::path gltfpack = findGltfpack();
+        if (gltfpack.empty())
+            throwInputError("gltfpack", std::string("not found, so the avatar cannot be re-compressed; ") +
+                                            kGltfpackHint);
+        Recompressed packed = recompressWithGltfpack(glb, gltfpack, {document.avatar.pattern});
+        glb = std::move(packed.glb);
+        summary.notes.insert(summary.notes.end(), packed.notes.begin(), packed.notes.end());
+    }
+    writeFileAtomically(out, glb);
     int keys = 0;
     for (int g : groupOf) keys = std::max(keys, g + 1);
     std::string message = "Exported the avatar: " + std::to_string(document.visemeCount()) + " visemes -> " +
-                          std::to_string(keys) + " keys (names " + toString(options.names) + ") to " +
-                          out.string();
+                          std::to_string(keys) + " keys (names " + toString(options.write.names) + ")" +
+                          (options.gltfpack ? ", re-compressed with gltfpack," : "") + " to " + out.string();
     for (const std::string& note : summary.notes) message += "; " + note;
     return message;
 }
 
 std::vector<std::string> EditorSession::exportAvatar(const std::filesystem::path& out,
-                                                     const AvatarWriteOptions& options) {
+                                                     const AvatarExport& options) {
     const std::string message = writeAvatarExport(document(), projectSnapshot(), out, options);
     info(message);
     return {message};
 }
 
-void EditorSession::startExportAvatar(const std::filesystem::path& out, const AvatarWriteOptions& options) {
+void EditorSession::startExportAvatar(const std::filesystem::path& out, const AvatarExport& options) {
     if (!document().avatar.isSet())
         throwInputError("export avatar", "the document has no avatar: use File > Import avatar... first");
     if (avatarExportTask_.running()) throwInputError("export avatar", "an export is still running");

@@ -111,12 +111,17 @@ class EditorSession {
     void startImportAvatar(const std::filesystem::path& file, const std::string& pattern = {});
     // Another target pattern for the avatar's visemes (one undo step; refused when < 2 visemes).
     void setAvatarPattern(const std::string& pattern);
+    // How an avatar is exported: the writer's options, and whether gltfpack re-compresses the result
+    // (core/gltf/Gltfpack.h: EXT_meshopt_compression + KHR_mesh_quantization, checked by reading back).
+    struct AvatarExport {
+        AvatarWriteOptions write;
+        bool gltfpack = false;
+    };
     // Writes the avatar with its visemes reduced (the current grouping, else a fresh reduction with
     // the document's settings) as a GLB; never over the avatar it was read from. Returns notes.
-    std::vector<std::string> exportAvatar(const std::filesystem::path& out,
-                                          const AvatarWriteOptions& options);
+    std::vector<std::string> exportAvatar(const std::filesystem::path& out, const AvatarExport& options);
     // The same on a worker thread from a snapshot taken now; the result is a message in poll().
-    void startExportAvatar(const std::filesystem::path& out, const AvatarWriteOptions& options);
+    void startExportAvatar(const std::filesystem::path& out, const AvatarExport& options);
 
     // --- frequencies -------------------------------------------------------------------------
     // Normalised viseme frequencies from the current table (throws InputError when invalid).
@@ -284,7 +289,7 @@ class EditorSession {
     static Loaded loadSampleFiles();
     static Loaded loadAvatarFile(const std::filesystem::path& file, const std::string& pattern);
     static std::string writeAvatarExport(const Document& document, const Project& snapshot,
-                                         const std::filesystem::path& out, const AvatarWriteOptions& options);
+                                         const std::filesystem::path& out, const AvatarExport& options);
     // True when `file` lies inside the bundled assets folder (never written by the editor).
     static bool isBundled(const std::filesystem::path& file);
     // The target of a save request (throws InputError when there is none).
