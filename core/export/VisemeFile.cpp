@@ -1,5 +1,6 @@
 #include "core/export/VisemeFile.h"
 
+#include "core/common/AtomicFile.h"
 #include "core/common/Error.h"
 #include "core/common/TextParsing.h"
 #include "core/export/KeyMeshFiles.h"
