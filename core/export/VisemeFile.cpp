@@ -47,7 +47,8 @@ std::vector<VisemeParameters> parseVisemeFile(std::string_view text, std::string
     return visemes;
 }
 
-std::vector<VisemeParameters> readVisemeFile(const std::filesystem::path& path, const DeformationCascade& face) {
+std::vector<VisemeParameters> readVisemeFile(const std::filesystem::path& path,
+                                             const DeformationCascade& face) {
     return parseVisemeFile(readFileToString(path), path.string(), face);
 }
 

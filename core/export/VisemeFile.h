@@ -17,6 +17,7 @@ namespace vl {
 // parameters of `face`, with values inside their range. Throws InputError naming `source`.
 std::vector<VisemeParameters> parseVisemeFile(std::string_view text, std::string_view source,
                                               const DeformationCascade& face);
-std::vector<VisemeParameters> readVisemeFile(const std::filesystem::path& path, const DeformationCascade& face);
+std::vector<VisemeParameters> readVisemeFile(const std::filesystem::path& path,
+                                             const DeformationCascade& face);
 
 } // namespace vl

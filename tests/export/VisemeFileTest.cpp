@@ -56,7 +56,8 @@ TEST(VisemeFile, ErrorsNameTheFileAndTheJsonPath) {
 
 TEST(VisemeFile, RefusesNamesThatAreNotFileNames) {
     for (const char* name : {"../up", "a/b", "neutral", "a b", ""})
-        EXPECT_NE(errorOf(std::string(R"({"visemes": [{"name": ")") + name + R"("}]})").find("mine.json:/visemes/0/name"),
+        EXPECT_NE(errorOf(std::string(R"({"visemes": [{"name": ")") + name + R"("}]})")
+                      .find("mine.json:/visemes/0/name"),
                   std::string::npos)
             << name;
 }

@@ -57,7 +57,8 @@ std::vector<std::pair<std::string, std::string_view>> unpack(std::string_view in
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     namespace fs = std::filesystem;
     const fs::path folder = vl::fuzz::freshInputFolder();
-    for (const auto& [name, body] : unpack(vl::fuzz::asText(data, size))) vl::fuzz::writeFile(folder / name, body);
+    for (const auto& [name, body] : unpack(vl::fuzz::asText(data, size)))
+        vl::fuzz::writeFile(folder / name, body);
     // Like `reduce --visemes DIR` without --neutral: the first of neutral.obj/.ply/.wrl.
     fs::path neutral;
     for (const char* candidate : {"neutral.obj", "neutral.ply", "neutral.wrl"})
@@ -68,7 +69,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         vl::fuzz::checkMesh(set.neutral);
         if (set.size() < 2) vl::fuzz::fail("loaded a viseme set of fewer than 2 visemes");
         for (const vl::Viseme& viseme : set.visemes)
-            if (viseme.positions.size() != set.vertexCount()) vl::fuzz::fail("viseme not interpolable with the neutral");
+            if (viseme.positions.size() != set.vertexCount())
+                vl::fuzz::fail("viseme not interpolable with the neutral");
     });
     return 0;
 }
