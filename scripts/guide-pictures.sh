@@ -21,7 +21,7 @@ shot() { # shot NAME ARGS... : one picture at 1280x800
 shot visemes --frames 8 --screenshot-bits 6 --panel Visemes --viseme ou --no-wireframe
 shot frequencies --frames 8 --screenshot-bits 6 --panel Frequencies --no-wireframe
 shot phoneme-map --frames 8 --screenshot-bits 6 --panel Frequencies --map-start mpeg4 --no-wireframe
-shot weights --screenshot-bits 6 --panel Weights --brush subtract --drag 760 380 1010 410 --frames 20 --no-wireframe
+shot weights --screenshot-bits 6 --panel Weights --weights uniform --brush subtract --drag 760 380 1010 410 --frames 20 --no-wireframe
 shot deformation --frames 8 --panel Deformation --preset oh --field zygomatic_l --no-wireframe --screenshot-bits 5
 shot refinement --frames 8 --panel Refinement --refine contour --preset aa --screenshot-bits 4
 shot reduction --frames 8 --screenshot-bits 6 --panel Reduction --viseme E --no-wireframe

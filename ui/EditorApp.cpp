@@ -1,6 +1,7 @@
 #include "ui/EditorApp.h"
 
 #include "core/common/Error.h"
+#include "core/reduce/Weights.h"
 #include "ui/EditorUi.h"
 #include "ui/session/EditorSession.h"
 #include "ui/widgets/GuiProbe.h"
@@ -107,6 +108,12 @@ void applyStartOptions(const EditorOptions& options, EditorSession& session, Edi
             throwInputError("--field", "no analytic field named '" + options.field + "'");
     });
     ui.setWireframe(options.wireframe);
+    step(!options.weights.empty(), [&] {
+        const auto mode = weightModeFromString(options.weights);
+        if (!mode)
+            throwInputError("--weights", "expected uniform, area or painted, got '" + options.weights + "'");
+        session.setWeightMode(*mode);
+    });
     step(!options.brush.empty(), [&] {
         const std::string modes[] = {"add", "subtract", "smooth"};
         const auto it = std::find(std::begin(modes), std::end(modes), options.brush);

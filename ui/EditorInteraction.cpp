@@ -6,6 +6,7 @@
 #include "core/inspect/VertexErrors.h"
 #include "core/paint/PaintRegions.h"
 #include "core/paint/RayPick.h"
+#include "core/paint/VertexVisibility.h"
 #include "core/paint/WeightBrush.h"
 
 #include <imgui.h>
@@ -276,8 +277,10 @@ void EditorUi::paintBoxSelection(const ViewportEvents& events) {
                                           Vec3(ray.direction.x, ray.direction.y, ray.direction.z)))
             flipped = facesAwayAt(surface, hit->point, *eye);
     }
-    const auto boxed =
+    auto boxed =
         verticesInRectangle(surface, matrix, {ndcX(a.x), ndcY(a.y), ndcX(b.x), ndcY(b.y)}, eye, flipped);
+    // Facing the camera is not enough: only what the box shows (not the far lip behind the near one).
+    if (eye) boxed = visibleVertices(surface, boxed, matrix, *eye);
     std::vector<std::uint32_t> result;
     auto& selection = paintTool_.selection;
     if (io.KeyShift)
@@ -289,6 +292,31 @@ void EditorUi::paintBoxSelection(const ViewportEvents& events) {
     else
         result = boxed;
     selection = std::move(result);
+    const glm::vec3 e = camera.eye();
+    paintTool_.boxEye = Vec3(e.x, e.y, e.z);
+}
+
+std::size_t EditorUi::selectedHidden() const {
+    const auto& selection = paintTool_.selection;
+    if (!paintTool_.boxEye || selection.empty()) return 0;
+    const Vec3& eye = *paintTool_.boxEye;
+    if (selectionHidden_ && selectionHidden_->selection == selection && selectionHidden_->eye == eye)
+        return selectionHidden_->hidden;
+    // The picking ray from the eye towards each vertex: hidden when it first hits a triangle that
+    // does not hold the vertex, short of it (independent of the selection's own visibility test).
+    std::size_t hidden = 0;
+    const auto& positions = paintSurface_.positions();
+    const auto& triangles = paintSurface_.triangles();
+    for (const std::uint32_t v : selection) {
+        const Vec3 towards = positions[v] - eye;
+        const double distance = towards.norm();
+        const auto hit = intersectRay(positions, triangles, eye, towards / distance);
+        if (!hit || hit->distance >= distance * (1.0 - 1e-6)) continue;
+        const Triangle& t = triangles[hit->triangle];
+        if (t[0] != v && t[1] != v && t[2] != v) ++hidden;
+    }
+    selectionHidden_ = HiddenCount{selection, eye, hidden};
+    return hidden;
 }
 
 void EditorUi::drawSelection(const ViewportEvents& events) {
@@ -336,6 +364,7 @@ nlohmann::json EditorUi::paintSummary() const {
             {"radius_model", paintTool_.modelRadius},
             {"front_faces_only", brush_.frontFacesOnly},
             {"selected", paintTool_.selection.size()},
+            {"selected_hidden", selectedHidden()},
             {"vertices", paintSurface_.vertexCount()},
             {"fill_value", paintTool_.fillValue},
             {"readout", paintTool_.readout ? nlohmann::json(*paintTool_.readout) : nlohmann::json()},

@@ -222,7 +222,17 @@ class EditorUi {
         std::uint32_t readoutVertex = 0;      // the vertex nearest to the cursor's hit
         double modelRadius = 0.0;             // the brush radius at the cursor, model units
         double unitsPerPixel = 0.0;           // model units per screen pixel at the cursor
+        std::optional<Vec3> boxEye;           // the camera position of the last box selection
     } paintTool_;
+    // For the probe: how many selected vertices the eye of the last box does not see, found by ray
+    // picking (recomputed when the selection changes).
+    struct HiddenCount {
+        std::vector<std::uint32_t> selection;
+        Vec3 eye;
+        std::size_t hidden = 0;
+    };
+    mutable std::optional<HiddenCount> selectionHidden_;
+    std::size_t selectedHidden() const;
     std::vector<double> shownWeights_; // the metric's weights as the colours show them
     std::shared_ptr<const VisemeSet> paintSurfaceSet_;
     PaintSurface paintSurface_;

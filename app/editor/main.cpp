@@ -26,6 +26,7 @@ int main(int argc, char** argv) {
     app.add_option("--screenshot-bits", options.screenshotBits,
                    "Significant bits per colour channel in the screenshot (smaller files)")
         ->check(CLI::Range(1, 8));
+    app.add_option("--weights", options.weights, "Weight mode to set once loaded: uniform, area or painted");
     app.add_option("--brush", options.brush, "Paint in the Weights panel: add, subtract or smooth");
     app.add_option(
         "--merged", options.merged,

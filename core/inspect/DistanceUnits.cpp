@@ -50,9 +50,13 @@ int axisTicks(double lo, double hi, int count, bool logarithmic, double* ticks, 
     if (!(hi >= lo) || !std::isfinite(lo) || !std::isfinite(hi) || capacity <= 0 || count < 1) return 0;
     int written = 0;
     if (logarithmic && lo > 0.0) {
-        for (double p = std::pow(10.0, std::ceil(std::log10(lo) - 1e-9));
-             p <= hi * (1 + 1e-9) && written < capacity; p *= 10.0)
-            ticks[written++] = p;
+        // The powers of ten in range; over more decades than `count` allows, every k-th one
+        // (exponents divisible by k), so the labels keep their room.
+        const int first = static_cast<int>(std::ceil(std::log10(lo) - 1e-9));
+        const int last = static_cast<int>(std::floor(std::log10(hi) + 1e-9));
+        const int step = std::max(1, (last - first + count - 1) / count);
+        for (int e = first; e <= last && written < capacity; ++e)
+            if (e % step == 0) ticks[written++] = std::pow(10.0, e);
         if (written >= 2) return written;
         written = 0; // less than a decade: fall through to linear steps
     }

@@ -20,8 +20,9 @@ double millimetresPer(LengthUnit unit);
 const char* lengthUnitName(LengthUnit unit); // "m", "cm", "mm", "in"
 
 // Nice axis ticks covering [lo, hi] (1, 2, 5 x 10^k steps), at most about `count` of them;
-// for a logarithmic axis (lo > 0) the powers of ten in [lo, hi], or 1-2-5 steps when there are
-// fewer than two. Returns the number written to `ticks` (capacity `capacity`).
+// for a logarithmic axis (lo > 0) the powers of ten in [lo, hi] (every k-th one when there are
+// more than about `count`), or 1-2-5 steps when there are fewer than two. Returns the number written to
+// `ticks` (capacity `capacity`).
 int axisTicks(double lo, double hi, int count, bool logarithmic, double* ticks, int capacity);
 
 } // namespace vl

@@ -59,6 +59,13 @@ TEST(DistanceUnits, AxisTicksAreNiceAndCoverTheRange) {
     ASSERT_EQ(count, 4);
     EXPECT_NEAR(ticks[0], 1e-4, 1e-16);
     EXPECT_NEAR(ticks[3], 0.1, 1e-12);
+    count = axisTicks(1e-8, 10.0, 4, true, ticks, 32); // ten decades: every third, 1e-6, 1e-3, 1
+    ASSERT_EQ(count, 3);
+    EXPECT_NEAR(ticks[0], 1e-6, 1e-18);
+    EXPECT_NEAR(ticks[1], 1e-3, 1e-15);
+    EXPECT_NEAR(ticks[2], 1.0, 1e-12);
+    count = axisTicks(0.01, 10.0, 4, true, ticks, 32); // four decades: all of them
+    EXPECT_EQ(count, 4);
     count = axisTicks(0.2, 0.5, 4, true, ticks, 32); // less than a decade: linear steps
     EXPECT_GE(count, 2);
     for (int i = 0; i < count; ++i) EXPECT_TRUE(ticks[i] >= 0.2 - 1e-12 && ticks[i] <= 0.5 + 1e-12);

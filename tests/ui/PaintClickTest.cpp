@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 
 namespace vl::test {
@@ -135,6 +136,45 @@ TEST(PaintClicks, RegionFillAndBoxSelectionFill) {
     gui.click(gui.control("Clear", "button"));
     EXPECT_EQ(paint(gui)["selected"].get<int>(), 0);
     EXPECT_ALIVE(gui);
+}
+
+// Box selection respects occlusion like the brush: seen from the side, a box over the whole face
+// takes the near cheek, the nose and the lips but no vertex hidden behind them, although many of
+// those face the camera (the far cheek beside the nose, the far corner of the mouth). The probe
+// counts the selected vertices a picking ray from the camera does not reach first.
+TEST(PaintClicks, BoxSelectionTakesOnlyWhatIsSeen) {
+    REQUIRE_GUI_TOOLS();
+    GuiDriver gui({"--sample", "--panel", "Weights"});
+    gui.waitIdle();
+    const Point c = viewCentre(gui);
+    // A left drag with the brush off orbits: turn the head about 60 degrees to a three-quarter view.
+    gui.drag(c.x, c.y, c.x + 170, c.y, 10);
+    gui.waitFrames();
+    const double yaw = gui.document()["camera"]["yaw"].get<double>();
+    ASSERT_GT(std::abs(yaw), 0.6) << gui.document()["camera"].dump();
+    gui.click(gui.control("select box", "radio"));
+    ASSERT_EQ(paint(gui)["tool"], "select");
+    const auto view = gui.control("main", "view");
+    const double x0 = view["x"].get<double>() + 4, y0 = view["y"].get<double>() + 4;
+    const double x1 = x0 + view["width"].get<double>() - 8, y1 = y0 + view["height"].get<double>() - 8;
+    auto boxEverything = [&] {
+        gui.drag(x0, y0, x1, y1, 8);
+        gui.waitFrames();
+        EXPECT_TRUE(gui.alive()) << "editor " << gui.exitStatus() << ":\n" << gui.log();
+        return paint(gui)["selected"].get<int>();
+    };
+    ASSERT_TRUE(paint(gui)["front_faces_only"].get<bool>());
+    const int seen = boxEverything();
+    EXPECT_GT(seen, paint(gui)["vertices"].get<int>() / 5) << "the visible side of the face";
+    EXPECT_EQ(paint(gui)["selected_hidden"].get<int>(), 0) << "hidden vertices were selected";
+    // Without "front faces only" the box takes everything inside it, hidden or not.
+    gui.click(gui.control("Front faces only (nothing through to the back)", "checkbox"));
+    ASSERT_FALSE(paint(gui)["front_faces_only"].get<bool>());
+    const int everything = boxEverything();
+    EXPECT_GT(everything, seen);
+    EXPECT_GT(paint(gui)["selected_hidden"].get<int>(), 0);
+    EXPECT_GE(everything - seen, paint(gui)["selected_hidden"].get<int>())
+        << "front faces only leaves out every hidden vertex (and those facing away)";
 }
 
 // The camera of each view survives tab switches: orbit and zoom the visemes, visit the face tabs

@@ -156,7 +156,7 @@ void EditorUi::avatarExportSection() {
     ctl::Checkbox("normals of the keys (NORMAL/TANGENT displacements)", &avatarTargetNormals_);
     if (ctl::Button("Export avatar...", ImVec2(200, 0))) openAvatarExport();
     ImGui::SameLine();
-    ImGui::TextDisabled("a .glb (or .vrm), never the file it was read from");
+    noteText("a .glb (or .vrm), never the file it was read from");
 }
 
 } // namespace vl::ui

@@ -78,7 +78,8 @@ void EditorUi::constraintsSection() {
         const bool remove = ctl::SmallButton("x");
         ImGui::PopID();
         ImGui::SameLine();
-        ImGui::TextUnformatted(text.c_str());
+        ImGui::TextWrapped("%s", text.c_str());
+        probe::recordArea(text.c_str(), "text");
         return remove;
     };
     for (std::size_t i = 0; i < constraints.pinned.size(); ++i)

@@ -65,7 +65,7 @@ void EditorUi::exportPanel() {
                                  target.defaultName);
         }
         ImGui::SameLine();
-        ImGui::TextDisabled("%s", target.help);
+        noteText(target.help);
     }
 
     if (session.document().avatar.isSet()) avatarExportSection();
@@ -79,10 +79,10 @@ void EditorUi::exportPanel() {
                              });
         });
     ImGui::SameLine();
-    ImGui::TextDisabled("the targets become the visemes");
+    noteText("the targets become the visemes");
     if (ctl::Button("Import avatar...", ImVec2(200, 0))) openAvatarImport();
     ImGui::SameLine();
-    ImGui::TextDisabled("visemes of every mesh; export writes the same avatar back");
+    noteText("visemes of every mesh; export writes the same avatar back");
 }
 
 } // namespace vl::ui

@@ -18,6 +18,15 @@ inline void sectionHeader(const char* text) {
     ImGui::Separator();
 }
 
+// Grey explanatory text (beside a control after SameLine, or on its own line), wrapped at the
+// panel's edge so it is never cut; recorded for the GUI tests' "nothing cut" check.
+inline void noteText(const char* text) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("%s", text);
+    ImGui::PopStyleColor();
+    probe::recordArea(text, "text");
+}
+
 inline void helpMarker(const char* text) {
     ImGui::SameLine();
     ImGui::TextDisabled("(?)");

@@ -70,7 +70,7 @@ void EditorUi::reductionPanel() {
     options.logarithmic = costView_.logarithmic;
     options.unit = costView_.percent ? "%" : "mm";
     options.marked = m;
-    if (const int picked = costPlot("##cost", distances, options, ImVec2(0, 150)); picked > 0 && picked != m)
+    if (const int picked = costPlot("##cost", distances, options, ImVec2(0, 170)); picked > 0 && picked != m)
         session.attempt("Target", [&] {
             session.setTarget(picked);
             session.endEdit();

@@ -48,8 +48,9 @@ void EditorUi::weightsPanel() {
         brush_.enabled = true; // choosing a tool means using it
     }
     ctl::Checkbox("Front faces only (nothing through to the back)", &brush_.frontFacesOnly);
-    helpMarker("The brush and the box reach only the surface facing you: a big brush on the face leaves "
-               "the back of the head, the inside of the mouth and the other lip alone.");
+    helpMarker("The brush and the box reach only the surface you see: a big brush on the face leaves "
+               "the back of the head, the inside of the mouth and the other lip alone, and a box selects "
+               "no vertex hidden behind another part (the far lip, an ear behind the head).");
 
     ImGui::PushItemWidth(-130);
     sectionHeader("Brush");

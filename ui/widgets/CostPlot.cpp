@@ -35,12 +35,14 @@ int costPlot(const char* id, std::span<const double> values, const CostPlotOptio
     ImDrawList* draw = ImGui::GetWindowDrawList();
 
     // Value range: a logarithmic axis starts at the decade below the smallest positive value.
+    // Values under 1e-5 of the largest are rounding left of a zero (p = n merges nothing): they sit
+    // on the axis's floor instead of stretching it over decades nobody reads.
     double hi = 0.0, smallest = 0.0;
-    for (const double v : values) {
-        if (!std::isfinite(v)) continue; // a p the constraints rule out has no point
-        hi = std::max(hi, v);
-        if (v > 0.0) smallest = smallest > 0.0 ? std::min(smallest, v) : v;
-    }
+    for (const double v : values)
+        if (std::isfinite(v)) hi = std::max(hi, v); // a p the constraints rule out has no point
+    const double zero = 1e-5 * hi;
+    for (const double v : values)
+        if (std::isfinite(v) && v > zero) smallest = smallest > 0.0 ? std::min(smallest, v) : v;
     const bool logarithmic = options.logarithmic && smallest > 0.0 && hi > smallest;
     const double lo = logarithmic ? std::pow(10.0, std::floor(std::log10(smallest))) : 0.0;
     if (logarithmic)
@@ -50,10 +52,12 @@ int costPlot(const char* id, std::span<const double> values, const CostPlotOptio
     auto axisValue = [&](double v) { return logarithmic ? std::log10(std::max(v, lo)) : v; };
     const double a0 = axisValue(lo), a1 = axisValue(hi) > a0 ? axisValue(hi) : a0 + 1.0;
 
-    // Frame: room for the value labels on the left and the p labels below.
+    // Frame: a title row above (the value unit over the value labels, the p axis's name on the
+    // right: never on the curve, which starts at the top left), room for the value labels on the
+    // left and the p labels below.
     const float left = origin.x + ImGui::CalcTextSize("0.000e-00").x * 0.75f + 8.0f;
     const float right = origin.x + size.x - 8.0f;
-    const float top = origin.y + 6.0f;
+    const float top = origin.y + ImGui::GetTextLineHeight() + 6.0f;
     const float bottom = origin.y + size.y - ImGui::GetTextLineHeight() - 6.0f;
     auto xOf = [&](int p) {
         return n > 1 ? left + (right - left) * static_cast<float>(p - 1) / static_cast<float>(n - 1)
@@ -84,8 +88,10 @@ int costPlot(const char* id, std::span<const double> values, const CostPlotOptio
     }
     draw->AddLine(ImVec2(left, top), ImVec2(left, bottom), kAxis);
     draw->AddLine(ImVec2(left, bottom), ImVec2(right, bottom), kAxis);
-    if (options.unit[0]) draw->AddText(ImVec2(left + 4.0f, top + 2.0f), kText, options.unit);
-    draw->AddText(ImVec2(right - ImGui::CalcTextSize("groups p").x - 4.0f, top + 2.0f), kText, "groups p");
+    if (options.unit[0])
+        draw->AddText(ImVec2(std::max(origin.x, left - 4.0f - ImGui::CalcTextSize(options.unit).x), origin.y),
+                      kText, options.unit);
+    draw->AddText(ImVec2(right - ImGui::CalcTextSize("groups p").x, origin.y), kText, "groups p");
 
     // Runs of finite values are drawn as lines; a p without a grouping leaves a gap.
     std::vector<ImVec2> points, run;
@@ -123,6 +129,8 @@ int costPlot(const char* id, std::span<const double> values, const CostPlotOptio
         ImGui::BeginTooltip();
         if (!std::isfinite(value))
             ImGui::Text("p = %d: no grouping satisfies the constraints", under);
+        else if (value <= zero)
+            ImGui::Text("p = %d: 0 %s", under, options.unit);
         else
             ImGui::Text("p = %d: %.4g %s", under, value, options.unit);
         if (std::isfinite(value) && values[0] > 0.0)
