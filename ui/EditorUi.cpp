@@ -187,7 +187,9 @@ nlohmann::json EditorUi::probeSummary() {
         {"playing", say_.playing},
         {"say", sayProbe()},
         {"avatar", avatarSummary(document)},
-        {"avatar_mesh_report", avatarMeshReport()}};
+        {"avatar_mesh_report", avatarMeshReport()},
+        {"face_name", document.face.cascade ? document.face.cascade->name : std::string()},
+        {"own_face_step", ownFaceProbe()}};
     summary.update(polishSummary());
     summary.update(authoringProbe());
     return summary;

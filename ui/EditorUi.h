@@ -153,6 +153,14 @@ class EditorUi {
     std::function<void()> pendingGuarded_;
     bool openUnsavedPopup_ = false;
     bool quitConfirmed_ = false;
+
+    // --- own face (issue 15): Deformation > Use my mesh... and its landmark step (OwnFaceStep.cpp) ---
+    void openOwnFaceMesh();
+    void ownFaceStep();
+    nlohmann::json ownFaceProbe() const;
+    std::optional<OwnFaceCandidate> ownFace_;                  // the mesh whose landmarks await confirmation
+    std::shared_ptr<const DeformationCascade> ownFaceCascade_; // the cascade ownFaceLoaded_ was found for
+    bool ownFaceLoaded_ = false;                               // the face is built from a user's mesh
     // How the Reduction panel shows the cost curve (view state, not saved).
     struct CostView {
         bool logarithmic = true;

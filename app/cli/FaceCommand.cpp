@@ -6,7 +6,7 @@
 #include "core/common/AtomicFile.h"
 #include "core/common/Error.h"
 #include "core/deform/FaceDomain.h"
-#include "core/export/Gltf.h"
+#include "core/document/OwnFace.h"
 #include "core/face/FaceBuild.h"
 #include "core/face/LandmarkFinder.h"
 #include "core/io/MeshIO.h"
@@ -34,16 +34,6 @@ struct FaceBuildCliOptions {
     int resolution = 38;
     bool ignoreLayout = false;
 };
-
-face::UvMesh loadUvMesh(const std::filesystem::path& path) {
-    std::string ext = path.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    if (ext == ".glb" || ext == ".gltf") return face::makeUvMesh(readGltf(path).neutral, path.string());
-    CornerTexCoords corners;
-    const MeshData mesh = readMesh(path, corners);
-    return face::makeUvMesh(mesh, corners, path.string());
-}
 
 face::FaceLandmarks givenLandmarks(const face::UvMesh& mesh, const std::string& file) {
     face::FaceLandmarks given;
@@ -166,7 +156,7 @@ int runFaceBuild(const FaceBuildCliOptions& o) {
               std::filesystem::equivalent(path, o.landmarks))))
             throwUsage(std::string(flag) + " would overwrite an input file");
 
-    const face::UvMesh mesh = loadUvMesh(meshPath);
+    const face::UvMesh mesh = loadUvMeshFile(meshPath);
     std::printf("face build: %s (%zu vertices, %zu triangles with (u,v), %zu UV islands)\n", o.mesh.c_str(),
                 mesh.positions.size(), mesh.triangles.size(), mesh.islandCount);
     const face::FaceLandmarks given = givenLandmarks(mesh, o.landmarks);

@@ -3,10 +3,12 @@
 #include "core/common/Error.h"
 #include "core/common/TextParsing.h"
 #include "core/deform/BundledFace.h"
+#include "core/deform/FaceDomain.h"
 #include "core/document/AvatarDocument.h"
 #include "core/document/CommandSupport.h"
 #include "core/document/PhonemeMapCommands.h"
 #include "core/document/VisemeCommands.h"
+#include "core/face/FaceFrame.h"
 #include "core/gltf/AvatarReduce.h"
 #include "core/gltf/TargetNames.h"
 
@@ -332,6 +334,33 @@ Document setAvatarPattern(const Document& document, const std::string& pattern,
         d.refinement = document.refinement;
     });
     return next;
+}
+
+Document useOwnFace(const Document& document, const OwnFaceCandidate& candidate,
+                    face::FaceBuildReport* report) {
+    if (!candidate.mesh) throwInputError("own face", "no mesh loaded");
+    if (const std::string missing = candidate.missingRequired(); !missing.empty())
+        throwInputError(candidate.file.string(), "place the landmarks " + missing + " first");
+    face::FaceBuildOptions options;
+    options.name = candidate.name.empty() ? "own face" : candidate.name;
+    face::BuiltFace built = face::buildFace(*candidate.mesh, candidate.landmarks(), options);
+
+    const double previousScale =
+        document.face.cascade ? face::faceFrameOf(*document.face.cascade).scaleTo(face::bundledFaceFrame())
+                              : 1.0;
+    FaceModel model;
+    model.cascade = std::make_shared<const DeformationCascade>(std::move(built.cascade));
+    model.domain = document.face.domain ? document.face.domain
+                                        : std::make_shared<const MeshData>(face::faceDomainMesh(
+                                              kFaceDomainResolution, face::DomainDensity::MouthFocused));
+    model.parameters = model.cascade->defaults();
+    model.presets = document.face.presets;
+    Document next = setFace(document, std::move(model));
+    const double ratio = built.report.scale / std::max(previousScale, 1e-12);
+    next.refinement.contour.averageError *= ratio;
+    next.refinement.contour.maximumError *= ratio;
+    if (report) *report = std::move(built.report);
+    return checked(std::move(next));
 }
 
 } // namespace vl::edit

@@ -3,6 +3,8 @@
 // edited one, or throws InputError naming what is wrong and leaves nothing changed. The editor
 // commits the result as one undo step; tests and scripts call them directly.
 #include "core/document/Document.h"
+#include "core/document/OwnFace.h"
+#include "core/face/FaceBuild.h"
 
 #include <string>
 #include <vector>
@@ -64,5 +66,13 @@ Document setSpeech(const Document& document, SpeechSettings speech);
 // setFrequencies reads viseme names by meaning (a table naming "aa" applies to "viseme_aa").
 Document setAvatarPattern(const Document& document, const std::string& pattern,
                           const FrequencySource& oculusTable);
+// --- own face (issue 15) ------------------------------------------------------------------------
+// The face built from the user's mesh and confirmed landmarks (face::buildFace) replaces the
+// document's face: the bundled fields carried over to it, parameters at their defaults, presets and
+// display mesh kept; the contour criterion's thresholds scale with the face's size (a face in metres
+// gets thresholds in metres). Throws InputError naming the file and the missing landmarks, or what
+// the build refuses. `report`, when given, receives what the build found (islands, holes, scale).
+Document useOwnFace(const Document& document, const OwnFaceCandidate& candidate,
+                    face::FaceBuildReport* report = nullptr);
 
 } // namespace vl::edit

@@ -65,6 +65,15 @@ class UvOccupancy {
 
 enum class SampleState : std::uint8_t { Sampled, Hole, Outside };
 
+// Calls visit(t) for each 4-neighbour t of sample s on an n x n grid (row-major).
+template <class Visit> void forEachGridNeighbour(int s, int n, Visit visit) {
+    const int i = s % n, j = s / n;
+    if (i + 1 < n) visit(s + 1);
+    if (i > 0) visit(s - 1);
+    if (j + 1 < n) visit(s + n);
+    if (j > 0) visit(s - n);
+}
+
 // Laplace (membrane) filling of the unknown samples with the sampled ones as boundary values: each
 // unknown becomes the average of its grid neighbours. Unknowns start at the nearest known value
 // (breadth-first), then successive over-relaxation smooths them.
@@ -81,34 +90,25 @@ void fillUnknown(std::vector<Vec3>& samples, const std::vector<SampleState>& sta
     while (!queue.empty()) {
         const int s = queue.front();
         queue.pop_front();
-        const int i = s % n, j = s / n;
-        const int di[4] = {1, -1, 0, 0}, dj[4] = {0, 0, 1, -1};
-        for (int k = 0; k < 4; ++k) {
-            const int a = i + di[k], b = j + dj[k];
-            if (a < 0 || b < 0 || a >= n || b >= n) continue;
-            const int t = b * n + a;
-            if (reached[t]) continue;
+        forEachGridNeighbour(s, n, [&](int t) {
+            if (reached[t]) return;
             reached[t] = true;
             samples[t] = samples[s];
             order.push_back(t);
             queue.push_back(t);
-        }
+        });
     }
     if (order.empty()) return;
     constexpr double kOmega = 1.85;
     for (int iteration = 0; iteration < 4000; ++iteration) {
         double change = 0.0, size = 0.0;
         for (const int s : order) {
-            const int i = s % n, j = s / n;
             Vec3 sum(0, 0, 0);
             int count = 0;
-            const int di[4] = {1, -1, 0, 0}, dj[4] = {0, 0, 1, -1};
-            for (int k = 0; k < 4; ++k) {
-                const int a = i + di[k], b = j + dj[k];
-                if (a < 0 || b < 0 || a >= n || b >= n) continue;
-                sum += samples[b * n + a];
+            forEachGridNeighbour(s, n, [&](int t) {
+                sum += samples[t];
                 ++count;
-            }
+            });
             const Vec3 next = samples[s] + (sum / count - samples[s]) * kOmega;
             change = std::max(change, (next - samples[s]).norm());
             size = std::max(size, next.norm());
@@ -130,16 +130,11 @@ std::vector<int> distanceInside(const std::vector<bool>& region, int n) {
     while (!queue.empty()) {
         const int s = queue.front();
         queue.pop_front();
-        const int i = s % n, j = s / n;
-        const int di[4] = {1, -1, 0, 0}, dj[4] = {0, 0, 1, -1};
-        for (int k = 0; k < 4; ++k) {
-            const int a = i + di[k], b = j + dj[k];
-            if (a < 0 || b < 0 || a >= n || b >= n) continue;
-            const int t = b * n + a;
-            if (distance[t] >= 0) continue;
+        forEachGridNeighbour(s, n, [&](int t) {
+            if (distance[t] >= 0) return;
             distance[t] = distance[s] + 1;
             queue.push_back(t);
-        }
+        });
     }
     return distance;
 }

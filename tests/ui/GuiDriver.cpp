@@ -337,4 +337,13 @@ void GuiDriver::type(const std::string& text) {
     waitFrames(3);
 }
 
+void GuiDriver::chooseFile(const std::filesystem::path& file, const std::string& button) {
+    if (!document().value("file_dialog_open", false)) throw std::runtime_error("no file dialog is open");
+    click(control("##name", "text"));
+    key("ctrl+a");
+    type(file.string());
+    click(control(button, "button"));
+    waitIdle();
+}
+
 } // namespace vl::test

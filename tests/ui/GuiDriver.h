@@ -59,6 +59,9 @@ class GuiDriver {
     // xdotool key names: "Escape", "Return", "ctrl+z", "Tab".
     void key(const std::string& keys);
     void type(const std::string& text);
+    // In the open file dialog: types `file` into its name field, presses `button` ("Open" or
+    // "Save") and waits until the editor is idle. Fails the test when no dialog is open.
+    void chooseFile(const std::filesystem::path& file, const std::string& button = "Open");
 
   private:
     void xdotool(const std::string& arguments);

@@ -3,6 +3,7 @@
 // regions, drawn on the face and in (u,v).
 #include "core/deform/Visemes.h"
 #include "core/document/VisemeCommands.h"
+#include "core/project/BuiltinGeometry.h"
 #include "ui/EditorUi.h"
 #include "ui/panels/PanelWidgets.h"
 #include "ui/widgets/Controls.h"
@@ -33,18 +34,39 @@ void EditorUi::deformationPanel() {
             "The deformable face is a cascade of vector fields on the (u,v) square: a base geometry "
             "plus one field per muscle parameter.");
         if (ctl::Button("Load bundled face")) session.attempt("Load face", [&] { session.loadFace(); });
+        ImGui::SameLine();
+        if (ctl::Button("Use my mesh...")) openOwnFaceMesh();
+        if (ownFace_) ownFaceStep();
+        return;
+    }
+    if (ownFace_) {
+        ownFaceStep();
         return;
     }
     const DeformationCascade& cascade = *model.cascade;
 
     sectionHeader("Base geometry (retargeting)");
-    int individual = static_cast<int>(model.individual);
-    bool retargeted = ctl::RadioButton("bundled", &individual, 0);
+    // A face built from the user's mesh carries the bundled fields rotated and scaled for it: going
+    // back means loading the bundled face again, not retargeting these fields.
+    if (ownFaceCascade_ != model.cascade) {
+        ownFaceCascade_ = model.cascade;
+        ownFaceLoaded_ = !builtinIndividualOf(cascade);
+    }
+    if (ownFaceLoaded_) {
+        ImGui::TextWrapped("Your face: %s", cascade.name.c_str());
+        if (ctl::Button("Back to the bundled face"))
+            session.attempt("Load face", [&] { session.loadFace(); });
+    } else {
+        int individual = static_cast<int>(model.individual);
+        bool retargeted = ctl::RadioButton("bundled", &individual, 0);
+        ImGui::SameLine();
+        retargeted |= ctl::RadioButton("retarget (2nd individual)", &individual, 1);
+        if (retargeted)
+            session.attempt("Retarget",
+                            [&] { session.setIndividual(static_cast<face::Individual>(individual)); });
+    }
     ImGui::SameLine();
-    retargeted |= ctl::RadioButton("retarget (2nd individual)", &individual, 1);
-    if (retargeted)
-        session.attempt("Retarget",
-                        [&] { session.setIndividual(static_cast<face::Individual>(individual)); });
+    if (ctl::Button("Use my mesh...")) openOwnFaceMesh();
 
     sectionHeader("Parameters");
     if (ctl::BeginCombo("preset", "apply a viseme...", ImGuiComboFlags_HeightLargest)) {

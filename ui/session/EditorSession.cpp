@@ -547,6 +547,20 @@ void EditorSession::setIndividual(face::Individual individual) {
            edit::retarget(document(), individual));
 }
 
+void EditorSession::useOwnFace(const OwnFaceCandidate& candidate) {
+    face::FaceBuildReport report;
+    commit("Use my mesh " + candidate.name, edit::useOwnFace(document(), candidate, &report));
+    std::size_t islands = 0;
+    for (const auto& island : report.islands) islands += island.used;
+    std::string text = "Face '" + candidate.name + "' built: " + std::to_string(islands) + " of " +
+                       std::to_string(report.islands.size()) + " UV islands used, " +
+                       std::to_string(report.holes.size()) + " holes filled, " +
+                       std::to_string(static_cast<int>(100.0 * report.domainCoverage + 0.5)) +
+                       "% of the face domain covered";
+    for (const auto& warning : report.warnings) text += "; " + warning;
+    info(std::move(text));
+}
+
 void EditorSession::generateVisemesFromFace() {
     commit("Generate visemes from face", edit::generateVisemesFromFace(document()));
     info("Generated " + std::to_string(visemeCount()) + " visemes from the face");

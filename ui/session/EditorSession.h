@@ -5,6 +5,7 @@
 // do the tests. Each edit is a validated command of the core (core/document/Commands.h) committed
 // as one undo step only when it applied, so bad input changes nothing.
 #include "core/document/Document.h"
+#include "core/document/OwnFace.h"
 #include "core/document/PhonemeMapCommands.h"
 #include "core/export/Export.h"
 #include "core/gltf/AvatarWriter.h"
@@ -156,6 +157,9 @@ class EditorSession {
     void generateVisemesFromFace();
     // Per-vertex samples of the current cascade on its mesh (cached per cascade and mesh).
     const FaceSamples& faceSamples();
+    // Own face (Deformation > Use my mesh...): the face built from the user's mesh and confirmed
+    // landmarks becomes the document's face (one undo step); the status bar says what the build found.
+    void useOwnFace(const OwnFaceCandidate& candidate);
 
     // --- adaptive refinement -----------------------------------------------------------------
     void setRefinementSettings(const CriterionSettings& settings); // validated, undoable

@@ -1,0 +1,90 @@
+// Deformation > Use my mesh...: the user's mesh is read and its landmarks suggested; this step shows
+// each landmark with where it came from and how sure the finder is, lets the user move any of them
+// in the mesh's (u,v), and builds the face only when they confirm (one undoable command,
+// edit::useOwnFace). Until then the document is untouched.
+#include "ui/EditorUi.h"
+#include "ui/panels/PanelWidgets.h"
+#include "ui/widgets/Controls.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <string>
+
+namespace vl::ui {
+
+void EditorUi::openOwnFaceMesh() {
+    fileDialog_.open("Use my mesh (with (u,v) on the face)", FileDialog::Mode::OpenFile,
+                     {".obj", ".ply", ".wrl", ".vrml", ".glb", ".gltf"},
+                     [this](const std::filesystem::path& path) {
+                         session.attempt("Use my mesh", [&] { ownFace_ = loadOwnFaceCandidate(path); });
+                     });
+}
+
+void EditorUi::ownFaceStep() {
+    OwnFaceCandidate& candidate = *ownFace_;
+    sectionHeader("Use my mesh: confirm the landmarks");
+    ImGui::TextWrapped("%s: %zu vertices, %zu triangles with (u,v), %zu UV islands", candidate.name.c_str(),
+                       candidate.mesh->positions.size(), candidate.mesh->triangles.size(),
+                       candidate.mesh->islandCount);
+    for (const std::string& note : candidate.suggestion.notes) ImGui::TextDisabled("%s", note.c_str());
+    ImGui::TextWrapped("Each landmark is a point of your mesh's (u,v). Drag a value to move it; right and "
+                       "left are the face's own (its right eye is on the viewer's left).");
+
+    // One row per landmark: its name, u and v (two drags, each a control the GUI tests can find as
+    // "u##<name>" and "v##<name>"), then where it came from and how sure the finder is.
+    const float column = ImGui::CalcTextSize("mouth_corner_right ").x;
+    const float dragWidth = std::max(60.0f, (ImGui::GetContentRegionAvail().x - column) * 0.28f);
+    for (const face::Landmark landmark : face::allLandmarks()) {
+        const face::FoundLandmark& found = candidate.landmarks()[landmark];
+        const std::string name(face::landmarkName(landmark));
+        ImGui::TextUnformatted(name.c_str());
+        Vec2 uv = found.uv;
+        bool moved = false;
+        for (int k = 0; k < 2; ++k) {
+            ImGui::SameLine(column + static_cast<float>(k) * (dragWidth + 6.0f));
+            ImGui::SetNextItemWidth(dragWidth);
+            float value = static_cast<float>(uv[k]);
+            const std::string label = (k == 0 ? "u##" : "v##") + name;
+            if (ctl::DragFloat(label.c_str(), &value, 0.001f, -10.0f, 10.0f, "%.4f")) {
+                uv[k] = value;
+                moved = true;
+            }
+        }
+        if (moved)
+            session.attempt("Place landmark", [&] { candidate = placeLandmark(candidate, landmark, uv); });
+        ImGui::SameLine();
+        if (!found.found())
+            ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.35f, 1.0f), "%s",
+                               face::isRequired(landmark) ? "missing" : "-");
+        else
+            ImGui::TextDisabled("%s %3.0f%%", std::string(face::sourceName(found.source)).c_str(),
+                                100.0 * found.confidence);
+        if (found.found() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", found.method.c_str());
+    }
+
+    const std::string missing = candidate.missingRequired();
+    if (!missing.empty()) ImGui::TextWrapped("Still missing: %s", missing.c_str());
+    if (ctl::Button("Build face from these landmarks"))
+        session.attempt("Use my mesh", [&] {
+            session.useOwnFace(candidate);
+            ownFace_.reset();
+        });
+    ImGui::SameLine();
+    if (ctl::Button("Cancel##ownface")) ownFace_.reset();
+}
+
+nlohmann::json EditorUi::ownFaceProbe() const {
+    if (!ownFace_) return nullptr;
+    nlohmann::json landmarks = nlohmann::json::object();
+    for (const face::Landmark landmark : face::allLandmarks()) {
+        const face::FoundLandmark& found = ownFace_->landmarks()[landmark];
+        landmarks[std::string(face::landmarkName(landmark))] = {
+            {"source", face::sourceName(found.source)}, {"u", found.uv[0]}, {"v", found.uv[1]}};
+    }
+    return {{"file", ownFace_->file.string()},
+            {"missing", ownFace_->missingRequired()},
+            {"landmarks", landmarks}};
+}
+
+} // namespace vl::ui
