@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # The sanitizer suite (part of scripts/test.sh): builds the `sanitize` preset into build/sanitize
-# (clang, ASan + UBSan, libFuzzer instrumentation; no editor, no benchmarks) and runs every test but
-# the editor's under the sanitizers, then each loader's libFuzzer target (tests/fuzz) for
-# VISEMELAB_FUZZ_SECONDS seconds (default 10) after replaying its committed corpus.
-# Usage: scripts/sanitize.sh [ctest arguments, e.g. -L fuzz or -R Obj]
+# (clang -O1, ASan + UBSan, libFuzzer instrumentation; only the tests of the modules that read files
+# and of the CLI, no editor, no benchmarks: CMakePresets.json) and runs its ctest: those tests under
+# the sanitizers, then each loader's libFuzzer target (tests/fuzz) over its committed corpus and for
+# VISEMELAB_FUZZ_SECONDS seconds (default 10) of mutations.
+# Usage: scripts/sanitize.sh [ctest arguments, e.g. -L fuzz (fuzzers only) or -R Obj]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./scripts/install-deps.sh

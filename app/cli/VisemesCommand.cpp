@@ -4,17 +4,14 @@
 #include "app/cli/Command.h"
 #include "app/cli/CriterionOptions.h"
 #include "core/adaptive/CascadeSurface.h"
-#include "core/common/AtomicFile.h"
 #include "core/common/Error.h"
 #include "core/common/OutputSet.h"
-#include "core/common/TextParsing.h"
 #include "core/deform/BundledFace.h"
 #include "core/deform/FaceDomain.h"
 #include "core/deform/Visemes.h"
-#include "core/export/KeyMeshFiles.h"
+#include "core/export/VisemeFile.h"
 #include "core/face/HeadParts.h"
 #include "core/io/MeshIO.h"
-#include "core/project/JsonRead.h"
 #include "core/project/Project.h"
 
 #include <nlohmann/json.hpp>
@@ -22,7 +19,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <unordered_set>
 
 namespace vl::cli {
 
@@ -39,45 +35,6 @@ struct VisemesOptions {
     std::string visemeFile; // empty: the 15 Oculus visemes
     bool skinOnly = false;  // leave out the eyeballs, teeth, tongue and mouth cavity
 };
-
-// Viseme parameter vectors from a JSON file in the format visemes.json is written in:
-// {"visemes": [{"name": "aa", "parameters": {"jaw_open": 1, ...}}, ...]} (other keys are ignored, so
-// an edited visemes.json reads back). Unknown parameters and out-of-range values name the JSON path.
-std::vector<VisemeParameters> readVisemeFile(const std::filesystem::path& path,
-                                             const DeformationCascade& face) {
-    const Json document = parseJsonStrict(readFileToString(path), path.string());
-    const JsonNode root(document, path.string() + ":");
-    if (!document.is_object() || !root.has("visemes"))
-        throwInputError(path.string(), "expected an object with a \"visemes\" array");
-    std::vector<VisemeParameters> visemes;
-    std::unordered_set<std::string> names;
-    checkVisemeSetSize(root["visemes"].size(), 0, root["visemes"].path()); // before any viseme is built
-    for (const JsonNode& entry : root["visemes"].elements()) {
-        entry.expectObject();
-        entry.allowOnly({"name", "file", "parameters"});
-        VisemeParameters v;
-        const JsonNode nameNode = entry["name"];
-        v.name = nameNode.nonEmptyString();
-        // The name becomes <name>.obj in the output folder: nothing that leaves it or hits neutral.obj.
-        if (fileSafeName(v.name) != v.name || v.name == "neutral")
-            nameNode.fail("viseme name \"" + v.name +
-                          "\" cannot be a file name (letters, digits, '-', '_', '+' only; not \"neutral\")");
-        if (!names.insert(v.name).second) nameNode.fail("viseme \"" + v.name + "\" is listed twice");
-        if (entry.has("parameters"))
-            for (const auto& [name, value] : entry["parameters"].members()) {
-                const int k = face.findParameter(name);
-                if (k < 0) value.fail("unknown parameter '" + name + "'");
-                const auto& p = face.parameters[static_cast<std::size_t>(k)];
-                const double x = value.number();
-                if (x < p.min || x > p.max)
-                    value.fail("value " + formatDouble(x) + " is outside [" + formatDouble(p.min) + ", " +
-                               formatDouble(p.max) + "]");
-                v.values.emplace_back(name, x);
-            }
-        visemes.push_back(std::move(v));
-    }
-    return visemes;
-}
 
 // Rounds coordinates to `decimals` decimal places (file size: short numbers); < 0 keeps them exact.
 void roundCoordinates(VisemeSet& set, int decimals) {

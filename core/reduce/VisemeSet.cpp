@@ -63,7 +63,9 @@ void checkVisemeSetSize(std::size_t visemeCount, std::size_t vertexCount, std::s
 VisemeSet loadVisemeSet(const std::filesystem::path& neutral,
                         const std::vector<std::pair<std::string, std::filesystem::path>>& visemes) {
     if (visemes.size() < 2)
-        throwInputError("viseme set", "needs at least 2 visemes, got " + std::to_string(visemes.size()));
+        throwInputError("viseme set of " + neutral.string(),
+                        "needs at least 2 visemes besides the neutral mesh, got " +
+                            std::to_string(visemes.size()));
     VisemeSet set;
     set.neutralSource = neutral;
     set.neutral = readMesh(neutral);

@@ -40,15 +40,22 @@ struct PrivateFolder {
 
 } // namespace
 
-std::filesystem::path writeInputFile(std::string_view name, const std::uint8_t* data, std::size_t size) {
+std::filesystem::path freshInputFolder() {
     static const PrivateFolder folder;
-    // Fresh per input: a loader that reads files beside its input sees only what this input wrote.
     std::filesystem::remove_all(folder.path);
     std::filesystem::create_directories(folder.path);
-    const std::filesystem::path file = folder.path / name;
+    return folder.path;
+}
+
+void writeFile(const std::filesystem::path& file, std::string_view bytes) {
     std::ofstream out(file, std::ios::binary);
-    out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
     if (!out.flush()) fail("cannot write the fuzz input file " + file.string());
+}
+
+std::filesystem::path writeInputFile(std::string_view name, const std::uint8_t* data, std::size_t size) {
+    const std::filesystem::path file = freshInputFolder() / name;
+    writeFile(file, asText(data, size));
     return file;
 }
 

@@ -38,8 +38,14 @@ inline std::string_view asText(const std::uint8_t* data, std::size_t size) {
     return {reinterpret_cast<const char*>(data), size};
 }
 
+// An empty folder private to this process, emptied again on every call (removed at exit): a loader
+// that reads files beside its input sees only what the current input wrote.
+std::filesystem::path freshInputFolder();
+// Writes `bytes` into `file`; fails the run when it cannot.
+void writeFile(const std::filesystem::path& file, std::string_view bytes);
+
 // For loaders that only read paths: writes the input into `name` inside a folder private to this
-// process (recreated per input, removed at exit) and returns its path.
+// process (freshInputFolder) and returns its path.
 std::filesystem::path writeInputFile(std::string_view name, const std::uint8_t* data, std::size_t size);
 
 // True when the text's first non-blank character opens a JSON value: targets of loaders that read

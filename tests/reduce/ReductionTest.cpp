@@ -173,9 +173,9 @@ TEST(Reduction, RejectsBadProblems) {
 TEST(Reduction, SetsAboveTwentyVisemesAreReducedWithACertificate) {
     std::mt19937 rng(21);
     const auto inst = test::rigInstance(rng, 30, 20, 8);
-    ReductionOptions options;
-    options.timeLimitSeconds = 20;
-    const auto result = reduceVisemes({inst.shapes, inst.frequencies, inst.weights, 6}, options);
+    // No time limit: with one, whether the certificate arrives depends on the machine's speed (it did
+    // not within 20 s under the sanitizers on a loaded machine); the test's own timeout bounds it.
+    const auto result = reduceVisemes({inst.shapes, inst.frequencies, inst.weights, 6});
     ASSERT_EQ(result.curve.size(), 6u);
     for (std::size_t p = 0; p < result.curve.size(); ++p) {
         const Grouping& g = result.curve[p];

@@ -1,5 +1,5 @@
 // The fuzz target run over deterministic mutations of valid packages, so every build (GCC too)
-// exercises the loader on hostile input; scripts/fuzz-runtime.sh runs the real libFuzzer.
+// exercises the loader on hostile input; tests/fuzz fuzz_runtime_package runs the real libFuzzer.
 #include "FuzzTarget.h"
 
 #include "core/export/RuntimePackageWriter.h"

@@ -1,0 +1,55 @@
+#include "core/export/VisemeFile.h"
+
+#include "core/common/AtomicFile.h"
+#include "core/common/Error.h"
+#include "core/common/TextParsing.h"
+#include "core/export/KeyMeshFiles.h"
+#include "core/project/JsonRead.h"
+#include "core/reduce/VisemeSet.h"
+
+#include <unordered_set>
+
+namespace vl {
+
+std::vector<VisemeParameters> parseVisemeFile(std::string_view text, std::string_view source,
+                                              const DeformationCascade& face) {
+    const Json document = parseJsonStrict(text, source);
+    const JsonNode root(document, std::string(source) + ":");
+    if (!document.is_object() || !root.has("visemes"))
+        throwInputError(source, "expected an object with a \"visemes\" array");
+    std::vector<VisemeParameters> visemes;
+    std::unordered_set<std::string> names;
+    checkVisemeSetSize(root["visemes"].size(), 0, root["visemes"].path()); // before any viseme is built
+    for (const JsonNode& entry : root["visemes"].elements()) {
+        entry.expectObject();
+        entry.allowOnly({"name", "file", "parameters"});
+        VisemeParameters v;
+        const JsonNode nameNode = entry["name"];
+        v.name = nameNode.nonEmptyString();
+        // The name becomes <name>.obj in the output folder: nothing that leaves it or hits neutral.obj.
+        if (fileSafeName(v.name) != v.name || v.name == "neutral")
+            nameNode.fail("viseme name \"" + v.name +
+                          "\" cannot be a file name (letters, digits, '-', '_', '+' only; not \"neutral\")");
+        if (!names.insert(v.name).second) nameNode.fail("viseme \"" + v.name + "\" is listed twice");
+        if (entry.has("parameters"))
+            for (const auto& [name, value] : entry["parameters"].members()) {
+                const int k = face.findParameter(name);
+                if (k < 0) value.fail("unknown parameter '" + name + "'");
+                const auto& p = face.parameters[static_cast<std::size_t>(k)];
+                const double x = value.number();
+                if (x < p.min || x > p.max)
+                    value.fail("value " + formatDouble(x) + " is outside [" + formatDouble(p.min) + ", " +
+                               formatDouble(p.max) + "]");
+                v.values.emplace_back(name, x);
+            }
+        visemes.push_back(std::move(v));
+    }
+    return visemes;
+}
+
+std::vector<VisemeParameters> readVisemeFile(const std::filesystem::path& path,
+                                             const DeformationCascade& face) {
+    return parseVisemeFile(readFileToString(path), path.string(), face);
+}
+
+} // namespace vl
