@@ -397,14 +397,15 @@ void EditorUi::updateScalars() {
                                 ":" + std::to_string(grouping->groups.size());
         if (key != errorKey_) {
             session.attempt("Error map", [&] {
-                const auto& merged = session.mergedShapes();
+                const ReducedModel* merged = session.reducedModel();
+                if (!merged) return;
                 const std::vector<double> w = session.weights();
                 double scale = 0.0;
                 std::vector<double> shown;
                 for (std::size_t g = 0; g < grouping->groups.size(); ++g)
                     for (int member : grouping->groups[g]) {
                         auto errors = vertexErrors(set->visemes[static_cast<std::size_t>(member)].positions,
-                                                   merged[g], w);
+                                                   merged->keys[g].positions, w);
                         scale = std::max(scale, maxOf(errors));
                         if (member == selected) shown = std::move(errors);
                     }

@@ -272,10 +272,15 @@ void EditorUi::syncGpu() {
     const ReductionResult* curve = session.reductionCurve();
     const int groups = session.document().target;
     if (curve && (uploadedMerged_ != curve || uploadedMergedGroups_ != groups)) {
-        const auto& merged = session.mergedShapes();
         const VisemeSet* set = session.visemes();
-        mergedMesh_.setGeometry(set->neutral.positions, set->neutral.triangles, merged);
-        if (const auto& colours = session.document().visemeColours) mergedMesh_.setColors(*colours);
+        const bool shown = session.attempt("Merged visemes", [&] {
+            std::vector<std::vector<Vec3>> targets;
+            if (const ReducedModel* merged = session.reducedModel())
+                for (const KeyMesh& key : merged->keys) targets.push_back(key.positions);
+            mergedMesh_.setGeometry(set->neutral.positions, set->neutral.triangles, targets);
+            if (const auto& colours = session.document().visemeColours) mergedMesh_.setColors(*colours);
+        });
+        if (!shown) mergedMesh_.setGeometry({}, {}, {});
         uploadedMerged_ = curve;
         uploadedMergedGroups_ = groups;
         weightsKey_.clear(), errorKey_.clear(), influenceKey_.clear();

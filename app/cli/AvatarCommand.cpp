@@ -135,10 +135,10 @@ int runReduce(const ReduceOptions& o) {
                             avatarReductionReport(r, scan, settings, write, timings, o.input, o.out));
 
     std::printf("Reduced %zu visemes to %zu (weights: %s; frequencies: %s), optimal cost %.6g\n",
-                scan.visemes.size(), r.model.keys.size(), toString(settings.weightMode), chosen.c_str(),
-                r.outcome.result.best().cost);
-    for (std::size_t g = 0; g < r.model.keys.size(); ++g)
-        std::printf("  %2zu: %s\n", g, r.model.keys[g].name.c_str());
+                scan.visemes.size(), r.outcome.model.keys.size(), toString(settings.weightMode),
+                chosen.c_str(), r.outcome.result.best().cost);
+    for (std::size_t g = 0; g < r.outcome.model.keys.size(); ++g)
+        std::printf("  %2zu: %s\n", g, r.outcome.model.keys[g].name.c_str());
     for (const AvatarMeshChange& m : r.summary.meshes)
         std::printf("mesh %d \"%s\": %zu morph targets -> %zu (%zu viseme targets, %zu keys, names %s)\n",
                     m.mesh, m.name.c_str(), m.targetsBefore, m.targetsAfter, m.visemeTargets, m.keys,

@@ -7,6 +7,7 @@
 #include "core/common/InputRegistry.h"
 #include "core/common/OutputSet.h"
 #include "core/common/TextParsing.h"
+#include "core/export/ReductionOutputs.h"
 #include "core/export/Xface.h"
 #include "core/project/ProjectRun.h"
 #include "core/reduce/ReduceRun.h"
@@ -235,7 +236,7 @@ int runReduce(const ReduceOptions& o, bool weightsGiven) {
     refuseOverwritingInput(reportPath, "--report"); // before any output changes
     // The meshes, mapping.json and the default report replace the last run's as one set.
     OutputSet files(outDir, "reduce");
-    auto outputs = writeReductionOutputs(files, set, outcome);
+    auto outputs = writeReductionOutputs(files, outcome);
     timings.writeMs = millisecondsSince(t2);
     const std::string report = reductionReportJson(outcome, settings.weightMode, timings, outputs);
     if (o.report.empty()) files.add("report.json", report);
@@ -250,8 +251,8 @@ int runReduce(const ReduceOptions& o, bool weightsGiven) {
     else
         std::printf("best cost found %.6g, lower bound %.6g, gap %.3g %% (time limit reached)\n", best.cost,
                     best.lowerBound, 100 * best.gap());
-    for (std::size_t g = 0; g < outcome.reduced.size(); ++g)
-        std::printf("  %2zu: %s\n", g, outcome.reduced[g].name.c_str());
+    for (std::size_t g = 0; g < outcome.model.keys.size(); ++g)
+        std::printf("  %2zu: %s\n", g, outcome.model.keys[g].name.c_str());
     std::printf("Cost for p = 1..%d:", settings.target);
     for (const auto& grouping : outcome.result.curve) {
         if (!grouping.feasible())

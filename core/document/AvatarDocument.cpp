@@ -1,10 +1,10 @@
 #include "core/document/AvatarDocument.h"
 
 #include "core/common/Error.h"
-#include "core/export/ReducedModel.h"
 #include "core/gltf/AvatarReduce.h"
 #include "core/gltf/AvatarReport.h"
 #include "core/gltf/GltfDocument.h"
+#include "core/reduce/ReducedModel.h"
 
 #include <algorithm>
 

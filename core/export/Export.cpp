@@ -52,11 +52,8 @@ std::vector<std::filesystem::path> exportModel(const ReducedModel& model, Export
         OutputSet files(out, setName);
         std::vector<std::string> names = stage(files);
         const std::string extension = format == ExportFormat::Vrml ? ".wrl" : ".obj";
-        std::vector<std::string> keyFiles;
-        for (std::size_t k = 0; k < model.keys.size(); ++k)
-            keyFiles.push_back(keyFileName(model, k, extension));
         names.push_back("mapping.json");
-        files.add(names.back(), formatMappingJson(model, keyFiles));
+        files.add(names.back(), formatMappingJson(model, {{"file", extension}}));
         files.commit();
         return inFolder(names);
     };
@@ -94,8 +91,7 @@ ReducedModel projectReducedModel(const Project& project, const VisemeSet& set, b
             return buildReducedModel(set, visemeFrequencies(project.frequencies, names), groupOf,
                                      project.frequencies);
     }
-    const ReduceOutcome outcome = reduceProject(project, set);
-    return buildReducedModel(set, outcome.frequencies, outcome.result.groupOf(), project.frequencies);
+    return reduceProject(project, set).model;
 }
 
 VisemeSet toVisemeSet(const ReducedModel& model, const std::filesystem::path& source) {

@@ -1,7 +1,7 @@
 #pragma once
 // One entry point for every export format, and the reduced model of a project: what
 // `visemelab export` and the editor's export menu call.
-#include "core/export/ReducedModel.h"
+#include "core/reduce/ReducedModel.h"
 #include "core/reduce/VisemeSet.h"
 
 #include <filesystem>

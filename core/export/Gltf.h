@@ -16,7 +16,7 @@
 // confined URIs; sparse, quantised, EXT_meshopt_compression and Draco data). Whole avatars (every
 // mesh, the visemes among other targets, written back as the same avatar): core/gltf/Avatar*.
 #include "core/export/GltfAnimation.h"
-#include "core/export/ReducedModel.h"
+#include "core/reduce/ReducedModel.h"
 
 #include <filesystem>
 #include <string>

@@ -2,7 +2,7 @@
 // One mesh file per key mesh (plus the neutral), in any format core/io writes: the OBJ export and
 // the VRML meshes of the XfaceEd export.
 #include "core/common/OutputSet.h"
-#include "core/export/ReducedModel.h"
+#include "core/reduce/ReducedModel.h"
 
 #include <filesystem>
 #include <string>

@@ -1,10 +1,12 @@
 #include "core/export/MappingJson.h"
 
+#include "core/export/KeyMeshFiles.h"
+
 #include <nlohmann/json.hpp>
 
 namespace vl {
 
-std::string formatMappingJson(const ReducedModel& model, const std::vector<std::string>& keyFiles) {
+std::string formatMappingJson(const ReducedModel& model, const std::vector<KeyFileField>& keyFiles) {
     validateReducedModel(model, "mapping.json");
     nlohmann::ordered_json visemes = nlohmann::ordered_json::object(),
                            reduced = nlohmann::ordered_json::array();
@@ -13,7 +15,7 @@ std::string formatMappingJson(const ReducedModel& model, const std::vector<std::
         for (const std::string& member : key.members) visemes[member] = k;
         nlohmann::ordered_json entry{
             {"index", k}, {"name", key.name}, {"members", key.members}, {"frequency", key.frequency}};
-        if (k < keyFiles.size()) entry["file"] = keyFiles[k];
+        for (const KeyFileField& file : keyFiles) entry[file.field] = keyFileName(model, k, file.extension);
         reduced.push_back(entry);
     }
     nlohmann::ordered_json phonemes = nlohmann::ordered_json::object();

@@ -1,8 +1,8 @@
 #pragma once
 // The frequencies a reduced model carries back into an editable document (a VisemeLab glTF keeps
 // them in mesh.extras, see Gltf.h): importing a model must not reset them to uniform.
-#include "core/export/ReducedModel.h"
 #include "core/reduce/Frequencies.h"
+#include "core/reduce/ReducedModel.h"
 
 #include <string>
 

@@ -1,7 +1,7 @@
 #pragma once
 // Writes a ReducedModel as a VisemeLab runtime package (docs/runtime-format.md), the compact
 // little-endian binary that core/runtime loads on the device.
-#include "core/export/ReducedModel.h"
+#include "core/reduce/ReducedModel.h"
 
 #include <filesystem>
 #include <string>

@@ -66,14 +66,13 @@ AvatarReduction reduceAvatar(const GltfDocument& doc, const AvatarScan& scan,
     AvatarReduction r;
     r.outcome = runReduction(scan.set, matched, settings, progress);
     const std::vector<int> groupOf = r.outcome.result.groupOf();
-    r.model = buildReducedModel(scan.set, r.outcome.frequencies, groupOf, matched);
-    r.glb = writeReducedAvatar(doc, scan, r.model, groupOf, r.outcome.frequencies, write, &r.summary);
+    r.glb = writeReducedAvatar(doc, scan, r.outcome.model, groupOf, r.outcome.frequencies, write, &r.summary);
     for (std::size_t i = 0; i < scan.visemes.size(); ++i)
         if (r.outcome.frequencies[i] == 0.0)
             r.summary.notes.push_back(scan.visemes[i] +
                                       " has frequency 0 (no phoneme maps to it): it costs nothing " +
                                       "wherever it goes and takes the shape of key '" +
-                                      r.model.keys[static_cast<std::size_t>(groupOf[i])].name + "'");
+                                      r.outcome.model.keys[static_cast<std::size_t>(groupOf[i])].name + "'");
     return r;
 }
 
@@ -93,7 +92,7 @@ std::string avatarReductionReport(const AvatarReduction& reduction, const Avatar
                           {"keys", m.keys}});
     report["meshes"] = meshes;
     nlohmann::ordered_json phonemes = nlohmann::ordered_json::object();
-    for (const auto& [phoneme, key] : reduction.model.phonemeToKey) phonemes[phoneme] = key;
+    for (const auto& [phoneme, key] : reduction.outcome.model.phonemeToKey) phonemes[phoneme] = key;
     report["phoneme_to_key"] = phonemes;
     report["avatar"] = {{"input", input},
                         {"output", output},

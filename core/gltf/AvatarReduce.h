@@ -4,7 +4,7 @@
 // geometry), its keys built by buildReducedModel, and the same avatar written back
 // (core/gltf/AvatarWriter). Frequency tables and phoneme maps name visemes as the bundled files do
 // ("aa", "ih"); they are matched to the avatar's target names by meaning (core/gltf/TargetNames).
-#include "core/export/ReducedModel.h"
+#include "core/export/ReductionOutputs.h"
 #include "core/gltf/AvatarScan.h"
 #include "core/gltf/AvatarWriter.h"
 #include "core/reduce/ReduceRun.h"
@@ -34,8 +34,7 @@ FrequencySource defaultAvatarFrequencies(const AvatarScan& scan, const Frequency
                                          std::string* chosen = nullptr);
 
 struct AvatarReduction {
-    ReduceOutcome outcome;
-    ReducedModel model; // keys over the concatenated geometry, phoneme -> key
+    ReduceOutcome outcome; // its model: keys over the concatenated geometry, phoneme -> key
     std::string glb;
     AvatarWriteSummary summary;
 };

@@ -27,7 +27,7 @@
 // removed and the rest renumbered wherever glTF 2.0, KHR_draco_mesh_compression,
 // EXT_meshopt_compression and EXT_mesh_gpu_instancing refer to them; every buffer with data
 // becomes the one GLB BIN chunk; external images are embedded.
-#include "core/export/ReducedModel.h"
+#include "core/reduce/ReducedModel.h"
 
 #include <string>
 #include <vector>

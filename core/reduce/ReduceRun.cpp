@@ -1,28 +1,6 @@
 #include "core/reduce/ReduceRun.h"
 
-#include "core/common/AtomicFile.h"
-#include "core/io/MeshIO.h"
-
-#include <nlohmann/json.hpp>
-
 namespace vl {
-
-namespace {
-
-std::string joinNames(const std::vector<std::string>& names, char separator) {
-    std::string text;
-    for (const auto& name : names) text += (text.empty() ? "" : std::string(1, separator)) + name;
-    return text;
-}
-
-// File-system safe form of a viseme name.
-std::string fileSafe(std::string name) {
-    for (auto& c : name)
-        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_' && c != '+') c = '_';
-    return name;
-}
-
-} // namespace
 
 ReduceOutcome runReduction(const VisemeSet& set, const FrequencySource& frequencies,
                            const ReduceSettings& settings, const ProgressCallback& progress) {
@@ -31,6 +9,7 @@ ReduceOutcome runReduction(const VisemeSet& set, const FrequencySource& frequenc
     out.frequencies = visemeFrequencies(frequencies, out.visemeNames);
     out.weights = computeWeights(settings.weightMode, set.neutral, settings.paintedWeights,
                                  settings.paintedWeightsSource);
+    requireKnownVisemes(set, frequencies); // before the reduction, not after it
 
     std::vector<std::span<const Vec3>> rows; // a view of the set's positions: no copy of the shapes
     for (const auto& v : set.visemes) rows.emplace_back(v.positions);
@@ -47,109 +26,8 @@ ReduceOutcome runReduction(const VisemeSet& set, const FrequencySource& frequenc
                                settings.options, progress);
     out.constraints = settings.constraints;
 
-    for (const auto& group : out.result.best().groups) {
-        ReducedViseme reduced;
-        for (const int i : group) {
-            reduced.members.push_back(out.visemeNames[static_cast<std::size_t>(i)]);
-            reduced.frequency += out.frequencies[static_cast<std::size_t>(i)];
-        }
-        reduced.name = joinNames(reduced.members, '+');
-        reduced.positions = mergeGroup(shapes, out.frequencies, group);
-        out.reduced.push_back(std::move(reduced));
-    }
-    if (frequencies.isPhonemeBased()) {
-        const auto groupOf = out.result.groupOf();
-        for (const auto& [phoneme, viseme] : frequencies.map.entries) {
-            const int index = set.find(viseme);
-            if (index >= 0)
-                out.phonemeToReduced.emplace_back(phoneme, groupOf[static_cast<std::size_t>(index)]);
-        }
-    }
+    out.model = buildReducedModel(set, out.frequencies, out.result.groupOf(), frequencies);
     return out;
-}
-
-std::vector<std::string> writeReductionOutputs(OutputSet& outputs, const VisemeSet& set,
-                                               const ReduceOutcome& outcome) {
-    std::vector<std::string> written;
-    nlohmann::ordered_json reducedList = nlohmann::ordered_json::array();
-    MeshData mesh = set.neutral;
-    for (std::size_t g = 0; g < outcome.reduced.size(); ++g) {
-        const auto& reduced = outcome.reduced[g];
-        const std::string stem = "reduced_" + std::to_string(g) + "_" + fileSafe(reduced.name);
-        mesh.positions = reduced.positions;
-        outputs.add(stem + ".obj", formatObj(mesh));
-        outputs.add(stem + ".wrl", formatVrml(mesh));
-        written.push_back(stem + ".obj");
-        written.push_back(stem + ".wrl");
-        reducedList.push_back({{"index", g},
-                               {"name", reduced.name},
-                               {"members", reduced.members},
-                               {"frequency", reduced.frequency},
-                               {"obj", stem + ".obj"},
-                               {"wrl", stem + ".wrl"}});
-    }
-    nlohmann::ordered_json mapping;
-    mapping["format"] = "visemelab-mapping";
-    mapping["version"] = 1;
-    const auto groupOf = outcome.result.groupOf();
-    nlohmann::ordered_json visemes = nlohmann::ordered_json::object();
-    for (std::size_t i = 0; i < outcome.visemeNames.size(); ++i) visemes[outcome.visemeNames[i]] = groupOf[i];
-    mapping["visemes"] = visemes;
-    nlohmann::ordered_json phonemes = nlohmann::ordered_json::object();
-    for (const auto& [phoneme, index] : outcome.phonemeToReduced) phonemes[phoneme] = index;
-    mapping["phonemes"] = phonemes;
-    mapping["reduced"] = reducedList;
-    outputs.add("mapping.json", mapping.dump(2) + "\n");
-    written.push_back("mapping.json");
-    return written;
-}
-
-std::string reductionReportJson(const ReduceOutcome& outcome, WeightMode mode, const ReduceTimings& timings,
-                                const std::vector<std::string>& outputs) {
-    nlohmann::ordered_json report;
-    report["n"] = outcome.visemeNames.size();
-    report["m"] = outcome.result.curve.size();
-    report["weights"] = toString(mode);
-    const Grouping& best = outcome.result.best();
-    report["method"] = toString(outcome.result.method);
-    report["optimal"] = best.optimal;
-    report["cost"] = best.cost;
-    report["lower_bound"] = best.lowerBound;
-    report["gap"] = best.gap();
-    nlohmann::ordered_json groups = nlohmann::ordered_json::array();
-    for (const auto& reduced : outcome.reduced) groups.push_back(reduced.members);
-    report["groups"] = groups;
-    // Entries p the constraints rule out are null.
-    nlohmann::ordered_json curve = nlohmann::ordered_json::array(), bounds = nlohmann::ordered_json::array(),
-                           optimal = nlohmann::ordered_json::array();
-    for (const auto& grouping : outcome.result.curve) {
-        curve.push_back(grouping.feasible() ? nlohmann::ordered_json(grouping.cost)
-                                            : nlohmann::ordered_json());
-        bounds.push_back(grouping.feasible() ? nlohmann::ordered_json(grouping.lowerBound)
-                                             : nlohmann::ordered_json());
-        optimal.push_back(grouping.optimal);
-    }
-    report["cost_curve"] = curve;
-    report["lower_bound_curve"] = bounds;
-    report["optimal_curve"] = optimal;
-    nlohmann::ordered_json pairs = nlohmann::ordered_json::object();
-    pairs["pin"] = outcome.constraints.pinned;
-    auto pairList = [](const std::vector<std::pair<std::string, std::string>>& list) {
-        nlohmann::ordered_json json = nlohmann::ordered_json::array();
-        for (const auto& [a, b] : list) json.push_back({a, b});
-        return json;
-    };
-    pairs["apart"] = pairList(outcome.constraints.apart);
-    pairs["together"] = pairList(outcome.constraints.together);
-    report["constraints"] = pairs;
-    nlohmann::ordered_json freq = nlohmann::ordered_json::object();
-    for (std::size_t i = 0; i < outcome.visemeNames.size(); ++i)
-        freq[outcome.visemeNames[i]] = outcome.frequencies[i];
-    report["frequencies"] = freq;
-    report["timing_ms"] = {
-        {"load", timings.loadMs}, {"reduce", timings.reduceMs}, {"write", timings.writeMs}};
-    report["outputs"] = outputs;
-    return report.dump(2) + "\n";
 }
 
 } // namespace vl

@@ -3,7 +3,7 @@
 // runtime's keyframe evaluator (runtime::KeyframeCurve) that plays them, and the cues a timeline
 // shows. The CLI, the glTF animation, the utterance error and the editor all take the face's key
 // weights from here, so they show the motion a device running runtime::KeyframeAnimation shows.
-#include "core/export/ReducedModel.h"
+#include "core/reduce/ReducedModel.h"
 #include "core/runtime/Animation.h"
 #include "core/speech/TrackKeyframes.h"
 #include "core/speech/VisemeTrack.h"

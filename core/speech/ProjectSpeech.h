@@ -1,8 +1,8 @@
 #pragma once
 // A project's faces for speech: the full viseme set and its reduction as models with phoneme maps,
 // the vertex weights its reduction uses, and the utterance error of every possible reduction.
-#include "core/export/ReducedModel.h"
 #include "core/reduce/Frequencies.h"
+#include "core/reduce/ReducedModel.h"
 #include "core/reduce/Reduction.h"
 #include "core/speech/UtteranceError.h"
 

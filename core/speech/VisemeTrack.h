@@ -1,7 +1,7 @@
 #pragma once
 // Timed phonemes -> the keys of a face (the project's visemes, or the merged keys of a reduction)
 // -> cues: contiguous runs of one key, the layout Rhubarb Lip Sync writes ("mouthCues").
-#include "core/export/ReducedModel.h"
+#include "core/reduce/ReducedModel.h"
 #include "core/speech/Utterance.h"
 
 #include <span>

@@ -15,11 +15,11 @@
 // costs) and weights uniform.
 #include "core/export/Export.h"
 #include "core/export/KeyMeshFiles.h"
-#include "core/export/ReducedModel.h"
 #include "core/export/RuntimePackageWriter.h"
 #include "core/io/MeshIO.h"
 #include "core/project/Project.h"
 #include "core/reduce/Frequencies.h"
+#include "core/reduce/ReducedModel.h"
 #include "core/reduce/Reduction.h"
 #include "core/reduce/VisemeSet.h"
 #include "core/runtime/Animation.h"

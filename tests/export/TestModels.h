@@ -1,7 +1,7 @@
 #pragma once
 // Small synthetic reduced models for the export and runtime tests: a wavy grid "face" with (u,v)
 // and random key meshes, deterministic from a seed.
-#include "core/export/ReducedModel.h"
+#include "core/reduce/ReducedModel.h"
 
 #include <random>
 #include <string>

@@ -156,7 +156,7 @@ void expectKeysAreWeightedMeans(const Reduced& r, AvatarNames names) {
         const std::size_t vertices = mesh.primitives[0].vertices;
         const auto& outNames =
             r.out.json["meshes"][static_cast<std::size_t>(mesh.index)]["extras"]["targetNames"];
-        for (std::size_t g = 0; g < r.reduction.model.keys.size(); ++g) {
+        for (std::size_t g = 0; g < r.reduction.outcome.model.keys.size(); ++g) {
             std::vector<double> expected(3 * vertices, 0.0);
             double total = 0;
             for (std::size_t i = 0; i < groupOf.size(); ++i)
@@ -173,8 +173,9 @@ void expectKeysAreWeightedMeans(const Reduced& r, AvatarNames names) {
             if (someTarget < 0) continue;
             std::size_t at = static_cast<std::size_t>(someTarget);
             if (names == AvatarNames::Merged) {
-                const auto it = std::find(outNames.begin(), outNames.end(), r.reduction.model.keys[g].name);
-                ASSERT_NE(it, outNames.end()) << r.reduction.model.keys[g].name;
+                const auto it =
+                    std::find(outNames.begin(), outNames.end(), r.reduction.outcome.model.keys[g].name);
+                ASSERT_NE(it, outNames.end()) << r.reduction.outcome.model.keys[g].name;
                 at = static_cast<std::size_t>(it - outNames.begin());
             }
             const auto got = floats(r.out, pout["targets"][at]["POSITION"].get<int>(), vertices);
@@ -186,7 +187,7 @@ void expectKeysAreWeightedMeans(const Reduced& r, AvatarNames names) {
 
 TEST(AvatarWriter, OriginalNamesKeepEveryViseme_MembersShareOneAccessor_RestByteIdentical) {
     const Reduced r = reduce(fixture(FixtureStorage::Plain), 6, AvatarNames::Original);
-    ASSERT_EQ(r.reduction.model.keys.size(), 6u);
+    ASSERT_EQ(r.reduction.outcome.model.keys.size(), 6u);
     EXPECT_EQ(r.scanOut.visemes, r.scanIn.visemes);
     expectUntouchedPartsIdentical(r);
     expectKeysAreWeightedMeans(r, AvatarNames::Original);
@@ -223,7 +224,7 @@ TEST(AvatarWriter, MergedNamesGiveOneTargetPerKeyAndRemapWeightsAnimationsAndNam
     EXPECT_EQ(names[0], "browInnerUp");
     EXPECT_EQ(names[1], "jawOpen");
     EXPECT_EQ(names.back(), "eyeBlinkRight");
-    for (const KeyMesh& key : r.reduction.model.keys)
+    for (const KeyMesh& key : r.reduction.outcome.model.keys)
         EXPECT_NE(std::find(names.begin(), names.end(), key.name), names.end()) << key.name;
     EXPECT_EQ(head["primitives"][0]["targets"].size(), names.size());
     EXPECT_EQ(head["weights"].size(), names.size());
@@ -233,7 +234,8 @@ TEST(AvatarWriter, MergedNamesGiveOneTargetPerKeyAndRemapWeightsAnimationsAndNam
     const auto weights = floats(r.out, output, 3 * names.size());
     EXPECT_FLOAT_EQ(weights[names.size() + 1], 0.8f);
     const std::string aaKey =
-        r.reduction.model.keys[static_cast<std::size_t>(r.reduction.outcome.result.groupOf()[10])].name;
+        r.reduction.outcome.model.keys[static_cast<std::size_t>(r.reduction.outcome.result.groupOf()[10])]
+            .name;
     const auto aaAt = static_cast<std::size_t>(std::find(names.begin(), names.end(), aaKey) - names.begin());
     EXPECT_FLOAT_EQ(weights[names.size() + aaAt], 0.8f);
     // The output reads back as the same five keys on every mesh.
@@ -318,7 +320,8 @@ TEST(AvatarWriter, VrmExpressionBindsFollowMergedTargets) {
         ASSERT_EQ(names.size(), 5u + 3u); // Neutral, Angry, Joy, EYE_Close, MTH_Close kept; 3 keys
         const auto groupOf = r.reduction.outcome.result.groupOf();
         const auto keyTarget = [&](std::size_t viseme) {
-            const std::string& key = r.reduction.model.keys[static_cast<std::size_t>(groupOf[viseme])].name;
+            const std::string& key =
+                r.reduction.outcome.model.keys[static_cast<std::size_t>(groupOf[viseme])].name;
             return static_cast<int>(std::find(names.begin(), names.end(), key) - names.begin());
         };
         const int joy =

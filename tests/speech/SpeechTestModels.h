@@ -1,9 +1,9 @@
 #pragma once
 // A small viseme set with a phoneme map, its unreduced model and a reduction of it, for the
 // speech tests: visemes v0..v(n-1) on a grid, phonemes P0..P(2n-1) two per viseme, sil -> v0.
-#include "core/export/ReducedModel.h"
 #include "core/export/RuntimePackageWriter.h"
 #include "core/reduce/Frequencies.h"
+#include "core/reduce/ReducedModel.h"
 #include "core/reduce/Reduction.h"
 #include "core/reduce/VisemeSet.h"
 #include "core/runtime/Animation.h"

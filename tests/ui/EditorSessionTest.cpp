@@ -6,6 +6,7 @@
 #include "core/export/Export.h"
 #include "core/io/MeshIO.h"
 #include "core/paint/WeightBrush.h"
+#include "core/project/ProjectRun.h"
 
 #include <gtest/gtest.h>
 
@@ -71,7 +72,42 @@ TEST(EditorSession, ReductionRunsInTheBackgroundAndMatchesTheCoreReference) {
     for (std::size_t p = 1; p < curve->curve.size(); ++p)
         EXPECT_LE(curve->curve[p].cost, curve->curve[p - 1].cost + 1e-12);
     EXPECT_NEAR(curve->curve.back().cost, 0.0, 1e-12);
-    EXPECT_EQ(session.mergedShapes().size(), 10u);
+    const ReducedModel* merged = session.reducedModel();
+    ASSERT_NE(merged, nullptr);
+    EXPECT_EQ(merged->keys.size(), 10u);
+    // The merged view is the CLI's model: same keys, names and positions, bit for bit.
+    const ReduceOutcome cli = reduceProject(session.projectSnapshot(), *session.visemes());
+    ASSERT_EQ(cli.model.keys.size(), merged->keys.size());
+    for (std::size_t k = 0; k < merged->keys.size(); ++k) {
+        EXPECT_EQ(merged->keys[k].name, cli.model.keys[k].name);
+        EXPECT_EQ(merged->keys[k].positions, cli.model.keys[k].positions);
+    }
+    EXPECT_EQ(merged->phonemeToKey, cli.model.phonemeToKey);
+}
+
+TEST(EditorSession, MergedViewRefusesAPhonemeMapNamingAnUnknownViseme) {
+    EditorSession session;
+    session.autoReduce = false;
+    session.loadSample();
+    ASSERT_TRUE(session.document().frequencies.isPhonemeBased());
+    session.startReduction();
+    session.finishBackgroundWork();
+    ASSERT_NE(session.reducedModel(), nullptr);
+    // A map entry for a phoneme the table does not count, naming a viseme the set lacks: the
+    // frequencies are still valid, but no model is built with a silently dropped entry.
+    FrequencySource source = session.document().frequencies;
+    source.map.entries.emplace_back("ZZ", "nope");
+    session.setFrequencySource(source, "extra map entry");
+    session.startReduction();
+    session.finishBackgroundWork();
+    ASSERT_NE(session.currentGrouping(), nullptr);
+    try {
+        session.reducedModel();
+        FAIL() << "an unknown viseme in the map was accepted";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("unknown viseme 'nope' (phonemes ZZ)"), std::string::npos)
+            << e.what();
+    }
 }
 
 TEST(EditorSession, ChangingAnInputInvalidatesTheCurveUntilTheNextRun) {

@@ -188,8 +188,9 @@ class EditorSession {
     const ReductionResult* reductionCurve() const { return reduction_.curve(); }
     // Grouping into the target number of groups from the current curve, or null.
     const Grouping* currentGrouping() const { return reduction_.grouping(document().target); }
-    // Merged shape of each group of currentGrouping() (frequency-weighted means; cached).
-    const std::vector<std::vector<Vec3>>& mergedShapes() { return reduction_.mergedShapes(document()); }
+    // The reduced model of currentGrouping() (merged keys, phoneme -> key; cached), or null without
+    // a grouping. Throws InputError when it cannot be built (ReductionService::reducedModel).
+    const ReducedModel* reducedModel() { return reduction_.reducedModel(document()); }
     bool autoReduce = true; // re-run in the background after every input change
 
     // --- viseme authoring and the phoneme map editor (core/document/VisemeCommands.h and

@@ -21,23 +21,17 @@ const Grouping* ReductionService::grouping(int m) const {
     return &current->curve[static_cast<std::size_t>(m - 1)];
 }
 
-const std::vector<std::vector<Vec3>>& ReductionService::mergedShapes(const Document& document) {
+const ReducedModel* ReductionService::reducedModel(const Document& document) {
     const Grouping* groups = grouping(document.target);
-    if (!groups || !document.visemes) {
-        merged_.clear();
-        mergedRevision_ = 0;
-        return merged_;
+    if (!groups || !document.visemes) return nullptr;
+    if (!model_ || modelRevision_ != revision_ || modelGroups_ != document.target) {
+        model_.reset();
+        model_ = buildReducedModel(*document.visemes, documentFrequencies(document), groups->groupOf(),
+                                   document.frequencies);
+        modelRevision_ = revision_;
+        modelGroups_ = document.target;
     }
-    if (mergedRevision_ != revision_ || mergedGroups_ != document.target) {
-        std::vector<std::vector<Vec3>> shapes;
-        for (const auto& viseme : document.visemes->visemes) shapes.push_back(viseme.positions);
-        const std::vector<double> frequencies = documentFrequencies(document);
-        merged_.clear();
-        for (const auto& group : groups->groups) merged_.push_back(mergeGroup(shapes, frequencies, group));
-        mergedRevision_ = revision_;
-        mergedGroups_ = document.target;
-    }
-    return merged_;
+    return &*model_;
 }
 
 std::size_t ReductionService::curveLength(const Document& document) {

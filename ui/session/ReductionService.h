@@ -2,8 +2,9 @@
 // The reduction of the current document, as a background job with its result cache. The curve
 // (every p = 1..n) depends only on the document's reduction inputs (meshes, frequencies,
 // weights): the service numbers those inputs with a revision that changes whenever they change,
-// and keeps the curve and the merged shapes for the revision they were computed for.
+// and keeps the curve and the reduced model for the revision they were computed for.
 #include "core/document/Document.h"
+#include "core/reduce/ReducedModel.h"
 #include "ui/session/BackgroundTask.h"
 
 #include <cstdint>
@@ -51,8 +52,11 @@ class ReductionService {
     static constexpr double kLargeSetSeconds = 10.0;
     // The grouping into m groups from the current curve, or null.
     const Grouping* grouping(int m) const;
-    // Merged shape of each group of grouping(document.target) (frequency-weighted means, eq. 19).
-    const std::vector<std::vector<Vec3>>& mergedShapes(const Document& document);
+    // The reduced model of grouping(document.target): merged keys (frequency-weighted means, eq. 19)
+    // and the phoneme -> key map, from buildReducedModel as every other front end gets them; null
+    // when there is no current grouping. Throws InputError when the model cannot be built (e.g. the
+    // phoneme map names a viseme the set lacks).
+    const ReducedModel* reducedModel(const Document& document);
 
   private:
     struct Curve {
@@ -64,10 +68,10 @@ class ReductionService {
     Curve curve_;
     std::uint64_t runningRevision_ = 0;
     BackgroundTask<std::shared_ptr<const ReductionResult>> task_;
-    // mergedShapes() cache, keyed by the inputs revision and the number of groups.
-    std::uint64_t mergedRevision_ = 0;
-    int mergedGroups_ = 0;
-    std::vector<std::vector<Vec3>> merged_;
+    // reducedModel() cache, keyed by the inputs revision and the number of groups.
+    std::uint64_t modelRevision_ = 0;
+    int modelGroups_ = 0;
+    std::optional<ReducedModel> model_;
 };
 
 } // namespace vl::ui

@@ -1,8 +1,8 @@
 #include "ui/session/SpeechService.h"
 
 #include "core/common/Error.h"
-#include "core/export/ReducedModel.h"
 #include "core/phonetics/EspeakSynthesizer.h"
+#include "core/reduce/ReducedModel.h"
 
 #include <algorithm>
 #include <sstream>

@@ -1,10 +1,13 @@
 #pragma once
-// What every exporter takes: the neutral mesh, the key meshes (merged visemes of a reduction, or
-// the original visemes for an unreduced export), and the phoneme -> key map. Built from a VisemeSet,
-// its frequencies and a grouping, so the CLI, the project and the editor all export the same way.
+// The reduced model: the neutral mesh, the key meshes (merged visemes of a reduction, or the
+// original visemes for an unreduced model) and the phoneme -> key map. buildReducedModel is the one
+// way every front end (CLI reduce and export, the editor's merged view and export, avatars, speech)
+// turns a viseme set, its frequencies and a grouping into merged keys and that map, so all of them
+// name, merge and map identically. Writers of the model live in core/export.
 #include "core/mesh/Mesh.h"
 
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -14,7 +17,7 @@ struct VisemeSet;
 struct FrequencySource;
 
 struct KeyMesh {
-    std::string name;                 // e.g. "f+th" for a merged group, or the viseme's own name
+    std::string name;                 // members joined by '+' (mergedKeyName), e.g. "f+th"
     std::vector<std::string> members; // original viseme names merged into it
     double frequency = 0.0;           // summed (normalised) frequency of the members
     std::vector<Vec3> positions;      // one per neutral vertex
@@ -32,11 +35,18 @@ struct ReducedModel {
 // The name of a merged key: its members joined by '+'.
 std::string mergedKeyName(const std::vector<std::string>& members);
 
-// Key k merges the visemes i with groupOf[i] == k (groups numbered 0..m-1, each non-empty), its
-// positions are the frequency-weighted mean (mergeGroup). Phonemes come from the source's
-// phoneme -> viseme map when it is phoneme-based; otherwise every viseme name stands for itself.
+// Key k merges the visemes i with groupOf[i] == k (groups numbered 0..m-1, each non-empty, members
+// in viseme order); its positions are the frequency-weighted mean (mergeGroup), a single member's
+// are its own. Phonemes come from the source's phoneme -> viseme map when it is phoneme-based;
+// otherwise every viseme name stands for itself. One policy for names: a map entry naming a viseme
+// the set lacks is an InputError (at the map's origin) that lists every such viseme and its
+// phonemes; nothing is dropped silently. Malformed frequencies or groupings throw InputError too.
 ReducedModel buildReducedModel(const VisemeSet& set, const std::vector<double>& frequencies,
                                const std::vector<int>& groupOf, const FrequencySource& source);
+
+// The name policy alone, for a caller that wants it before a long run: throws the InputError
+// buildReducedModel would throw when the (phoneme-based) source maps a phoneme to a viseme the set lacks.
+void requireKnownVisemes(const VisemeSet& set, const FrequencySource& source);
 
 // The unreduced set as a model: one key per viseme (groupOf = identity).
 ReducedModel unreducedModel(const VisemeSet& set, const std::vector<double>& frequencies,

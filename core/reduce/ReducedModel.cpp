@@ -1,12 +1,15 @@
-#include "core/export/ReducedModel.h"
+#include "core/reduce/ReducedModel.h"
 
 #include "core/common/Error.h"
 #include "core/reduce/Frequencies.h"
 #include "core/reduce/Reduction.h"
 #include "core/reduce/VisemeSet.h"
 
+#include <algorithm>
 #include <cmath>
+#include <map>
 #include <set>
+#include <span>
 
 namespace vl {
 
@@ -22,52 +25,69 @@ std::string mergedKeyName(const std::vector<std::string>& members) {
     return name;
 }
 
+// Every map entry whose viseme the set lacks, as one error: "unknown viseme 'x' (phonemes A, B)".
+void requireKnownVisemes(const VisemeSet& set, const FrequencySource& source) {
+    if (!source.isPhonemeBased()) return;
+    std::map<std::string, std::string> unknown; // viseme -> its phonemes, joined
+    for (const auto& [phoneme, viseme] : source.map.entries)
+        if (set.find(viseme) < 0) {
+            std::string& phonemes = unknown[viseme];
+            phonemes += (phonemes.empty() ? "" : ", ") + phoneme;
+        }
+    if (unknown.empty()) return;
+    std::string list;
+    for (const auto& [viseme, phonemes] : unknown)
+        list += (list.empty() ? "" : "; ") + ("unknown viseme '" + viseme + "' (phonemes " + phonemes + ")");
+    const std::string& origin = !source.map.origin.text.empty() ? source.map.origin.text : source.origin.text;
+    throwInputError(origin.empty() ? "phoneme map" : origin,
+                    "the phoneme map names visemes the set does not have: " + list);
+}
+
 ReducedModel buildReducedModel(const VisemeSet& set, const std::vector<double>& frequencies,
                                const std::vector<int>& groupOf, const FrequencySource& source) {
     const std::size_t n = set.size();
     if (frequencies.size() != n || groupOf.size() != n)
-        throwInputError("export", "frequencies and grouping must have one entry per viseme");
+        throwInputError("reduced model", "frequencies and grouping must have one entry per viseme");
     int groupCount = 0;
     for (int g : groupOf) {
-        if (g < 0 || g >= static_cast<int>(n)) throwInputError("export", "group index out of range");
+        if (g < 0 || g >= static_cast<int>(n)) throwInputError("reduced model", "group index out of range");
         groupCount = std::max(groupCount, g + 1);
     }
+    requireKnownVisemes(set, source);
     std::vector<std::vector<int>> members(static_cast<std::size_t>(groupCount));
     for (std::size_t i = 0; i < n; ++i)
         members[static_cast<std::size_t>(groupOf[i])].push_back(static_cast<int>(i));
 
-    std::vector<std::vector<Vec3>> shapes;
-    shapes.reserve(n);
-    for (const Viseme& v : set.visemes) shapes.push_back(v.positions);
+    std::vector<std::span<const Vec3>> rows; // a view of the set's positions: no copy of the shapes
+    rows.reserve(n);
+    for (const Viseme& v : set.visemes) rows.emplace_back(v.positions);
+    const ShapeView shapes(rows);
 
     ReducedModel model;
     model.neutral = set.neutral;
     for (std::size_t g = 0; g < members.size(); ++g) {
-        if (members[g].empty()) throwInputError("export", "group " + std::to_string(g) + " has no member");
+        if (members[g].empty())
+            throwInputError("reduced model", "group " + std::to_string(g) + " has no member");
         KeyMesh key;
         for (int i : members[g]) {
             key.members.push_back(set.visemes[static_cast<std::size_t>(i)].name);
             key.frequency += frequencies[static_cast<std::size_t>(i)];
         }
         key.name = mergedKeyName(key.members);
-        key.positions = members[g].size() == 1 ? shapes[static_cast<std::size_t>(members[g][0])]
-                                               : mergeGroup(shapes, frequencies, members[g]);
+        key.positions = members[g].size() == 1
+                            ? set.visemes[static_cast<std::size_t>(members[g][0])].positions
+                            : mergeGroup(shapes, frequencies, members[g]);
         model.keys.push_back(std::move(key));
     }
 
     if (source.isPhonemeBased()) {
-        for (const auto& [phoneme, viseme] : source.map.entries) {
-            const int v = set.find(viseme);
-            if (v < 0)
-                throwInputError("export",
-                                "phoneme '" + phoneme + "' maps to unknown viseme '" + viseme + "'");
-            model.phonemeToKey.emplace_back(phoneme, groupOf[static_cast<std::size_t>(v)]);
-        }
+        for (const auto& [phoneme, viseme] : source.map.entries)
+            model.phonemeToKey.emplace_back(phoneme, groupOf[static_cast<std::size_t>(set.find(viseme))]);
         model.phonemeFrequencies = source.phonemes.entries;
     } else {
         for (std::size_t i = 0; i < n; ++i) model.phonemeToKey.emplace_back(set.visemes[i].name, groupOf[i]);
     }
-    validateReducedModel(model, "export");
+    validateReducedModel(model, "reduced model");
     return model;
 }
 

@@ -1,8 +1,10 @@
-#include "core/export/ReducedModel.h"
+#include "core/reduce/ReducedModel.h"
 #include "core/common/Error.h"
 #include "core/reduce/Frequencies.h"
+#include "core/reduce/ReduceRun.h"
 #include "core/reduce/VisemeSet.h"
 #include "tests/export/TestModels.h"
+#include "tests/reduce/InputErrorText.h"
 
 #include <gtest/gtest.h>
 
@@ -79,6 +81,60 @@ TEST(ReducedModel, BadInputIsNamed) {
     model = test::randomModel(3, 3, 2, false, 71);
     model.phonemeToKey.push_back(model.phonemeToKey.front());
     EXPECT_THROW(validateReducedModel(model, "m"), InputError);
+}
+
+// One policy for names, wherever a model is built: a map entry naming a viseme the set lacks is an
+// error at the map's origin that lists every such viseme with its phonemes, even when the table
+// never counts those phonemes (so the frequencies alone are valid and nothing would be noticed).
+FrequencySource mapWithUnknownVisemes() {
+    FrequencySource source;
+    source.phonemes.entries = {{"AA", 0.4}, {"F", 0.2}, {"OW", 0.2}, {"TH", 0.2}};
+    source.map.entries = {{"AA", "aa"}, {"F", "f"},   {"OW", "oh"}, {"TH", "th"},
+                          {"M", "mbp"}, {"B", "mbp"}, {"R", "rr"}};
+    source.map.origin.text = "map.csv";
+    return source;
+}
+
+TEST(ReducedModel, UnknownVisemesInTheMapAreOneErrorNamingThemAll) {
+    const VisemeSet set = fourVisemes();
+    const FrequencySource source = mapWithUnknownVisemes();
+    const std::vector<double> frequencies = visemeFrequencies(source, {"aa", "f", "oh", "th"});
+    const std::string error = test::errorOf([&] {
+        buildReducedModel(set, frequencies, {0, 1, 0, 1}, source);
+    });
+    EXPECT_EQ(error, "map.csv: the phoneme map names visemes the set does not have: unknown viseme 'mbp' "
+                     "(phonemes M, B); unknown viseme 'rr' (phonemes R)");
+    EXPECT_EQ(test::errorOf([&] { unreducedModel(set, frequencies, source); }), error);
+    EXPECT_EQ(test::errorOf([&] { requireKnownVisemes(set, source); }), error);
+    // Without an origin the error says what it is about.
+    FrequencySource unnamed = source;
+    unnamed.map.origin.text.clear();
+    EXPECT_EQ(test::errorOf([&] { requireKnownVisemes(set, unnamed); }).rfind("phoneme map: ", 0), 0u);
+    // Direct viseme frequencies have no map: nothing to check.
+    FrequencySource direct;
+    direct.visemeFrequencies.entries = {{"aa", 1}, {"f", 1}, {"oh", 1}, {"th", 1}};
+    EXPECT_EQ(test::errorOf([&] { buildReducedModel(set, frequencies, {0, 1, 0, 1}, direct); }), "");
+}
+
+TEST(ReducedModel, ReductionRunRefusesUnknownVisemesBeforeReducing) {
+    const VisemeSet set = fourVisemes();
+    int progressCalls = 0;
+    const std::string error = test::errorOf(
+        [&] { runReduction(set, mapWithUnknownVisemes(), {.target = 2}, [&](double) { ++progressCalls; }); });
+    EXPECT_NE(error.find("unknown viseme 'mbp' (phonemes M, B)"), std::string::npos) << error;
+    EXPECT_EQ(progressCalls, 0);
+    // Without the unknown entries the run's model is buildReducedModel's for its grouping.
+    FrequencySource known = mapWithUnknownVisemes();
+    known.map.entries.resize(4);
+    const ReduceOutcome outcome = runReduction(set, known, {.target = 2});
+    const ReducedModel expected =
+        buildReducedModel(set, outcome.frequencies, outcome.result.groupOf(), known);
+    ASSERT_EQ(outcome.model.keys.size(), 2u);
+    for (std::size_t k = 0; k < 2; ++k) {
+        EXPECT_EQ(outcome.model.keys[k].name, expected.keys[k].name);
+        EXPECT_EQ(outcome.model.keys[k].positions, expected.keys[k].positions);
+    }
+    EXPECT_EQ(outcome.model.phonemeToKey, expected.phonemeToKey);
 }
 
 } // namespace

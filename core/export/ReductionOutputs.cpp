@@ -1,0 +1,74 @@
+#include "core/export/ReductionOutputs.h"
+
+#include "core/export/KeyMeshFiles.h"
+#include "core/export/MappingJson.h"
+#include "core/io/MeshIO.h"
+
+#include <nlohmann/json.hpp>
+
+namespace vl {
+
+std::vector<std::string> writeReductionOutputs(OutputSet& outputs, const ReduceOutcome& outcome) {
+    const ReducedModel& model = outcome.model;
+    std::vector<std::string> written;
+    for (std::size_t k = 0; k < model.keys.size(); ++k) {
+        const MeshData mesh = keyMeshData(model, k);
+        for (const char* extension : {".obj", ".wrl"}) {
+            written.push_back(keyFileName(model, k, extension));
+            outputs.add(written.back(), formatMesh(written.back(), mesh));
+        }
+    }
+    written.emplace_back("mapping.json");
+    outputs.add(written.back(), formatMappingJson(model, {{"obj", ".obj"}, {"wrl", ".wrl"}}));
+    return written;
+}
+
+std::string reductionReportJson(const ReduceOutcome& outcome, WeightMode mode, const ReduceTimings& timings,
+                                const std::vector<std::string>& outputs) {
+    nlohmann::ordered_json report;
+    report["n"] = outcome.visemeNames.size();
+    report["m"] = outcome.result.curve.size();
+    report["weights"] = toString(mode);
+    const Grouping& best = outcome.result.best();
+    report["method"] = toString(outcome.result.method);
+    report["optimal"] = best.optimal;
+    report["cost"] = best.cost;
+    report["lower_bound"] = best.lowerBound;
+    report["gap"] = best.gap();
+    nlohmann::ordered_json groups = nlohmann::ordered_json::array();
+    for (const KeyMesh& key : outcome.model.keys) groups.push_back(key.members);
+    report["groups"] = groups;
+    // Entries p the constraints rule out are null.
+    nlohmann::ordered_json curve = nlohmann::ordered_json::array(), bounds = nlohmann::ordered_json::array(),
+                           optimal = nlohmann::ordered_json::array();
+    for (const auto& grouping : outcome.result.curve) {
+        curve.push_back(grouping.feasible() ? nlohmann::ordered_json(grouping.cost)
+                                            : nlohmann::ordered_json());
+        bounds.push_back(grouping.feasible() ? nlohmann::ordered_json(grouping.lowerBound)
+                                             : nlohmann::ordered_json());
+        optimal.push_back(grouping.optimal);
+    }
+    report["cost_curve"] = curve;
+    report["lower_bound_curve"] = bounds;
+    report["optimal_curve"] = optimal;
+    nlohmann::ordered_json pairs = nlohmann::ordered_json::object();
+    pairs["pin"] = outcome.constraints.pinned;
+    auto pairList = [](const std::vector<std::pair<std::string, std::string>>& list) {
+        nlohmann::ordered_json json = nlohmann::ordered_json::array();
+        for (const auto& [a, b] : list) json.push_back({a, b});
+        return json;
+    };
+    pairs["apart"] = pairList(outcome.constraints.apart);
+    pairs["together"] = pairList(outcome.constraints.together);
+    report["constraints"] = pairs;
+    nlohmann::ordered_json freq = nlohmann::ordered_json::object();
+    for (std::size_t i = 0; i < outcome.visemeNames.size(); ++i)
+        freq[outcome.visemeNames[i]] = outcome.frequencies[i];
+    report["frequencies"] = freq;
+    report["timing_ms"] = {
+        {"load", timings.loadMs}, {"reduce", timings.reduceMs}, {"write", timings.writeMs}};
+    report["outputs"] = outputs;
+    return report.dump(2) + "\n";
+}
+
+} // namespace vl

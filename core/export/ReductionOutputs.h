@@ -1,0 +1,29 @@
+#pragma once
+// The files of one reduction run (`visemelab reduce`, `visemelab avatar reduce`): the merged key
+// meshes, mapping.json and the JSON report. core/reduce computes the run (ReduceRun.h); writing it
+// lives here with the other writers of reduced models.
+#include "core/common/OutputSet.h"
+#include "core/reduce/ReduceRun.h"
+
+#include <string>
+#include <vector>
+
+namespace vl {
+
+struct ReduceTimings {
+    double loadMs = 0, reduceMs = 0, writeMs = 0;
+};
+
+// Stages in `outputs` (an OutputSet of the output folder; the caller commits it, with the report):
+// reduced_<k>_<name>.obj and .wrl per key of the outcome's model (core/export/KeyMeshFiles.h names)
+// and mapping.json (core/export/MappingJson.h, each key's "obj" and "wrl"). Returns the staged file
+// names (relative to the folder).
+std::vector<std::string> writeReductionOutputs(OutputSet& outputs, const ReduceOutcome& outcome);
+
+// The JSON report: n, m, weights, method, optimal, cost, lower_bound, gap, groups, cost_curve (null where
+// the constraints allow no grouping), lower_bound_curve, optimal_curve, constraints, frequencies,
+// timing_ms, outputs.
+std::string reductionReportJson(const ReduceOutcome& outcome, WeightMode mode, const ReduceTimings& timings,
+                                const std::vector<std::string>& outputs);
+
+} // namespace vl
