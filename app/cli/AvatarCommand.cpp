@@ -4,6 +4,7 @@
 #include "app/cli/WeightsOption.h"
 #include "core/common/AtomicFile.h"
 #include "core/common/Error.h"
+#include "core/export/ReductionOutputs.h"
 #include "core/gltf/AvatarReduce.h"
 #include "core/gltf/AvatarReport.h"
 #include "core/gltf/AvatarScan.h"

@@ -4,6 +4,7 @@
 #include "core/common/Error.h"
 #include "core/export/Export.h"
 #include "core/project/Project.h"
+#include "core/project/ProjectRun.h"
 
 #include <cstdio>
 

@@ -8,7 +8,7 @@
 #include "core/phonetics/CorpusText.h"
 #include "core/phonetics/EspeakSynthesizer.h"
 #include "core/project/Project.h"
-#include "core/speech/ProjectSpeech.h"
+#include "core/project/ProjectSpeech.h"
 #include "core/speech/SpeechGltf.h"
 #include "core/speech/TrackJson.h"
 #include "core/speech/WavFile.h"

@@ -8,7 +8,6 @@
 #include "core/export/MappingJson.h"
 #include "core/export/RuntimePackageWriter.h"
 #include "core/export/Xface.h"
-#include "core/project/ProjectRun.h"
 
 namespace vl {
 
@@ -72,26 +71,6 @@ std::vector<std::filesystem::path> exportModel(const ReducedModel& model, Export
                             [&](OutputSet& files) { return addKeyMeshFiles(files, model, ".obj"); });
     }
     return {};
-}
-
-ReducedModel projectReducedModel(const Project& project, bool unreduced) {
-    return projectReducedModel(project, loadProjectVisemeSet(project), unreduced);
-}
-
-ReducedModel projectReducedModel(const Project& project, const VisemeSet& set, bool unreduced) {
-    std::vector<std::string> names;
-    for (const Viseme& v : set.visemes) names.push_back(v.name);
-    if (unreduced)
-        return unreducedModel(set, visemeFrequencies(project.frequencies, names), project.frequencies);
-    const auto& stored = project.reduction.result;
-    if (stored && !stored->curve.empty() &&
-        static_cast<int>(stored->curve.size()) == project.reduction.target) {
-        const std::vector<int> groupOf = stored->groupOf();
-        if (groupOf.size() == set.size())
-            return buildReducedModel(set, visemeFrequencies(project.frequencies, names), groupOf,
-                                     project.frequencies);
-    }
-    return reduceProject(project, set).model;
 }
 
 VisemeSet toVisemeSet(const ReducedModel& model, const std::filesystem::path& source) {

@@ -1,6 +1,6 @@
 #pragma once
-// One entry point for every export format, and the reduced model of a project: what
-// `visemelab export` and the editor's export menu call.
+// One entry point for every export format: what `visemelab export` and the editor's export menu
+// call (the reduced model of a project comes from core/project/ProjectRun.h).
 #include "core/reduce/ReducedModel.h"
 #include "core/reduce/VisemeSet.h"
 
@@ -10,8 +10,6 @@
 #include <vector>
 
 namespace vl {
-
-struct Project;
 
 enum class ExportFormat { Glb, Runtime, Vrml, Obj };
 
@@ -29,13 +27,6 @@ struct ExportOptions {
 std::vector<std::filesystem::path> exportModel(const ReducedModel& model, ExportFormat format,
                                                const std::filesystem::path& out,
                                                const ExportOptions& options = {});
-
-// The project's reduced model: its meshes, frequencies and phoneme map, grouped by the stored last
-// result when it matches the viseme count and target, else by a fresh exact reduction with the
-// project's settings. `unreduced` exports every original viseme as its own key instead.
-ReducedModel projectReducedModel(const Project& project, bool unreduced = false);
-// The same with the project's meshes already loaded (loadProjectVisemeSet).
-ReducedModel projectReducedModel(const Project& project, const VisemeSet& set, bool unreduced = false);
 
 // A model (e.g. an imported glTF) as a viseme set: the keys become the visemes.
 VisemeSet toVisemeSet(const ReducedModel& model, const std::filesystem::path& source);

@@ -1,8 +1,9 @@
 #pragma once
 // The files of one reduction run (`visemelab reduce`, `visemelab avatar reduce`): the merged key
-// meshes, mapping.json and the JSON report. core/reduce computes the run (ReduceRun.h); writing it
-// lives here with the other writers of reduced models.
+// meshes, mapping.json and the JSON report. core/reduce computes the run (ReduceRun.h), core/gltf
+// an avatar's (AvatarReduce.h); writing them lives here with the other writers of reduced models.
 #include "core/common/OutputSet.h"
+#include "core/gltf/AvatarReduce.h"
 #include "core/reduce/ReduceRun.h"
 
 #include <string>
@@ -25,5 +26,14 @@ std::vector<std::string> writeReductionOutputs(OutputSet& outputs, const ReduceO
 // timing_ms, outputs.
 std::string reductionReportJson(const ReduceOutcome& outcome, WeightMode mode, const ReduceTimings& timings,
                                 const std::vector<std::string>& outputs);
+
+// The report of `visemelab avatar reduce`: the keys of `visemelab reduce` (n, m, weights, cost, groups,
+// cost_curve, frequencies, timing_ms, outputs, and whatever the reduction adds) plus "avatar" (input, output,
+// names, target_normals, notes, sizes), "meshes" (the meshes touched: targets before/after, keys) and "scan"
+// (core/gltf/AvatarReport).
+std::string avatarReductionReport(const AvatarReduction& reduction, const AvatarScan& scan,
+                                  const ReduceSettings& settings, const AvatarWriteOptions& write,
+                                  const ReduceTimings& timings, const std::string& input,
+                                  const std::string& output);
 
 } // namespace vl

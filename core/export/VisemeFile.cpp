@@ -4,7 +4,7 @@
 #include "core/common/Error.h"
 #include "core/common/TextParsing.h"
 #include "core/export/KeyMeshFiles.h"
-#include "core/project/JsonRead.h"
+#include "core/io/JsonRead.h"
 #include "core/reduce/VisemeSet.h"
 
 #include <unordered_set>

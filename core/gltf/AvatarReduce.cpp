@@ -1,10 +1,7 @@
 #include "core/gltf/AvatarReduce.h"
 
 #include "core/common/Error.h"
-#include "core/gltf/AvatarReport.h"
 #include "core/gltf/GltfDocument.h"
-
-#include <nlohmann/json.hpp>
 
 #include <algorithm>
 
@@ -74,37 +71,6 @@ AvatarReduction reduceAvatar(const GltfDocument& doc, const AvatarScan& scan,
                                       "wherever it goes and takes the shape of key '" +
                                       r.outcome.model.keys[static_cast<std::size_t>(groupOf[i])].name + "'");
     return r;
-}
-
-std::string avatarReductionReport(const AvatarReduction& reduction, const AvatarScan& scan,
-                                  const ReduceSettings& settings, const AvatarWriteOptions& write,
-                                  const ReduceTimings& timings, const std::string& input,
-                                  const std::string& output) {
-    nlohmann::ordered_json report = nlohmann::ordered_json::parse(
-        reductionReportJson(reduction.outcome, settings.weightMode, timings, {output}));
-    nlohmann::ordered_json meshes = nlohmann::ordered_json::array();
-    for (const AvatarMeshChange& m : reduction.summary.meshes)
-        meshes.push_back({{"index", m.mesh},
-                          {"name", m.name},
-                          {"targets_before", m.targetsBefore},
-                          {"targets_after", m.targetsAfter},
-                          {"viseme_targets", m.visemeTargets},
-                          {"keys", m.keys}});
-    report["meshes"] = meshes;
-    nlohmann::ordered_json phonemes = nlohmann::ordered_json::object();
-    for (const auto& [phoneme, key] : reduction.outcome.model.phonemeToKey) phonemes[phoneme] = key;
-    report["phoneme_to_key"] = phonemes;
-    report["avatar"] = {{"input", input},
-                        {"output", output},
-                        {"names", toString(write.names)},
-                        {"target_normals", write.targetNormals},
-                        {"accessors_before", reduction.summary.accessorsBefore},
-                        {"accessors_after", reduction.summary.accessorsAfter},
-                        {"binary_bytes_before", reduction.summary.binaryBytesBefore},
-                        {"binary_bytes_after", reduction.summary.binaryBytesAfter},
-                        {"notes", reduction.summary.notes}};
-    report["scan"] = avatarReportJson(scan);
-    return report.dump(2) + "\n";
 }
 
 } // namespace vl

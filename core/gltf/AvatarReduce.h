@@ -4,7 +4,6 @@
 // geometry), its keys built by buildReducedModel, and the same avatar written back
 // (core/gltf/AvatarWriter). Frequency tables and phoneme maps name visemes as the bundled files do
 // ("aa", "ih"); they are matched to the avatar's target names by meaning (core/gltf/TargetNames).
-#include "core/export/ReductionOutputs.h"
 #include "core/gltf/AvatarScan.h"
 #include "core/gltf/AvatarWriter.h"
 #include "core/reduce/ReduceRun.h"
@@ -44,14 +43,5 @@ struct AvatarReduction {
 AvatarReduction reduceAvatar(const GltfDocument& doc, const AvatarScan& scan,
                              const FrequencySource& frequencies, const ReduceSettings& settings,
                              const AvatarWriteOptions& write, const ProgressCallback& progress = {});
-
-// The report: the keys of `visemelab reduce` (n, m, weights, cost, groups, cost_curve, frequencies,
-// timing_ms, outputs, and whatever the reduction adds) plus "avatar" (input, output, names,
-// target_normals, notes, sizes), "meshes" (the meshes touched: targets before/after, keys) and
-// "scan" (core/gltf/AvatarReport).
-std::string avatarReductionReport(const AvatarReduction& reduction, const AvatarScan& scan,
-                                  const ReduceSettings& settings, const AvatarWriteOptions& write,
-                                  const ReduceTimings& timings, const std::string& input,
-                                  const std::string& output);
 
 } // namespace vl

@@ -7,7 +7,7 @@
 // A grid bit-identical to a built-in face geometry image (face::makeFaceGeometry) is written as a
 // reference, which keeps a project with the bundled face small (a 257 x 257 grid is 66,049 vectors).
 #include "core/deform/VectorField.h"
-#include "core/project/JsonRead.h"
+#include "core/io/JsonRead.h"
 
 namespace vl {
 

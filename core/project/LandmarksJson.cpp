@@ -2,7 +2,7 @@
 
 #include "core/common/AtomicFile.h"
 #include "core/common/Error.h"
-#include "core/project/JsonWrite.h"
+#include "core/io/JsonWrite.h"
 
 namespace vl {
 

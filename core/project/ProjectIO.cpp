@@ -1,7 +1,7 @@
 // Loading and saving project files: version dispatch, validation, atomic write, path rebasing.
 #include "core/common/AtomicFile.h"
 #include "core/common/Error.h"
-#include "core/project/JsonWrite.h"
+#include "core/io/JsonWrite.h"
 #include "core/project/ProjectJson.h"
 
 namespace vl {

@@ -1,7 +1,7 @@
 #pragma once
 // Internal to core/project: conversion between Project sections and JSON (current version).
 // Readers validate everything they read and throw InputError "<JSON path>: <what>".
-#include "core/project/JsonRead.h"
+#include "core/io/JsonRead.h"
 #include "core/project/Project.h"
 
 #include <filesystem>

@@ -3,8 +3,8 @@
 #include "core/common/Error.h"
 #include "core/gltf/AvatarScan.h"
 #include "core/gltf/GltfDocument.h"
+#include "core/io/JsonRead.h"
 #include "core/io/MeshIO.h"
-#include "core/project/JsonRead.h"
 
 namespace vl {
 
@@ -124,6 +124,26 @@ ReduceOutcome reduceProject(const Project& project, const VisemeSet& set, const 
 
 void storeReductionResult(Project& project, const ReduceOutcome& outcome) {
     project.reduction.result = outcome.result;
+}
+
+ReducedModel projectReducedModel(const Project& project, bool unreduced) {
+    return projectReducedModel(project, loadProjectVisemeSet(project), unreduced);
+}
+
+ReducedModel projectReducedModel(const Project& project, const VisemeSet& set, bool unreduced) {
+    std::vector<std::string> names;
+    for (const Viseme& v : set.visemes) names.push_back(v.name);
+    if (unreduced)
+        return unreducedModel(set, visemeFrequencies(project.frequencies, names), project.frequencies);
+    const auto& stored = project.reduction.result;
+    if (stored && !stored->curve.empty() &&
+        static_cast<int>(stored->curve.size()) == project.reduction.target) {
+        const std::vector<int> groupOf = stored->groupOf();
+        if (groupOf.size() == set.size())
+            return buildReducedModel(set, visemeFrequencies(project.frequencies, names), groupOf,
+                                     project.frequencies);
+    }
+    return reduceProject(project, set).model;
 }
 
 } // namespace vl

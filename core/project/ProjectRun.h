@@ -25,6 +25,13 @@ ReduceSettings projectReduceSettings(const Project& project);
 ReduceOutcome reduceProject(const Project& project, const VisemeSet& set,
                             const ProgressCallback& progress = {});
 
+// The project's reduced model (buildReducedModel): its meshes, frequencies and phoneme map, grouped
+// by the stored last result when it matches the viseme count and target, else by a fresh exact
+// reduction with the project's settings. `unreduced` makes every original viseme its own key instead.
+ReducedModel projectReducedModel(const Project& project, bool unreduced = false);
+// The same with the project's meshes already loaded (loadProjectVisemeSet).
+ReducedModel projectReducedModel(const Project& project, const VisemeSet& set, bool unreduced = false);
+
 // Stores the outcome as the project's last result.
 void storeReductionResult(Project& project, const ReduceOutcome& outcome);
 

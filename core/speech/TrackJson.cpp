@@ -2,7 +2,7 @@
 
 #include "core/common/AtomicFile.h"
 #include "core/common/Error.h"
-#include "core/project/JsonRead.h"
+#include "core/io/JsonRead.h"
 
 namespace vl {
 

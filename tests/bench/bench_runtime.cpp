@@ -18,6 +18,7 @@
 #include "core/export/RuntimePackageWriter.h"
 #include "core/io/MeshIO.h"
 #include "core/project/Project.h"
+#include "core/project/ProjectRun.h"
 #include "core/reduce/Frequencies.h"
 #include "core/reduce/ReducedModel.h"
 #include "core/reduce/Reduction.h"

@@ -4,6 +4,7 @@
 #include "core/export/Export.h"
 #include "core/export/Gltf.h"
 #include "core/project/Project.h"
+#include "core/project/ProjectRun.h"
 #include "tests/export/TestModels.h"
 
 #include <cstdio>

@@ -4,8 +4,8 @@
 
 #include "core/common/AtomicFile.h"
 #include "core/deform/BundledFace.h"
+#include "core/io/JsonRead.h"
 #include "core/project/BuiltinGeometry.h"
-#include "core/project/JsonRead.h"
 
 namespace vl {
 namespace {

@@ -3,7 +3,7 @@
 // expectation helper for InputError messages.
 #include "core/common/Error.h"
 #include "core/deform/VectorField.h"
-#include "core/project/JsonRead.h"
+#include "core/io/JsonRead.h"
 #include "core/project/Project.h"
 
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // Every validation error of the project loader, with the JSON path of the problem.
 #include "ProjectTestUtil.h"
 
-#include "core/project/JsonRead.h"
+#include "core/io/JsonRead.h"
 
 namespace vl {
 namespace {

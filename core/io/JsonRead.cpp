@@ -1,4 +1,4 @@
-#include "core/project/JsonRead.h"
+#include "core/io/JsonRead.h"
 
 #include "core/common/Error.h"
 

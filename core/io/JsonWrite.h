@@ -3,7 +3,7 @@
 // scalars on one line ([0.5, 1, 2]), arrays of such arrays one element per line (mesh vertices).
 // Numbers use nlohmann's shortest round-trip form, so parse(format(x)) == x bit for bit and
 // format(parse(format(x))) == format(x) byte for byte.
-#include "core/project/JsonRead.h"
+#include "core/io/JsonRead.h"
 
 #include <string>
 

@@ -1,7 +1,6 @@
-#include "core/speech/ProjectSpeech.h"
+#include "core/project/ProjectSpeech.h"
 
 #include "core/common/Error.h"
-#include "core/export/Export.h"
 #include "core/project/ProjectRun.h"
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-#include "core/speech/ProjectSpeech.h"
+#include "core/project/ProjectSpeech.h"
 #include "core/common/Error.h"
 #include "core/phonetics/EspeakSynthesizer.h"
 #include "core/project/Project.h"

@@ -1,4 +1,4 @@
-#include "core/project/JsonWrite.h"
+#include "core/io/JsonWrite.h"
 
 #include <algorithm>
 

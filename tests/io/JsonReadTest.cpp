@@ -1,8 +1,8 @@
 // The strict JSON layer: JSON paths in messages, duplicate keys, number checks, stable formatting.
-#include "ProjectTestUtil.h"
+#include "tests/project/ProjectTestUtil.h"
 
-#include "core/project/JsonRead.h"
-#include "core/project/JsonWrite.h"
+#include "core/io/JsonRead.h"
+#include "core/io/JsonWrite.h"
 
 namespace vl {
 namespace {

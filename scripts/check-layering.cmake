@@ -1,0 +1,90 @@
+# The core's layering, checked from its sources: every `#include "core/<other>/..."` in
+# core/<module> must name a module that <module> reaches through its declared dependencies (the
+# CMake targets of core/CMakeLists.txt), and the "Layers" table of docs/architecture.md must list
+# exactly those declared dependencies. Fails (naming file, line and the forbidden edge) otherwise.
+#
+#   cmake -DROOT=<source tree> -DLAYERS=<generated core-layers.cmake> [-DDOCS=<architecture.md>]
+#         -P scripts/check-layering.cmake
+#
+# LAYERS sets VISEMELAB_CORE_MODULES and VISEMELAB_DEPENDS_<module> (core/CMakeLists.txt writes it).
+cmake_minimum_required(VERSION 3.20)
+foreach(var ROOT LAYERS)
+  if(NOT DEFINED ${var})
+    message(FATAL_ERROR "check-layering: -D${var}=... is required")
+  endif()
+endforeach()
+include(${LAYERS})
+
+# Modules each module may include: itself and everything its dependencies reach.
+foreach(module ${VISEMELAB_CORE_MODULES})
+  set(reach ${module})
+  set(frontier ${VISEMELAB_DEPENDS_${module}})
+  while(frontier)
+    list(POP_FRONT frontier next)
+    if(NOT next IN_LIST reach)
+      list(APPEND reach ${next})
+      list(APPEND frontier ${VISEMELAB_DEPENDS_${next}})
+    endif()
+  endwhile()
+  set(REACH_${module} ${reach})
+endforeach()
+
+set(violations "")
+set(count 0)
+foreach(module ${VISEMELAB_CORE_MODULES})
+  file(GLOB_RECURSE sources LIST_DIRECTORIES false "${ROOT}/core/${module}/*.h" "${ROOT}/core/${module}/*.cpp")
+  foreach(source ${sources})
+    file(STRINGS ${source} lines REGEX "^[ \t]*#[ \t]*include[ \t]+\"core/[A-Za-z0-9_]+/")
+    foreach(line ${lines})
+      string(REGEX MATCH "\"core/([A-Za-z0-9_]+)/([^\"]*)\"" included "${line}")
+      set(target ${CMAKE_MATCH_1})
+      math(EXPR count "${count} + 1")
+      if(NOT target IN_LIST REACH_${module})
+        file(RELATIVE_PATH where ${ROOT} ${source})
+        string(APPEND violations "  ${where}: includes core/${target}/${CMAKE_MATCH_2}: "
+                                 "${module} may include only ${REACH_${module}}\n")
+      endif()
+    endforeach()
+  endforeach()
+endforeach()
+
+# The documented table lists exactly the declared dependencies.
+if(DEFINED DOCS)
+  file(STRINGS ${DOCS} doc_lines)
+  set(in_layers FALSE)
+  set(documented "")
+  foreach(line IN LISTS doc_lines)
+    if(line MATCHES "^## ")
+      if(line MATCHES "^## Layers")
+        set(in_layers TRUE)
+      else()
+        set(in_layers FALSE)
+      endif()
+    elseif(in_layers AND line MATCHES "^\\| `core/([a-z]+)` \\| ([^|]*)\\|")
+      set(module ${CMAKE_MATCH_1})
+      string(REGEX MATCHALL "`([a-z]+)`" names "${CMAKE_MATCH_2}")
+      string(REPLACE "`" "" names "${names}")
+      list(SORT names)
+      set(declared ${VISEMELAB_DEPENDS_${module}})
+      list(SORT declared)
+      list(APPEND documented ${module})
+      if(NOT module IN_LIST VISEMELAB_CORE_MODULES)
+        string(APPEND violations "  ${DOCS}: the Layers table lists core/${module}, which has no CMake target\n")
+      elseif(NOT "${names}" STREQUAL "${declared}")
+        string(APPEND violations "  ${DOCS}: core/${module} is documented to depend on '${names}', "
+                                 "core/CMakeLists.txt declares '${declared}'\n")
+      endif()
+    endif()
+  endforeach()
+  foreach(module ${VISEMELAB_CORE_MODULES})
+    if(NOT module IN_LIST documented)
+      string(APPEND violations "  ${DOCS}: the Layers table has no row for core/${module}\n")
+    endif()
+  endforeach()
+endif()
+
+if(violations)
+  message(FATAL_ERROR "core layering violated:\n${violations}")
+endif()
+list(LENGTH VISEMELAB_CORE_MODULES modules)
+message(STATUS "core layering holds: ${count} includes across ${modules} modules checked")

@@ -1,0 +1,3 @@
+#pragma once
+// Allowed: high builds on low.
+#include "core/low/Low.h"
