@@ -250,15 +250,15 @@ void EditorUi::syncGpu() {
         } else {
             visemeMesh_.setGeometry({}, {}, {});
         }
-        uploadedMerged_ = nullptr;
+        uploadedMergedCurve_ = 0;
         weightsKey_.clear(), errorKey_.clear(), influenceKey_.clear();
         frameVisemes_ = true;
     }
     const FaceModel& model = session.face();
-    if (uploadedCascade_ != model.cascade.get() || uploadedDomain_ != model.domain.get()) {
+    if (uploadedCascade_ != model.cascade || uploadedDomain_ != model.domain) {
         const bool first = uploadedCascade_ == nullptr;
-        uploadedCascade_ = model.cascade.get();
-        uploadedDomain_ = model.domain.get();
+        uploadedCascade_ = model.cascade;
+        uploadedDomain_ = model.domain;
         if (model.cascade) {
             const FaceSamples& samples = session.faceSamples();
             faceMesh_.setGeometry(samples.rest, model.domain->triangles, samples.targets);
@@ -271,7 +271,8 @@ void EditorUi::syncGpu() {
     }
     const ReductionResult* curve = session.reductionCurve();
     const int groups = session.document().target;
-    if (curve && (uploadedMerged_ != curve || uploadedMergedGroups_ != groups)) {
+    if (curve &&
+        (uploadedMergedCurve_ != session.reductionCurveRevision() || uploadedMergedGroups_ != groups)) {
         const VisemeSet* set = session.visemes();
         const bool shown = session.attempt("Merged visemes", [&] {
             std::vector<std::vector<Vec3>> targets;
@@ -281,7 +282,7 @@ void EditorUi::syncGpu() {
             if (const auto& colours = session.document().visemeColours) mergedMesh_.setColors(*colours);
         });
         if (!shown) mergedMesh_.setGeometry({}, {}, {});
-        uploadedMerged_ = curve;
+        uploadedMergedCurve_ = session.reductionCurveRevision();
         uploadedMergedGroups_ = groups;
         weightsKey_.clear(), errorKey_.clear(), influenceKey_.clear();
     }

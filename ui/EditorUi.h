@@ -15,6 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -130,9 +131,11 @@ class EditorUi {
     GpuMesh faceMesh_;   // face cascade at q = 0 + one target per parameter
     Viewport mainView_, beforeView_, afterView_;
     std::uint64_t uploadedGeometry_ = 0;
-    const DeformationCascade* uploadedCascade_ = nullptr;
-    const MeshData* uploadedDomain_ = nullptr;
-    const ReductionResult* uploadedMerged_ = nullptr;
+    // Caches hold what they show (shared, immutable) or its revision, never a bare address that a
+    // later allocation could reuse.
+    std::shared_ptr<const DeformationCascade> uploadedCascade_;
+    std::shared_ptr<const MeshData> uploadedDomain_;
+    std::uint64_t uploadedMergedCurve_ = 0; // ReductionService::curveRevision()
     int uploadedMergedGroups_ = 0;
     // What each mesh's scalars currently show, to re-upload only on change.
     std::string weightsKey_, errorKey_, influenceKey_;
@@ -204,12 +207,12 @@ class EditorUi {
     std::string importError_; // the core's message for the last failed import, shown in the panel
 
     // --- avatars (File > Import avatar..., panels/AvatarPanel.cpp) ---------------------------------
-    GpuMesh contextMesh_;                      // the avatar's meshes without visemes, drawn greyed
-    const void* uploadedContext_ = nullptr;    // the scan contextMesh_ shows
-    std::string avatarPattern_;                // the target pattern being typed (view state)
-    const void* avatarPatternScan_ = nullptr;  // the scan avatarPattern_ was last reset from
-    int avatarNames_ = 0;                      // export: 0 original names, 1 merged
-    bool avatarTargetNormals_ = true;          // export: NORMAL/TANGENT displacements of the keys
+    GpuMesh contextMesh_;                                 // the avatar's meshes without visemes, drawn greyed
+    std::shared_ptr<const AvatarScan> uploadedContext_;   // the scan contextMesh_ shows
+    std::string avatarPattern_;                           // the target pattern being typed (view state)
+    std::shared_ptr<const AvatarScan> avatarPatternScan_; // the scan avatarPattern_ was last reset from
+    int avatarNames_ = 0;                                 // export: 0 original names, 1 merged
+    bool avatarTargetNormals_ = true;                     // export: NORMAL/TANGENT displacements of the keys
     int avatarGltfpack_ = -1;                  // export: re-compress (1), not (0), -1: as the input was
     std::filesystem::path avatarGltfpackPath_; // found once (core/gltf/Gltfpack.h); empty: none
     bool avatarGltfpackSearched_ = false;

@@ -44,9 +44,8 @@ void EditorUi::openAvatarExport() {
 
 void EditorUi::syncContextMesh() {
     const DocumentAvatar& avatar = session.document().avatar;
-    const void* scan = avatar.scan.get();
-    if (scan == uploadedContext_) return;
-    uploadedContext_ = scan;
+    if (avatar.scan == uploadedContext_) return;
+    uploadedContext_ = avatar.scan;
     if (!avatar.isSet() || avatar.scan->context.positions.empty()) {
         contextMesh_.setGeometry({}, {}, {});
         return;
@@ -69,10 +68,10 @@ void EditorUi::drawContext(const glm::mat4& view, const glm::mat4& projection) c
 void EditorUi::avatarSection() {
     const DocumentAvatar& avatar = session.document().avatar;
     const AvatarScan& scan = *avatar.scan;
-    if (avatarPatternScan_ != avatar.scan.get()) { // a new avatar, an applied pattern, an undo
+    if (avatarPatternScan_ != avatar.scan) { // a new avatar, an applied pattern, an undo
         avatarPattern_ = avatar.pattern;
         if (avatarPatternScan_ && avatarMeshRow_ >= static_cast<int>(scan.meshes.size())) avatarMeshRow_ = -1;
-        avatarPatternScan_ = avatar.scan.get();
+        avatarPatternScan_ = avatar.scan;
     }
     sectionHeader("Avatar");
     ImGui::TextWrapped("%s", avatar.file.filename().string().c_str());

@@ -221,8 +221,7 @@ void EditorSession::loadSample() {
 }
 
 void EditorSession::startLoading(std::string label, std::function<Loaded()> load) {
-    if (loadTask_.running()) throwInputError(label, "another file is still loading");
-    loadTask_.start(std::move(label), [load = std::move(load)](const auto&) { return load(); });
+    files_.load(std::move(label), std::move(load));
 }
 
 void EditorSession::startOpenProject(const std::filesystem::path& file) {
@@ -323,12 +322,10 @@ std::vector<std::string> EditorSession::exportAvatar(const std::filesystem::path
 void EditorSession::startExportAvatar(const std::filesystem::path& out, const AvatarExport& options) {
     if (!document().avatar.isSet())
         throwInputError("export avatar", "the document has no avatar: use File > Import avatar... first");
-    if (avatarExportTask_.running()) throwInputError("export avatar", "an export is still running");
-    avatarExportTask_.start(
-        "Exporting " + out.filename().string(),
-        [out, options, document = history_.currentShared(), snapshot = projectSnapshot()](const auto&) {
-            return writeAvatarExport(*document, snapshot, out, options);
-        });
+    files_.exportAvatar("Exporting " + out.filename().string(),
+                        [out, options, document = history_.currentShared(), snapshot = projectSnapshot()] {
+                            return writeAvatarExport(*document, snapshot, out, options);
+                        });
 }
 
 bool EditorSession::isBundled(const std::filesystem::path& file) {
@@ -389,14 +386,11 @@ void EditorSession::saveProject(const std::filesystem::path& file) {
 
 void EditorSession::startSaveProject(const std::filesystem::path& file, std::function<void()> then) {
     const std::filesystem::path target = saveTarget(file);
-    if (saveTask_.running()) throwInputError("save", "a save is still running");
-    saveRequestId_ = history_.currentId();
-    afterSave_ = std::move(then);
-    saveTask_.start("Saving " + target.filename().string(),
-                    [target, snapshot = projectSnapshot()](const auto&) {
-                        vl::saveProject(target, snapshot);
-                        return target;
-                    });
+    files_.save("Saving " + target.filename().string(), history_.currentId(), std::move(then),
+                [target, snapshot = projectSnapshot()] {
+                    vl::saveProject(target, snapshot);
+                    return target;
+                });
 }
 
 std::vector<std::filesystem::path> EditorSession::writeExport(const Document& document,
@@ -416,12 +410,10 @@ std::vector<std::filesystem::path> EditorSession::exportProject(ExportFormat for
 
 void EditorSession::startExport(ExportFormat format, const std::filesystem::path& out) {
     if (!visemes()) throwInputError("export", "load a viseme set first");
-    if (exportTask_.running()) throwInputError("export", "an export is still running");
-    exportFormat_ = format;
-    exportOut_ = out;
-    exportTask_.start(std::string("Exporting ") + toString(format),
-                      [format, out, document = history_.currentShared(), snapshot = projectSnapshot()](
-                          const auto&) { return writeExport(*document, snapshot, format, out); });
+    files_.exportModel(std::string("Exporting ") + toString(format),
+                       [format, out, document = history_.currentShared(), snapshot = projectSnapshot()] {
+                           return exportMessage(format, writeExport(*document, snapshot, format, out), out);
+                       });
 }
 
 // --- viseme set ------------------------------------------------------------------------------
@@ -665,34 +657,13 @@ void EditorSession::collectRefinement() {
 }
 
 void EditorSession::poll() {
-    if (auto outcome = loadTask_.take()) {
-        if (outcome->index() == 0)
-            adopt(std::move(std::get<0>(*outcome)));
-        else
-            error(loadTask_.label() + ": " + std::get<1>(*outcome));
-    }
-    if (auto outcome = saveTask_.take()) {
-        auto then = std::exchange(afterSave_, nullptr);
-        // The held-back action (quit, open) runs only when the document it guarded is saved.
-        if (outcome->index() == 0) {
-            if (recordSaved(std::get<0>(*outcome), saveRequestId_) && then) then();
-        } else {
-            error(saveTask_.label() + ": " + std::get<1>(*outcome));
-        }
-    }
-    if (auto outcome = exportTask_.take()) {
-        if (outcome->index() == 0)
-            info(exportMessage(exportFormat_, std::get<0>(*outcome), exportOut_));
-        else
-            error(exportTask_.label() + ": " + std::get<1>(*outcome));
-    }
+    FileJobs::Finished files = files_.poll();
+    if (files.loaded) adopt(std::move(*files.loaded));
+    // The held-back action (quit, open) runs only when the document it guarded is saved.
+    if (files.saved && recordSaved(*files.saved, files.savedId) && files.afterSave) files.afterSave();
+    for (const std::string& message : files.infos) info(message);
+    for (const std::string& message : files.errors) error(message);
     if (auto failed = speech_.poll()) error("Say: " + *failed);
-    if (auto outcome = avatarExportTask_.take()) {
-        if (outcome->index() == 0)
-            info(std::get<0>(*outcome));
-        else
-            error(avatarExportTask_.label() + ": " + std::get<1>(*outcome));
-    }
     if (auto outcome = countTask_.take()) {
         if (outcome->index() == 0) {
             const PhonemeCountResult& counted = std::get<0>(*outcome);
@@ -730,10 +701,7 @@ void EditorSession::poll() {
 void EditorSession::finishBackgroundWork() {
     // poll() may start automatic re-runs; a few rounds settle them.
     for (int round = 0; round < 4; ++round) {
-        loadTask_.wait();
-        saveTask_.wait();
-        exportTask_.wait();
-        avatarExportTask_.wait();
+        files_.wait();
         countTask_.wait();
         speech_.wait();
         refinement_.wait();

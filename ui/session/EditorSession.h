@@ -15,6 +15,7 @@
 #include "core/reduce/VisemeSet.h"
 #include "ui/session/BackgroundTask.h"
 #include "ui/session/CommandHistory.h"
+#include "ui/session/FileJobs.h"
 #include "ui/session/ReductionService.h"
 #include "ui/session/RefinementService.h"
 #include "ui/session/SpeechService.h"
@@ -66,16 +67,16 @@ class EditorSession {
     // result replaces the document in poll(), an error becomes a message and changes nothing.
     void startOpenProject(const std::filesystem::path& file);
     void startLoadVisemeFolder(const std::filesystem::path& folder);
-    bool loading() const { return loadTask_.running(); }
-    std::string loadingLabel() const { return loadTask_.label(); }
+    bool loading() const { return files_.loading(); }
+    std::string loadingLabel() const { return files_.loadingLabel(); }
     // Saves to `file`, or to the document's own path when empty (throws InputError when it has none).
     void saveProject(const std::filesystem::path& file = {});
     // The same on a worker thread: the document is snapshotted now (later edits are not in the file).
     // poll() records the saved file and then runs `then` (the action the unsaved-changes prompt held
     // back) when nothing was edited meanwhile; a failed save is a message and changes nothing.
     void startSaveProject(const std::filesystem::path& file = {}, std::function<void()> then = {});
-    bool saving() const { return saveTask_.running(); }
-    std::string savingLabel() const { return saveTask_.label(); }
+    bool saving() const { return files_.saving(); }
+    std::string savingLabel() const { return files_.savingLabel(); }
     // A folder of meshes: the one whose name contains "neutral" is the neutral, the others are
     // visemes sorted by name; frequencies start uniform.
     void loadVisemeFolder(const std::filesystem::path& folder);
@@ -96,10 +97,8 @@ class EditorSession {
     // The same on a worker thread (it may run a fresh reduction) from a snapshot taken now; the
     // result or the error is a message in poll().
     void startExport(ExportFormat format, const std::filesystem::path& out);
-    bool exporting() const { return exportTask_.running() || avatarExportTask_.running(); }
-    std::string exportingLabel() const {
-        return exportTask_.running() ? exportTask_.label() : avatarExportTask_.label();
-    }
+    bool exporting() const { return files_.exporting(); }
+    std::string exportingLabel() const { return files_.exportingLabel(); }
     // The morph targets of a glTF/GLB file become the viseme set (a new, untitled document, unsaved:
     // its geometry exists only in memory) with the frequencies the file carries (ModelFrequencies.h).
     void importGltf(const std::filesystem::path& file);
@@ -186,6 +185,7 @@ class EditorSession {
     double reductionProgress() const { return reduction_.progress(); }
     // The curve if it is up to date with the inputs, else null.
     const ReductionResult* reductionCurve() const { return reduction_.curve(); }
+    std::uint64_t reductionCurveRevision() const { return reduction_.curveRevision(); }
     // Grouping into the target number of groups from the current curve, or null.
     const Grouping* currentGrouping() const { return reduction_.grouping(document().target); }
     // The reduced model of currentGrouping() (merged keys, phoneme -> key; cached), or null without
@@ -277,12 +277,7 @@ class EditorSession {
     void amend(Document next);
     void noteChange(const Document& before);
     // Replaces the document by a loaded one (a fresh history).
-    struct Loaded {
-        LoadedProject project;
-        std::filesystem::path path; // empty = untitled
-        std::string message;
-        bool unsaved = false; // exists only in memory (imported): modified until saved
-    };
+    using Loaded = LoadedDocument;
     void adopt(Loaded loaded);
     void startLoading(std::string label, std::function<Loaded()> load);
     static Loaded loadProjectFile(const std::filesystem::path& file);
@@ -317,14 +312,7 @@ class EditorSession {
     SpeechService speech_;
     BackgroundTask<PhonemeCountResult> countTask_;
     std::filesystem::path countCorpus_;
-    BackgroundTask<Loaded> loadTask_;
-    BackgroundTask<std::filesystem::path> saveTask_;
-    std::uint64_t saveRequestId_ = 0;
-    std::function<void()> afterSave_;
-    BackgroundTask<std::vector<std::filesystem::path>> exportTask_;
-    ExportFormat exportFormat_ = ExportFormat::Glb;
-    std::filesystem::path exportOut_;
-    BackgroundTask<std::string> avatarExportTask_; // its result is the message to show
+    FileJobs files_; // open, save and export on worker threads
     // faceSamples() cache, for the cascade and mesh it holds.
     std::shared_ptr<const DeformationCascade> samplesCascade_;
     std::shared_ptr<const MeshData> samplesDomain_;

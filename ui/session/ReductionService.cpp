@@ -24,11 +24,13 @@ const Grouping* ReductionService::grouping(int m) const {
 const ReducedModel* ReductionService::reducedModel(const Document& document) {
     const Grouping* groups = grouping(document.target);
     if (!groups || !document.visemes) return nullptr;
-    if (!model_ || modelRevision_ != revision_ || modelGroups_ != document.target) {
+    if (!model_ || modelRevision_ != revision_ || modelCurve_ != curve_.serial ||
+        modelGroups_ != document.target) {
         model_.reset();
         model_ = buildReducedModel(*document.visemes, documentFrequencies(document), groups->groupOf(),
                                    document.frequencies);
         modelRevision_ = revision_;
+        modelCurve_ = curve_.serial;
         modelGroups_ = document.target;
     }
     return &*model_;
@@ -81,7 +83,7 @@ std::optional<std::string> ReductionService::poll() {
     auto outcome = task_.take();
     if (!outcome) return std::nullopt;
     if (outcome->index() == 1) return std::get<1>(*outcome);
-    if (runningRevision_ == revision_) curve_ = {std::get<0>(*outcome), runningRevision_};
+    if (runningRevision_ == revision_) curve_ = {std::get<0>(*outcome), runningRevision_, ++curves_};
     return std::nullopt;
 }
 

@@ -25,7 +25,9 @@ class ReductionService {
     std::uint64_t inputsRevision() const { return revision_; }
 
     // A curve known for the current inputs (e.g. the result a project file recorded).
-    void seed(std::shared_ptr<const ReductionResult> curve) { curve_ = {std::move(curve), revision_}; }
+    void seed(std::shared_ptr<const ReductionResult> curve) {
+        curve_ = {std::move(curve), revision_, ++curves_};
+    }
 
     // Starts the reduction of the tracked document on a worker thread (no-op when the curve is
     // current or already being computed). Throws InputError when the document cannot be reduced.
@@ -42,6 +44,9 @@ class ReductionService {
     // The curve if it is up to date with the inputs, else null. A seeded curve may stop before
     // p = n (a project records p = 1..m); complete() tells whether it reaches n.
     const ReductionResult* curve() const;
+    // Numbers every curve the service ever held (1, 2, ...; 0 = none yet): a cache of what derives
+    // from the curve keys on it (with the inputs revision), never on the curve's address.
+    std::uint64_t curveRevision() const { return curve_.serial; }
     bool complete(const Document& document) const {
         return curve() && curve()->curve.size() >= curveLength(document);
     }
@@ -62,14 +67,17 @@ class ReductionService {
     struct Curve {
         std::shared_ptr<const ReductionResult> result;
         std::uint64_t revision = 0;
+        std::uint64_t serial = 0;
     };
     Document tracked_;
     std::uint64_t revision_ = 1;
     Curve curve_;
+    std::uint64_t curves_ = 0; // curves held so far (the last one's serial)
     std::uint64_t runningRevision_ = 0;
     BackgroundTask<std::shared_ptr<const ReductionResult>> task_;
-    // reducedModel() cache, keyed by the inputs revision and the number of groups.
+    // reducedModel() cache, keyed by the inputs revision, the curve and the number of groups.
     std::uint64_t modelRevision_ = 0;
+    std::uint64_t modelCurve_ = 0;
     int modelGroups_ = 0;
     std::optional<ReducedModel> model_;
 };
