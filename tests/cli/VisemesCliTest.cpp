@@ -11,6 +11,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <unistd.h>
 
 namespace vl {
@@ -84,6 +85,46 @@ TEST(CliVisemes, ReadsEditedParameterVectors) {
     EXPECT_EQ(range.exitCode, 3);
     EXPECT_NE(range.output.find("jaw_open: value 2 is outside [0, 1]"), std::string::npos) << range.output;
     fs::remove_all(dir);
+}
+
+TEST(CliVisemes, ArpabetSetReducesWithTheBundledTableDirectly) {
+    // --set arpabet: sil and the 39 ARPAbet phonemes, named as the bundled en-us table, so that table
+    // weights the reduction without a map; a small m is proved optimal (issue 10's CI check).
+    const auto dir = freshDir("cli_visemes_arpabet");
+    const auto r = test::runCli("visemes --set arpabet --resolution 14 --density uniform --out " +
+                                (dir / "set").string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const auto files = listVisemeFolder(dir / "set", dir / "set" / "neutral.obj");
+    ASSERT_EQ(files.size(), 40u);
+    std::set<std::string> names;
+    for (const auto& [name, file] : files) names.insert(name);
+    for (const char* phoneme : {"sil", "AA", "AH", "B", "DH", "ER", "NG", "OY", "UW", "ZH"})
+        EXPECT_TRUE(names.count(phoneme)) << phoneme;
+    const auto table = fs::path(VISEMELAB_ASSETS_DIR) / "phonemes" / "en-us_frequencies.csv";
+    const auto reduced =
+        test::runCli("reduce --visemes " + (dir / "set").string() + " --freq-file " + table.string() +
+                     " -m 5 --time-limit 120 --out " + (dir / "reduced").string());
+    ASSERT_EQ(reduced.exitCode, 0) << reduced.output;
+    EXPECT_NE(reduced.output.find("Reduced 40 visemes to 5"), std::string::npos) << reduced.output;
+    std::ifstream in(dir / "reduced" / "report.json");
+    const auto report = nlohmann::json::parse(in);
+    EXPECT_EQ(report["optimal"], true) << reduced.output;
+    EXPECT_EQ(report["gap"], 0.0);
+    EXPECT_EQ(report["groups"].size(), 5u);
+    // The bilabials share a key.
+    const auto mapping = nlohmann::json::parse(std::ifstream(dir / "reduced" / "mapping.json"));
+    EXPECT_EQ(mapping["visemes"]["P"], mapping["visemes"]["B"]) << mapping.dump();
+    EXPECT_EQ(mapping["visemes"]["P"], mapping["visemes"]["M"]) << mapping.dump();
+    fs::remove_all(dir);
+}
+
+TEST(CliVisemes, RejectsAnUnknownSetListingTheValidOnes) {
+    const auto r = test::runCli("visemes --set ipa --out /tmp/x");
+    EXPECT_EQ(r.exitCode, 3);
+    EXPECT_NE(r.output.find("--set: unknown viseme set 'ipa' (valid: oculus, arpabet)"), std::string::npos)
+        << r.output;
+    const auto both = test::runCli("visemes --set arpabet --viseme-file x.json --out /tmp/x");
+    EXPECT_EQ(both.exitCode, 2) << both.output;
 }
 
 TEST(CliVisemes, SkinOnlyLeavesOutTheHeadsParts) {
