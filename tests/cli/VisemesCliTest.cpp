@@ -101,9 +101,23 @@ TEST(CliVisemes, ArpabetSetReducesWithTheBundledTableDirectly) {
     for (const char* phoneme : {"sil", "AA", "AH", "B", "DH", "ER", "NG", "OY", "UW", "ZH"})
         EXPECT_TRUE(names.count(phoneme)) << phoneme;
     const auto table = fs::path(VISEMELAB_ASSETS_DIR) / "phonemes" / "en-us_frequencies.csv";
+    // Two maps used as groupings: a 3-group one (closed lips / rounded / the rest) and Rhubarb's 9.
+    const auto threeGroups = dir / "three.csv";
+    {
+        std::ofstream map(threeGroups);
+        map << "phoneme,viseme\n";
+        for (const auto& name : names)
+            map << name << ","
+                << (name == "P" || name == "B" || name == "M" || name == "sil" ? "closed"
+                    : name == "UW" || name == "W" || name == "OW"              ? "round"
+                                                                               : "open")
+                << "\n";
+    }
+    const auto rhubarb = fs::path(VISEMELAB_ASSETS_DIR) / "phonemes" / "map_rhubarb.csv";
     const auto reduced =
         test::runCli("reduce --visemes " + (dir / "set").string() + " --freq-file " + table.string() +
-                     " -m 5 --time-limit 120 --out " + (dir / "reduced").string());
+                     " -m 5 --time-limit 120 --out " + (dir / "reduced").string() + " --compare-map " +
+                     threeGroups.string() + " --compare-map " + rhubarb.string());
     ASSERT_EQ(reduced.exitCode, 0) << reduced.output;
     EXPECT_NE(reduced.output.find("Reduced 40 visemes to 5"), std::string::npos) << reduced.output;
     std::ifstream in(dir / "reduced" / "report.json");
@@ -111,6 +125,33 @@ TEST(CliVisemes, ArpabetSetReducesWithTheBundledTableDirectly) {
     EXPECT_EQ(report["optimal"], true) << reduced.output;
     EXPECT_EQ(report["gap"], 0.0);
     EXPECT_EQ(report["groups"].size(), 5u);
+    ASSERT_EQ(report["groups_curve"].size(), 5u);
+    EXPECT_EQ(report["groups_curve"][4], report["groups"]);
+    EXPECT_EQ(report["groups_curve"][0].size(), 1u);
+    EXPECT_EQ(report["groups_curve"][0][0].size(), 40u);
+    // The maps' groupings, costed under the same objective: never below the optimum for as many
+    // groups (compared when the run solved that p), and Rhubarb's 9 groups beyond m = 5.
+    ASSERT_EQ(report["compared_maps"].size(), 2u) << report.dump();
+    const auto& three = report["compared_maps"][0];
+    EXPECT_EQ(three["groups"], 3);
+    EXPECT_EQ(three["grouping"]["closed"], nlohmann::json::array({"B", "M", "P", "sil"}));
+    EXPECT_EQ(three["optimal_cost"], report["cost_curve"][2]);
+    EXPECT_GE(three["cost"].get<double>(), three["optimal_cost"].get<double>());
+    EXPECT_GE(three["excess"].get<double>(), 0.0);
+    const auto& blair = report["compared_maps"][1];
+    EXPECT_EQ(blair["groups"], 9);
+    EXPECT_GT(blair["cost"].get<double>(), 0.0);
+    EXPECT_FALSE(blair.contains("optimal_cost"));
+    EXPECT_NE(reduced.output.find("as a grouping: 3 groups"), std::string::npos) << reduced.output;
+    // A map that leaves visemes out cannot group the set.
+    std::ofstream(dir / "partial.csv") << "phoneme,viseme\nP,closed\nB,closed\n";
+    const auto partial = test::runCli("reduce --visemes " + (dir / "set").string() + " --freq-file " +
+                                      table.string() + " -m 2 --out " + (dir / "partial").string() +
+                                      " --compare-map " + (dir / "partial.csv").string());
+    EXPECT_EQ(partial.exitCode, 3) << partial.output;
+    EXPECT_NE(partial.output.find("used as a grouping, it does not map these visemes: AA, AE"),
+              std::string::npos)
+        << partial.output;
     // The bilabials share a key.
     const auto mapping = nlohmann::json::parse(std::ifstream(dir / "reduced" / "mapping.json"));
     EXPECT_EQ(mapping["visemes"]["P"], mapping["visemes"]["B"]) << mapping.dump();
