@@ -52,6 +52,42 @@ void BM_RefineContour(benchmark::State& state) {
 }
 BENCHMARK(BM_RefineContour)->Unit(benchmark::kMillisecond)->UseRealTime();
 
+// `visemelab refine --criterion contour --param jaw_open=1 --param lip_pucker=0.5`, split as the CLI's
+// reported timing_ms is: building the surface (every field sampled on the base domain) and refining.
+std::vector<double> openPuckerPose(const DeformationCascade& cascade) {
+    auto q = cascade.defaults();
+    q[static_cast<std::size_t>(cascade.findParameter("jaw_open"))] = 1.0;
+    q[static_cast<std::size_t>(cascade.findParameter("lip_pucker"))] = 0.5;
+    return q;
+}
+
+void BM_CliRefineSurface(benchmark::State& state) {
+    const DeformationCascade cascade = face::makeBundledFace();
+    const auto q = openPuckerPose(cascade);
+    for (auto _ : state) {
+        CascadeSurface surface(cascade, face::faceBaseDomain(10), q);
+        benchmark::DoNotOptimize(surface);
+    }
+}
+BENCHMARK(BM_CliRefineSurface)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_CliRefineContour(benchmark::State& state) {
+    const DeformationCascade cascade = face::makeBundledFace();
+    const CascadeSurface surface(cascade, face::faceBaseDomain(10), openPuckerPose(cascade));
+    CriterionSettings s;
+    s.kind = CriterionKind::Contour;
+    const auto criterion = makeCriterion(s);
+    std::size_t faces = 0;
+    for (auto _ : state) {
+        AdaptiveMesh mesh(surface);
+        mesh.refine(*criterion);
+        faces = mesh.faceCount();
+        benchmark::DoNotOptimize(faces);
+    }
+    state.counters["triangles"] = static_cast<double>(faces);
+}
+BENCHMARK(BM_CliRefineContour)->Unit(benchmark::kMillisecond)->UseRealTime();
+
 // A slider change (jaw 0 <-> 1) followed by re-adaptation (resample, weld, refine) under contour.
 void BM_ReadaptContourJaw(benchmark::State& state) {
     CascadeSurface surface = bundledSurface();
