@@ -17,8 +17,8 @@ CascadeSurface bundledSurface() {
     return CascadeSurface(cascade, face::faceBaseDomain(10), cascade.defaults());
 }
 
-void refineBundled(benchmark::State& state, const CriterionSettings& settings) {
-    const CascadeSurface surface = bundledSurface();
+void refineSurface(benchmark::State& state, const CascadeSurface& surface,
+                   const CriterionSettings& settings) {
     const auto criterion = makeCriterion(settings);
     std::size_t faces = 0;
     for (auto _ : state) {
@@ -28,6 +28,10 @@ void refineBundled(benchmark::State& state, const CriterionSettings& settings) {
         benchmark::DoNotOptimize(faces);
     }
     state.counters["triangles"] = static_cast<double>(faces);
+}
+
+void refineBundled(benchmark::State& state, const CriterionSettings& settings) {
+    refineSurface(state, bundledSurface(), settings);
 }
 
 void BM_RefineDepth3(benchmark::State& state) {
@@ -73,18 +77,9 @@ BENCHMARK(BM_CliRefineSurface)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void BM_CliRefineContour(benchmark::State& state) {
     const DeformationCascade cascade = face::makeBundledFace();
-    const CascadeSurface surface(cascade, face::faceBaseDomain(10), openPuckerPose(cascade));
     CriterionSettings s;
     s.kind = CriterionKind::Contour;
-    const auto criterion = makeCriterion(s);
-    std::size_t faces = 0;
-    for (auto _ : state) {
-        AdaptiveMesh mesh(surface);
-        mesh.refine(*criterion);
-        faces = mesh.faceCount();
-        benchmark::DoNotOptimize(faces);
-    }
-    state.counters["triangles"] = static_cast<double>(faces);
+    refineSurface(state, CascadeSurface(cascade, face::faceBaseDomain(10), openPuckerPose(cascade)), s);
 }
 BENCHMARK(BM_CliRefineContour)->Unit(benchmark::kMillisecond)->UseRealTime();
 
