@@ -49,9 +49,25 @@ std::string reductionReportJson(const ReduceOutcome& outcome, WeightMode mode, c
                                              : nlohmann::ordered_json());
         optimal.push_back(grouping.optimal);
     }
+    // The groups of every p, by name (null where the constraints rule p out).
+    nlohmann::ordered_json groupsCurve = nlohmann::ordered_json::array();
+    for (const auto& grouping : outcome.result.curve) {
+        if (!grouping.feasible()) {
+            groupsCurve.push_back(nullptr);
+            continue;
+        }
+        nlohmann::ordered_json entry = nlohmann::ordered_json::array();
+        for (const auto& group : grouping.groups) {
+            std::vector<std::string> names;
+            for (const int i : group) names.push_back(outcome.visemeNames[static_cast<std::size_t>(i)]);
+            entry.push_back(names);
+        }
+        groupsCurve.push_back(entry);
+    }
     report["cost_curve"] = curve;
     report["lower_bound_curve"] = bounds;
     report["optimal_curve"] = optimal;
+    report["groups_curve"] = groupsCurve;
     nlohmann::ordered_json pairs = nlohmann::ordered_json::object();
     pairs["pin"] = outcome.constraints.pinned;
     auto pairList = [](const std::vector<std::pair<std::string, std::string>>& list) {
@@ -66,6 +82,34 @@ std::string reductionReportJson(const ReduceOutcome& outcome, WeightMode mode, c
     for (std::size_t i = 0; i < outcome.visemeNames.size(); ++i)
         freq[outcome.visemeNames[i]] = outcome.frequencies[i];
     report["frequencies"] = freq;
+    if (!outcome.comparedMaps.empty()) {
+        nlohmann::ordered_json maps = nlohmann::ordered_json::array();
+        for (const auto& given : outcome.comparedMaps) {
+            nlohmann::ordered_json entry;
+            entry["map"] = given.source;
+            entry["groups"] = given.groups.size();
+            entry["cost"] = given.cost;
+            // The optimum for as many groups, when this run solved that p.
+            const std::size_t p = given.groups.size();
+            if (p <= outcome.result.curve.size() && outcome.result.curve[p - 1].feasible()) {
+                const Grouping& opt = outcome.result.curve[p - 1];
+                entry["optimal_cost"] = opt.cost;
+                entry["optimal_lower_bound"] = opt.lowerBound;
+                entry["optimal_proved"] = opt.optimal;
+                entry["excess"] = opt.cost > 0 ? given.cost / opt.cost - 1.0 : 0.0;
+            }
+            nlohmann::ordered_json members = nlohmann::ordered_json::object();
+            for (std::size_t g = 0; g < given.groups.size(); ++g) {
+                std::vector<std::string> names;
+                for (const int i : given.groups[g])
+                    names.push_back(outcome.visemeNames[static_cast<std::size_t>(i)]);
+                members[given.labels[g]] = names;
+            }
+            entry["grouping"] = members;
+            maps.push_back(entry);
+        }
+        report["compared_maps"] = maps;
+    }
     report["timing_ms"] = {
         {"load", timings.loadMs}, {"reduce", timings.reduceMs}, {"write", timings.writeMs}};
     report["outputs"] = outputs;

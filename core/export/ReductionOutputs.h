@@ -22,8 +22,9 @@ struct ReduceTimings {
 std::vector<std::string> writeReductionOutputs(OutputSet& outputs, const ReduceOutcome& outcome);
 
 // The JSON report: n, m, weights, method, optimal, cost, lower_bound, gap, groups, cost_curve (null where
-// the constraints allow no grouping), lower_bound_curve, optimal_curve, constraints, frequencies,
-// timing_ms, outputs.
+// the constraints allow no grouping), lower_bound_curve, optimal_curve, groups_curve (every p's groups by
+// name, null as cost_curve), constraints, frequencies, timing_ms, outputs, and compared_maps when maps
+// were compared (each map's groups, cost, and the optimum for as many groups when p <= m).
 std::string reductionReportJson(const ReduceOutcome& outcome, WeightMode mode, const ReduceTimings& timings,
                                 const std::vector<std::string>& outputs);
 

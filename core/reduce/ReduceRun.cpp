@@ -1,6 +1,33 @@
 #include "core/reduce/ReduceRun.h"
 
+#include "core/common/Error.h"
+
+#include <algorithm>
+
 namespace vl {
+
+MapGrouping groupingFromMap(const std::vector<std::string>& visemeNames, const PhonemeVisemeMap& map) {
+    MapGrouping out;
+    out.source = map.origin.text.empty() ? "map" : map.origin.text;
+    std::string unmapped;
+    for (std::size_t i = 0; i < visemeNames.size(); ++i) {
+        const std::string* label = map.visemeOf(visemeNames[i]);
+        if (!label) {
+            unmapped += (unmapped.empty() ? "" : ", ") + visemeNames[i];
+            continue;
+        }
+        const auto it = std::find(out.labels.begin(), out.labels.end(), *label);
+        if (it == out.labels.end()) {
+            out.labels.push_back(*label);
+            out.groups.push_back({static_cast<int>(i)});
+        } else {
+            out.groups[static_cast<std::size_t>(it - out.labels.begin())].push_back(static_cast<int>(i));
+        }
+    }
+    if (!unmapped.empty())
+        throwInputError(out.source, "used as a grouping, it does not map these visemes: " + unmapped);
+    return out;
+}
 
 ReduceOutcome runReduction(const VisemeSet& set, const FrequencySource& frequencies,
                            const ReduceSettings& settings, const ProgressCallback& progress) {
@@ -25,6 +52,15 @@ ReduceOutcome runReduction(const VisemeSet& set, const FrequencySource& frequenc
     out.result = reduceVisemes({shapes, out.frequencies, out.weights, settings.target, constraints},
                                settings.options, progress);
     out.constraints = settings.constraints;
+    if (!settings.compareMaps.empty()) {
+        std::vector<std::vector<std::vector<int>>> groupings;
+        for (const auto& map : settings.compareMaps) {
+            out.comparedMaps.push_back(groupingFromMap(out.visemeNames, map));
+            groupings.push_back(out.comparedMaps.back().groups);
+        }
+        const auto costs = evaluateGroupings(shapes, out.frequencies, out.weights, groupings);
+        for (std::size_t k = 0; k < costs.size(); ++k) out.comparedMaps[k].cost = costs[k];
+    }
 
     out.model = buildReducedModel(set, out.frequencies, out.result.groupOf(), frequencies);
     return out;

@@ -21,7 +21,22 @@ struct ReduceSettings {
     ConstraintNames constraints{};                 // by viseme name
     std::string constraintsSource = "constraints"; // where errors about them point (a flag, a JSON path)
     ReductionOptions options{};                    // solver, time limit
+    // Phoneme -> viseme maps whose grouping of the set's visemes (named by phoneme) is costed under
+    // the same objective, to compare with the optimum (e.g. the standard Oculus, MPEG-4, Rhubarb maps).
+    std::vector<PhonemeVisemeMap> compareMaps;
 };
+
+// A map used as a grouping: the set's visemes the map sends to the same viseme share a group.
+struct MapGrouping {
+    std::string source;                   // the map's origin (file)
+    std::vector<std::string> labels;      // the map's viseme of each group
+    std::vector<std::vector<int>> groups; // member indices, each ascending, ordered by first member
+    double cost = 0;                      // rho_f under the run's frequencies and weights
+};
+
+// The grouping of `visemeNames` by `map`. Every viseme must be a phoneme of the map (InputError at the
+// map's origin listing all that are not); map entries for phonemes the set does not have are ignored.
+MapGrouping groupingFromMap(const std::vector<std::string>& visemeNames, const PhonemeVisemeMap& map);
 
 struct ReduceOutcome {
     std::vector<std::string> visemeNames;
@@ -31,7 +46,8 @@ struct ReduceOutcome {
     // The merged keys of the best grouping for the target m and the phoneme -> key map
     // (buildReducedModel: map entries naming a viseme the set lacks are an error).
     ReducedModel model;
-    ConstraintNames constraints; // the constraints the run honoured
+    ConstraintNames constraints;           // the constraints the run honoured
+    std::vector<MapGrouping> comparedMaps; // settings.compareMaps, costed
 };
 
 ReduceOutcome runReduction(const VisemeSet& set, const FrequencySource& frequencies,

@@ -90,7 +90,11 @@ UnitCurve solveByBranchAndBound(const GroupCostModel& model, const ConstraintUni
         limits.deadline = std::chrono::steady_clock::now() +
                           std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                               std::chrono::duration<double>(options.timeLimitSeconds));
-    limits.cancelled = options.cancelled;
+    // With a progress callback the searches watch a flag of their own: set when the caller's flag is,
+    // and when the callback throws (the editor cancels its task that way), so the searches stop before
+    // the exception leaves instead of running on to their time limit while the caller waits.
+    std::atomic<bool> stopped{false};
+    limits.cancelled = progress ? &stopped : options.cancelled;
     std::vector<std::atomic<double>> done(static_cast<std::size_t>(m));
     UnitCurve curve(static_cast<std::size_t>(m));
     auto solve = [&] {
@@ -109,10 +113,17 @@ UnitCurve solveByBranchAndBound(const GroupCostModel& model, const ConstraintUni
         solve();
     } else {
         auto running = std::async(std::launch::async, solve);
-        while (running.wait_for(std::chrono::milliseconds(50)) != std::future_status::ready) {
-            double sum = 0;
-            for (const auto& d : done) sum += d.load(std::memory_order_relaxed);
-            progress(sum / m);
+        try {
+            while (running.wait_for(std::chrono::milliseconds(50)) != std::future_status::ready) {
+                if (options.cancelled && options.cancelled->load()) stopped = true;
+                double sum = 0;
+                for (const auto& d : done) sum += d.load(std::memory_order_relaxed);
+                progress(sum / m);
+            }
+        } catch (...) {
+            stopped = true;
+            running.wait();
+            throw;
         }
         running.get();
     }
@@ -249,6 +260,41 @@ double dissimilarity(std::span<const Vec3> a, std::span<const Vec3> b, std::span
     double sum = 0;
     for (std::size_t k = 0; k < a.size(); ++k) sum += weights[k] * (a[k] - b[k]).sqrnorm();
     return sum;
+}
+
+std::vector<double> evaluateGroupings(const ShapeView& shapes, std::span<const double> frequencies,
+                                      std::span<const double> weights,
+                                      std::span<const std::vector<std::vector<int>>> groupings) {
+    validate({shapes, frequencies, weights, 1});
+    const int n = static_cast<int>(shapes.size());
+    const ConstraintUnits units = constraintUnits({}, n); // every viseme its own unit
+    const GroupCostModel model =
+        makeGroupCostModel(centredGram(shapes, frequencies, weights), frequencies, units);
+    std::vector<double> costs;
+    for (std::size_t k = 0; k < groupings.size(); ++k) {
+        const std::string where = "grouping " + std::to_string(k + 1);
+        UnitMask seen = 0;
+        std::vector<UnitMask> masks;
+        for (const auto& group : groupings[k]) {
+            if (group.empty()) throwInputError(where, "has an empty group");
+            UnitMask mask = 0;
+            for (const int i : group) {
+                if (i < 0 || i >= n)
+                    throwInputError(where, "viseme index " + std::to_string(i) + " is outside 0.." +
+                                               std::to_string(n - 1));
+                const UnitMask bit = UnitMask{1} << i;
+                if ((seen | mask) & bit)
+                    throwInputError(where, "viseme " + std::to_string(i) + " is in two groups");
+                mask |= bit;
+            }
+            seen |= mask;
+            masks.push_back(mask);
+        }
+        if (std::popcount(seen) != n)
+            throwInputError(where, "leaves out viseme " + std::to_string(std::countr_one(seen)));
+        costs.push_back(partitionCost(model, masks));
+    }
+    return costs;
 }
 
 double groupingCost(const ShapeView& shapes, std::span<const double> frequencies,

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
 
 using namespace vl;
 
@@ -114,6 +115,38 @@ TEST(BranchAndBound, CancelledSearchStillReturnsAValidGrouping) {
     const auto result = reduceVisemes({inst.shapes, inst.frequencies, inst.weights, 8}, options);
     EXPECT_TRUE(test::isValidGrouping(result.best().groups, 30, 8));
     for (const auto& g : result.curve) expectCertificate(g);
+}
+
+TEST(BranchAndBound, AThrowingProgressCallbackStopsTheSearchAtOnce) {
+    // The editor cancels a reduction by throwing from the progress callback: the searches must stop
+    // then, not run on to their time limit (20 s here) while the editor waits for the worker. The
+    // caller's flag set while a progress callback is given stops them too.
+    std::mt19937 rng(5);
+    const auto inst = test::randomInstance(rng, 36, 40); // far from finishing in 20 s
+    ReductionOptions options;
+    options.method = ReductionMethod::BranchAndBound;
+    options.timeLimitSeconds = 20;
+    struct Cancelled {};
+    int calls = 0;
+    auto start = std::chrono::steady_clock::now();
+    EXPECT_THROW(reduceVisemes({inst.shapes, inst.frequencies, inst.weights, 12}, options,
+                               [&](double) {
+                                   if (++calls == 3) throw Cancelled{};
+                               }),
+                 Cancelled);
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
+
+    std::atomic<bool> cancelled{false};
+    options.cancelled = &cancelled;
+    calls = 0;
+    start = std::chrono::steady_clock::now();
+    const auto result =
+        reduceVisemes({inst.shapes, inst.frequencies, inst.weights, 12}, options, [&](double) {
+            if (++calls == 3) cancelled = true;
+        });
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
+    EXPECT_TRUE(test::isValidGrouping(result.best().groups, 36, 12));
+    EXPECT_FALSE(result.best().optimal);
 }
 
 TEST(BranchAndBound, ProvesStructuredSetsBeyondTheDp) {

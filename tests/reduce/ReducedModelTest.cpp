@@ -118,15 +118,17 @@ TEST(ReducedModel, UnknownVisemesInTheMapAreOneErrorNamingThemAll) {
 
 TEST(ReducedModel, ReductionRunRefusesUnknownVisemesBeforeReducing) {
     const VisemeSet set = fourVisemes();
+    ReduceSettings settings;
+    settings.target = 2;
     int progressCalls = 0;
     const std::string error = test::errorOf(
-        [&] { runReduction(set, mapWithUnknownVisemes(), {.target = 2}, [&](double) { ++progressCalls; }); });
+        [&] { runReduction(set, mapWithUnknownVisemes(), settings, [&](double) { ++progressCalls; }); });
     EXPECT_NE(error.find("unknown viseme 'mbp' (phonemes M, B)"), std::string::npos) << error;
     EXPECT_EQ(progressCalls, 0);
     // Without the unknown entries the run's model is buildReducedModel's for its grouping.
     FrequencySource known = mapWithUnknownVisemes();
     known.map.entries.resize(4);
-    const ReduceOutcome outcome = runReduction(set, known, {.target = 2});
+    const ReduceOutcome outcome = runReduction(set, known, settings);
     const ReducedModel expected =
         buildReducedModel(set, outcome.frequencies, outcome.result.groupOf(), known);
     ASSERT_EQ(outcome.model.keys.size(), 2u);
