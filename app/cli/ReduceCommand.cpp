@@ -40,6 +40,7 @@ struct ReduceOptions {
     std::vector<std::string> together; // "a,b"
     std::string method = "auto";
     double timeLimit = 60;
+    std::vector<std::string> compareMaps; // phoneme -> viseme maps costed as groupings
 };
 
 std::pair<std::string, std::string> splitPair(const std::string& text, const std::string& option) {
@@ -188,6 +189,7 @@ void applySolverFlags(const ReduceOptions& o, ReduceSettings& settings) {
     }
     settings.options.method = reductionMethodFromString(o.method, "--method");
     settings.options.timeLimitSeconds = o.timeLimit;
+    for (const auto& file : o.compareMaps) settings.compareMaps.push_back(loadPhonemeMapFile(file));
 }
 
 ReduceInputs loadInputs(const ReduceOptions& o, bool weightsGiven) {
@@ -261,7 +263,19 @@ int runReduce(const ReduceOptions& o, bool weightsGiven) {
         else
             std::printf(" %.4g(>=%.4g)", grouping.cost, grouping.lowerBound);
     }
-    std::printf("\nMerged meshes (OBJ + VRML) and mapping.json in %s\nReport: %s\n", outDir.string().c_str(),
+    std::printf("\n");
+    for (const auto& given : outcome.comparedMaps) {
+        const std::size_t p = given.groups.size();
+        std::printf("Map %s as a grouping: %zu groups, cost %.6g", given.source.c_str(), p, given.cost);
+        if (p <= outcome.result.curve.size() && outcome.result.curve[p - 1].feasible()) {
+            const Grouping& opt = outcome.result.curve[p - 1];
+            std::printf(" (%s %zu groups: %.6g, map +%.1f %%)",
+                        opt.optimal ? "optimum for" : "best found for", p, opt.cost,
+                        opt.cost > 0 ? 100 * (given.cost / opt.cost - 1) : 0.0);
+        }
+        std::printf("\n");
+    }
+    std::printf("Merged meshes (OBJ + VRML) and mapping.json in %s\nReport: %s\n", outDir.string().c_str(),
                 reportPath.string().c_str());
     return kExitOk;
 }
@@ -302,6 +316,10 @@ void addReduceCommand(CLI::App& app, CommandRunner& run) {
                     "Seconds branch and bound may search for a proof; then the best grouping found is "
                     "reported with its gap (0: no limit)")
         ->capture_default_str();
+    cmd->add_option(
+        "--compare-map", options->compareMaps,
+        "A phoneme -> viseme map (CSV or JSON) whose grouping of the visemes (named by phoneme) is "
+        "costed under the same objective and compared with the optimum (repeatable)");
     cmd->callback([&run, options, weights] {
         const bool weightsGiven = weights->count() > 0;
         run = [options, weightsGiven] { return runReduce(*options, weightsGiven); };

@@ -1,6 +1,6 @@
 // `visemelab visemes`: writes the interpolable viseme set of a bundled deformable face (neutral +
-// the 15 Oculus visemes, or those of --viseme-file, as OBJ) and visemes.json with the names and
-// parameter vectors.
+// the 15 Oculus visemes, the 39 ARPAbet phonemes and sil of --set arpabet, or those of --viseme-file,
+// as OBJ) and visemes.json with the names and parameter vectors.
 #include "app/cli/Command.h"
 #include "app/cli/CriterionOptions.h"
 #include "core/adaptive/CascadeSurface.h"
@@ -33,6 +33,7 @@ struct VisemesOptions {
     CriterionOptions adaptive; // --criterion given: adaptive refinement instead of the grid
     int decimals = 6;
     std::string visemeFile; // empty: the 15 Oculus visemes
+    std::string set;        // a bundled parameter set (oculus, arpabet); empty: the default
     bool skinOnly = false;  // leave out the eyeballs, teeth, tongue and mouth cavity
 };
 
@@ -93,6 +94,8 @@ nlohmann::json describe(const VisemesOptions& o, const DeformationCascade& face,
 }
 
 int runVisemes(const VisemesOptions& o) {
+    if (!o.set.empty() && !o.visemeFile.empty())
+        throwUsage("use either --set NAME or --viseme-file FILE, not both");
     DeformationCascade cascade;
     std::vector<VisemeParameters> visemes;
     if (!o.project.empty()) {
@@ -104,6 +107,7 @@ int runVisemes(const VisemesOptions& o) {
         cascade = face::makeFaceCascade(face::parseIndividual(o.face, "--face"));
         visemes = oculusVisemes();
     }
+    if (!o.set.empty()) visemes = bundledVisemeSet(o.set, VISEMELAB_ASSETS_DIR, cascade, "--set");
     if (!o.visemeFile.empty()) visemes = readVisemeFile(o.visemeFile, cascade);
     const MeshData uvMesh = buildVisemeMesh(o, cascade, visemes);
     checkVisemeSetSize(visemes.size(), uvMesh.positions.size(),
@@ -146,6 +150,10 @@ void addVisemesCommand(CLI::App& app, CommandRunner& run) {
     cmd->add_option(
         "--viseme-file", options->visemeFile,
         "JSON with the visemes' parameter vectors (the format of visemes.json; default: Oculus 15)");
+    cmd->add_option(
+        "--set", options->set,
+        "Bundled parameter set: oculus (the 15 Oculus visemes, the default) or arpabet (sil and the 39 "
+        "ARPAbet phonemes, named as in assets/phonemes/en-us_frequencies.csv)");
     cmd->add_flag("--skin-only", options->skinOnly,
                   "Only the face's skin: leave out the eyeballs, teeth, tongue and mouth cavity");
     cmd->add_option("--decimals", options->decimals,

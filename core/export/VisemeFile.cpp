@@ -22,7 +22,7 @@ std::vector<VisemeParameters> parseVisemeFile(std::string_view text, std::string
     checkVisemeSetSize(root["visemes"].size(), 0, root["visemes"].path()); // before any viseme is built
     for (const JsonNode& entry : root["visemes"].elements()) {
         entry.expectObject();
-        entry.allowOnly({"name", "file", "parameters"});
+        entry.allowOnly({"name", "file", "parameters", "ipa", "example", "note"});
         VisemeParameters v;
         const JsonNode nameNode = entry["name"];
         v.name = nameNode.nonEmptyString();
@@ -50,6 +50,23 @@ std::vector<VisemeParameters> parseVisemeFile(std::string_view text, std::string
 std::vector<VisemeParameters> readVisemeFile(const std::filesystem::path& path,
                                              const DeformationCascade& face) {
     return parseVisemeFile(readFileToString(path), path.string(), face);
+}
+
+std::vector<std::string> bundledVisemeSetNames() {
+    return {"oculus", "arpabet"};
+}
+
+std::filesystem::path arpabetVisemeFilePath(const std::filesystem::path& assetsDir) {
+    return assetsDir / "phonemes" / "arpabet_face.json";
+}
+
+std::vector<VisemeParameters> bundledVisemeSet(std::string_view name, const std::filesystem::path& assetsDir,
+                                               const DeformationCascade& face, std::string_view where) {
+    if (name == "oculus") return oculusVisemes();
+    if (name == "arpabet") return readVisemeFile(arpabetVisemeFilePath(assetsDir), face);
+    std::string valid;
+    for (const auto& n : bundledVisemeSetNames()) valid += (valid.empty() ? "" : ", ") + n;
+    throwInputError(where, "unknown viseme set '" + std::string(name) + "' (valid: " + valid + ")");
 }
 
 } // namespace vl

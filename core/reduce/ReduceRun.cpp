@@ -1,9 +1,12 @@
 #include "core/reduce/ReduceRun.h"
 
 #include "core/common/AtomicFile.h"
+#include "core/common/Error.h"
 #include "core/io/MeshIO.h"
 
 #include <nlohmann/json.hpp>
+
+#include <algorithm>
 
 namespace vl {
 
@@ -23,6 +26,29 @@ std::string fileSafe(std::string name) {
 }
 
 } // namespace
+
+MapGrouping groupingFromMap(const std::vector<std::string>& visemeNames, const PhonemeVisemeMap& map) {
+    MapGrouping out;
+    out.source = map.origin.text.empty() ? "map" : map.origin.text;
+    std::string unmapped;
+    for (std::size_t i = 0; i < visemeNames.size(); ++i) {
+        const std::string* label = map.visemeOf(visemeNames[i]);
+        if (!label) {
+            unmapped += (unmapped.empty() ? "" : ", ") + visemeNames[i];
+            continue;
+        }
+        const auto it = std::find(out.labels.begin(), out.labels.end(), *label);
+        if (it == out.labels.end()) {
+            out.labels.push_back(*label);
+            out.groups.push_back({static_cast<int>(i)});
+        } else {
+            out.groups[static_cast<std::size_t>(it - out.labels.begin())].push_back(static_cast<int>(i));
+        }
+    }
+    if (!unmapped.empty())
+        throwInputError(out.source, "used as a grouping, it does not map these visemes: " + unmapped);
+    return out;
+}
 
 ReduceOutcome runReduction(const VisemeSet& set, const FrequencySource& frequencies,
                            const ReduceSettings& settings, const ProgressCallback& progress) {
@@ -46,6 +72,15 @@ ReduceOutcome runReduction(const VisemeSet& set, const FrequencySource& frequenc
     out.result = reduceVisemes({shapes, out.frequencies, out.weights, settings.target, constraints},
                                settings.options, progress);
     out.constraints = settings.constraints;
+    if (!settings.compareMaps.empty()) {
+        std::vector<std::vector<std::vector<int>>> groupings;
+        for (const auto& map : settings.compareMaps) {
+            out.comparedMaps.push_back(groupingFromMap(out.visemeNames, map));
+            groupings.push_back(out.comparedMaps.back().groups);
+        }
+        const auto costs = evaluateGroupings(shapes, out.frequencies, out.weights, groupings);
+        for (std::size_t k = 0; k < costs.size(); ++k) out.comparedMaps[k].cost = costs[k];
+    }
 
     for (const auto& group : out.result.best().groups) {
         ReducedViseme reduced;
@@ -129,9 +164,25 @@ std::string reductionReportJson(const ReduceOutcome& outcome, WeightMode mode, c
                                              : nlohmann::ordered_json());
         optimal.push_back(grouping.optimal);
     }
+    // The groups of every p, by name (null where the constraints rule p out).
+    nlohmann::ordered_json groupsCurve = nlohmann::ordered_json::array();
+    for (const auto& grouping : outcome.result.curve) {
+        if (!grouping.feasible()) {
+            groupsCurve.push_back(nullptr);
+            continue;
+        }
+        nlohmann::ordered_json entry = nlohmann::ordered_json::array();
+        for (const auto& group : grouping.groups) {
+            std::vector<std::string> names;
+            for (const int i : group) names.push_back(outcome.visemeNames[static_cast<std::size_t>(i)]);
+            entry.push_back(names);
+        }
+        groupsCurve.push_back(entry);
+    }
     report["cost_curve"] = curve;
     report["lower_bound_curve"] = bounds;
     report["optimal_curve"] = optimal;
+    report["groups_curve"] = groupsCurve;
     nlohmann::ordered_json pairs = nlohmann::ordered_json::object();
     pairs["pin"] = outcome.constraints.pinned;
     auto pairList = [](const std::vector<std::pair<std::string, std::string>>& list) {
@@ -146,6 +197,34 @@ std::string reductionReportJson(const ReduceOutcome& outcome, WeightMode mode, c
     for (std::size_t i = 0; i < outcome.visemeNames.size(); ++i)
         freq[outcome.visemeNames[i]] = outcome.frequencies[i];
     report["frequencies"] = freq;
+    if (!outcome.comparedMaps.empty()) {
+        nlohmann::ordered_json maps = nlohmann::ordered_json::array();
+        for (const auto& given : outcome.comparedMaps) {
+            nlohmann::ordered_json entry;
+            entry["map"] = given.source;
+            entry["groups"] = given.groups.size();
+            entry["cost"] = given.cost;
+            // The optimum for as many groups, when this run solved that p.
+            const std::size_t p = given.groups.size();
+            if (p <= outcome.result.curve.size() && outcome.result.curve[p - 1].feasible()) {
+                const Grouping& opt = outcome.result.curve[p - 1];
+                entry["optimal_cost"] = opt.cost;
+                entry["optimal_lower_bound"] = opt.lowerBound;
+                entry["optimal_proved"] = opt.optimal;
+                entry["excess"] = opt.cost > 0 ? given.cost / opt.cost - 1.0 : 0.0;
+            }
+            nlohmann::ordered_json members = nlohmann::ordered_json::object();
+            for (std::size_t g = 0; g < given.groups.size(); ++g) {
+                std::vector<std::string> names;
+                for (const int i : given.groups[g])
+                    names.push_back(outcome.visemeNames[static_cast<std::size_t>(i)]);
+                members[given.labels[g]] = names;
+            }
+            entry["grouping"] = members;
+            maps.push_back(entry);
+        }
+        report["compared_maps"] = maps;
+    }
     report["timing_ms"] = {
         {"load", timings.loadMs}, {"reduce", timings.reduceMs}, {"write", timings.writeMs}};
     report["outputs"] = outputs;

@@ -251,6 +251,41 @@ double dissimilarity(std::span<const Vec3> a, std::span<const Vec3> b, std::span
     return sum;
 }
 
+std::vector<double> evaluateGroupings(const ShapeView& shapes, std::span<const double> frequencies,
+                                      std::span<const double> weights,
+                                      std::span<const std::vector<std::vector<int>>> groupings) {
+    validate({shapes, frequencies, weights, 1});
+    const int n = static_cast<int>(shapes.size());
+    const ConstraintUnits units = constraintUnits({}, n); // every viseme its own unit
+    const GroupCostModel model =
+        makeGroupCostModel(centredGram(shapes, frequencies, weights), frequencies, units);
+    std::vector<double> costs;
+    for (std::size_t k = 0; k < groupings.size(); ++k) {
+        const std::string where = "grouping " + std::to_string(k + 1);
+        UnitMask seen = 0;
+        std::vector<UnitMask> masks;
+        for (const auto& group : groupings[k]) {
+            if (group.empty()) throwInputError(where, "has an empty group");
+            UnitMask mask = 0;
+            for (const int i : group) {
+                if (i < 0 || i >= n)
+                    throwInputError(where, "viseme index " + std::to_string(i) + " is outside 0.." +
+                                               std::to_string(n - 1));
+                const UnitMask bit = UnitMask{1} << i;
+                if ((seen | mask) & bit)
+                    throwInputError(where, "viseme " + std::to_string(i) + " is in two groups");
+                mask |= bit;
+            }
+            seen |= mask;
+            masks.push_back(mask);
+        }
+        if (std::popcount(seen) != n)
+            throwInputError(where, "leaves out viseme " + std::to_string(std::countr_one(seen)));
+        costs.push_back(partitionCost(model, masks));
+    }
+    return costs;
+}
+
 double groupingCost(const ShapeView& shapes, std::span<const double> frequencies,
                     std::span<const double> weights, const std::vector<std::vector<int>>& groups) {
     double total = 0;

@@ -94,6 +94,15 @@ std::vector<Vec3> mergeGroup(const ShapeView& shapes, std::span<const double> fr
 // rho(A,B) with per-vertex weights.
 double dissimilarity(std::span<const Vec3> a, std::span<const Vec3> b, std::span<const double> weights);
 
+// rho_f of each grouping through the weighted Gram matrix, with the solvers' summation (one O(n^2 |V|)
+// pass, then O(n^2) per grouping): the numbers the solvers report for the same groups, so a given
+// grouping (e.g. a standard phoneme -> viseme map) compares exactly with the optimum. Each grouping must
+// partition 0..n-1 into non-empty groups; throws InputError otherwise and for invalid inputs (as
+// reduceVisemes).
+std::vector<double> evaluateGroupings(const ShapeView& shapes, std::span<const double> frequencies,
+                                      std::span<const double> weights,
+                                      std::span<const std::vector<std::vector<int>>> groupings);
+
 // rho_f of a grouping evaluated directly from the meshes (O(n|V|)): the slow, obvious reference.
 double groupingCost(const ShapeView& shapes, std::span<const double> frequencies,
                     std::span<const double> weights, const std::vector<std::vector<int>>& groups);

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <unistd.h>
 
 namespace vl {
@@ -84,6 +85,87 @@ TEST(CliVisemes, ReadsEditedParameterVectors) {
     EXPECT_EQ(range.exitCode, 3);
     EXPECT_NE(range.output.find("jaw_open: value 2 is outside [0, 1]"), std::string::npos) << range.output;
     fs::remove_all(dir);
+}
+
+TEST(CliVisemes, ArpabetSetReducesWithTheBundledTableDirectly) {
+    // --set arpabet: sil and the 39 ARPAbet phonemes, named as the bundled en-us table, so that table
+    // weights the reduction without a map; a small m is proved optimal (issue 10's CI check).
+    const auto dir = freshDir("cli_visemes_arpabet");
+    const auto r = test::runCli("visemes --set arpabet --resolution 14 --density uniform --out " +
+                                (dir / "set").string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const auto files = listVisemeFolder(dir / "set", dir / "set" / "neutral.obj");
+    ASSERT_EQ(files.size(), 40u);
+    std::set<std::string> names;
+    for (const auto& [name, file] : files) names.insert(name);
+    for (const char* phoneme : {"sil", "AA", "AH", "B", "DH", "ER", "NG", "OY", "UW", "ZH"})
+        EXPECT_TRUE(names.count(phoneme)) << phoneme;
+    const auto table = fs::path(VISEMELAB_ASSETS_DIR) / "phonemes" / "en-us_frequencies.csv";
+    // Two maps used as groupings: a 3-group one (closed lips / rounded / the rest) and Rhubarb's 9.
+    const auto threeGroups = dir / "three.csv";
+    {
+        std::ofstream map(threeGroups);
+        map << "phoneme,viseme\n";
+        for (const auto& name : names)
+            map << name << ","
+                << (name == "P" || name == "B" || name == "M" || name == "sil" ? "closed"
+                    : name == "UW" || name == "W" || name == "OW"              ? "round"
+                                                                               : "open")
+                << "\n";
+    }
+    const auto rhubarb = fs::path(VISEMELAB_ASSETS_DIR) / "phonemes" / "map_rhubarb.csv";
+    const auto reduced =
+        test::runCli("reduce --visemes " + (dir / "set").string() + " --freq-file " + table.string() +
+                     " -m 5 --time-limit 120 --out " + (dir / "reduced").string() + " --compare-map " +
+                     threeGroups.string() + " --compare-map " + rhubarb.string());
+    ASSERT_EQ(reduced.exitCode, 0) << reduced.output;
+    EXPECT_NE(reduced.output.find("Reduced 40 visemes to 5"), std::string::npos) << reduced.output;
+    std::ifstream in(dir / "reduced" / "report.json");
+    const auto report = nlohmann::json::parse(in);
+    EXPECT_EQ(report["optimal"], true) << reduced.output;
+    EXPECT_EQ(report["gap"], 0.0);
+    EXPECT_EQ(report["groups"].size(), 5u);
+    ASSERT_EQ(report["groups_curve"].size(), 5u);
+    EXPECT_EQ(report["groups_curve"][4], report["groups"]);
+    EXPECT_EQ(report["groups_curve"][0].size(), 1u);
+    EXPECT_EQ(report["groups_curve"][0][0].size(), 40u);
+    // The maps' groupings, costed under the same objective: never below the optimum for as many
+    // groups (compared when the run solved that p), and Rhubarb's 9 groups beyond m = 5.
+    ASSERT_EQ(report["compared_maps"].size(), 2u) << report.dump();
+    const auto& three = report["compared_maps"][0];
+    EXPECT_EQ(three["groups"], 3);
+    EXPECT_EQ(three["grouping"]["closed"], nlohmann::json::array({"B", "M", "P", "sil"}));
+    EXPECT_EQ(three["optimal_cost"], report["cost_curve"][2]);
+    EXPECT_GE(three["cost"].get<double>(), three["optimal_cost"].get<double>());
+    EXPECT_GE(three["excess"].get<double>(), 0.0);
+    const auto& blair = report["compared_maps"][1];
+    EXPECT_EQ(blair["groups"], 9);
+    EXPECT_GT(blair["cost"].get<double>(), 0.0);
+    EXPECT_FALSE(blair.contains("optimal_cost"));
+    EXPECT_NE(reduced.output.find("as a grouping: 3 groups"), std::string::npos) << reduced.output;
+    // A map that leaves visemes out cannot group the set.
+    std::ofstream(dir / "partial.csv") << "phoneme,viseme\nP,closed\nB,closed\n";
+    const auto partial = test::runCli("reduce --visemes " + (dir / "set").string() + " --freq-file " +
+                                      table.string() + " -m 2 --out " + (dir / "partial").string() +
+                                      " --compare-map " + (dir / "partial.csv").string());
+    EXPECT_EQ(partial.exitCode, 3) << partial.output;
+    EXPECT_NE(partial.output.find("used as a grouping, it does not map these visemes: AA, AE"),
+              std::string::npos)
+        << partial.output;
+    // The bilabials share a key.
+    const auto mapping = nlohmann::json::parse(std::ifstream(dir / "reduced" / "mapping.json"));
+    EXPECT_EQ(mapping["visemes"]["P"], mapping["visemes"]["B"]) << mapping.dump();
+    EXPECT_EQ(mapping["visemes"]["P"], mapping["visemes"]["M"]) << mapping.dump();
+    fs::remove_all(dir);
+}
+
+TEST(CliVisemes, RejectsAnUnknownSetListingTheValidOnes) {
+    const auto r = test::runCli("visemes --set ipa --out /tmp/x");
+    EXPECT_EQ(r.exitCode, 3);
+    EXPECT_NE(r.output.find("--set: unknown viseme set 'ipa' (valid: oculus, arpabet)"), std::string::npos)
+        << r.output;
+    const auto both = test::runCli("visemes --set arpabet --viseme-file x.json --out /tmp/x");
+    EXPECT_EQ(both.exitCode, 2) << both.output;
 }
 
 TEST(CliVisemes, SkinOnlyLeavesOutTheHeadsParts) {

@@ -186,3 +186,55 @@ TEST(Reduction, SetsAboveTwentyVisemesAreReducedWithACertificate) {
                     1e-9 * g.cost);
     }
 }
+
+TEST(Reduction, EvaluatedGroupingsEqualTheDirectSumAndNeverBeatTheOptimum) {
+    // A given grouping (a standard phoneme -> viseme map) is costed through the Gram matrix as the
+    // solvers cost theirs; it must equal the sum over the meshes (groupingCost) for random partitions,
+    // never undercut the proved optimum, and reproduce it for the optimal groups.
+    std::mt19937 rng(2024);
+    for (int trial = 0; trial < 6; ++trial) {
+        const int n = 3 + trial;
+        const auto inst = test::randomInstance(rng, n, 15, trial % 2 == 1);
+        std::vector<std::vector<std::vector<int>>> groupings;
+        for (int k = 0; k < 5; ++k) {
+            const int p = 1 + static_cast<int>(rng() % static_cast<unsigned>(n));
+            std::vector<std::vector<int>> groups(static_cast<std::size_t>(p));
+            for (int i = 0; i < n; ++i) // the first p visemes open the groups, the rest land anywhere
+                groups[static_cast<std::size_t>(i < p ? i
+                                                      : static_cast<int>(rng() % static_cast<unsigned>(p)))]
+                    .push_back(i);
+            groupings.push_back(groups);
+        }
+        const auto result = reduce(inst, n);
+        for (const auto& g : result.curve) groupings.push_back(g.groups);
+        const auto costs = evaluateGroupings(inst.shapes, inst.frequencies, inst.weights, groupings);
+        ASSERT_EQ(costs.size(), groupings.size());
+        for (std::size_t k = 0; k < groupings.size(); ++k) {
+            const double direct = groupingCost(inst.shapes, inst.frequencies, inst.weights, groupings[k]);
+            EXPECT_NEAR(costs[k], direct, 1e-9 * (1 + direct)) << "trial " << trial << " grouping " << k;
+            const auto& optimum = result.curve[groupings[k].size() - 1];
+            EXPECT_GE(costs[k], optimum.cost - 1e-9 * (1 + optimum.cost)) << "trial " << trial;
+        }
+        for (std::size_t p = 0; p < result.curve.size(); ++p)
+            EXPECT_NEAR(costs[5 + p], result.curve[p].cost, 1e-12 * (1 + result.curve[p].cost))
+                << "the solver's own cost, p = " << p + 1;
+    }
+}
+
+TEST(Reduction, EvaluatedGroupingsMustPartitionTheVisemes) {
+    std::mt19937 rng(5);
+    const auto inst = test::randomInstance(rng, 4, 6);
+    const auto errorOf = [&](std::vector<std::vector<int>> groups) {
+        try {
+            evaluateGroupings(inst.shapes, inst.frequencies, inst.weights,
+                              std::vector<std::vector<std::vector<int>>>{groups});
+        } catch (const InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    EXPECT_NE(errorOf({{0, 1}, {2}}).find("leaves out viseme 3"), std::string::npos);
+    EXPECT_NE(errorOf({{0, 1}, {1, 2, 3}}).find("viseme 1 is in two groups"), std::string::npos);
+    EXPECT_NE(errorOf({{0, 1, 2, 3}, {}}).find("empty group"), std::string::npos);
+    EXPECT_NE(errorOf({{0, 1, 2, 7}}).find("outside 0..3"), std::string::npos);
+}
