@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Builds and runs the benchmarks whose figures docs/performance.md records, then times the whole
-# `visemelab reduce` process on the bundled sample (load 16 meshes, reduce 15 -> 10, write).
+# Builds and runs the benchmarks whose figures docs/performance.md records, then times whole CLI
+# processes (reduce on the bundled sample beside its floor, refine, avatar reduce, say) with
+# min / median / max of repeated runs.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./scripts/build.sh
@@ -8,22 +9,57 @@ for b in build/release/tests/bench/bench_*; do
   [ -x "$b" ] && "$b" "$@"
 done
 cli=build/release/app/visemelab
-out=$(mktemp -d)
-runs=20
-start=$(date +%s%N)
-for _ in $(seq $runs); do
-  "$cli" reduce --visemes assets/sample --freq-file assets/phonemes/en-us_frequencies.csv \
-    --map assets/phonemes/map_sample_face.csv --weights area --target 10 --out "$out" >/dev/null
-done
-end=$(date +%s%N)
-echo "CLI reduce on the sample (16 meshes in, 10 merged out, OBJ+VRML+JSON written):" \
-  "$(( (end - start) / runs / 1000000 )) ms per process (mean of $runs runs)"
-python3 - "$out/report.json" 2>/dev/null <<'PY' || true
-import json, sys
-t = json.load(open(sys.argv[1]))["timing_ms"]
-print("  last run: load %.1f ms, reduce %.1f ms, write %.1f ms" % (t["load"], t["reduce"], t["write"]))
+
+# Whole processes, honestly: min / median / max of repeated runs, wall and CPU (user + sys of the
+# process and all its threads), each beside its floor measured in the same run.
+#  - reduce on the bundled sample (16 meshes in, 15 -> 10, OBJ + VRML + JSON written) against the
+#    floor: a process that does nothing (`visemelab --help`) plus reading the same inputs and building
+#    the Gram matrix in process (bench_reduce BM_SampleReduceFloor). Goal (issue 10): <= 2x the floor.
+#  - refine --criterion contour --param jaw_open=1 --param lip_pucker=0.5: the timing the CLI reports
+#    (surface build + refinement) and the process. Goal: reported <= 30 ms.
+python3 - "$cli" build/release/tests/bench/bench_reduce <<'PY'
+import json, os, re, resource, shutil, statistics, subprocess, sys, tempfile, time
+cli, bench = sys.argv[1], sys.argv[2]
+def measure(args, runs=11):
+    wall, cpu, outputs = [], [], []
+    for _ in range(runs):
+        before = resource.getrusage(resource.RUSAGE_CHILDREN)
+        start = time.perf_counter()
+        done = subprocess.run([cli] + args, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True)
+        wall.append(time.perf_counter() - start)
+        after = resource.getrusage(resource.RUSAGE_CHILDREN)
+        cpu.append(after.ru_utime - before.ru_utime + after.ru_stime - before.ru_stime)
+        outputs.append(done.stdout)
+    return wall, cpu, outputs
+def line(values, unit=1000.0, name="ms"):
+    return "min %.1f %s, median %.1f %s, max %.1f %s" % (min(values) * unit, name, statistics.median(values) * unit,
+                                                         name, max(values) * unit, name)
+out = tempfile.mkdtemp()
+reduce = measure(["reduce", "--visemes", "assets/sample", "--freq-file", "assets/phonemes/en-us_frequencies.csv",
+                  "--map", "assets/phonemes/map_sample_face.csv", "--weights", "area", "--target", "10", "--out", out])
+report = json.load(open(os.path.join(out, "report.json")))["timing_ms"]
+idle = measure(["--help"])
+floor = json.loads(subprocess.run([bench, "--benchmark_filter=BM_SampleReduceFloor", "--benchmark_repetitions=11",
+                                   "--benchmark_format=json"], stdout=subprocess.PIPE, check=True).stdout)
+runs = [b for b in floor["benchmarks"] if b.get("run_type") == "iteration"]
+floor_wall = [b["real_time"] / 1000.0 for b in runs]  # ms -> s
+floor_cpu = [b["cpu_time"] / 1000.0 for b in runs]
+print("CLI reduce on the sample (16 meshes in, 15 -> 10, OBJ+VRML+JSON written), %d runs:" % len(reduce[0]))
+print("  process wall:", line(reduce[0]))
+print("  process CPU: ", line(reduce[1]))
+print("  last run's report: load %.1f ms, reduce %.1f ms, write %.1f ms" % (report["load"], report["reduce"], report["write"]))
+print("  floor: empty process (visemelab --help) wall", line(idle[0]), "| CPU", line(idle[1]))
+print("  floor: read inputs + Gram matrix in process (%d runs) wall" % len(runs), line(floor_wall), "| CPU", line(floor_cpu))
+floor_median = statistics.median(idle[1]) + statistics.median(floor_cpu)
+print("  process / floor (median CPU): %.2f (goal <= 2)" % (statistics.median(reduce[1]) / floor_median))
+refine = measure(["refine", "--criterion", "contour", "--param", "jaw_open=1", "--param", "lip_pucker=0.5",
+                  "--out", os.path.join(out, "refined.obj")])
+reported = [float(re.search(r"([0-9.]+) ms", o).group(1)) / 1000.0 for o in refine[2]]
+print("CLI refine --criterion contour --param jaw_open=1 --param lip_pucker=0.5, %d runs:" % len(reported))
+print("  reported timing:", line(reported), "(goal <= 30 ms)")
+print("  process wall:", line(refine[0]), "| CPU", line(refine[1]))
+shutil.rmtree(out)
 PY
-rm -rf "$out"
 
 # Avatar reduce end to end on a generated 30,000-vertex avatar (15 visemes on 4 meshes): process
 # wall and CPU time (user + sys), min/median/max of repeated runs, against `avatar inspect` (read

@@ -65,15 +65,26 @@ Falloff parseFalloff(std::string_view name, std::string_view where) {
 }
 
 double InfluenceField::weight(double u, double v) const {
-    // Local coordinates along the rotated ellipse axes.
+    // Local coordinates (a,b) along the rotated ellipse axes. This is the inner loop of every cascade
+    // evaluation; most regions are not rotated, and then need no sine and cosine (cos 0 = 1 and
+    // sin 0 = 0 exactly: the same result to the bit).
     const double du = u - centre[0];
     const double dv = v - centre[1];
-    const double c = std::cos(rotation);
-    const double s = std::sin(rotation);
-    const double a = c * du + s * dv;
-    const double b = -s * du + c * dv;
-    const double outer = std::sqrt((a / radii[0]) * (a / radii[0]) + (b / radii[1]) * (b / radii[1]));
-    if (outer >= 1.0) return 0.0;
+    double a = du, b = dv;
+    if (rotation == 0.0) {
+        // Outside the ellipse's bounding box: |du| >= ru gives |du| / ru >= 1 after rounding too, so
+        // this returns exactly where the test below would.
+        if (std::abs(du) >= radii[0] || std::abs(dv) >= radii[1]) return 0.0;
+    } else {
+        const double c = std::cos(rotation);
+        const double s = std::sin(rotation);
+        a = c * du + s * dv;
+        b = -s * du + c * dv;
+    }
+    // Outside the outer ellipse (most points, for a local region) without a square root.
+    const double outerSquared = (a / radii[0]) * (a / radii[0]) + (b / radii[1]) * (b / radii[1]);
+    if (outerSquared >= 1.0) return 0.0;
+    const double outer = std::sqrt(outerSquared);
     if (plateau[0] <= 0.0 || plateau[1] <= 0.0) return falloffWeight(falloff, outer);
     // Along the ray from the centre through (a,b): distance rho, inner border at rho / inner, outer
     // border at rho / outer. t runs from 0 on the plateau border to 1 on the outer border.

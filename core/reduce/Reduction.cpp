@@ -90,7 +90,11 @@ UnitCurve solveByBranchAndBound(const GroupCostModel& model, const ConstraintUni
         limits.deadline = std::chrono::steady_clock::now() +
                           std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                               std::chrono::duration<double>(options.timeLimitSeconds));
-    limits.cancelled = options.cancelled;
+    // With a progress callback the searches watch a flag of their own: set when the caller's flag is,
+    // and when the callback throws (the editor cancels its task that way), so the searches stop before
+    // the exception leaves instead of running on to their time limit while the caller waits.
+    std::atomic<bool> stopped{false};
+    limits.cancelled = progress ? &stopped : options.cancelled;
     std::vector<std::atomic<double>> done(static_cast<std::size_t>(m));
     UnitCurve curve(static_cast<std::size_t>(m));
     auto solve = [&] {
@@ -109,10 +113,17 @@ UnitCurve solveByBranchAndBound(const GroupCostModel& model, const ConstraintUni
         solve();
     } else {
         auto running = std::async(std::launch::async, solve);
-        while (running.wait_for(std::chrono::milliseconds(50)) != std::future_status::ready) {
-            double sum = 0;
-            for (const auto& d : done) sum += d.load(std::memory_order_relaxed);
-            progress(sum / m);
+        try {
+            while (running.wait_for(std::chrono::milliseconds(50)) != std::future_status::ready) {
+                if (options.cancelled && options.cancelled->load()) stopped = true;
+                double sum = 0;
+                for (const auto& d : done) sum += d.load(std::memory_order_relaxed);
+                progress(sum / m);
+            }
+        } catch (...) {
+            stopped = true;
+            running.wait();
+            throw;
         }
         running.get();
     }

@@ -17,8 +17,8 @@ CascadeSurface bundledSurface() {
     return CascadeSurface(cascade, face::faceBaseDomain(10), cascade.defaults());
 }
 
-void refineBundled(benchmark::State& state, const CriterionSettings& settings) {
-    const CascadeSurface surface = bundledSurface();
+void refineSurface(benchmark::State& state, const CascadeSurface& surface,
+                   const CriterionSettings& settings) {
     const auto criterion = makeCriterion(settings);
     std::size_t faces = 0;
     for (auto _ : state) {
@@ -28,6 +28,10 @@ void refineBundled(benchmark::State& state, const CriterionSettings& settings) {
         benchmark::DoNotOptimize(faces);
     }
     state.counters["triangles"] = static_cast<double>(faces);
+}
+
+void refineBundled(benchmark::State& state, const CriterionSettings& settings) {
+    refineSurface(state, bundledSurface(), settings);
 }
 
 void BM_RefineDepth3(benchmark::State& state) {
@@ -51,6 +55,33 @@ void BM_RefineContour(benchmark::State& state) {
     refineBundled(state, s);
 }
 BENCHMARK(BM_RefineContour)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// `visemelab refine --criterion contour --param jaw_open=1 --param lip_pucker=0.5`, split as the CLI's
+// reported timing_ms is: building the surface (every field sampled on the base domain) and refining.
+std::vector<double> openPuckerPose(const DeformationCascade& cascade) {
+    auto q = cascade.defaults();
+    q[static_cast<std::size_t>(cascade.findParameter("jaw_open"))] = 1.0;
+    q[static_cast<std::size_t>(cascade.findParameter("lip_pucker"))] = 0.5;
+    return q;
+}
+
+void BM_CliRefineSurface(benchmark::State& state) {
+    const DeformationCascade cascade = face::makeBundledFace();
+    const auto q = openPuckerPose(cascade);
+    for (auto _ : state) {
+        CascadeSurface surface(cascade, face::faceBaseDomain(10), q);
+        benchmark::DoNotOptimize(surface);
+    }
+}
+BENCHMARK(BM_CliRefineSurface)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_CliRefineContour(benchmark::State& state) {
+    const DeformationCascade cascade = face::makeBundledFace();
+    CriterionSettings s;
+    s.kind = CriterionKind::Contour;
+    refineSurface(state, CascadeSurface(cascade, face::faceBaseDomain(10), openPuckerPose(cascade)), s);
+}
+BENCHMARK(BM_CliRefineContour)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // A slider change (jaw 0 <-> 1) followed by re-adaptation (resample, weld, refine) under contour.
 void BM_ReadaptContourJaw(benchmark::State& state) {

@@ -1,6 +1,10 @@
 // Reduction benchmarks: the goal case n = 16, m = 10 at 1,500 vertices (goal <= 50 ms on
 // 2 cores; the paper took 318 s in Java), plus the scaling in n.
+#include "core/reduce/Frequencies.h"
+#include "core/reduce/GramMatrix.h"
 #include "core/reduce/Reduction.h"
+#include "core/reduce/VisemeSet.h"
+#include "core/reduce/Weights.h"
 
 #include <benchmark/benchmark.h>
 
@@ -39,6 +43,33 @@ void BM_Reduce(benchmark::State& state) {
     }
     state.SetLabel("n=" + std::to_string(n) + " m=" + std::to_string(m));
 }
+
+// The floor of `visemelab reduce` on the bundled sample (scripts/bench.sh runs the process beside it):
+// read the 16 OBJ files, the phoneme table and the map, compute the area weights and build the
+// weighted Gram matrix: what any reduction of these inputs must do before solving.
+void BM_SampleReduceFloor(benchmark::State& state) {
+    const std::filesystem::path sample = std::filesystem::path(VISEMELAB_ASSETS_DIR) / "sample";
+    const std::filesystem::path phonemes = std::filesystem::path(VISEMELAB_ASSETS_DIR) / "phonemes";
+    for (auto _ : state) {
+        const vl::VisemeSet set =
+            vl::loadVisemeSet(sample / "neutral.obj", vl::listVisemeFolder(sample, sample / "neutral.obj"));
+        vl::FrequencySource source = vl::loadFrequencyFile(phonemes / "en-us_frequencies.csv");
+        source.phonemes = std::move(source.visemeFrequencies);
+        source.visemeFrequencies = {};
+        source.map = vl::loadPhonemeMapFile(phonemes / "map_sample_face.csv");
+        std::vector<std::string> names;
+        std::vector<std::span<const vl::Vec3>> rows;
+        for (const auto& v : set.visemes) {
+            names.push_back(v.name);
+            rows.emplace_back(v.positions);
+        }
+        const auto f = vl::visemeFrequencies(source, names);
+        const auto w = vl::computeWeights(vl::WeightMode::Area, set.neutral, {}, "weights");
+        auto gram = vl::centredGram(vl::ShapeView(std::span<const std::span<const vl::Vec3>>(rows)), f, w);
+        benchmark::DoNotOptimize(gram);
+    }
+}
+BENCHMARK(BM_SampleReduceFloor)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 } // namespace
 

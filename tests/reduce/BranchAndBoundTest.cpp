@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
 
 using namespace vl;
 
@@ -114,6 +115,65 @@ TEST(BranchAndBound, CancelledSearchStillReturnsAValidGrouping) {
     const auto result = reduceVisemes({inst.shapes, inst.frequencies, inst.weights, 8}, options);
     EXPECT_TRUE(test::isValidGrouping(result.best().groups, 30, 8));
     for (const auto& g : result.curve) expectCertificate(g);
+}
+
+TEST(BranchAndBound, AThrowingProgressCallbackStopsTheSearchAtOnce) {
+    // The editor cancels a reduction by throwing from the progress callback: the searches must stop
+    // then, not run on to their time limit (20 s here) while the editor waits for the worker. The
+    // caller's flag set while a progress callback is given stops them too.
+    std::mt19937 rng(5);
+    const auto inst = test::randomInstance(rng, 36, 40); // far from finishing in 20 s
+    ReductionOptions options;
+    options.method = ReductionMethod::BranchAndBound;
+    options.timeLimitSeconds = 20;
+    struct Cancelled {};
+    int calls = 0;
+    auto start = std::chrono::steady_clock::now();
+    EXPECT_THROW(reduceVisemes({inst.shapes, inst.frequencies, inst.weights, 12}, options,
+                               [&](double) {
+                                   if (++calls == 3) throw Cancelled{};
+                               }),
+                 Cancelled);
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
+
+    std::atomic<bool> cancelled{false};
+    options.cancelled = &cancelled;
+    calls = 0;
+    start = std::chrono::steady_clock::now();
+    const auto result =
+        reduceVisemes({inst.shapes, inst.frequencies, inst.weights, 12}, options, [&](double) {
+            if (++calls == 3) cancelled = true;
+        });
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
+    EXPECT_TRUE(test::isValidGrouping(result.best().groups, 36, 12));
+    EXPECT_FALSE(result.best().optimal);
+}
+
+TEST(BranchAndBound, AStoppedSearchBoundsTheUnitsBeforeItsSuffixByBlocks) {
+    // Stopped at once, the search has proved a bound only for a short suffix of the placement order;
+    // the units before it add the DP optima of blocks of them. The bound must stay valid (never above
+    // the DP's optimum) and be a real share of it, on random sets and every p.
+    std::mt19937 rng(11);
+    for (int trial = 0; trial < 3; ++trial) {
+        const auto inst = trial == 0 ? test::randomInstance(rng, 16, 30) : test::rigInstance(rng, 16, 60, 5);
+        const int m = 8;
+        ReductionOptions dp;
+        dp.method = ReductionMethod::SubsetDp;
+        const auto exact = reduceVisemes({inst.shapes, inst.frequencies, inst.weights, m}, dp);
+        std::atomic<bool> cancelled{true};
+        ReductionOptions stopped;
+        stopped.method = ReductionMethod::BranchAndBound;
+        stopped.cancelled = &cancelled;
+        const auto result = reduceVisemes({inst.shapes, inst.frequencies, inst.weights, m}, stopped);
+        for (int p = 2; p <= m; ++p) {
+            const Grouping& g = result.curve[static_cast<std::size_t>(p - 1)];
+            const double optimum = exact.curve[static_cast<std::size_t>(p - 1)].cost;
+            EXPECT_LE(g.lowerBound, optimum * (1 + 1e-9)) << "trial " << trial << " p = " << p;
+            EXPECT_GE(g.cost, optimum * (1 - 1e-9));
+            EXPECT_GT(g.lowerBound, 0.25 * optimum)
+                << "trial " << trial << " p = " << p << " gap " << g.gap();
+        }
+    }
 }
 
 TEST(BranchAndBound, ProvesStructuredSetsBeyondTheDp) {

@@ -31,8 +31,11 @@ void EditorUi::reductionPanel() {
     ctl::Checkbox("Re-run automatically", &session.autoReduce);
     ImGui::SameLine();
     if (ctl::Button("Run now")) session.attempt("Reduction", [&] { session.startReduction(); });
-    if (session.reductionRunning())
-        ImGui::ProgressBar(static_cast<float>(session.reductionProgress()), ImVec2(-1, 0), "reducing...");
+    if (session.reductionRunning()) {
+        ImGui::ProgressBar(static_cast<float>(session.reductionProgress()), ImVec2(-80, 0), "reducing...");
+        ImGui::SameLine();
+        if (ctl::Button("Cancel")) session.cancelReduction();
+    }
 
     constraintsSection();
 

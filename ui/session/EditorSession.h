@@ -183,6 +183,8 @@ class EditorSession {
     // Starts the reduction of the current inputs on a worker thread (no-op when already current).
     void startReduction() { reduction_.start(document()); }
     bool reductionRunning() const { return reduction_.running(); }
+    // Stops a running reduction (the searches stop within one progress poll); "Run now" restarts it.
+    void cancelReduction() { reduction_.cancel(); }
     double reductionProgress() const { return reduction_.progress(); }
     // The curve if it is up to date with the inputs, else null.
     const ReductionResult* reductionCurve() const { return reduction_.curve(); }
