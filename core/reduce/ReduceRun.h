@@ -23,7 +23,7 @@ struct ReduceSettings {
     ReductionOptions options{};                    // solver, time limit
     // Phoneme -> viseme maps whose grouping of the set's visemes (named by phoneme) is costed under
     // the same objective, to compare with the optimum (e.g. the standard Oculus, MPEG-4, Rhubarb maps).
-    std::vector<PhonemeVisemeMap> compareMaps;
+    std::vector<PhonemeVisemeMap> compareMaps{};
 };
 
 // A map used as a grouping: the set's visemes the map sends to the same viseme share a group.
@@ -53,8 +53,8 @@ struct ReduceOutcome {
     std::vector<ReducedViseme> reduced; // for the chosen target m
     // phoneme -> reduced index (empty when frequencies were given per viseme).
     std::vector<std::pair<std::string, int>> phonemeToReduced;
-    ConstraintNames constraints;           // the constraints the run honoured
-    std::vector<MapGrouping> comparedMaps; // settings.compareMaps, costed
+    ConstraintNames constraints;             // the constraints the run honoured
+    std::vector<MapGrouping> comparedMaps{}; // settings.compareMaps, costed
 };
 
 ReduceOutcome runReduction(const VisemeSet& set, const FrequencySource& frequencies,
