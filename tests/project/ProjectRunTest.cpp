@@ -70,10 +70,10 @@ TEST_F(ProjectRun, ReductionEqualsThePlainApiOnTheSameFiles) {
         EXPECT_EQ(set.visemes[i].positions, direct.visemes[i].positions);
 
     const ReduceOutcome outcome = reduceProject(loaded, set);
-    ReduceSettings area;
-    area.weightMode = WeightMode::Area;
-    area.target = 3;
-    const ReduceOutcome expected = runReduction(direct, project.frequencies, area);
+    ReduceSettings settings;
+    settings.weightMode = WeightMode::Area;
+    settings.target = 3;
+    const ReduceOutcome expected = runReduction(direct, project.frequencies, settings);
     ASSERT_EQ(outcome.result.curve.size(), 3u);
     for (std::size_t p = 0; p < 3; ++p) {
         EXPECT_EQ(outcome.result.curve[p].cost, expected.result.curve[p].cost);
@@ -180,7 +180,7 @@ TEST(SampleProject, LoadsAndReduces) {
     const VisemeSet set = loadProjectVisemeSet(project);
     const ReduceOutcome outcome = reduceProject(project, set);
     EXPECT_EQ(outcome.result.curve.size(), static_cast<std::size_t>(project.reduction.target));
-    EXPECT_EQ(outcome.model.keys.size(), static_cast<std::size_t>(project.reduction.target));
+    EXPECT_EQ(outcome.reduced.size(), static_cast<std::size_t>(project.reduction.target));
     // The stored result is the one the reduction gives today (else: scripts/make-sample-project.sh).
     ASSERT_TRUE(project.reduction.result);
     ASSERT_EQ(project.reduction.result->curve.size(), outcome.result.curve.size());
