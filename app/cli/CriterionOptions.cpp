@@ -26,15 +26,38 @@ void addCriterionOptions(CLI::App* cmd, CriterionOptions& o) {
         ->capture_default_str();
 }
 
-CriterionSettings criterionSettings(const CriterionOptions& o) {
-    CriterionSettings s = o.settings;
-    s.kind = parseCriterionKind(o.criterion, "--criterion");
+namespace {
+
+CriterionSettings checked(CriterionSettings s) {
     try {
         validateCriterionSettings(s);
     } catch (const InputError& e) {
         throwInputError("criterion option", e.what());
     }
     return s;
+}
+
+} // namespace
+
+CriterionSettings criterionSettingsOver(const CriterionOptions& o, const CriterionSettings& base,
+                                        const CLI::App& cmd) {
+    CriterionSettings s = base;
+    const auto given = [&cmd](const char* name) { return cmd.count(name) > 0; };
+    if (given("--criterion")) s.kind = parseCriterionKind(o.criterion, "--criterion");
+    if (given("--depth")) s.depth.depth = o.settings.depth.depth;
+    if (given("--angle")) s.normals.dihedralAngleDeg = o.settings.normals.dihedralAngleDeg;
+    if (given("--normal-angle")) s.normals.normalAngleDeg = o.settings.normals.normalAngleDeg;
+    if (given("--avg-error")) s.contour.averageError = o.settings.contour.averageError;
+    if (given("--max-error")) s.contour.maximumError = o.settings.contour.maximumError;
+    if (given("--samples")) s.contour.samplesPerSide = o.settings.contour.samplesPerSide;
+    if (given("--max-depth")) s.maxDepth = o.settings.maxDepth;
+    return checked(s);
+}
+
+CriterionSettings criterionSettings(const CriterionOptions& o) {
+    CriterionSettings s = o.settings;
+    s.kind = parseCriterionKind(o.criterion, "--criterion");
+    return checked(s);
 }
 
 } // namespace vl::cli

@@ -21,4 +21,9 @@ void addCriterionOptions(CLI::App* cmd, CriterionOptions& options);
 // The settings with the parsed kind (InputError naming the flag for bad values).
 CriterionSettings criterionSettings(const CriterionOptions& options);
 
+// `base` (e.g. a project's refinement settings) with the criterion options given on `cmd`'s command
+// line in place of its values; checked like criterionSettings.
+CriterionSettings criterionSettingsOver(const CriterionOptions& options, const CriterionSettings& base,
+                                        const CLI::App& cmd);
+
 } // namespace vl::cli

@@ -33,6 +33,7 @@ struct FaceBuildCliOptions {
     int grid = 257;
     int resolution = 38;
     bool ignoreLayout = false;
+    bool acceptEstimates = false;
 };
 
 face::FaceLandmarks givenLandmarks(const face::UvMesh& mesh, const std::string& file) {
@@ -171,6 +172,24 @@ int runFaceBuild(const FaceBuildCliOptions& o) {
         throwInputError(o.mesh, "could not find the landmarks " + missing +
                                     ": give them with --landmarks L.json (see docs/deformable-face.md)");
     }
+    if (const auto estimated = face::estimatedMouthLandmarks(suggestion.landmarks);
+        !estimated.empty() && !o.acceptEstimates) {
+        // The guesses are written for editing, then the build stops rather than animate the wrong place.
+        if (!o.landmarksOut.empty())
+            writeFileAtomically(o.landmarksOut, landmarksToJsonText(suggestion.landmarks));
+        std::string names;
+        double sure = 1.0;
+        for (const auto l : estimated) {
+            names += (names.empty() ? "" : ", ") + std::string(face::landmarkName(l));
+            sure = std::min(sure, suggestion.landmarks[l].confidence);
+        }
+        throwInputError(
+            o.mesh, "found no mouth (no opening, no groove between the lips): " + names +
+                        " are only estimated from the face's proportions (" +
+                        std::to_string(static_cast<int>(100.0 * sure + 0.5)) +
+                        "% sure). Check them (--landmarks-out writes them) and give them with --landmarks "
+                        "L.json, or pass --accept-estimates to build on the estimates");
+    }
 
     face::FaceBuildOptions options;
     options.gridSize = o.grid;
@@ -213,6 +232,8 @@ void addFaceCommand(CLI::App& app, CommandRunner& run) {
     build
         ->add_option("--resolution", o->resolution, "Grid cells across the face domain for the viseme meshes")
         ->capture_default_str();
+    build->add_flag("--accept-estimates", o->acceptEstimates,
+                    "Build even when the mouth is only estimated from the face's proportions");
     build->add_flag("--ignore-layout", o->ignoreLayout,
                     "Find landmarks from the geometry even on a known layout (to compare the two)");
     build->callback([&run, o] { run = [o] { return runFaceBuild(*o); }; });

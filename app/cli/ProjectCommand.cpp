@@ -105,7 +105,7 @@ int runCheck(const std::string& file) {
     if (project.neutral.isSet()) vertices = loadProjectVisemeSet(project).vertexCount();
     std::printf("%s: valid project (version %d): %zu visemes, %zu vertices, %s frequencies, weights %s, "
                 "target %d%s%s\n",
-                file.c_str(), kProjectVersion, project.visemes.size(), vertices,
+                file.c_str(), projectVersionFor(project), project.visemes.size(), vertices,
                 project.frequencies.isPhonemeBased() ? "phoneme" : "viseme", toString(project.weights.mode),
                 project.reduction.target, project.reduction.result ? ", with a reduction result" : "",
                 project.deformation.isSet() ? ", with a deformable face" : "");

@@ -76,6 +76,13 @@ void noteInputFolder(const std::filesystem::path& folder) {
     note(folder, true);
 }
 
+void allowUpdatingInPlace(const std::filesystem::path& file) {
+    Registry& r = registry();
+    std::lock_guard lock(r.mutex);
+    FileId id;
+    if (r.recording && identityOf(file, id)) r.files.erase(id);
+}
+
 void refuseOverwritingInput(const std::filesystem::path& destination, std::string_view what) {
     const auto input = recordedAs(destination, false);
     if (input.empty()) return;

@@ -31,6 +31,10 @@ void noteInputFile(const std::filesystem::path& file);
 // A folder whose listing was an input (reduce --visemes DIR): outputs may not go into it.
 void noteInputFolder(const std::filesystem::path& folder);
 
+// A command that updates `file` in place (refine --project P --save) releases it: it is no longer an
+// input writers refuse. Other inputs stay protected. No-op without a recording.
+void allowUpdatingInPlace(const std::filesystem::path& file);
+
 // Throws OutputOverwritesInputError "<destination>: ..." when `destination` (after following
 // symlinks) is a recorded input file. `what` names the output in the message ("--out", "report").
 void refuseOverwritingInput(const std::filesystem::path& destination, std::string_view what = "output");

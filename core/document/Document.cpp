@@ -5,6 +5,7 @@
 #include "core/document/AvatarDocument.h"
 #include "core/gltf/AvatarScan.h"
 #include "core/project/BuiltinGeometry.h"
+#include "core/project/FaceProject.h"
 #include "core/project/ProjectRun.h"
 
 namespace vl {
@@ -49,6 +50,12 @@ void validateDocument(const Document& document) {
     if (document.target < 1 || document.target > n)
         throwInputError("target",
                         "m = " + std::to_string(document.target) + " is outside 1.." + std::to_string(n));
+}
+
+MeshData storedFaceDomain(const MeshData& domain) {
+    MeshData stored = projectDomainMesh(domain);
+    if (stored == face::faceDomainMesh(kFaceDomainResolution, face::DomainDensity::MouthFocused)) return {};
+    return stored;
 }
 
 FaceModel makeFaceModel(face::Individual individual, int resolution) {
@@ -101,8 +108,11 @@ LoadedProject documentFromProject(const Project& project) {
         model.individual = builtinIndividualOf(*model.cascade).value_or(face::Individual::Bundled);
         model.parameters = project.deformation.values;
         model.presets = project.deformation.visemes;
+        // The (u,v) mesh the project stored (refined, or made by face build), else the default.
         model.domain = std::make_shared<const MeshData>(
-            face::faceDomainMesh(kFaceDomainResolution, face::DomainDensity::MouthFocused));
+            project.deformation.domain.positions.empty()
+                ? face::faceDomainMesh(kFaceDomainResolution, face::DomainDensity::MouthFocused)
+                : project.deformation.domain);
         // The face model defines the (u,v) face space: colour the visemes' regions by it.
         if (document.visemes && document.visemes->neutral.hasUVs())
             document.visemeColours =
@@ -141,6 +151,7 @@ Project projectFromDocument(const Document& document, const std::optional<Reduct
         project.deformation.cascade = *face.cascade;
         project.deformation.values = face.parameters;
         project.deformation.visemes = face.presets.empty() ? oculusVisemes() : face.presets;
+        if (face.domain) project.deformation.domain = storedFaceDomain(*face.domain);
     }
     project.editor.selectedViseme = selectedViseme;
     return project;

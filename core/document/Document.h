@@ -109,6 +109,11 @@ LoadedProject documentFromProject(const Project& project);
 Project projectFromDocument(const Document& document, const std::optional<ReductionResult>& reduction = {},
                             const std::string& selectedViseme = {});
 
+// The form a face's (u,v) mesh is saved in (ProjectDeformation::domain): (u,v) and triangles with
+// positions (u, v, 0); empty when it is the default mesh (kFaceDomainResolution, mouth density), which
+// loading regenerates.
+MeshData storedFaceDomain(const MeshData& domain);
+
 // A fresh face model of the given individual on its (u,v) display mesh.
 FaceModel makeFaceModel(face::Individual individual, int resolution = kFaceDomainResolution);
 

@@ -356,7 +356,7 @@ GeometryFinding findLandmarksFromGeometry(const UvMesh& mesh) {
         out.notes.push_back("geometry: no nose tip stands out near the symmetry plane");
         return out;
     }
-    const Vec3 noseTip = s.points[static_cast<std::size_t>(nose)];
+    Vec3 noseTip = s.points[static_cast<std::size_t>(nose)];
     const double size = bestScale; // about the nose's size: the unit of the plausibility tests below
 
     // 3. Forward: the face's average outward normal around the nose, in the symmetry plane.
@@ -370,6 +370,17 @@ GeometryFinding findLandmarksFromGeometry(const UvMesh& mesh) {
     forward -= plane.normal * OpenMesh::dot(forward, plane.normal);
     if (forward.norm() < 1e-12) return out;
     forward.normalize();
+    // The tip itself: the protrusion score is nearly flat over a rounded tip, so its maximum wanders
+    // with how the mesh is cut and posed; the most forward point near it on the symmetry plane (the
+    // pronasale) does not.
+    index.within(noseTip, 0.6 * size, near);
+    for (const auto q : near) {
+        if (std::abs(plane.signedDistance(s.points[q])) > 0.1 * size) continue;
+        if (OpenMesh::dot(s.points[q] - noseTip, forward) > 0.0) {
+            nose = q;
+            noseTip = s.points[q];
+        }
+    }
     const Vec3 along = OpenMesh::cross(forward, plane.normal).normalized(); // up or down
 
     // The nose's profile: the bridge (up) falls off slowly, the underside (down) fast.

@@ -25,4 +25,12 @@ LandmarkSuggestion suggestLandmarks(const UvMesh& mesh, const FaceLandmarks& giv
     return suggestion;
 }
 
+std::vector<Landmark> estimatedMouthLandmarks(const FaceLandmarks& landmarks) {
+    std::vector<Landmark> estimated;
+    for (const auto l : {Landmark::MouthCornerRight, Landmark::MouthCornerLeft, Landmark::UpperLipMid,
+                         Landmark::LowerLipMid})
+        if (landmarks[l].source == LandmarkSource::Estimate) estimated.push_back(l);
+    return estimated;
+}
+
 } // namespace vl::face

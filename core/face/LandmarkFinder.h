@@ -10,6 +10,7 @@
 #include "core/face/UvMesh.h"
 
 #include <string>
+#include <vector>
 
 namespace vl::face {
 
@@ -28,5 +29,11 @@ struct LandmarkSuggestion {
 // (to check the geometry finder on a mesh whose layout gives the answer).
 LandmarkSuggestion suggestLandmarks(const UvMesh& mesh, const FaceLandmarks& given = {},
                                     bool useLayouts = true);
+
+// The mouth's landmarks (corners and lip middles) that were neither given nor found, only estimated
+// from the face's proportions. The visemes move the mouth, so a build on an estimated mouth would
+// animate the wrong place: `face build` refuses it unless told to accept estimates. Estimated eyes
+// only misplace the brow fields and are reported, not refused.
+std::vector<Landmark> estimatedMouthLandmarks(const FaceLandmarks& landmarks);
 
 } // namespace vl::face

@@ -39,9 +39,14 @@ WeldedSurface weldSurface(const UvMesh& mesh) {
     return s;
 }
 
-std::vector<bool> visibleTriangles(const WeldedSurface& s, int directions, int resolution) {
+std::vector<bool> visibleTriangles(const WeldedSurface& s, int directions, int minimumResolution) {
     std::vector<bool> visible(s.triangles.size(), false);
     if (s.triangles.empty()) return visible;
+    // A pixel keeps one triangle: about as many pixels as triangles, so that a dense mesh does not
+    // lose most of its triangles to their neighbours in the same pixel.
+    const int resolution =
+        std::clamp(static_cast<int>(std::ceil(1.2 * std::sqrt(double(s.triangles.size())))),
+                   minimumResolution, std::max(minimumResolution, 1200));
     Vec3 lo, hi;
     bounds(s.points, lo, hi);
     const Vec3 centre = (lo + hi) * 0.5;

@@ -21,8 +21,11 @@ struct WeldedSurface {
 WeldedSurface weldSurface(const UvMesh& mesh);
 
 // Triangles seen from at least one of `directions` evenly spread around the mesh (orthographic
-// z-buffers): the outside of a head, not its inner mouth, teeth or eyeballs behind the lids.
-std::vector<bool> visibleTriangles(const WeldedSurface& surface, int directions = 48, int resolution = 256);
+// z-buffers): the outside of a head, not its inner mouth, teeth or eyeballs behind the lids. The
+// z-buffers have at least `minimumResolution` pixels per side and about as many pixels as the mesh
+// has triangles (up to 1200 per side), so a finer cut of the same surface is seen the same way.
+std::vector<bool> visibleTriangles(const WeldedSurface& surface, int directions = 48,
+                                   int minimumResolution = 256);
 
 // Nearest-neighbour and radius queries over a fixed point set (a uniform grid of buckets).
 class PointIndex {

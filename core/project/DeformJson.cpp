@@ -1,7 +1,9 @@
 // The "deformation" section: the cascade (parameters with ranges and defaults, Constant/AddVector
-// stages with their fields), the current parameter values and the visemes as parameter vectors.
+// stages with their fields), the current parameter values, the visemes as parameter vectors and the
+// face's (u,v) mesh (version 2).
 // Stages name their parameter instead of using its index, so the file survives reordering.
 #include "core/common/Error.h"
+#include "core/common/Limits.h"
 #include "core/common/TextParsing.h"
 #include "core/project/FieldJson.h"
 #include "core/project/ProjectJson.h"
@@ -148,14 +150,61 @@ Json visemeParametersToJson(const VisemeParameters& viseme) {
     return Json{{"name", viseme.name}, {"values", std::move(values)}};
 }
 
+Json domainToJson(const MeshData& domain) {
+    if (domain.uvs.size() != domain.positions.size() || domain.triangles.empty())
+        throwInputError("/deformation/domain", "expected a (u,v) mesh: one (u,v) per vertex and triangles");
+    for (std::size_t i = 0; i < domain.uvs.size(); ++i) {
+        const Vec2& uv = domain.uvs[i];
+        if (!(uv[0] >= 0.0 && uv[0] <= 1.0 && uv[1] >= 0.0 && uv[1] <= 1.0))
+            throwInputError(jsonPathAppend("/deformation/domain/uvs", i), "(u,v) outside the unit square: (" +
+                                                                              formatDouble(uv[0]) + ", " +
+                                                                              formatDouble(uv[1]) + ")");
+    }
+    for (std::size_t k = 0; k < domain.triangles.size(); ++k)
+        for (const std::uint32_t index : domain.triangles[k])
+            if (index >= domain.uvs.size())
+                throwInputError(jsonPathAppend("/deformation/domain/triangles", k),
+                                "vertex index " + std::to_string(index) + " out of range");
+    Json json = Json::object();
+    json["uvs"] = uvArrayToJson(domain.uvs);
+    json["triangles"] = trianglesToJson(domain.triangles);
+    return json;
+}
+
+// Positions are (u, v, 0): the mesh is a triangulation of the face domain, not a shape.
+MeshData domainFromJson(const JsonNode& node) {
+    node.allowOnly({"uvs", "triangles"});
+    const JsonNode uvs = node["uvs"];
+    if (uvs.size() == 0) uvs.fail("expected at least one (u,v) pair");
+    if (uvs.size() > limits::kMaxVisemeSetPositions)
+        uvs.fail("more than " + std::to_string(limits::kMaxVisemeSetPositions) + " vertices");
+    MeshData domain;
+    domain.uvs.reserve(uvs.size());
+    for (const JsonNode& e : uvs.elements()) {
+        const Vec2 uv = e.vec2();
+        if (uv[0] < 0.0 || uv[0] > 1.0 || uv[1] < 0.0 || uv[1] > 1.0)
+            e.fail("(u,v) outside the unit square: (" + formatDouble(uv[0]) + ", " + formatDouble(uv[1]) +
+                   ")");
+        domain.uvs.push_back(uv);
+        domain.positions.emplace_back(uv[0], uv[1], 0.0);
+    }
+    domain.triangles = trianglesFromJson(node["triangles"], domain.uvs.size());
+    return domain;
+}
+
 } // namespace
+
+int projectVersionFor(const Project& project) {
+    return project.deformation.domain.positions.empty() ? 1 : 2;
+}
 
 Json deformationToJson(const ProjectDeformation& deformation) {
     if (!deformation.isSet()) {
         if (!deformation.values.empty() || !deformation.visemes.empty() ||
-            !deformation.cascade.parameters.empty())
-            throwInputError("/deformation",
-                            "parameters, values or visemes without a cascade (it has no stages)");
+            !deformation.cascade.parameters.empty() || !deformation.domain.positions.empty())
+            throwInputError(
+                "/deformation",
+                "parameters, values, visemes or a (u,v) mesh without a cascade (it has no stages)");
         return nullptr;
     }
     Json json = Json::object();
@@ -164,13 +213,20 @@ Json deformationToJson(const ProjectDeformation& deformation) {
     Json visemes = Json::array();
     for (const auto& v : deformation.visemes) visemes.push_back(visemeParametersToJson(v));
     json["visemes"] = std::move(visemes);
+    if (!deformation.domain.positions.empty()) json["domain"] = domainToJson(deformation.domain);
     return json;
 }
 
-ProjectDeformation deformationFromJson(const JsonNode& node) {
+ProjectDeformation deformationFromJson(const JsonNode& node, const ProjectReadContext& context) {
     ProjectDeformation deformation;
     if (node.isNull()) return deformation;
-    node.allowOnly({"cascade", "values", "visemes"});
+    node.allowOnly({"cascade", "values", "visemes", "domain"});
+    if (node.has("domain")) {
+        if (context.version < 2)
+            node["domain"].fail("a face (u,v) mesh needs project version 2 (this file says " +
+                                std::to_string(context.version) + ")");
+        deformation.domain = domainFromJson(node["domain"]);
+    }
     deformation.cascade = cascadeFromJson(node["cascade"]);
     deformation.values = deformation.cascade.defaults(); // parameters not listed keep their default
     if (node.has("values"))

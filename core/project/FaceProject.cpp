@@ -42,7 +42,17 @@ void regenerateFaceVisemes(Project& project, const MeshData& domain) {
         project.visemes[k].file.clear();
         project.visemes[k].positions = set.visemes[k].positions;
     }
+    project.deformation.domain = projectDomainMesh(domain);
     project.reduction.result.reset(); // computed for other meshes
+}
+
+MeshData projectDomainMesh(const MeshData& mesh) {
+    MeshData domain;
+    domain.uvs = mesh.uvs;
+    domain.triangles = mesh.triangles;
+    domain.positions.reserve(mesh.uvs.size());
+    for (const Vec2& uv : mesh.uvs) domain.positions.emplace_back(uv[0], uv[1], 0.0);
+    return domain;
 }
 
 } // namespace vl

@@ -14,7 +14,11 @@ Project makeFaceProject(const DeformationCascade& cascade, const MeshData& domai
                         const std::vector<VisemeParameters>& visemes, double lengthScale = 1.0);
 
 // Replaces the project's embedded viseme meshes with ones generated from its deformation on `domain`
-// (after refinement). Keeps names, order and everything else.
+// (after refinement) and stores `domain` as the face's (u,v) mesh. Keeps names, order and the rest.
 void regenerateFaceVisemes(Project& project, const MeshData& domain);
+
+// A (u,v) mesh as a project stores it (ProjectDeformation::domain): its (u,v) and triangles, with
+// positions (u, v, 0).
+MeshData projectDomainMesh(const MeshData& mesh);
 
 } // namespace vl

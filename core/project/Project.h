@@ -1,6 +1,6 @@
 #pragma once
 // A VisemeLab project: everything a designer edits, saved as one JSON document
-// ("format": "visemelab-project", "version": 1; docs/project-format.md describes every field).
+// ("format": "visemelab-project", "version": 1 or 2; docs/project-format.md describes every field).
 // The state is plain data from the core modules; this module only reads, validates and writes it.
 #include "core/adaptive/Criteria.h"
 #include "core/deform/DeformationCascade.h"
@@ -18,7 +18,10 @@
 
 namespace vl {
 
-constexpr int kProjectVersion = 1;       // written by saveProject; newer versions are refused
+// The newest version this VisemeLab reads and writes; newer versions are refused. Version 2 only adds
+// /deformation/domain: a project without it is still written as version 1, so VisemeLabs that read
+// version 1 keep opening it.
+constexpr int kProjectVersion = 2;
 constexpr int kOldestProjectVersion = 0; // older versions load through a migration
 inline constexpr const char* kProjectFormat = "visemelab-project";
 
@@ -59,6 +62,9 @@ struct ProjectDeformation {
     DeformationCascade cascade;
     std::vector<double> values;            // one per cascade parameter (empty when there is no cascade)
     std::vector<VisemeParameters> visemes; // parameters not listed keep their default
+    // The (u,v) mesh the face is shown and its visemes are generated on: a refined mesh, or the one
+    // `face build` made. Positions are (u, v, 0). Empty = the editor's default face domain mesh.
+    MeshData domain;
 
     bool isSet() const { return !cascade.stages.empty(); }
     bool operator==(const ProjectDeformation&) const = default;
@@ -101,6 +107,10 @@ struct Project {
     // from (Provenance) is not part of the value.
     bool operator==(const Project&) const = default;
 };
+
+// The version saveProject writes: the lowest that holds the project (2 only with a face (u,v) mesh,
+// /deformation/domain).
+int projectVersionFor(const Project& project);
 
 // Reads, migrates (older versions) and validates a project file. Every problem is an InputError
 // "<file>: <JSON path>: <what>", e.g. "p.vlproj: /visemes/3/file: file not found (…/aa.obj)".

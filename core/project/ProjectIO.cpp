@@ -31,18 +31,18 @@ Project projectFromJsonTextAt(std::string_view text, const std::filesystem::path
     const Json document = parseJsonStrict(text, projectFile.string());
     const JsonNode root(document, "");
     const int version = projectVersionOf(root);
-    const ProjectReadContext context{folderOf(projectFile), checkFiles};
     Project project;
-    if (version == kProjectVersion) {
-        project = projectFromJson(root, context);
+    if (version >= kFirstLayoutVersion) {
+        project = projectFromJson(root, {folderOf(projectFile), checkFiles, version});
     } else {
         const Json upgraded = migrateProjectJson(root, version);
         try {
-            project = projectFromJson(JsonNode(upgraded, ""), context);
+            project = projectFromJson(JsonNode(upgraded, ""),
+                                      {folderOf(projectFile), checkFiles, kFirstLayoutVersion});
         } catch (const InputError& e) {
             rethrowWithPrefix(e, "in the version " + std::to_string(version) +
                                      " project after migration to version " +
-                                     std::to_string(kProjectVersion) + ": ");
+                                     std::to_string(kFirstLayoutVersion) + ": ");
         }
     }
     project.path = projectFile;

@@ -40,39 +40,23 @@ Json neutralToJson(const ProjectNeutral& neutral) {
     if (neutral.embedded.positions.empty()) return nullptr;
     Json json = Json::object();
     json["positions"] = vec3Array(neutral.embedded.positions);
-    if (neutral.embedded.hasUVs()) {
-        Json uvs = Json::array();
-        for (const Vec2& uv : neutral.embedded.uvs) uvs.push_back(Json::array({uv[0], uv[1]}));
-        json["uvs"] = std::move(uvs);
-    }
-    Json triangles = Json::array();
-    for (const Triangle& t : neutral.embedded.triangles) triangles.push_back(Json::array({t[0], t[1], t[2]}));
-    json["triangles"] = std::move(triangles);
+    if (neutral.embedded.hasUVs()) json["uvs"] = uvArrayToJson(neutral.embedded.uvs);
+    json["triangles"] = trianglesToJson(neutral.embedded.triangles);
     return json;
 }
 
 MeshData embeddedMeshFromJson(const JsonNode& node) {
     MeshData mesh;
     mesh.positions = vec3ArrayFromJson(node["positions"]);
-    const auto n = static_cast<std::int64_t>(mesh.positions.size());
     if (node.has("uvs")) {
+        const auto n = mesh.positions.size();
         const JsonNode uvs = node["uvs"];
         if (uvs.size() != mesh.positions.size())
             uvs.fail("expected " + std::to_string(n) + " (u,v) pairs, one per vertex, found " +
                      std::to_string(uvs.size()));
         for (const JsonNode& uv : uvs.elements()) mesh.uvs.push_back(uv.vec2());
     }
-    const JsonNode triangles = node["triangles"];
-    if (triangles.size() == 0) triangles.fail("expected at least one triangle");
-    for (const JsonNode& t : triangles.elements()) {
-        t.expectSize(3);
-        Triangle triangle{};
-        for (std::size_t c = 0; c < 3; ++c)
-            triangle[c] = static_cast<std::uint32_t>(t[c].integerInRange(0, n - 1));
-        if (triangle[0] == triangle[1] || triangle[1] == triangle[2] || triangle[0] == triangle[2])
-            t.fail("a triangle repeats a vertex index");
-        mesh.triangles.push_back(triangle);
-    }
+    mesh.triangles = trianglesFromJson(node["triangles"], mesh.positions.size());
     return mesh;
 }
 
@@ -153,6 +137,35 @@ ProjectWeights weightsFromJson(const JsonNode& node, const ProjectNeutral& neutr
 
 } // namespace
 
+Json uvArrayToJson(const std::vector<Vec2>& uvs) {
+    Json array = Json::array();
+    for (const Vec2& uv : uvs) array.push_back(Json::array({uv[0], uv[1]}));
+    return array;
+}
+
+Json trianglesToJson(const std::vector<Triangle>& triangles) {
+    Json array = Json::array();
+    for (const Triangle& t : triangles) array.push_back(Json::array({t[0], t[1], t[2]}));
+    return array;
+}
+
+std::vector<Triangle> trianglesFromJson(const JsonNode& node, std::size_t vertexCount) {
+    if (node.size() == 0) node.fail("expected at least one triangle");
+    const auto last = static_cast<std::int64_t>(vertexCount) - 1;
+    std::vector<Triangle> triangles;
+    triangles.reserve(node.size());
+    for (const JsonNode& t : node.elements()) {
+        t.expectSize(3);
+        Triangle triangle{};
+        for (std::size_t c = 0; c < 3; ++c)
+            triangle[c] = static_cast<std::uint32_t>(t[c].integerInRange(0, last));
+        if (triangle[0] == triangle[1] || triangle[1] == triangle[2] || triangle[0] == triangle[2])
+            t.fail("a triangle repeats a vertex index");
+        triangles.push_back(triangle);
+    }
+    return triangles;
+}
+
 std::filesystem::path fileFromJson(const JsonNode& node, const ProjectReadContext& context) {
     const std::filesystem::path file(node.nonEmptyString());
     checkFile(node, file, context);
@@ -165,7 +178,7 @@ Json projectToJson(const Project& project) {
 
     Json root = Json::object();
     root["format"] = kProjectFormat;
-    root["version"] = kProjectVersion;
+    root["version"] = projectVersionFor(project);
     root["neutral"] = neutralToJson(project.neutral);
     Json visemes = Json::array();
     for (std::size_t i = 0; i < project.visemes.size(); ++i)
@@ -213,7 +226,7 @@ Project projectFromJson(const JsonNode& root, const ProjectReadContext& context)
 
     if (root.has("frequencies")) project.frequencies = frequenciesFromJson(root["frequencies"], names);
     if (root.has("weights")) project.weights = weightsFromJson(root["weights"], project.neutral);
-    if (root.has("deformation")) project.deformation = deformationFromJson(root["deformation"]);
+    if (root.has("deformation")) project.deformation = deformationFromJson(root["deformation"], context);
     if (root.has("refinement")) project.refinement = refinementFromJson(root["refinement"]);
     if (root.has("reduction")) project.reduction = reductionFromJson(root["reduction"], names);
     if (root.has("speech")) project.speech = speechFromJson(root["speech"]);

@@ -12,12 +12,19 @@ namespace vl {
 
 // What section readers need beyond their JSON node.
 struct ProjectReadContext {
-    std::filesystem::path folder; // folder of the project file, for relative mesh paths
-    bool checkFiles = true;       // referenced mesh files must exist
+    std::filesystem::path folder;  // folder of the project file, for relative mesh paths
+    bool checkFiles = true;        // referenced mesh files must exist
+    int version = kProjectVersion; // of the document being read (>= 1: older ones are migrated first)
 };
 
 // A mesh or avatar file named at `node`: must exist when context.checkFiles.
 std::filesystem::path fileFromJson(const JsonNode& node, const ProjectReadContext& context);
+
+// Mesh parts: [[u, v], ...] and [[a, b, c], ...] (0-based indices below vertexCount, distinct, at
+// least one triangle).
+Json uvArrayToJson(const std::vector<Vec2>& uvs);
+Json trianglesToJson(const std::vector<Triangle>& triangles);
+std::vector<Triangle> trianglesFromJson(const JsonNode& node, std::size_t vertexCount);
 
 Json projectToJson(const Project& project);
 Project projectFromJson(const JsonNode& root, const ProjectReadContext& context); // version already checked
@@ -26,8 +33,9 @@ Json frequenciesToJson(const FrequencySource& frequencies);
 FrequencySource frequenciesFromJson(const JsonNode& node, const std::vector<std::string>& visemeNames);
 
 // Sampled grids equal to a built-in face geometry are written as {"builtin": name, ...}.
+// The face's (u,v) mesh ("domain") is allowed from version 2 on (context.version).
 Json deformationToJson(const ProjectDeformation& deformation);
-ProjectDeformation deformationFromJson(const JsonNode& node);
+ProjectDeformation deformationFromJson(const JsonNode& node, const ProjectReadContext& context);
 
 // Criteria without a section in the file keep their default thresholds.
 Json refinementToJson(const CriterionSettings& settings);
@@ -46,6 +54,10 @@ SpeechSettings speechFromJson(const JsonNode& node);
 // The optional "avatar" object: {"file": "avatar.glb", "targets": "Fcl_MTH_[AIUEO]"}.
 Json avatarToJson(const ProjectAvatar& avatar);
 ProjectAvatar avatarFromJson(const JsonNode& node, const ProjectReadContext& context);
+
+// Versions kFirstLayoutVersion..kProjectVersion share one layout (later versions only add optional
+// fields) and are read as they are; older versions are migrated to kFirstLayoutVersion first.
+inline constexpr int kFirstLayoutVersion = 1;
 
 // Version handling: the version of a document, and the upgrade of an older one to the current layout.
 int projectVersionOf(const JsonNode& root); // checks "format" too; refuses newer versions

@@ -79,7 +79,7 @@ int projectVersionOf(const JsonNode& root) {
 
 Json migrateProjectJson(const JsonNode& root, int fromVersion) {
     Json document = root.json();
-    for (int version = fromVersion; version < kProjectVersion; ++version) {
+    for (int version = fromVersion; version < kFirstLayoutVersion; ++version) {
         const JsonNode node(document, root.path());
         switch (version) {
         case 0:

@@ -1,10 +1,14 @@
 #include "core/reduce/BranchAndBound.h"
 
+#include "core/reduce/SubsetDp.h"
+
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <mutex>
 #include <numeric>
@@ -230,6 +234,32 @@ std::vector<int> placementOrder(const GroupCostModel& model, std::span<const Uni
     return order;
 }
 
+// A lower bound for placing `units` in at most p groups: they are cut into blocks of at most
+// kBlockUnits consecutive units, each block solved exactly by the subset DP into min(p, |block|) groups
+// with the conflicts dropped (a relaxation), and the optima summed. Valid because the cost of a group
+// is at least the sum of the costs of its parts, each part about its own mean (the mean minimises a
+// part's weighted sum of squares), and more groups never cost more.
+constexpr int kBlockUnits = 14;
+double blockBound(const GroupCostModel& model, std::span<const int> units, int p) {
+    double total = 0;
+    for (std::size_t from = 0; from < units.size(); from += kBlockUnits) {
+        const auto block = units.subspan(from, std::min<std::size_t>(kBlockUnits, units.size() - from));
+        const int size = static_cast<int>(block.size());
+        if (size <= p) continue; // every unit alone costs 0
+        GroupCostModel sub;
+        for (const int a : block) {
+            sub.weight.push_back(model.weight[static_cast<std::size_t>(a)]);
+            sub.self.push_back(model.self[static_cast<std::size_t>(a)]);
+            for (const int b : block) sub.cross.push_back(model.h(a, b));
+        }
+        sub.conflicts.assign(block.size(), 0);
+        sub.scale = sub.cost((UnitMask{1} << size) - 1);
+        const UnitCurve curve = solveSubsetDp(sub, p);
+        total += std::max(0.0, curve.back().cost);
+    }
+    return total;
+}
+
 } // namespace
 
 UnitPartition branchAndBound(const GroupCostModel& model, int p, std::span<const UnitMask> start,
@@ -296,8 +326,15 @@ UnitPartition branchAndBound(const GroupCostModel& model, int p, std::span<const
         suffixBound[static_cast<std::size_t>(first)] = std::min(best, unexplored);
         if (done) done->store(static_cast<double>(size) / n, std::memory_order_relaxed);
         if (unexplored < kInf || first == 0) {
-            // Stopped (or finished): report the whole problem.
+            // Stopped (or finished): report the whole problem. A stopped search proved a bound for
+            // the suffix only; the units before it add the optima of small blocks of them (blockBound),
+            // or, when larger, all units in blocks.
             result.lowerBound = std::max(0.0, std::min(best, unexplored));
+            if (first > 0 && unexplored < kInf)
+                result.lowerBound = std::max(
+                    result.lowerBound +
+                        blockBound(model, std::span(order.data(), static_cast<std::size_t>(first)), p),
+                    blockBound(model, order, p));
             result.optimal = unexplored == kInf && first == 0;
             if (first == 0 && !labels.empty()) {
                 result.groups.assign(static_cast<std::size_t>(p), 0);

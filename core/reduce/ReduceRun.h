@@ -23,7 +23,7 @@ struct ReduceSettings {
     ReductionOptions options{};                    // solver, time limit
     // Phoneme -> viseme maps whose grouping of the set's visemes (named by phoneme) is costed under
     // the same objective, to compare with the optimum (e.g. the standard Oculus, MPEG-4, Rhubarb maps).
-    std::vector<PhonemeVisemeMap> compareMaps;
+    std::vector<PhonemeVisemeMap> compareMaps{};
 };
 
 // A map used as a grouping: the set's visemes the map sends to the same viseme share a group.
@@ -46,8 +46,8 @@ struct ReduceOutcome {
     // The merged keys of the best grouping for the target m and the phoneme -> key map
     // (buildReducedModel: map entries naming a viseme the set lacks are an error).
     ReducedModel model;
-    ConstraintNames constraints;           // the constraints the run honoured
-    std::vector<MapGrouping> comparedMaps; // settings.compareMaps, costed
+    ConstraintNames constraints;             // the constraints the run honoured
+    std::vector<MapGrouping> comparedMaps{}; // settings.compareMaps, costed
 };
 
 ReduceOutcome runReduction(const VisemeSet& set, const FrequencySource& frequencies,

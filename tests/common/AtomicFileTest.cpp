@@ -123,5 +123,22 @@ TEST(InputRegistry, AnInputOfTheRunIsNeverOverwritten) {
     EXPECT_NO_THROW(writeFileAtomically(dir / "in.obj", "saved"));
 }
 
+TEST(InputRegistry, AFileUpdatedInPlaceIsReleasedAndTheOtherInputsStayProtected) {
+    TempFolder dir;
+    writeText(dir / "p.vlproj", "project");
+    writeText(dir / "mesh.obj", "mesh");
+    {
+        const InputRecording recording;
+        (void)readFileToString(dir / "p.vlproj");
+        (void)readFileToString(dir / "mesh.obj");
+        EXPECT_THROW(writeFileAtomically(dir / "p.vlproj", "updated"), OutputOverwritesInputError);
+        allowUpdatingInPlace(dir / "p.vlproj");
+        EXPECT_NO_THROW(writeFileAtomically(dir / "p.vlproj", "updated"));
+        EXPECT_THROW(writeFileAtomically(dir / "mesh.obj", "clobbered"), OutputOverwritesInputError);
+    }
+    EXPECT_EQ(readText(dir / "p.vlproj"), "updated");
+    EXPECT_EQ(readText(dir / "mesh.obj"), "mesh");
+}
+
 } // namespace
 } // namespace vl

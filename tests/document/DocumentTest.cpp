@@ -1,6 +1,7 @@
 // The document and its file form: a project loads into a document and a document saves back to
 // the same project; comparisons are exact and defaulted (a new field cannot be forgotten).
 #include "core/document/Document.h"
+#include "core/adaptive/CascadeSurface.h"
 #include "core/document/Commands.h"
 #include "core/io/MeshIO.h"
 
@@ -41,6 +42,40 @@ TEST(Document, EmbeddedDocumentSurvivesTheProjectFileExactly) {
     // Saved again, the project is the same value.
     Project again = projectFromDocument(back, {}, "PP");
     EXPECT_EQ(again, project);
+}
+
+// Issue 15: a refined face mesh is part of the project. Refined for every viseme, set as the face's
+// mesh and the visemes generated on it, it is saved (version 2) and comes back on open: the face's
+// (u,v) mesh and the viseme meshes equal, where before the reopened face fell back to the default grid.
+TEST(Document, ARefinedFaceMeshIsSavedAndComesBackOnOpen) {
+    Document document;
+    document.face = makeFaceModel(face::Individual::Bundled); // the default mesh: not written
+    EXPECT_TRUE(projectFromDocument(document).deformation.domain.positions.empty());
+
+    CriterionSettings settings;
+    settings.kind = CriterionKind::Contour;
+    settings.maxDepth = 4;
+    std::vector<std::vector<double>> poses;
+    for (const VisemeParameters& viseme : oculusVisemes())
+        poses.push_back(parameterVector(*document.face.cascade, viseme));
+    const auto refined =
+        std::make_shared<const MeshData>(refineFaceMesh(*document.face.cascade, 10, settings, poses));
+    document = edit::generateVisemesFromFace(edit::setFaceDomain(document, refined));
+    ASSERT_EQ(document.visemes->neutral.uvs, refined->uvs);
+
+    const auto dir = tempDir("refined");
+    saveProject(dir / "p.vlproj", projectFromDocument(document));
+    const Project project = loadProject(dir / "p.vlproj");
+    EXPECT_EQ(projectVersionFor(project), 2);
+    const Document back = documentFromProject(project).document;
+    ASSERT_NE(back.face.domain, nullptr);
+    EXPECT_EQ(back.face.domain->uvs, refined->uvs);
+    EXPECT_EQ(back.face.domain->triangles, refined->triangles);
+    EXPECT_EQ(back.visemes->neutral, document.visemes->neutral);
+    EXPECT_EQ(back.visemes->visemes.back().positions, document.visemes->visemes.back().positions);
+    // Generating the visemes again on the reopened face gives the same meshes.
+    const Document regenerated = edit::generateVisemesFromFace(back);
+    EXPECT_EQ(regenerated.visemes->visemes[3].positions, document.visemes->visemes[3].positions);
 }
 
 TEST(Document, FileMeshesAreReferencedByAbsolutePathAndReadOnce) {

@@ -8,7 +8,8 @@
 #include "core/deform/Visemes.h"
 #include "core/face/FaceBuild.h"
 #include "core/face/LandmarkFinder.h"
-#include "core/io/MeshIO.h"
+
+#include "tests/face/SharedFaces.h"
 
 #include <gtest/gtest.h>
 
@@ -17,22 +18,7 @@
 namespace vl::face {
 namespace {
 
-namespace fs = std::filesystem;
-
-const fs::path kShared = VISEMELAB_SHARED_DATA_DIR;
-const fs::path kMediaPipe = kShared / "mediapipe-canonical-face" / "canonical_face_model.obj";
-const fs::path kIct = kShared / "ict-facekit-mouth" / "generic_neutral_mesh.obj";
-
-#define SKIP_WITHOUT(path)                                                                                   \
-    if (!fs::exists(path))                                                                                   \
-    GTEST_SKIP() << "shared data missing: " << (path)                                                        \
-                 << " (set VISEMELAB_SHARED_DATA_DIR to the folder holding it)"
-
-UvMesh loadUvMesh(const fs::path& path) {
-    CornerTexCoords corners;
-    const MeshData mesh = readMesh(path, corners);
-    return makeUvMesh(mesh, corners, path.string());
-}
+using namespace test; // the shared faces
 
 const VisemeParameters& viseme(const std::vector<VisemeParameters>& all, const std::string& name) {
     return *std::find_if(all.begin(), all.end(), [&](const VisemeParameters& v) { return v.name == name; });

@@ -1,11 +1,14 @@
 // The deformation section: the bundled face round-trips exactly (its geometry image by reference),
-// and every field of the cascade is validated with its JSON path.
+// and every field of the cascade is validated with its JSON path; the face's (u,v) mesh (version 2)
+// round-trips, is validated, and a file without one stays version 1.
 #include "ProjectTestUtil.h"
 
 #include "core/common/AtomicFile.h"
 #include "core/deform/BundledFace.h"
+#include "core/deform/FaceDomain.h"
 #include "core/io/JsonRead.h"
 #include "core/project/BuiltinGeometry.h"
+#include "core/project/FaceProject.h"
 
 namespace vl {
 namespace {
@@ -195,6 +198,89 @@ TEST(DeformJson, InconsistentStateIsRefusedOnSave) {
     p = faceProject(dir / "p.vlproj", face::makeBundledFace());
     p.deformation.values[0] = 7;
     EXPECT_INPUT_ERROR(saveProject(p.path, p), "/deformation/values/frontalis_l: 7 is outside [-0.5, 1]");
+    EXPECT_FALSE(std::filesystem::exists(p.path));
+}
+
+} // namespace
+} // namespace vl
+
+namespace vl {
+namespace {
+
+// A refined-looking (u,v) mesh: the face domain with one triangle split at an edge midpoint.
+MeshData splitDomain() {
+    MeshData mesh = face::faceDomainMesh(10, face::DomainDensity::MouthFocused);
+    const Triangle t = mesh.triangles.front();
+    const Vec2 mid = 0.5 * (mesh.uvs[t[0]] + mesh.uvs[t[1]]);
+    mesh.uvs.push_back(mid);
+    mesh.positions.emplace_back(mid[0], mid[1], 0.0);
+    const auto m = static_cast<std::uint32_t>(mesh.uvs.size() - 1);
+    mesh.triangles.front() = {t[0], m, t[2]};
+    mesh.triangles.push_back({m, t[1], t[2]});
+    return mesh;
+}
+
+TEST(DeformJson, TheFaceMeshRoundTripsAsVersion2AndAFileWithoutOneStaysVersion1) {
+    ScratchDir dir("domain");
+    Project p = faceProject(dir / "face.vlproj", face::makeBundledFace());
+    saveProject(p.path, p);
+    EXPECT_NE(readFileToString(p.path).find("\"version\": 1,"), std::string::npos);
+    EXPECT_EQ(readFileToString(p.path).find("\"domain\""), std::string::npos);
+
+    p.deformation.domain = projectDomainMesh(splitDomain());
+    saveProject(p.path, p);
+    const std::string text = readFileToString(p.path);
+    EXPECT_NE(text.find("\"version\": 2,"), std::string::npos);
+    EXPECT_NE(text.find("\"domain\""), std::string::npos);
+    const Project loaded = loadProject(p.path);
+    EXPECT_TRUE(loaded == p);
+    EXPECT_EQ(loaded.deformation.domain.uvs.size(), splitDomain().uvs.size());
+    EXPECT_EQ(loaded.deformation.domain.triangles, splitDomain().triangles);
+    saveProject(p.path, loaded);
+    EXPECT_EQ(readFileToString(p.path), text);
+}
+
+TEST(DeformJson, ProjectDomainMeshKeepsUvAndTrianglesAndFlattensPositions) {
+    MeshData mesh = splitDomain();
+    for (auto& position : mesh.positions) position = Vec3(3.0, -2.0, 7.0); // a posed face
+    const MeshData stored = projectDomainMesh(mesh);
+    EXPECT_EQ(stored.uvs, mesh.uvs);
+    EXPECT_EQ(stored.triangles, mesh.triangles);
+    ASSERT_EQ(stored.positions.size(), mesh.uvs.size());
+    EXPECT_EQ(stored.positions[5], Vec3(mesh.uvs[5][0], mesh.uvs[5][1], 0.0));
+}
+
+TEST_F(DeformValidation, TheFaceMeshNeedsVersion2AndIsChecked) {
+    doc["deformation"]["domain"] =
+        Json{{"uvs", Json::array({Json::array({0, 0}), Json::array({1, 0}), Json::array({0, 1})})},
+             {"triangles", Json::array({Json::array({0, 1, 2})})}};
+    EXPECT_LOAD_ERROR("/deformation/domain: a face (u,v) mesh needs project version 2 (this file says 1)");
+    doc["version"] = 2;
+    const Project p = load();
+    EXPECT_EQ(p.deformation.domain.uvs.size(), 3u);
+    EXPECT_EQ(p.deformation.domain.positions[1], Vec3(1, 0, 0));
+    doc["deformation"]["domain"]["uvs"][2] = Json::array({0, 1.5});
+    EXPECT_LOAD_ERROR("/deformation/domain/uvs/2: (u,v) outside the unit square: (0, 1.5)");
+    doc["deformation"]["domain"]["uvs"][2] = Json::array({0, 1});
+    doc["deformation"]["domain"]["triangles"][0] = Json::array({0, 1, 3});
+    EXPECT_LOAD_ERROR("/deformation/domain/triangles/0/2: 3 is outside the allowed range 0..2");
+    doc["deformation"]["domain"]["triangles"][0] = Json::array({0, 1, 1});
+    EXPECT_LOAD_ERROR("/deformation/domain/triangles/0: a triangle repeats a vertex index");
+    doc["deformation"]["domain"]["triangles"] = Json::array();
+    EXPECT_LOAD_ERROR("/deformation/domain/triangles: expected at least one triangle");
+    doc["deformation"]["domain"].erase("triangles");
+    EXPECT_LOAD_ERROR("/deformation/domain/triangles: missing field");
+    doc["deformation"]["domain"]["positions"] = Json::array();
+    EXPECT_LOAD_ERROR("/deformation/domain/positions: unknown field");
+}
+
+TEST(DeformJson, AFaceMeshOutsideTheUnitSquareIsRefusedOnSave) {
+    ScratchDir dir("domainsave");
+    Project p = faceProject(dir / "p.vlproj", face::makeBundledFace());
+    p.deformation.domain = projectDomainMesh(splitDomain());
+    p.deformation.domain.uvs[3] = Vec2(-0.25, 0.5);
+    EXPECT_INPUT_ERROR(saveProject(p.path, p),
+                       "/deformation/domain/uvs/3: (u,v) outside the unit square: (-0.25, 0.5)");
     EXPECT_FALSE(std::filesystem::exists(p.path));
 }
 

@@ -70,7 +70,10 @@ TEST_F(ProjectRun, ReductionEqualsThePlainApiOnTheSameFiles) {
         EXPECT_EQ(set.visemes[i].positions, direct.visemes[i].positions);
 
     const ReduceOutcome outcome = reduceProject(loaded, set);
-    const ReduceOutcome expected = runReduction(direct, project.frequencies, {WeightMode::Area, {}, 3});
+    ReduceSettings settings;
+    settings.weightMode = WeightMode::Area;
+    settings.target = 3;
+    const ReduceOutcome expected = runReduction(direct, project.frequencies, settings);
     ASSERT_EQ(outcome.result.curve.size(), 3u);
     for (std::size_t p = 0; p < 3; ++p) {
         EXPECT_EQ(outcome.result.curve[p].cost, expected.result.curve[p].cost);

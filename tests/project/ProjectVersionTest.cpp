@@ -14,14 +14,14 @@ TEST(ProjectVersion, NewerVersionIsRefusedWithAClearMessage) {
     test::writeText(dir / "p.vlproj",
                     R"({"format": "visemelab-project", "version": 7, "whatever": {"new": true}})");
     EXPECT_INPUT_ERROR(loadProject(dir / "p.vlproj"),
-                       "/version: project version 7 is newer than this VisemeLab (supports up to 1)");
+                       "/version: project version 7 is newer than this VisemeLab (supports up to 2)");
 }
 
 TEST(ProjectVersion, UnknownVersionsAreRefused) {
     ScratchDir dir("unknown");
     test::writeText(dir / "p.vlproj", R"({"format": "visemelab-project", "version": -1})");
     EXPECT_INPUT_ERROR(loadProject(dir / "p.vlproj"),
-                       "/version: unknown project version -1 (this VisemeLab reads versions 0..1)");
+                       "/version: unknown project version -1 (this VisemeLab reads versions 0..2)");
     test::writeText(dir / "p.vlproj", R"({"format": "visemelab-project", "version": 1.5})");
     EXPECT_INPUT_ERROR(loadProject(dir / "p.vlproj"), "/version: expected an integer, found 1.5");
     test::writeText(dir / "p.vlproj", R"({"format": "visemelab-project", "version": "1"})");
@@ -64,7 +64,7 @@ TEST_F(ProjectMigration, Version0PhonemeLayoutLoadsAsTheSameStateAsVersion1) {
     EXPECT_TRUE(migrated == current);
     migrated.path = dir / "old.vlproj";
 
-    // Saving writes the current version; it loads back unchanged.
+    // Saving writes the lowest version that holds it (1: no face (u,v) mesh); it loads back unchanged.
     saveProject(dir / "old.vlproj", migrated);
     EXPECT_NE(readFileToString(dir / "old.vlproj").find("\"version\": 1"), std::string::npos);
     EXPECT_TRUE(loadProject(dir / "old.vlproj") == migrated);

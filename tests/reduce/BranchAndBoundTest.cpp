@@ -149,6 +149,33 @@ TEST(BranchAndBound, AThrowingProgressCallbackStopsTheSearchAtOnce) {
     EXPECT_FALSE(result.best().optimal);
 }
 
+TEST(BranchAndBound, AStoppedSearchBoundsTheUnitsBeforeItsSuffixByBlocks) {
+    // Stopped at once, the search has proved a bound only for a short suffix of the placement order;
+    // the units before it add the DP optima of blocks of them. The bound must stay valid (never above
+    // the DP's optimum) and be a real share of it, on random sets and every p.
+    std::mt19937 rng(11);
+    for (int trial = 0; trial < 3; ++trial) {
+        const auto inst = trial == 0 ? test::randomInstance(rng, 16, 30) : test::rigInstance(rng, 16, 60, 5);
+        const int m = 8;
+        ReductionOptions dp;
+        dp.method = ReductionMethod::SubsetDp;
+        const auto exact = reduceVisemes({inst.shapes, inst.frequencies, inst.weights, m}, dp);
+        std::atomic<bool> cancelled{true};
+        ReductionOptions stopped;
+        stopped.method = ReductionMethod::BranchAndBound;
+        stopped.cancelled = &cancelled;
+        const auto result = reduceVisemes({inst.shapes, inst.frequencies, inst.weights, m}, stopped);
+        for (int p = 2; p <= m; ++p) {
+            const Grouping& g = result.curve[static_cast<std::size_t>(p - 1)];
+            const double optimum = exact.curve[static_cast<std::size_t>(p - 1)].cost;
+            EXPECT_LE(g.lowerBound, optimum * (1 + 1e-9)) << "trial " << trial << " p = " << p;
+            EXPECT_GE(g.cost, optimum * (1 - 1e-9));
+            EXPECT_GT(g.lowerBound, 0.25 * optimum)
+                << "trial " << trial << " p = " << p << " gap " << g.gap();
+        }
+    }
+}
+
 TEST(BranchAndBound, ProvesStructuredSetsBeyondTheDp) {
     std::mt19937 rng(8);
     const auto inst = test::rigInstance(rng, 26, 80, 8);

@@ -3,7 +3,11 @@
 #include "ui/session/EditorSession.h"
 #include "core/common/AtomicFile.h"
 #include "core/common/Error.h"
+#include "core/deform/BundledFace.h"
+#include "core/deform/FaceDomain.h"
+#include "core/deform/Visemes.h"
 #include "core/export/Export.h"
+#include "core/export/VisemeFile.h"
 #include "core/io/MeshIO.h"
 #include "core/paint/WeightBrush.h"
 #include "core/project/ProjectRun.h"
@@ -412,6 +416,37 @@ TEST(EditorSession, CountsPhonemesOfATextFileInTheBackground) {
 
 namespace vl::ui {
 namespace {
+
+TEST(EditorSession, CancellingALargeReductionReturnsAtOnce) {
+    // The 40 meshes of the ARPAbet set: branch and bound with the editor's 10 s limit, far from done
+    // after 0.3 s. Cancel must stop it then (the searches used to run to their limit while the editor
+    // waited); "Run now" starts it again.
+    const auto dir = tempDir("cancel-large-reduction");
+    const auto face = face::makeBundledFace();
+    const auto visemes = bundledVisemeSet("arpabet", EditorSession::assetsDirectory(), face);
+    const VisemeSet set = generateVisemeSet(face, face::faceDomainMesh(14), visemes);
+    writeFileAtomically(dir / "neutral.obj", formatObj(set.neutral));
+    for (std::size_t k = 0; k < set.size(); ++k)
+        writeFileAtomically(dir / (set.visemes[k].name + ".obj"), formatObj(set.meshOf(k)));
+    EditorSession session;
+    session.autoReduce = false;
+    session.startLoadVisemeFolder(dir);
+    session.finishBackgroundWork();
+    ASSERT_EQ(session.visemeCount(), 40u);
+    session.startReduction();
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    ASSERT_TRUE(session.reductionRunning()) << "finished within 0.3 s: nothing to cancel";
+    const auto start = std::chrono::steady_clock::now();
+    session.cancelReduction();
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_LT(seconds, 1.0);
+    EXPECT_FALSE(session.reductionRunning());
+    EXPECT_EQ(session.reductionCurve(), nullptr);
+    session.startReduction();
+    EXPECT_TRUE(session.reductionRunning());
+    session.cancelReduction();
+    std::filesystem::remove_all(dir);
+}
 
 TEST(EditorSession, OpensProjectsAndFoldersOnAWorkerThread) {
     EditorSession session;
