@@ -102,8 +102,7 @@ class SuffixSearch {
                 out[static_cast<std::size_t>(count++)] = {s.partial + delta + rest, delta, crossSum, g};
             }
         }
-        if (s.k < q_)
-            out[static_cast<std::size_t>(count++)] = {s.partial + rest, 0.0, 0.0, s.k};
+        if (s.k < q_) out[static_cast<std::size_t>(count++)] = {s.partial + rest, 0.0, 0.0, s.k};
         std::sort(out.begin(), out.begin() + count,
                   [](const Child& a, const Child& b) { return a.bound < b.bound; });
         return count;
