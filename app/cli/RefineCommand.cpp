@@ -123,9 +123,10 @@ std::string saveRefinedFace(const Project& project, const MeshData& refined) {
 int runRefine(const RefineOptions& o) {
     if (o.measureSamples < 1 || o.measureSamples > 64)
         throwInputError("--measure-samples", "must be in 1..64");
+    // Missing or contradictory flags are usage errors (exit 2), not bad input data (exit 3).
     if (o.save && o.project.empty())
-        throwInputError("--save", "stores the refined mesh in a project: give --project");
-    if (!o.save && o.out.empty()) throwInputError("--out", "required (or --save with --project)");
+        throwUsage("--save stores the refined mesh in a project: give --project");
+    if (!o.save && o.out.empty()) throwUsage("--out is required (or --save with --project)");
     if (!o.out.empty()) (void)meshFormatFromPath(o.out); // fail on a bad extension before the work
     const RefineFace model = loadFace(o);
     // A project's own thresholds (scaled with its face) unless the command line gives others.

@@ -99,6 +99,10 @@ WavAudio parseWav(std::string_view bytes, std::string_view source) {
             throwInputError(where + ": chunk '" + id + "'",
                             "truncated (" + std::to_string(size) + " bytes declared, " +
                                 std::to_string(bytes.size() - body) + " present)");
+        // A second 'fmt ' after 'data' would reinterpret the samples already read (found by fuzzing:
+        // a later chunk changed the channel count so the samples no longer filled whole frames).
+        if ((id == "fmt " && haveFormat) || (id == "data" && haveData))
+            throwInputError(where + ": chunk '" + id + "'", "appears twice");
         if (id == "fmt ") {
             if (size < 16) throwInputError(where + ": chunk 'fmt '", "too short");
             const auto format = getLe(bytes, body, 2);

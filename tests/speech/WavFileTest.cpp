@@ -76,5 +76,8 @@ TEST(WavFile, BadFilesNameTheFileAndChunk) {
     std::string threeChannels = good; // 10 samples are not whole frames of 3 channels
     threeChannels[22] = 3;
     expectError(threeChannels, "clip.wav: chunk 'data': 20 bytes are not whole frames of 3 channels");
+    // A second 'fmt ' after the data would reinterpret the samples already read (found by fuzzing).
+    expectError(good + good.substr(12, 24), "clip.wav: chunk 'fmt ': appears twice");
+    expectError(good + good.substr(36), "clip.wav: chunk 'data': appears twice");
     EXPECT_EQ(parseWav(good, "clip.wav").samples, tone(10));
 }
