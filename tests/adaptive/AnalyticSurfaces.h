@@ -25,7 +25,14 @@ inline MeshData gridDomain(int nx, int ny, Diagonals diagonals, double jitter = 
     for (int j = 0; j <= ny; ++j) {
         for (int i = 0; i <= nx; ++i) {
             Vec2 uv(double(i) / nx, double(j) / ny);
-            if (i > 0 && i < nx && j > 0 && j < ny) uv += Vec2(offset(rng) / nx, offset(rng) / ny);
+            if (i > 0 && i < nx && j > 0 && j < ny) {
+                // Drawn in a fixed order (v first, as GCC evaluated the former one-expression form):
+                // argument order is unspecified, and clang's order made seed 14 a grid with an inverted
+                // triangle, which makeRbmtBase rightly refuses.
+                const double dv = offset(rng);
+                const double du = offset(rng);
+                uv += Vec2(du / nx, dv / ny);
+            }
             d.uvs.push_back(uv);
             d.positions.emplace_back(uv[0], uv[1], 0.0);
         }

@@ -119,13 +119,15 @@ TEST(BranchAndBound, CancelledSearchStillReturnsAValidGrouping) {
 
 TEST(BranchAndBound, AThrowingProgressCallbackStopsTheSearchAtOnce) {
     // The editor cancels a reduction by throwing from the progress callback: the searches must stop
-    // then, not run on to their time limit (20 s here) while the editor waits for the worker. The
-    // caller's flag set while a progress callback is given stops them too.
+    // then, not run on to their time limit (120 s here) while the editor waits for the worker. The
+    // caller's flag set while a progress callback is given stops them too. The elapsed-time bounds
+    // only tell "stopped" from "ran to the limit" (half the limit: the sanitizer build on a loaded
+    // machine took 6 s where the release build takes well under 1 s).
     std::mt19937 rng(5);
     const auto inst = test::randomInstance(rng, 36, 40); // far from finishing in 20 s
     ReductionOptions options;
     options.method = ReductionMethod::BranchAndBound;
-    options.timeLimitSeconds = 20;
+    options.timeLimitSeconds = 120;
     struct Cancelled {};
     int calls = 0;
     auto start = std::chrono::steady_clock::now();
@@ -134,7 +136,7 @@ TEST(BranchAndBound, AThrowingProgressCallbackStopsTheSearchAtOnce) {
                                    if (++calls == 3) throw Cancelled{};
                                }),
                  Cancelled);
-    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 60.0);
 
     std::atomic<bool> cancelled{false};
     options.cancelled = &cancelled;
@@ -144,7 +146,7 @@ TEST(BranchAndBound, AThrowingProgressCallbackStopsTheSearchAtOnce) {
         reduceVisemes({inst.shapes, inst.frequencies, inst.weights, 12}, options, [&](double) {
             if (++calls == 3) cancelled = true;
         });
-    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 60.0);
     EXPECT_TRUE(test::isValidGrouping(result.best().groups, 36, 12));
     EXPECT_FALSE(result.best().optimal);
 }
