@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The sanitizer suite (part of scripts/test.sh): builds the `sanitize` preset into build/sanitize
-# (clang -O1, ASan + UBSan, libFuzzer instrumentation; only the tests of the modules that read files
-# and of the CLI, no editor, no benchmarks: CMakePresets.json) and runs its ctest: those tests under
+# (clang -O1, ASan + UBSan, libFuzzer instrumentation; the tests of every core module and of the CLI,
+# no editor, no benchmarks: CMakePresets.json) and runs its ctest: those tests under
 # the sanitizers, then each loader's libFuzzer target (tests/fuzz) over its committed corpus and for
 # VISEMELAB_FUZZ_SECONDS seconds (default 10) of mutations.
 # Usage: scripts/sanitize.sh [ctest arguments, e.g. -L fuzz (fuzzers only) or -R Obj]
