@@ -336,6 +336,30 @@ TEST(EditorSession, RefinementRunsInTheBackgroundAndIsUndoable) {
     EXPECT_EQ(session.document().refinement.contour.averageError, CriterionSettings{}.contour.averageError);
 }
 
+// Issue 13: the refinement worker hands over the display samples it computed for its mesh, so the
+// editor thread does not evaluate the cascade again; they equal a fresh evaluation. An edit of the
+// face (a new domain by undo) makes them stale until recomputed.
+TEST(EditorSession, RefinementHandsOverTheSamplesOfItsMesh) {
+    EditorSession session;
+    session.loadFace();
+    (void)session.faceSamples();
+    EXPECT_TRUE(session.faceSamplesReady());
+    session.startRefinement(RefineAction::Refine);
+    session.finishBackgroundWork();
+    ASSERT_TRUE(session.lastRefinement().has_value());
+    EXPECT_TRUE(session.faceSamplesReady()); // before any evaluation on this thread
+    const FaceSamples fresh = sampleFace(*session.face().cascade, session.face().domain->uvs);
+    const FaceSamples& handed = session.faceSamples();
+    ASSERT_EQ(handed.rest.size(), session.face().domain->uvs.size());
+    EXPECT_EQ(handed.rest, fresh.rest);
+    EXPECT_EQ(handed.targets, fresh.targets);
+    EXPECT_EQ(handed.colours, fresh.colours);
+    session.undo();
+    EXPECT_FALSE(session.faceSamplesReady());
+    EXPECT_EQ(session.faceSamples().rest.size(), session.face().domain->uvs.size());
+    EXPECT_TRUE(session.faceSamplesReady());
+}
+
 TEST(EditorSession, VisemesGeneratedOnARefinedMeshAreInterpolable) {
     EditorSession session;
     session.loadFace();

@@ -3,7 +3,6 @@
 #include "core/common/AtomicFile.h"
 #include "core/common/Error.h"
 #include "core/common/TextParsing.h"
-#include "core/deform/CascadeSampler.h"
 #include "core/deform/FaceDomain.h"
 #include "core/deform/Visemes.h"
 #include "core/document/AvatarDocument.h"
@@ -569,44 +568,30 @@ void EditorSession::generateVisemesFromFace() {
 }
 
 const FaceSamples& EditorSession::faceSamples() {
+    static const FaceSamples kNone;
     const FaceModel& model = face();
     if (!model.cascade) {
-        samples_ = {};
+        samples_.reset();
         samplesCascade_.reset();
-        return samples_;
+        return kNone;
     }
-    if (samplesCascade_ == model.cascade && samplesDomain_ == model.domain) return samples_;
-    const auto& uvs = model.domain->uvs;
-    const DeformationCascade& cascade = *model.cascade;
-    const std::size_t k = cascade.parameters.size();
-    // The cascade is linear in q: sample it at q = 0 and at each unit vector e_k. The core's
-    // sampler (fields sampled once, sparse sums) does it when 0 and 1 are valid values of every
-    // parameter; otherwise the per-point evaluation does.
-    const bool unitVectorsValid =
-        std::all_of(cascade.parameters.begin(), cascade.parameters.end(),
-                    [](const DeformParameter& p) { return p.min <= 0.0 && p.max >= 1.0; });
-    std::vector<double> q(k, 0.0);
-    auto evaluateAll = [&](const CascadeSampler* sampler) {
-        if (sampler) return sampler->evaluate(q);
-        std::vector<Vec3> points;
-        points.reserve(uvs.size());
-        for (const Vec2& uv : uvs) points.push_back(cascade.evaluateUnchecked(uv[0], uv[1], q));
-        return points;
-    };
-    std::optional<CascadeSampler> sampler;
-    if (unitVectorsValid) sampler.emplace(cascade, uvs);
-    FaceSamples out;
-    out.rest = evaluateAll(sampler ? &*sampler : nullptr);
-    for (std::size_t p = 0; p < k; ++p) {
-        q.assign(k, 0.0);
-        q[p] = 1.0;
-        out.targets.push_back(evaluateAll(sampler ? &*sampler : nullptr));
-    }
-    out.colours = face::faceColours(uvs);
-    samples_ = std::move(out);
-    samplesCascade_ = model.cascade;
-    samplesDomain_ = model.domain;
-    return samples_;
+    if (!faceSamplesReady())
+        adoptFaceSamples(model.cascade, model.domain,
+                         std::make_shared<const FaceSamples>(sampleFace(*model.cascade, model.domain->uvs)));
+    return *samples_;
+}
+
+bool EditorSession::faceSamplesReady() const {
+    const FaceModel& model = face();
+    return samples_ && model.cascade && samplesCascade_ == model.cascade && samplesDomain_ == model.domain;
+}
+
+void EditorSession::adoptFaceSamples(std::shared_ptr<const DeformationCascade> cascade,
+                                     std::shared_ptr<const MeshData> domain,
+                                     std::shared_ptr<const FaceSamples> samples) {
+    samplesCascade_ = std::move(cascade);
+    samplesDomain_ = std::move(domain);
+    samples_ = std::move(samples);
 }
 
 // --- refinement and reduction ----------------------------------------------------------------
@@ -653,7 +638,12 @@ void EditorSession::collectRefinement() {
         // inputs (an undo or an edit arrived meanwhile) is dropped; poll() re-adapts to the current.
         refinement_.setLast(finished.report);
         amend(edit::setFaceDomain(document(), finished.domain));
+    } else {
+        return;
     }
+    // The worker sampled the mesh it made for the view: the editor thread need not do it again.
+    if (face().cascade == finished.cascade && face().domain == finished.domain && finished.samples)
+        adoptFaceSamples(finished.cascade, finished.domain, finished.samples);
 }
 
 void EditorSession::poll() {

@@ -15,6 +15,7 @@
 #include "core/reduce/VisemeSet.h"
 #include "ui/session/BackgroundTask.h"
 #include "ui/session/CommandHistory.h"
+#include "ui/session/FaceSamples.h"
 #include "ui/session/FileJobs.h"
 #include "ui/session/ReductionService.h"
 #include "ui/session/RefinementService.h"
@@ -31,14 +32,6 @@
 #include <vector>
 
 namespace vl::ui {
-
-// A face cascade sampled on its display mesh: positions at q = 0 and at each unit vector e_k
-// (the cascade is linear in q, so the shader reproduces any q as rest + sum q_k (target_k - rest)).
-struct FaceSamples {
-    std::vector<Vec3> rest;
-    std::vector<std::vector<Vec3>> targets;
-    std::vector<Vec3> colours;
-};
 
 struct StatusMessage {
     enum class Kind { Info, Error } kind = Kind::Info;
@@ -161,6 +154,9 @@ class EditorSession {
     void generateVisemesFromFace();
     // Per-vertex samples of the current cascade on its mesh (cached per cascade and mesh).
     const FaceSamples& faceSamples();
+    // Whether faceSamples() has the current face's samples without evaluating the cascade (after a
+    // refinement: the worker's own samples).
+    bool faceSamplesReady() const;
     // Own face (Deformation > Use my mesh...): the face built from the user's mesh and confirmed
     // landmarks becomes the document's face (one undo step); the status bar says what the build found.
     void useOwnFace(const OwnFaceCandidate& candidate);
@@ -316,9 +312,13 @@ class EditorSession {
     std::filesystem::path countCorpus_;
     FileJobs files_; // open, save and export on worker threads
     // faceSamples() cache, for the cascade and mesh it holds.
+    void adoptFaceSamples(std::shared_ptr<const DeformationCascade> cascade,
+                          std::shared_ptr<const MeshData> domain, std::shared_ptr<const FaceSamples> samples);
+    // The display samples of (samplesCascade_, samplesDomain_): from the refinement worker when it
+    // made that mesh, else computed on first use.
     std::shared_ptr<const DeformationCascade> samplesCascade_;
     std::shared_ptr<const MeshData> samplesDomain_;
-    FaceSamples samples_;
+    std::shared_ptr<const FaceSamples> samples_;
     // visemeSetMadeByFace() cache: the answer for the set and cascade it holds.
     struct MadeByFace {
         std::shared_ptr<const VisemeSet> set;

@@ -99,6 +99,8 @@ void RefinementService::start(const Document& document, RefineAction action, boo
         outcome.report.vertices = result.positions.size();
         if (action == RefineAction::AllVisemes) outcome.report.maxLevel = -1;
         outcome.domain = std::make_shared<const MeshData>(std::move(result));
+        outcome.cascade = cascade;
+        outcome.samples = std::make_shared<const FaceSamples>(sampleFace(*cascade, outcome.domain->uvs));
         outcome.report.milliseconds =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         return outcome;

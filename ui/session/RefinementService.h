@@ -5,6 +5,7 @@
 #include "core/adaptive/AdaptiveMesh.h"
 #include "core/document/Document.h"
 #include "ui/session/BackgroundTask.h"
+#include "ui/session/FaceSamples.h"
 
 #include <memory>
 #include <optional>
@@ -51,7 +52,9 @@ class RefinementService {
     void wait() { task_.wait(); }
 
     struct Finished {
-        std::shared_ptr<const MeshData> domain; // the refined (u,v) mesh
+        std::shared_ptr<const MeshData> domain;            // the refined (u,v) mesh
+        std::shared_ptr<const DeformationCascade> cascade; // the cascade it was refined for
+        std::shared_ptr<const FaceSamples> samples;        // that cascade sampled on `domain` (GPU)
         RefinementReport report;
         bool automatic = false;
     };
