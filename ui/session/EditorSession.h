@@ -295,6 +295,8 @@ class EditorSession {
                                                           ExportFormat format,
                                                           const std::filesystem::path& out);
     void collectRefinement();
+    void adoptFaceSamples(std::shared_ptr<const DeformationCascade> cascade,
+                          std::shared_ptr<const MeshData> domain, std::shared_ptr<const FaceSamples> samples);
 
     // Keeps the current document alive until the next beginFrame() (call before replacing it).
     void retireCurrent();
@@ -311,11 +313,8 @@ class EditorSession {
     BackgroundTask<PhonemeCountResult> countTask_;
     std::filesystem::path countCorpus_;
     FileJobs files_; // open, save and export on worker threads
-    // faceSamples() cache, for the cascade and mesh it holds.
-    void adoptFaceSamples(std::shared_ptr<const DeformationCascade> cascade,
-                          std::shared_ptr<const MeshData> domain, std::shared_ptr<const FaceSamples> samples);
-    // The display samples of (samplesCascade_, samplesDomain_): from the refinement worker when it
-    // made that mesh, else computed on first use.
+    // faceSamples() cache: the display samples of (samplesCascade_, samplesDomain_), from the
+    // refinement worker when it made that mesh, else computed on first use.
     std::shared_ptr<const DeformationCascade> samplesCascade_;
     std::shared_ptr<const MeshData> samplesDomain_;
     std::shared_ptr<const FaceSamples> samples_;
