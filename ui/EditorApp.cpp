@@ -15,10 +15,12 @@
 #include <stb_image_write.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <functional>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace vl::ui {
@@ -143,6 +145,13 @@ void scriptedDrag(const EditorOptions& options, int frame) {
     io.MouseDown[0] = frame >= 1 && frame <= last;
 }
 
+constexpr double kMaxFramesPerSecond = 60.0;
+
+void waitForFrameSlot(double frameStart) {
+    const double left = frameStart + 1.0 / kMaxFramesPerSecond - glfwGetTime();
+    if (left > 0.0) std::this_thread::sleep_for(std::chrono::duration<double>(left));
+}
+
 } // namespace
 
 void saveBackBufferPng(const std::filesystem::path& file, int width, int height, int bitsPerChannel) {
@@ -208,6 +217,7 @@ int runEditor(const EditorOptions& options) {
                 session.error(std::string("Start options: ") + e.what());
             });
             for (int frame = 0; !glfwWindowShouldClose(window) || !ui.quitConfirmed(); ++frame) {
+                const double frameStart = glfwGetTime();
                 glfwPollEvents();
                 if (screenshotMode) session.finishBackgroundWork(); // deterministic pictures
                 ImGui_ImplOpenGL3_NewFrame();
@@ -230,6 +240,9 @@ int runEditor(const EditorOptions& options) {
                 }
                 glfwSwapBuffers(window);
                 if (ui.quitConfirmed()) break;
+                // At most kMaxFramesPerSecond where swaps do not wait for the display (Xvfb, some
+                // drivers): a spinning loop would take every core from the background work.
+                if (!screenshotMode) waitForFrameSlot(frameStart);
             }
         } catch (const InputError& e) {
             std::fprintf(stderr, "visemelab-editor: error: %s\n", e.what());

@@ -1,6 +1,7 @@
 #include "ui/render/GpuMesh.h"
 
 #include "ui/render/GlShader.h"
+#include "ui/render/SceneSignature.h"
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -38,6 +39,7 @@ void GpuMesh::release() {
         targetTexture_ = 0;
     triangleCount_ = 0;
     targetCount_ = 0;
+    revision_ = nextUploadRevision();
 }
 
 void GpuMesh::setGeometry(std::span<const Vec3> rest, std::span<const Triangle> triangles,
@@ -119,6 +121,7 @@ void GpuMesh::setGeometry(std::span<const Vec3> rest, std::span<const Triangle> 
 
     triangleCount_ = triangles.size();
     targetCount_ = static_cast<int>(targets.size());
+    revision_ = nextUploadRevision();
 }
 
 void GpuMesh::setScalars(std::span<const float> values) {
@@ -129,6 +132,7 @@ void GpuMesh::setScalars(std::span<const float> values) {
     glBindBuffer(GL_ARRAY_BUFFER, scalarBuffer_);
     glBufferSubData(GL_ARRAY_BUFFER, 0, byteSize(n, sizeof(float)), data.data());
     glBindBuffer(GL_ARRAY_BUFFER, 0);
+    revision_ = nextUploadRevision();
 }
 
 void GpuMesh::setColors(std::span<const Vec3> colors) {
@@ -140,6 +144,7 @@ void GpuMesh::setColors(std::span<const Vec3> colors) {
     glBindBuffer(GL_ARRAY_BUFFER, colorBuffer_);
     glBufferSubData(GL_ARRAY_BUFFER, 0, byteSize(data.size(), sizeof(float)), data.data());
     glBindBuffer(GL_ARRAY_BUFFER, 0);
+    revision_ = nextUploadRevision();
 }
 
 void GpuMesh::draw(const GlShader& shader, std::span<const float> weights, const glm::mat4& modelView,
@@ -149,6 +154,23 @@ void GpuMesh::draw(const GlShader& shader, std::span<const float> weights, const
     std::copy_n(weights.begin(),
                 std::min<std::size_t>(weights.size(), static_cast<std::size_t>(targetCount_)),
                 uniformWeights);
+    if (SceneSignature* signature = SceneSignature::recording()) {
+        // Everything this draw depends on; the GL state it sets is its own (see below).
+        signature->addValue(this);
+        signature->addValue(revision_);
+        signature->add(uniformWeights, sizeof(float) * static_cast<std::size_t>(targetCount_));
+        signature->addValue(modelView);
+        signature->addValue(projection);
+        signature->addValue(style.wireframe);
+        signature->addValue(style.color);
+        signature->addValue(style.surfaceColor);
+        signature->addValue(style.wireColor);
+        signature->addValue(style.ghost);
+        signature->addValue(style.ghostColor);
+        const GLuint program = shader.id();
+        signature->addValue(program);
+        return;
+    }
 
     glUseProgram(shader.id());
     glUniformMatrix4fv(shader.uniform("uModelView"), 1, GL_FALSE, glm::value_ptr(modelView));

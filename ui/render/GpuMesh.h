@@ -7,6 +7,7 @@
 #include <epoxy/gl.h>
 #include <glm/glm.hpp>
 
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -67,7 +68,8 @@ class GpuMesh {
     int targetCount_ = 0;
     std::vector<Vec3> rest_;
     std::vector<Triangle> triangles_;
-    std::vector<float> deltas_; // CPU copy of the position deltas, targetCount x vertexCount x 3
+    std::vector<float> deltas_;  // CPU copy of the position deltas, targetCount x vertexCount x 3
+    std::uint64_t revision_ = 0; // changes with every upload (see SceneSignature)
 };
 
 } // namespace vl::ui

@@ -1,4 +1,5 @@
 #include "ui/render/Viewport.h"
+#include "ui/render/SceneSignature.h"
 #include "ui/widgets/GuiProbe.h"
 
 #define GLFW_INCLUDE_NONE
@@ -26,6 +27,7 @@ void Viewport::release() {
     if (resolveTexture_) glDeleteTextures(1, &resolveTexture_);
     msaaFbo_ = resolveFbo_ = msaaColor_ = msaaDepth_ = resolveTexture_ = 0;
     width_ = height_ = 0;
+    shownSignature_.reset();
 }
 
 void Viewport::resize(int width, int height) {
@@ -57,6 +59,24 @@ void Viewport::resize(int width, int height) {
     glBindTexture(GL_TEXTURE_2D, 0);
 }
 
+void Viewport::render(const SceneFn& scene, const glm::mat4& view, const glm::mat4& projection) {
+    GLint previousViewport[4];
+    glGetIntegerv(GL_VIEWPORT, previousViewport);
+    glBindFramebuffer(GL_FRAMEBUFFER, msaaFbo_);
+    glViewport(0, 0, width_, height_);
+    glClearColor(background.r, background.g, background.b, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+    glEnable(GL_MULTISAMPLE);
+    scene(view, projection);
+    glDisable(GL_DEPTH_TEST);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, msaaFbo_);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolveFbo_);
+    glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(previousViewport[0], previousViewport[1], previousViewport[2], previousViewport[3]);
+}
+
 ViewportEvents Viewport::show(const char* id, ImVec2 size, const SceneFn& scene, bool leftDragOrbits) {
     ViewportEvents events;
     const int width = std::max(16, static_cast<int>(size.x));
@@ -64,21 +84,19 @@ ViewportEvents Viewport::show(const char* id, ImVec2 size, const SceneFn& scene,
     resize(width, height);
     events.aspect = static_cast<float>(width) / static_cast<float>(height);
 
-    GLint previousViewport[4];
-    glGetIntegerv(GL_VIEWPORT, previousViewport);
-    glBindFramebuffer(GL_FRAMEBUFFER, msaaFbo_);
-    glViewport(0, 0, width, height);
-    glClearColor(background.r, background.g, background.b, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    glEnable(GL_DEPTH_TEST);
-    glEnable(GL_MULTISAMPLE);
-    scene(camera.view(), camera.projection(events.aspect));
-    glDisable(GL_DEPTH_TEST);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, msaaFbo_);
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolveFbo_);
-    glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glViewport(previousViewport[0], previousViewport[1], previousViewport[2], previousViewport[3]);
+    // The scene is drawn again only when what it shows changed (a moved camera, an edit, a new
+    // weight ...): its draws recorded first as a signature, compared with the one on screen.
+    const glm::mat4 view = camera.view(), projection = camera.projection(events.aspect);
+    SceneSignature signature;
+    {
+        const SceneSignature::Recording recording(signature);
+        scene(view, projection);
+    }
+    signature.addValue(background);
+    if (!shownSignature_ || *shownSignature_ != signature.value()) {
+        render(scene, view, projection);
+        shownSignature_ = signature.value();
+    }
 
     ImGui::PushID(id);
     const ImTextureID texture = reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(resolveTexture_));

@@ -1,14 +1,17 @@
 #pragma once
-// A 3D view inside an ImGui window: renders a scene into its own multisampled framebuffer, shows
-// it as an image and turns mouse/keyboard input over it into camera moves (left drag orbits,
-// right or middle drag pans, wheel zooms, arrow keys orbit, +/- zoom).
+// A 3D view inside an ImGui window: renders a scene into its own multisampled framebuffer (again
+// only when what it shows changed: SceneSignature), shows it as an image and turns mouse/keyboard input over
+// it into camera moves (left drag orbits, right or middle drag pans, wheel zooms, arrow keys orbit, +/-
+// zoom).
 #include "ui/render/Camera.h"
 
 #include <epoxy/gl.h>
 #include <glm/glm.hpp>
 #include <imgui.h>
 
+#include <cstdint>
 #include <functional>
+#include <optional>
 
 namespace vl::ui {
 
@@ -47,10 +50,12 @@ class Viewport {
   private:
     void resize(int width, int height);
     void release();
+    void render(const SceneFn& scene, const glm::mat4& view, const glm::mat4& projection);
 
     int width_ = 0, height_ = 0;
     GLuint msaaFbo_ = 0, msaaColor_ = 0, msaaDepth_ = 0;
     GLuint resolveFbo_ = 0, resolveTexture_ = 0;
+    std::optional<std::uint64_t> shownSignature_; // of the scene in resolveTexture_
     bool leftDragActive_ = false, otherDragActive_ = false;
     ImVec2 excludedMin_{0, 0}, excludedMax_{0, 0};
 };
