@@ -35,7 +35,7 @@ void refuseOverwrite(const std::string& output, const std::string& input, const 
         throwUsage(std::string(option) + " " + output + " is the input file; choose another path");
 }
 
-struct ReduceOptions {
+struct AvatarReduceOptions {
     std::string input;
     std::string out;
     int target = 0;
@@ -50,14 +50,14 @@ struct ReduceOptions {
     bool gltfpack = false;
 };
 
-double millisecondsSince(std::chrono::steady_clock::time_point start) {
+double avatarMillisecondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
 // Frequencies: a given table (with --map: phonemes), or the bundled American English phoneme table
 // with the given map; without either, the core's default (the bundled table and Oculus map when the
 // avatar's visemes are Oculus visemes, else equal). Says what it chose.
-FrequencySource avatarFrequencies(const ReduceOptions& o, const AvatarScan& scan, std::string& chosen) {
+FrequencySource avatarFrequencies(const AvatarReduceOptions& o, const AvatarScan& scan, std::string& chosen) {
     const std::filesystem::path assets = VISEMELAB_ASSETS_DIR;
     if (o.freqFile.empty() && o.mapFile.empty())
         return defaultAvatarFrequencies(scan, bundledPhonemeFrequencies(assets, "oculus"), &chosen);
@@ -83,7 +83,7 @@ FrequencySource avatarFrequencies(const ReduceOptions& o, const AvatarScan& scan
     return source;
 }
 
-int runReduce(const ReduceOptions& o) {
+int runAvatarReduce(const AvatarReduceOptions& o) {
     refuseOverwrite(o.out, o.input, "--out");
     if (!o.report.empty()) {
         refuseOverwrite(o.report, o.input, "--report");
@@ -109,13 +109,13 @@ int runReduce(const ReduceOptions& o) {
     std::string chosen;
     const FrequencySource frequencies = avatarFrequencies(o, scan, chosen);
     ReduceTimings timings;
-    timings.loadMs = millisecondsSince(t0);
+    timings.loadMs = avatarMillisecondsSince(t0);
 
     const auto t1 = std::chrono::steady_clock::now();
     ProgressLine progress("reducing");
     AvatarReduction r = reduceAvatar(doc, scan, frequencies, settings, write, progress.callback());
     progress.finish();
-    timings.reduceMs = millisecondsSince(t1);
+    timings.reduceMs = avatarMillisecondsSince(t1);
     const auto t2 = std::chrono::steady_clock::now();
     if (o.gltfpack) {
         Recompressed packed = recompressWithGltfpack(r.glb, findGltfpack(), {o.targets});
@@ -130,7 +130,7 @@ int runReduce(const ReduceOptions& o) {
                 : "--gltfpack re-compresses the output (with " + gltfpack.string() + ")");
     }
     writeFileAtomically(o.out, r.glb);
-    timings.writeMs = millisecondsSince(t2);
+    timings.writeMs = avatarMillisecondsSince(t2);
     if (!o.report.empty())
         writeFileAtomically(o.report,
                             avatarReductionReport(r, scan, settings, write, timings, o.input, o.out));
@@ -178,7 +178,7 @@ void addAvatarCommand(CLI::App& app, CommandRunner& run) {
     cmd->add_option("--json", inspect->json, "Also write the report as JSON to this file");
     cmd->callback([&run, inspect] { run = [inspect] { return runInspect(*inspect); }; });
 
-    auto reduce = std::make_shared<ReduceOptions>();
+    auto reduce = std::make_shared<AvatarReduceOptions>();
     auto* r = avatar->add_subcommand("reduce",
                                      "Reduce an avatar's visemes to m keys and write the same avatar back");
     r->add_option("input", reduce->input, "Avatar file (.glb, .gltf, .vrm)")->required();
@@ -209,7 +209,7 @@ void addAvatarCommand(CLI::App& app, CommandRunner& run) {
         "Re-compress the output with gltfpack (EXT_meshopt_compression; $VISEMELAB_GLTFPACK or on PATH)");
     r->add_option("--max-targets", reduce->maxTargets,
                   "Refuse when a primitive would have more morph targets (engines that cap them)");
-    r->callback([&run, reduce] { run = [reduce] { return runReduce(*reduce); }; });
+    r->callback([&run, reduce] { run = [reduce] { return runAvatarReduce(*reduce); }; });
 }
 
 } // namespace vl::cli

@@ -64,7 +64,7 @@ std::vector<double> gridLines(const std::vector<double>& breaks, int resolution,
     return lines;
 }
 
-double bump(double x, double centre, double width) {
+double domainBump(double x, double centre, double width) {
     return std::exp(-((x - centre) / width) * ((x - centre) / width));
 }
 
@@ -87,13 +87,13 @@ MeshData faceDomainMesh(int resolution, DomainDensity density) {
     // Relative line density: high at the mouth and eyes, low on the sides of the head and the top
     // of the forehead.
     const Density du = [focused](double u) {
-        return focused ? 0.5 + 0.5 * bump(u, kMouthU, 0.3) + 1.0 * bump(u, kMouthU, 0.2) +
-                             1.4 * bump(std::abs(u - kMouthU), 0.135, 0.05)
+        return focused ? 0.5 + 0.5 * domainBump(u, kMouthU, 0.3) + 1.0 * domainBump(u, kMouthU, 0.2) +
+                             1.4 * domainBump(std::abs(u - kMouthU), 0.135, 0.05)
                        : 1.0;
     };
     const Density dv = [focused](double v) {
-        return focused ? 0.6 + 0.4 * bump(v, 0.45, 0.3) + 2.5 * bump(v, kMouthV, 0.09) +
-                             2.0 * bump(v, 0.585, 0.05)
+        return focused ? 0.6 + 0.4 * domainBump(v, 0.45, 0.3) + 2.5 * domainBump(v, kMouthV, 0.09) +
+                             2.0 * domainBump(v, 0.585, 0.05)
                        : 1.0;
     };
     const auto us =

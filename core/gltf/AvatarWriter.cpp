@@ -67,12 +67,12 @@ int attribute(const std::map<std::string, int>& attributes, const char* name) {
 
 // Groups of the reduction and each viseme's weight inside its group's mean (eq. 19 of the paper: the
 // frequency-weighted mean; a group of zero total frequency takes the plain mean, as mergeGroup does).
-struct Grouping {
+struct KeyGrouping {
     std::vector<int> groupOf;
     std::vector<double> weightInGroup;
     std::vector<std::size_t> size;
 
-    Grouping(const std::vector<int>& groups, const std::vector<double>& frequencies, std::size_t keys)
+    KeyGrouping(const std::vector<int>& groups, const std::vector<double>& frequencies, std::size_t keys)
         : groupOf(groups), weightInGroup(groups.size()), size(keys, 0) {
         std::vector<double> total(keys, 0.0);
         for (std::size_t i = 0; i < groups.size(); ++i) {
@@ -94,7 +94,7 @@ struct MeshPlan {
     std::vector<int> keyTarget;                    // per key: its (first) target after writing, or -1
 };
 
-MeshPlan planMesh(const AvatarMesh& mesh, const Grouping& grouping, const ReducedModel& model,
+MeshPlan planMesh(const AvatarMesh& mesh, const KeyGrouping& grouping, const ReducedModel& model,
                   AvatarNames names) {
     MeshPlan plan;
     plan.members.resize(model.keys.size());
@@ -124,7 +124,7 @@ MeshPlan planMesh(const AvatarMesh& mesh, const Grouping& grouping, const Reduce
 // The morph target of key `key` on one primitive.
 Json keyTarget(GlbRepack& out, AccessorReader& reader, const Json& originalTargets,
                const tinygltf::Primitive& prim, const AvatarMesh& mesh,
-               const std::vector<std::size_t>& members, const Grouping& grouping, std::size_t key,
+               const std::vector<std::size_t>& members, const KeyGrouping& grouping, std::size_t key,
                std::size_t vertices, bool targetNormals, const std::string& where) {
     if (grouping.size[key] == 1) { // one member: its own accessors, unchanged
         Json target = originalTargets[members.front()];
@@ -240,7 +240,7 @@ std::string write(const GltfDocument& doc, const AvatarScan& scan, const Reduced
                   const AvatarWriteOptions& options, AvatarWriteSummary* summary) {
     if (groupOf.size() != scan.visemes.size() || frequencies.size() != scan.visemes.size())
         throwInputError("avatar writer", "the grouping does not match the avatar's visemes");
-    const Grouping grouping(groupOf, frequencies, model.keys.size());
+    const KeyGrouping grouping(groupOf, frequencies, model.keys.size());
     GlbRepack out(doc);
     BufferViews views(doc);
     AccessorReader reader(doc, views);

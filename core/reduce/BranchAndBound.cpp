@@ -18,8 +18,8 @@ namespace vl {
 
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr int kMaxUnits = 64;
+constexpr double kNoBound = std::numeric_limits<double>::infinity();
+constexpr int kMaxSearchUnits = 64;
 // Subtrees this close to the root of a suffix problem run as parallel tasks, when the suffix is at
 // least kParallelMinUnits long (smaller problems finish faster than tasks start).
 constexpr int kParallelDepth = 3;
@@ -49,9 +49,9 @@ class Incumbent {
 struct State {
     int k = 0;
     double partial = 0; // sum of the groups' costs
-    std::array<GroupSums, kMaxUnits> sums{};
-    std::array<UnitMask, kMaxUnits> masks{};
-    std::array<std::int8_t, kMaxUnits> labels{};
+    std::array<GroupSums, kMaxSearchUnits> sums{};
+    std::array<UnitMask, kMaxSearchUnits> masks{};
+    std::array<std::int8_t, kMaxSearchUnits> labels{};
 };
 
 // No default member initialisers: a node's child list stays uninitialised until filled (zeroing a
@@ -85,7 +85,7 @@ class SuffixSearch {
         return stopped_.load(std::memory_order_relaxed);
     }
 
-    int children(const State& s, int t, std::array<Child, kMaxUnits + 1>& out) const {
+    int children(const State& s, int t, std::array<Child, kMaxSearchUnits + 1>& out) const {
         const int u = order_[static_cast<std::size_t>(t)];
         const int remaining = n_ - t - 1; // units left after this one
         const double rest = suffixBound_[static_cast<std::size_t>(t + 1)];
@@ -160,17 +160,17 @@ class SuffixSearch {
                 State copy = s;
                 if (completeFeasibly(copy, t)) leaf(copy);
             }
-            return kInf;
+            return kNoBound;
         }
         if (expired()) return s.partial + suffixBound_[static_cast<std::size_t>(t)];
-        std::array<Child, kMaxUnits + 1> list;
+        std::array<Child, kMaxSearchUnits + 1> list;
         const int count = children(s, t, list);
         const int u = order_[static_cast<std::size_t>(t)];
         if (t - first_ < kParallelDepth && n_ - first_ >= kParallelMinUnits && count > 1) {
-            std::array<double, kMaxUnits + 1> unexplored;
+            std::array<double, kMaxSearchUnits + 1> unexplored;
             tbb::parallel_for(0, count, [&](int i) {
                 const Child& c = list[static_cast<std::size_t>(i)];
-                unexplored[static_cast<std::size_t>(i)] = kInf;
+                unexplored[static_cast<std::size_t>(i)] = kNoBound;
                 if (c.bound >= incumbent_.cost() - tolerance_) return;
                 if (stopped_.load(std::memory_order_relaxed)) {
                     unexplored[static_cast<std::size_t>(i)] = c.bound;
@@ -182,7 +182,7 @@ class SuffixSearch {
             });
             return *std::min_element(unexplored.begin(), unexplored.begin() + count);
         }
-        double unexplored = kInf;
+        double unexplored = kNoBound;
         for (int i = 0; i < count; ++i) {
             const Child& c = list[static_cast<std::size_t>(i)];
             if (c.bound >= incumbent_.cost() - tolerance_) break; // sorted: the rest is pruned too
@@ -282,7 +282,7 @@ UnitPartition branchAndBound(const GroupCostModel& model, int p, std::span<const
         const int groups = std::min(p, size);
         const int u = order[static_cast<std::size_t>(first)];
         // Starting bound: the previous suffix's best placement with unit u added where it costs least.
-        double startCost = kInf;
+        double startCost = kNoBound;
         std::vector<std::int8_t> startLabels;
         if (groups == size) { // every unit alone
             startCost = 0;
@@ -318,7 +318,7 @@ UnitPartition branchAndBound(const GroupCostModel& model, int p, std::span<const
             }
         }
         Incumbent incumbent(startCost);
-        double unexplored = kInf;
+        double unexplored = kNoBound;
         if (groups < size) {
             SuffixSearch search(model, order, suffixBound, first, groups, zeroFrom, limits, incumbent);
             unexplored = search.run();
@@ -327,17 +327,17 @@ UnitPartition branchAndBound(const GroupCostModel& model, int p, std::span<const
         const double best = incumbent.cost();
         suffixBound[static_cast<std::size_t>(first)] = std::min(best, unexplored);
         if (done) done->store(static_cast<double>(size) / n, std::memory_order_relaxed);
-        if (unexplored < kInf || first == 0) {
+        if (unexplored < kNoBound || first == 0) {
             // Stopped (or finished): report the whole problem. A stopped search proved a bound for
             // the suffix only; the units before it add the optima of small blocks of them (blockBound),
             // or, when larger, all units in blocks.
             result.lowerBound = std::max(0.0, std::min(best, unexplored));
-            if (first > 0 && unexplored < kInf)
+            if (first > 0 && unexplored < kNoBound)
                 result.lowerBound = std::max(
                     result.lowerBound +
                         blockBound(model, std::span(order.data(), static_cast<std::size_t>(first)), p),
                     blockBound(model, order, p));
-            result.optimal = unexplored == kInf && first == 0;
+            result.optimal = unexplored == kNoBound && first == 0;
             if (first == 0 && !labels.empty()) {
                 result.groups.assign(static_cast<std::size_t>(p), 0);
                 for (int t = 0; t < n; ++t)
@@ -357,8 +357,8 @@ UnitPartition branchAndBound(const GroupCostModel& model, int p, std::span<const
         if (result.optimal) result.lowerBound = result.cost;
         result.lowerBound = std::min(result.lowerBound, result.cost);
     } else {
-        result.cost = kInf;
-        if (result.optimal) result.lowerBound = kInf; // proven: no partition into p groups exists
+        result.cost = kNoBound;
+        if (result.optimal) result.lowerBound = kNoBound; // proven: no partition into p groups exists
     }
     return result;
 }

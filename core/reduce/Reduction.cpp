@@ -24,7 +24,7 @@ namespace vl {
 
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kInfiniteCost = std::numeric_limits<double>::infinity();
 // Auto picks the DP up to this many units: there its run time is small and predictable, above it the
 // 3^n growth loses to branch and bound on anything but structureless data.
 constexpr int kAutoDpUnits = 16;
@@ -131,7 +131,7 @@ UnitCurve solveByBranchAndBound(const GroupCostModel& model, const ConstraintUni
     for (int p = m - 1; p >= 1; --p) {
         auto& entry = curve[static_cast<std::size_t>(p - 1)];
         const auto& next = curve[static_cast<std::size_t>(p)];
-        if (!entry.optimal && next.lowerBound < kInf)
+        if (!entry.optimal && next.lowerBound < kInfiniteCost)
             entry.lowerBound = std::min(entry.cost, std::max(entry.lowerBound, next.lowerBound));
     }
     return curve;
@@ -165,7 +165,7 @@ ReductionMethod reductionMethodFromString(std::string_view text, std::string_vie
 
 double Grouping::gap() const {
     if (optimal) return 0.0;
-    if (!(cost < kInf) || cost <= 0) return cost <= 0 ? 0.0 : 1.0;
+    if (!(cost < kInfiniteCost) || cost <= 0) return cost <= 0 ? 0.0 : 1.0;
     return std::clamp((cost - lowerBound) / cost, 0.0, 1.0);
 }
 
@@ -234,7 +234,7 @@ ReductionResult reduceVisemes(const ReductionProblem& problem, const ReductionOp
     }
     for (const auto& entry : curve) result.curve.push_back(toGrouping(entry, units));
     // More groups than units: nothing can be split further (the target check above excludes m).
-    result.curve.resize(static_cast<std::size_t>(m), Grouping{kInf, kInf, true, {}});
+    result.curve.resize(static_cast<std::size_t>(m), Grouping{kInfiniteCost, kInfiniteCost, true, {}});
     if (!result.best().feasible()) throwInfeasibleTarget(units, m, "reduction constraints");
     if (progress) progress(1.0);
     return result;

@@ -10,7 +10,7 @@ namespace vl {
 
 namespace {
 
-constexpr int kMaxUnits = 64;
+constexpr int kMaxConstraintUnits = 64;
 
 std::string describe(std::span<const std::string> names, int i) {
     if (i >= 0 && static_cast<std::size_t>(i) < names.size())
@@ -189,9 +189,9 @@ ConstraintUnits constraintUnits(const ReductionConstraints& constraints, int n,
         units.members[static_cast<std::size_t>(unit)].push_back(i);
     }
     const int count = static_cast<int>(units.members.size());
-    if (count > kMaxUnits)
+    if (count > kMaxConstraintUnits)
         throwInputError(where, std::to_string(count) + " visemes (after 'together' constraints): at most " +
-                                   std::to_string(kMaxUnits) + " are supported");
+                                   std::to_string(kMaxConstraintUnits) + " are supported");
 
     auto partnerOf = [&](int i) {
         for (const int j : units.members[static_cast<std::size_t>(units.unitOf[static_cast<std::size_t>(i)])])

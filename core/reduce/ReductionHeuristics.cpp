@@ -11,7 +11,7 @@ namespace vl {
 
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kNoCost = std::numeric_limits<double>::infinity();
 
 GroupSums sumsOf(const GroupCostModel& model, UnitMask group) {
     GroupSums sums;
@@ -63,7 +63,7 @@ void wardHierarchy(const GroupCostModel& model, int m, std::vector<std::vector<U
     };
     record(n);
     for (int groups = n; groups > 1; --groups) {
-        double bestDelta = kInf;
+        double bestDelta = kNoCost;
         int bi = -1, bj = -1;
         for (int i = 0; i < n; ++i) {
             if (!alive[static_cast<std::size_t>(i)]) continue;
@@ -105,7 +105,7 @@ std::vector<UnitMask> seededPartition(const GroupCostModel& model, int p, std::m
                                  2 * model.h(a, b) / (fa * fb));
     };
     std::vector<int> seeds;
-    std::vector<double> nearest(static_cast<std::size_t>(n), kInf);
+    std::vector<double> nearest(static_cast<std::size_t>(n), kNoCost);
     std::uniform_real_distribution<double> uniform(0.0, 1.0);
     UnitMask seeded = 0;
     for (int s = 0; s < p; ++s) {
@@ -141,7 +141,7 @@ std::vector<UnitMask> seededPartition(const GroupCostModel& model, int p, std::m
     for (int a = 0; a < n; ++a) {
         if (seeded >> a & 1) continue;
         int bestGroup = -1;
-        double bestDistance = kInf;
+        double bestDistance = kNoCost;
         for (int g = 0; g < p; ++g) {
             if (model.conflicts[static_cast<std::size_t>(a)] & groups[static_cast<std::size_t>(g)]) continue;
             const double d = distance(a, seeds[static_cast<std::size_t>(g)]);
@@ -255,7 +255,7 @@ std::vector<std::vector<UnitMask>> heuristicPartitions(const GroupCostModel& mod
     const int n = model.size();
     m = std::min(m, n);
     std::vector<std::vector<UnitMask>> best(static_cast<std::size_t>(m));
-    std::vector<double> bestCost(static_cast<std::size_t>(m), kInf);
+    std::vector<double> bestCost(static_cast<std::size_t>(m), kNoCost);
     wardHierarchy(model, m, best, bestCost);
     tbb::parallel_for(1, m + 1, [&](int p) {
         auto& slot = best[static_cast<std::size_t>(p - 1)];

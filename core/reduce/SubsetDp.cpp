@@ -22,7 +22,7 @@ namespace vl {
 
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kUnreached = std::numeric_limits<double>::infinity();
 
 std::vector<double> allGroupCosts(const GroupCostModel& model) {
     const int n = model.size();
@@ -49,7 +49,7 @@ std::vector<double> allGroupCosts(const GroupCostModel& model) {
                 Q[s] = Q[rest] + 2 * cross + row[j];
                 const bool conflict = std::isinf(cost[rest]) || (rest & conflictsJ) != 0;
                 // Rounding may push D - Q/F slightly below 0.
-                cost[s] = conflict ? kInf : (F > 0 ? std::max(0.0, D - Q[s] / F) : 0.0);
+                cost[s] = conflict ? kUnreached : (F > 0 ? std::max(0.0, D - Q[s] / F) : 0.0);
             }
         });
     }
@@ -57,7 +57,7 @@ std::vector<double> allGroupCosts(const GroupCostModel& model) {
 }
 
 struct Split {
-    double cost = kInf;
+    double cost = kUnreached;
     std::uint32_t rest = 0; // the remainder R = T \ V handed to the layer below
 };
 
@@ -121,13 +121,13 @@ UnitCurve solveSubsetDp(const GroupCostModel& model, int m, const std::function<
     // layer below is kept, plus the remainder chosen at every state of every layer (for the groups).
     std::vector<double> below(states), current(states);
     std::vector<std::vector<std::uint32_t>> rest(static_cast<std::size_t>(std::max(m - 1, 1)));
-    for (std::size_t t = 0; t < states; ++t) below[t] = t ? cost[t << 1] : kInf;
+    for (std::size_t t = 0; t < states; ++t) below[t] = t ? cost[t << 1] : kUnreached;
 
     UnitCurve curve(static_cast<std::size_t>(m));
     auto finish = [&](int p, const Split& split) {
         UnitPartition& entry = curve[static_cast<std::size_t>(p - 1)];
         entry.optimal = true;
-        if (!(split.cost < kInf)) return; // no partition into p groups respects the conflicts
+        if (!(split.cost < kUnreached)) return; // no partition into p groups respects the conflicts
         entry.groups.push_back(full ^ split.rest);
         std::uint32_t T = split.rest;
         for (int q = p - 1; q >= 1; --q) {
@@ -150,7 +150,7 @@ UnitCurve solveSubsetDp(const GroupCostModel& model, int m, const std::function<
             for (std::size_t t = range.begin(); t != range.end(); ++t) {
                 const auto T = static_cast<std::uint32_t>(t << 1);
                 if (std::popcount(T) < q) {
-                    current[t] = kInf;
+                    current[t] = kUnreached;
                     continue;
                 }
                 const std::uint32_t low = T & (~T + 1);
@@ -159,7 +159,7 @@ UnitCurve solveSubsetDp(const GroupCostModel& model, int m, const std::function<
                 choice[t] = split.rest;
             }
         });
-        current[0] = kInf;
+        current[0] = kUnreached;
         std::swap(below, current);
         finish(q + 1, bestSplit(full, others, q, cost, below));
         if (progress) progress(0.05 + 0.95 * q / (m - 1));

@@ -19,7 +19,7 @@ std::string quoted(const std::filesystem::path& path) {
 } // namespace
 
 TEST(FreqCli, PrintsAndWritesTheTable) {
-    test::ScratchDir dir("cli");
+    test::PhoneticsScratch dir("cli");
     const auto corpus =
         dir.write("corpus.txt", "The cat sat on the mat.\nA boy sings; the judge measures the house.\n");
     const auto csv = dir.path() / "table.csv";
@@ -34,7 +34,7 @@ TEST(FreqCli, PrintsAndWritesTheTable) {
 }
 
 TEST(FreqCli, JsonWithMapFeedsTheReducer) {
-    test::ScratchDir dir("cli-json");
+    test::PhoneticsScratch dir("cli-json");
     const auto corpus = dir.write("corpus.txt", "Four poor fire fighters came at noon.");
     const auto json = dir.path() / "table.json";
     const auto map = test::assetsDir() / "phonemes" / "map_oculus.csv";
@@ -48,7 +48,7 @@ TEST(FreqCli, JsonWithMapFeedsTheReducer) {
 }
 
 TEST(FreqCli, BadInputGetsExitCodesAndNamesTheFile) {
-    test::ScratchDir dir("cli-bad");
+    test::PhoneticsScratch dir("cli-bad");
     const auto empty = dir.write("empty.txt", "");
     auto result = test::runCli("freq " + quoted(empty));
     EXPECT_EQ(result.exitCode, 3);
@@ -77,7 +77,7 @@ TEST(FreqCli, BadInputGetsExitCodesAndNamesTheFile) {
 
 // The whole flow of the issue: bundled phoneme table + bundled map -> viseme frequencies -> reduction.
 TEST(FreqCli, ReduceTakesTheBundledTablePlusMap) {
-    test::ScratchDir dir("cli-reduce");
+    test::PhoneticsScratch dir("cli-reduce");
     const std::vector<std::string> oculus = {"sil", "PP", "FF", "TH", "DD", "kk", "CH", "SS",
                                              "nn",  "RR", "aa", "E",  "ih", "oh", "ou"};
     auto quad = [](double lift) {

@@ -13,12 +13,12 @@ using namespace vl;
 
 namespace {
 
-std::string quoted(const std::filesystem::path& path) {
+std::string quotedPath(const std::filesystem::path& path) {
     return "'" + path.string() + "'";
 }
 
 std::string sampleProject() {
-    return quoted(std::filesystem::path(VISEMELAB_ASSETS_DIR) / "sample" / "sample.vlproj");
+    return quotedPath(std::filesystem::path(VISEMELAB_ASSETS_DIR) / "sample" / "sample.vlproj");
 }
 
 class SayCli : public ::testing::Test {
@@ -40,7 +40,7 @@ TEST_F(SayCli, WritesTrackAudioAndAnimation) {
     const auto out = dir / "track.json", wav = dir / "audio.wav", glb = dir / "anim.glb";
     const auto result =
         test::runCli("say 'Hello, world. How are you?' --project " + sampleProject() + " --out " +
-                     quoted(out) + " --wav " + quoted(wav) + " --glb " + quoted(glb));
+                     quotedPath(out) + " --wav " + quotedPath(wav) + " --glb " + quotedPath(glb));
     ASSERT_EQ(result.exitCode, 0) << result.output;
     EXPECT_NE(result.output.find("utterance error (m = 10"), std::string::npos) << result.output;
     const SpeechTrackFile track = loadTrackJson(out);
@@ -66,8 +66,8 @@ TEST_F(SayCli, CorpusFileGivesTheErrorCurve) {
     const auto corpus = dir / "corpus.txt";
     writeFileAtomically(corpus, "The judge measures the house.\nFour poor fire fighters came at noon!\n");
     const auto out = dir / "track.json";
-    const auto result = test::runCli("say --text-file " + quoted(corpus) + " --project " + sampleProject() +
-                                     " --out " + quoted(out) + " --blend dominance --fps 30");
+    const auto result = test::runCli("say --text-file " + quotedPath(corpus) + " --project " + sampleProject() +
+                                     " --out " + quotedPath(out) + " --blend dominance --fps 30");
     ASSERT_EQ(result.exitCode, 0) << result.output;
     const SpeechTrackFile track = loadTrackJson(out);
     ASSERT_EQ(track.errorCurve.size(), 15u);
@@ -78,7 +78,7 @@ TEST_F(SayCli, CorpusFileGivesTheErrorCurve) {
 }
 
 TEST_F(SayCli, UsageAndDataErrorsGetTheirExitCodes) {
-    const auto out = quoted(dir / "t.json");
+    const auto out = quotedPath(dir / "t.json");
     const std::string project = " --project " + sampleProject();
     EXPECT_EQ(test::runCli("say" + project + " --out " + out).exitCode, 2);
     EXPECT_EQ(test::runCli("say hi --text-file x.txt" + project + " --out " + out).exitCode, 2);
@@ -95,12 +95,12 @@ TEST_F(SayCli, UsageAndDataErrorsGetTheirExitCodes) {
     EXPECT_EQ(test::runCli("say hi --voice de" + project + " --out " + out).exitCode, 3);
     EXPECT_EQ(test::runCli("say hi --rate 5" + project + " --out " + out).exitCode, 3);
     EXPECT_EQ(test::runCli("say ' ... ,,, '" + project + " --out " + out).exitCode, 3);
-    EXPECT_EQ(test::runCli("say hi --project " + quoted(dir / "none.vlproj") + " --out " + out).exitCode, 3);
+    EXPECT_EQ(test::runCli("say hi --project " + quotedPath(dir / "none.vlproj") + " --out " + out).exitCode, 3);
     const auto binary = dir / "blob.txt";
     writeFileAtomically(binary, std::string("\x7F"
                                             "ELF\0\0\0\0",
                                             8));
-    result = test::runCli("say --text-file " + quoted(binary) + project + " --out " + out);
+    result = test::runCli("say --text-file " + quotedPath(binary) + project + " --out " + out);
     EXPECT_EQ(result.exitCode, 3) << result.output;
     EXPECT_NE(result.output.find("blob.txt: binary file"), std::string::npos) << result.output;
     EXPECT_FALSE(std::filesystem::exists(dir / "t.json"));
@@ -111,9 +111,9 @@ TEST_F(SayCli, UsageAndDataErrorsGetTheirExitCodes) {
 TEST_F(SayCli, OnlySpeechLoadsEspeak) {
     ::setenv("LD_DEBUG", "files", 1);
     const auto exported =
-        test::runCli("export " + sampleProject() + " --format glb --out " + quoted(dir / "a.glb"));
+        test::runCli("export " + sampleProject() + " --format glb --out " + quotedPath(dir / "a.glb"));
     const auto said =
-        test::runCli("say hi --project " + sampleProject() + " --out " + quoted(dir / "t.json"));
+        test::runCli("say hi --project " + sampleProject() + " --out " + quotedPath(dir / "t.json"));
     ::unsetenv("LD_DEBUG");
     ASSERT_EQ(exported.exitCode, 0) << exported.output;
     ASSERT_EQ(said.exitCode, 0) << said.output;

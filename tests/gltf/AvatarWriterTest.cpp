@@ -18,7 +18,7 @@ namespace {
 using Json = nlohmann::ordered_json;
 using test::FixtureStorage;
 
-std::string fixture(FixtureStorage storage) {
+std::string writerFixture(FixtureStorage storage) {
     test::AvatarFixtureOptions options;
     options.storage = storage;
     return test::rpmLikeAvatar(options);
@@ -186,7 +186,7 @@ void expectKeysAreWeightedMeans(const Reduced& r, AvatarNames names) {
 }
 
 TEST(AvatarWriter, OriginalNamesKeepEveryViseme_MembersShareOneAccessor_RestByteIdentical) {
-    const Reduced r = reduce(fixture(FixtureStorage::Plain), 6, AvatarNames::Original);
+    const Reduced r = reduce(writerFixture(FixtureStorage::Plain), 6, AvatarNames::Original);
     ASSERT_EQ(r.reduction.outcome.model.keys.size(), 6u);
     EXPECT_EQ(r.scanOut.visemes, r.scanIn.visemes);
     expectUntouchedPartsIdentical(r);
@@ -215,7 +215,7 @@ TEST(AvatarWriter, OriginalNamesKeepEveryViseme_MembersShareOneAccessor_RestByte
 }
 
 TEST(AvatarWriter, MergedNamesGiveOneTargetPerKeyAndRemapWeightsAnimationsAndNames) {
-    const Reduced r = reduce(fixture(FixtureStorage::Plain), 5, AvatarNames::Merged);
+    const Reduced r = reduce(writerFixture(FixtureStorage::Plain), 5, AvatarNames::Merged);
     expectUntouchedPartsIdentical(r);
     expectKeysAreWeightedMeans(r, AvatarNames::Merged);
     const Json& head = meshJson(r.out, "Wolf3D_Head");
@@ -244,7 +244,7 @@ TEST(AvatarWriter, MergedNamesGiveOneTargetPerKeyAndRemapWeightsAnimationsAndNam
 }
 
 TEST(AvatarWriter, KeysOfOneMemberReuseTheirAccessorsUnchanged) {
-    const Reduced r = reduce(fixture(FixtureStorage::Sparse), 15, AvatarNames::Original);
+    const Reduced r = reduce(writerFixture(FixtureStorage::Sparse), 15, AvatarNames::Original);
     for (const AvatarMesh& mesh : r.scanIn.meshes) {
         if (!mesh.carriesVisemes) continue;
         const Json& a = r.in.json["meshes"][static_cast<std::size_t>(mesh.index)]["primitives"][0]["targets"];
@@ -262,20 +262,20 @@ TEST(AvatarWriter, KeysOfOneMemberReuseTheirAccessorsUnchanged) {
 }
 
 TEST(AvatarWriter, WithoutTargetNormalsTheKeysCarryOnlyPositions) {
-    const Reduced r = reduce(fixture(FixtureStorage::Plain), 4, AvatarNames::Original, false);
+    const Reduced r = reduce(writerFixture(FixtureStorage::Plain), 4, AvatarNames::Original, false);
     const Json& head = meshJson(r.out, "Wolf3D_Head")["primitives"][0]["targets"];
     for (std::size_t k = 0; k < head.size(); ++k) {
         const bool viseme = k >= 2 && k < 17;
         EXPECT_EQ(head[k].contains("NORMAL"), !viseme) << k;
         EXPECT_TRUE(head[k].contains("POSITION"));
     }
-    const Reduced withNormals = reduce(fixture(FixtureStorage::Plain), 4, AvatarNames::Original, true);
+    const Reduced withNormals = reduce(writerFixture(FixtureStorage::Plain), 4, AvatarNames::Original, true);
     EXPECT_TRUE(meshJson(withNormals.out, "Wolf3D_Head")["primitives"][0]["targets"][5].contains("NORMAL"));
     EXPECT_LT(r.reduction.glb.size(), withNormals.reduction.glb.size());
 }
 
 TEST(AvatarWriter, MaxTargetsRefusesClearly) {
-    const GltfDocument in = parseGltfDocument(fixture(FixtureStorage::Plain), "in.glb", {});
+    const GltfDocument in = parseGltfDocument(writerFixture(FixtureStorage::Plain), "in.glb", {});
     const AvatarScan scan = scanAvatar(in, {});
     ReduceSettings settings;
     settings.target = 4;
@@ -294,7 +294,7 @@ TEST(AvatarWriter, CompressedInputsKeepTheirCompressedPartsAndReadBack) {
     for (FixtureStorage storage :
          {FixtureStorage::Meshopt, FixtureStorage::Draco, FixtureStorage::Quantised}) {
         for (AvatarNames names : {AvatarNames::Original, AvatarNames::Merged}) {
-            const Reduced r = reduce(fixture(storage), 6, names);
+            const Reduced r = reduce(writerFixture(storage), 6, names);
             expectUntouchedPartsIdentical(r);
             expectKeysAreWeightedMeans(r, names);
             const auto used = r.out.model.extensionsRequired;

@@ -79,7 +79,7 @@ TEST(CorpusText, OneGiantWordIsCutOnCharacterBoundaries) {
 }
 
 TEST(CorpusText, FileIsStreamedWithProgress) {
-    test::ScratchDir dir("stream");
+    test::PhoneticsScratch dir("stream");
     std::mt19937 rng(3);
     const std::string text = randomProse(rng, 20000);
     const auto file = dir.write("corpus.txt", "\xEF\xBB\xBF" + text); // with a UTF-8 byte order mark
@@ -102,7 +102,7 @@ TEST(CorpusText, FileIsStreamedWithProgress) {
 }
 
 TEST(CorpusText, EmptyAndBlankFilesAreErrorsNamingTheFile) {
-    test::ScratchDir dir("empty");
+    test::PhoneticsScratch dir("empty");
     const auto empty = dir.write("empty.txt", "");
     const auto blank = dir.write("blank.txt", " \n\n\t \r\n");
     const auto nothing = [](std::string_view, std::uint64_t, std::uint64_t) {};
@@ -114,7 +114,7 @@ TEST(CorpusText, EmptyAndBlankFilesAreErrorsNamingTheFile) {
 }
 
 TEST(CorpusText, BinaryFilesAreErrorsNamingTheFile) {
-    test::ScratchDir dir("binary");
+    test::PhoneticsScratch dir("binary");
     const auto nothing = [](std::string_view, std::uint64_t, std::uint64_t) {};
     std::string withNul = "Some text that looks fine\n";
     withNul += '\0';
@@ -137,7 +137,7 @@ TEST(CorpusText, BinaryFilesAreErrorsNamingTheFile) {
 }
 
 TEST(CorpusText, StrayLatin1BytesAreReplacedNotFatal) {
-    test::ScratchDir dir("latin1");
+    test::PhoneticsScratch dir("latin1");
     std::string text;
     for (int i = 0; i < 200; ++i)
         text += "A caf\xE9 in the old town, and a na\xEFve reader.\n"; // Latin-1 é, ï

@@ -33,7 +33,7 @@ std::map<std::string, double> asMap(const FrequencyTable& table) {
 } // namespace
 
 TEST(PhonemeCounting, ExactCountsOnAFixedText) {
-    test::ScratchDir dir("fixed");
+    test::PhoneticsScratch dir("fixed");
     auto transcriber = makeEspeakTranscriber("en-us");
     const auto result = countPhonemesInFile(dir.write("fixed.txt", kFixedText), *transcriber);
     EXPECT_EQ(asMap(result.counts), kFixedCounts);
@@ -64,7 +64,7 @@ TEST(PhonemeCounting, StreamedCountsEqualOneShotTranscription) {
     std::map<std::string, double> reference;
     for (const auto& p : transcriber->transcribe(text)) ++reference[p];
 
-    test::ScratchDir dir("stream-count");
+    test::PhoneticsScratch dir("stream-count");
     const auto file = dir.write("corpus.txt", text);
     std::uint64_t calls = 0;
     const auto result =
@@ -76,7 +76,7 @@ TEST(PhonemeCounting, StreamedCountsEqualOneShotTranscription) {
 }
 
 TEST(PhonemeCounting, EmptyBinaryAndSpeechlessFilesAreErrors) {
-    test::ScratchDir dir("errors");
+    test::PhoneticsScratch dir("errors");
     auto transcriber = makeEspeakTranscriber();
     const auto expectError = [&](const std::filesystem::path& file, const std::string& phrase) {
         try {

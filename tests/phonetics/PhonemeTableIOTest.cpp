@@ -26,7 +26,7 @@ PhonemeVisemeMap sampleMap() {
 } // namespace
 
 TEST(PhonemeTableIO, CsvRoundTripKeepsOrderAndCounts) {
-    test::ScratchDir dir("csv");
+    test::PhoneticsScratch dir("csv");
     const auto file = dir.path() / "table.csv";
     savePhonemeTable(file, sampleTable(), {"en-us", "corpus.txt"});
     const std::string csv = readFileToString(file);
@@ -36,7 +36,7 @@ TEST(PhonemeTableIO, CsvRoundTripKeepsOrderAndCounts) {
 }
 
 TEST(PhonemeTableIO, JsonRoundTripWithMapIsAFrequencyFile) {
-    test::ScratchDir dir("json");
+    test::PhoneticsScratch dir("json");
     const auto file = dir.path() / "table.json";
     const auto map = sampleMap();
     savePhonemeTable(file, sampleTable(), {"en-us", "corpus.txt"}, &map);
@@ -56,7 +56,7 @@ TEST(PhonemeTableIO, JsonRoundTripWithMapIsAFrequencyFile) {
 }
 
 TEST(PhonemeTableIO, CsvTablePlusSeparateMapFile) {
-    test::ScratchDir dir("table-map");
+    test::PhoneticsScratch dir("table-map");
     const auto table = dir.path() / "table.csv";
     const auto mapFile = dir.path() / "map.csv";
     savePhonemeTable(table, sampleTable(), {});
@@ -88,7 +88,7 @@ TEST(PhonemeTableIO, CsvTablePlusSeparateMapFile) {
 }
 
 TEST(PhonemeTableIO, MapJsonRoundTrip) {
-    test::ScratchDir dir("map-json");
+    test::PhoneticsScratch dir("map-json");
     const auto file = dir.path() / "map.json";
     savePhonemeMap(file, sampleMap());
     const auto loaded = loadPhonemeMapFile(file);
@@ -106,7 +106,7 @@ TEST(PhonemeTableIO, BadTablesAndNamesAreRefused) {
     const auto shares = relativeFrequencies(sampleTable(), "t");
     EXPECT_NEAR(shares[0] + shares[1] + shares[2] + shares[3] + shares[4], 1.0, 1e-15);
 
-    test::ScratchDir dir("bad");
+    test::PhoneticsScratch dir("bad");
     EXPECT_THROW(savePhonemeTable(dir.path() / "table.txt", sampleTable(), {}), InputError);
     const auto map = sampleMap();
     EXPECT_THROW(savePhonemeTable(dir.path() / "table.csv", sampleTable(), {}, &map), InputError);

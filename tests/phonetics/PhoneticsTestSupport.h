@@ -9,20 +9,20 @@
 namespace vl::test {
 
 // A fresh directory under the system temp dir, removed again at the end of the test.
-class ScratchDir {
+class PhoneticsScratch {
   public:
-    explicit ScratchDir(const std::string& name)
+    explicit PhoneticsScratch(const std::string& name)
         : path_(std::filesystem::temp_directory_path() /
                 ("visemelab-phonetics-" + name + "-" + std::to_string(::getpid()))) {
         std::filesystem::remove_all(path_);
         std::filesystem::create_directories(path_);
     }
-    ~ScratchDir() {
+    ~PhoneticsScratch() {
         std::error_code ec;
         std::filesystem::remove_all(path_, ec);
     }
-    ScratchDir(const ScratchDir&) = delete;
-    ScratchDir& operator=(const ScratchDir&) = delete;
+    PhoneticsScratch(const PhoneticsScratch&) = delete;
+    PhoneticsScratch& operator=(const PhoneticsScratch&) = delete;
 
     // Writes `bytes` verbatim to <dir>/<name> and returns its path.
     std::filesystem::path write(const std::string& name, std::string_view bytes) const {

@@ -20,7 +20,7 @@ MeshData twoRegionMesh() {
     return mesh;
 }
 
-std::filesystem::path writeTemp(const std::string& name, const std::string& text) {
+std::filesystem::path writeWeightsTemp(const std::string& name, const std::string& text) {
     const auto path = std::filesystem::temp_directory_path() / ("visemelab_weights_" + name);
     std::ofstream(path) << text;
     return path;
@@ -77,9 +77,11 @@ TEST(Weights, PaintedWeightsAreValidated) {
 }
 
 TEST(Weights, LoadsJsonAndTextFilesWithLocatedErrors) {
-    EXPECT_EQ(loadWeightsFile(writeTemp("a.json", "[1, 2.5, 0]")), (std::vector<double>{1, 2.5, 0}));
-    EXPECT_EQ(loadWeightsFile(writeTemp("b.json", "{\"weights\": [3, 4]}")), (std::vector<double>{3, 4}));
-    EXPECT_EQ(loadWeightsFile(writeTemp("c.txt", "# weights\n1\n2, 3\n")), (std::vector<double>{1, 2, 3}));
+    EXPECT_EQ(loadWeightsFile(writeWeightsTemp("a.json", "[1, 2.5, 0]")), (std::vector<double>{1, 2.5, 0}));
+    EXPECT_EQ(loadWeightsFile(writeWeightsTemp("b.json", "{\"weights\": [3, 4]}")),
+              (std::vector<double>{3, 4}));
+    EXPECT_EQ(loadWeightsFile(writeWeightsTemp("c.txt", "# weights\n1\n2, 3\n")),
+              (std::vector<double>{1, 2, 3}));
     auto expectMessage = [](const std::filesystem::path& path, const std::string& fragment) {
         try {
             loadWeightsFile(path);
@@ -88,10 +90,10 @@ TEST(Weights, LoadsJsonAndTextFilesWithLocatedErrors) {
             EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
         }
     };
-    expectMessage(writeTemp("d.txt", "1\n2\nnan\n"), "weights_d.txt:3: non-finite");
-    expectMessage(writeTemp("e.json", "[1, \"x\"]"), ":/1: expected a number");
-    expectMessage(writeTemp("f.json", ""), "empty weights file");
-    expectMessage(writeTemp("g.json", "[1,"), "invalid JSON");
+    expectMessage(writeWeightsTemp("d.txt", "1\n2\nnan\n"), "weights_d.txt:3: non-finite");
+    expectMessage(writeWeightsTemp("e.json", "[1, \"x\"]"), ":/1: expected a number");
+    expectMessage(writeWeightsTemp("f.json", ""), "empty weights file");
+    expectMessage(writeWeightsTemp("g.json", "[1,"), "invalid JSON");
     expectMessage(std::filesystem::temp_directory_path() / "visemelab_no_such_file.json", "file not found");
 }
 
@@ -104,16 +106,16 @@ TEST(Weights, HostileFilesAreDataErrorsNamingTheFile) {
             EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
         }
     };
-    expectMessage(writeTemp("deep.json", std::string(50000, '[')), "weights_deep.json: /0/0/0/0");
-    expectMessage(writeTemp("inf.json", "{\"weights\": [1, 1e999]}"),
+    expectMessage(writeWeightsTemp("deep.json", std::string(50000, '[')), "weights_deep.json: /0/0/0/0");
+    expectMessage(writeWeightsTemp("inf.json", "{\"weights\": [1, 1e999]}"),
                   "weights_inf.json: /weights/1: number out of range: 1e999");
-    expectMessage(writeTemp("inf.txt", "1\n1e999\n"), "weights_inf.txt:2: number out of range");
-    expectMessage(writeTemp("neg.txt", "1\n2 -3\n"), "weights_neg.txt:2: weight -3 is negative");
-    expectMessage(writeTemp("neg.json", "[1, -3]"), "weights_neg.json:/1: weight -3 is negative");
-    expectMessage(writeTemp("bom.txt", "\xEF\xBB\xBF"), "empty weights file");
-    expectMessage(writeTemp("comments.txt", "# only a comment\n"), "no weights in file");
-    EXPECT_EQ(loadWeightsFile(writeTemp("bom2.txt", "\xEF\xBB\xBF"
-                                                    "1 2\n")),
+    expectMessage(writeWeightsTemp("inf.txt", "1\n1e999\n"), "weights_inf.txt:2: number out of range");
+    expectMessage(writeWeightsTemp("neg.txt", "1\n2 -3\n"), "weights_neg.txt:2: weight -3 is negative");
+    expectMessage(writeWeightsTemp("neg.json", "[1, -3]"), "weights_neg.json:/1: weight -3 is negative");
+    expectMessage(writeWeightsTemp("bom.txt", "\xEF\xBB\xBF"), "empty weights file");
+    expectMessage(writeWeightsTemp("comments.txt", "# only a comment\n"), "no weights in file");
+    EXPECT_EQ(loadWeightsFile(writeWeightsTemp("bom2.txt", "\xEF\xBB\xBF"
+                                                           "1 2\n")),
               (std::vector<double>{1, 2}));
 }
 

@@ -34,22 +34,6 @@ struct AvatarFolder {
     ~AvatarFolder() { std::filesystem::remove_all(dir); }
 };
 
-std::string fileBytes(const std::filesystem::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
-bool hasError(const GuiDriver& gui) {
-    for (const auto& message : gui.document()["messages"])
-        if (message["error"].get<bool>()) return true;
-    return false;
-}
-
-std::string lastMessage(const GuiDriver& gui) {
-    const auto& messages = gui.document()["messages"];
-    return messages.empty() ? std::string() : messages.back()["text"].get<std::string>();
-}
-
 // The file dialog's own control (the side panel has a "Save" button too).
 nlohmann::json dialogControl(const GuiDriver& gui, const std::string& label, const std::string& kind) {
     for (const auto& control : gui.report()["controls"])

@@ -20,12 +20,6 @@
 namespace vl::test {
 namespace {
 
-bool hasError(const GuiDriver& gui) {
-    for (const auto& message : gui.document()["messages"])
-        if (message["error"].get<bool>()) return true;
-    return false;
-}
-
 // The report of issue 14: on the Refine tab, clicking "normals" crashed the editor (a reference to
 // the face held across the commit of the new settings).
 TEST(EditorClicks, RefineTabCriterionRadiosSwitchTheCriterion) {
@@ -296,11 +290,6 @@ TEST(EditorClicks, ConstraintsArePinnedAndRemovedByClicks) {
     gui.waitIdle();
     EXPECT_EQ(gui.document()["constraints"].get<int>(), 0);
     EXPECT_ALIVE(gui);
-}
-
-std::string fileBytes(const std::filesystem::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
 // Every file of a folder, byte for byte.

@@ -10,6 +10,8 @@
 #include <cstdint>
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <optional>
 #include <string>
 #include <vector>
@@ -77,6 +79,23 @@ class GuiDriver {
     std::string window_;
     nlohmann::json report_;
 };
+
+// Whether the status bar holds an error, and its newest message (the probe's "messages").
+inline bool hasError(const GuiDriver& gui) {
+    for (const auto& message : gui.document()["messages"])
+        if (message["error"].get<bool>()) return true;
+    return false;
+}
+inline std::string lastMessage(const GuiDriver& gui) {
+    const auto& messages = gui.document()["messages"];
+    return messages.empty() ? std::string() : messages.back()["text"].get<std::string>();
+}
+
+// A file's bytes (empty when it cannot be read): outputs compared with inputs.
+inline std::string fileBytes(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+}
 
 // The editor's document id from the probe summary: it changes with every edit, undo and redo.
 inline std::uint64_t documentId(const GuiDriver& gui) {

@@ -11,7 +11,7 @@ namespace vl::ui {
 
 namespace {
 
-std::string quoted(const std::string& text) {
+std::string quotedText(const std::string& text) {
     constexpr std::size_t kShown = 40;
     std::string shown = text.substr(0, kShown);
     std::replace(shown.begin(), shown.end(), '\n', ' ');
@@ -56,7 +56,7 @@ void SpeechService::say(const SpeechSettings& settings) {
         clip.phonemes = std::move(utterance.phonemes);
         clip.samples = std::move(utterance.samples);
         clip.sampleRate = utterance.sampleRate;
-        clip.label = "Say " + quoted(settings.text) + " (" + settings.voice + ", " +
+        clip.label = "Say " + quotedText(settings.text) + " (" + settings.voice + ", " +
                      std::to_string(settings.wordsPerMinute) + " wpm)";
         clip.id = id;
         return clip;
@@ -96,7 +96,7 @@ void SpeechService::playSequence(const Document& document, const std::string& se
     clip.visemes = std::move(visemes);
     clip.sequence = sequence;
     clip.loops = true;
-    clip.label = sequence.empty() ? "every viseme" : "sequence " + quoted(sequence);
+    clip.label = sequence.empty() ? "every viseme" : "sequence " + quotedText(sequence);
     clip.id = nextId_++;
     task_.cancel(); // a typed sequence replaces speech still being synthesised
     clip_ = std::make_shared<const SpeechClip>(std::move(clip));
