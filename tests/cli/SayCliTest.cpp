@@ -66,8 +66,9 @@ TEST_F(SayCli, CorpusFileGivesTheErrorCurve) {
     const auto corpus = dir / "corpus.txt";
     writeFileAtomically(corpus, "The judge measures the house.\nFour poor fire fighters came at noon!\n");
     const auto out = dir / "track.json";
-    const auto result = test::runCli("say --text-file " + quotedPath(corpus) + " --project " + sampleProject() +
-                                     " --out " + quotedPath(out) + " --blend dominance --fps 30");
+    const auto result =
+        test::runCli("say --text-file " + quotedPath(corpus) + " --project " + sampleProject() + " --out " +
+                     quotedPath(out) + " --blend dominance --fps 30");
     ASSERT_EQ(result.exitCode, 0) << result.output;
     const SpeechTrackFile track = loadTrackJson(out);
     ASSERT_EQ(track.errorCurve.size(), 15u);
@@ -95,7 +96,8 @@ TEST_F(SayCli, UsageAndDataErrorsGetTheirExitCodes) {
     EXPECT_EQ(test::runCli("say hi --voice de" + project + " --out " + out).exitCode, 3);
     EXPECT_EQ(test::runCli("say hi --rate 5" + project + " --out " + out).exitCode, 3);
     EXPECT_EQ(test::runCli("say ' ... ,,, '" + project + " --out " + out).exitCode, 3);
-    EXPECT_EQ(test::runCli("say hi --project " + quotedPath(dir / "none.vlproj") + " --out " + out).exitCode, 3);
+    EXPECT_EQ(test::runCli("say hi --project " + quotedPath(dir / "none.vlproj") + " --out " + out).exitCode,
+              3);
     const auto binary = dir / "blob.txt";
     writeFileAtomically(binary, std::string("\x7F"
                                             "ELF\0\0\0\0",
