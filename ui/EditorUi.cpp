@@ -176,6 +176,7 @@ nlohmann::json EditorUi::probeSummary() {
         {"visemes", document.visemeCount()},
         {"selected_viseme", session.selectedViseme},
         {"target", document.target},
+        {"reduction", reductionProbe()},
         {"constraints", document.constraints.pinned.size() + document.constraints.apart.size() +
                             document.constraints.together.size()},
         {"criterion", kCriteria[static_cast<int>(document.refinement.kind)]},
@@ -194,6 +195,15 @@ nlohmann::json EditorUi::probeSummary() {
     summary.update(polishSummary());
     summary.update(authoringProbe());
     return summary;
+}
+
+nlohmann::json EditorUi::reductionProbe() const {
+    nlohmann::json out = {{"running", session.reductionRunning()}};
+    if (const auto bound = session.reductionBound())
+        out["bound"] = {{"groups", bound->groups}, {"lower", bound->lowerBound}, {"best", bound->bestFound}};
+    if (const Grouping* grouping = session.currentGrouping(); grouping && grouping->feasible())
+        out["current"] = {{"optimal", grouping->optimal}, {"gap", grouping->gap()}, {"cost", grouping->cost}};
+    return out;
 }
 
 nlohmann::json EditorUi::polishSummary() const {

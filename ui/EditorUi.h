@@ -259,7 +259,8 @@ class EditorUi {
     void drawSelection(const ViewportEvents& events);
     void fillVertices(const std::vector<std::uint32_t>& vertices, const char* action);
     nlohmann::json paintSummary() const;
-    nlohmann::json polishSummary() const; // what the polish tests assert, merged into probeSummary()
+    nlohmann::json polishSummary() const;  // what the polish tests assert, merged into probeSummary()
+    nlohmann::json reductionProbe() const; // running, the bound of a branch and bound, the current proof
     // The status bar's message (expiring, wrapped to at most kStatusLines lines) as laid out this frame.
     StatusLine statusLine_;
     struct StatusLayout {

@@ -264,8 +264,13 @@ double blockBound(const GroupCostModel& model, std::span<const int> units, int p
 
 } // namespace
 
+double blockLowerBound(const GroupCostModel& model, int p, std::span<const UnitMask> start) {
+    return blockBound(model, placementOrder(model, start), p);
+}
+
 UnitPartition branchAndBound(const GroupCostModel& model, int p, std::span<const UnitMask> start,
-                             const SearchLimits& limits, std::atomic<double>* done) {
+                             const SearchLimits& limits, std::atomic<double>* done,
+                             std::atomic<double>* provenBound) {
     const int n = model.size();
     const std::vector<int> order = placementOrder(model, start);
     int zeroFrom = n;
@@ -327,6 +332,14 @@ UnitPartition branchAndBound(const GroupCostModel& model, int p, std::span<const
         const double best = incumbent.cost();
         suffixBound[static_cast<std::size_t>(first)] = std::min(best, unexplored);
         if (done) done->store(static_cast<double>(size) / n, std::memory_order_relaxed);
+        if (provenBound && unexplored == kNoBound && first > 0) {
+            // Same argument as the stopped case below: the solved suffix plus blocks of the rest.
+            const double bound =
+                std::max(suffixBound[static_cast<std::size_t>(first)] +
+                             blockBound(model, std::span(order.data(), static_cast<std::size_t>(first)), p),
+                         provenBound->load(std::memory_order_relaxed));
+            provenBound->store(bound, std::memory_order_relaxed);
+        }
         if (unexplored < kNoBound || first == 0) {
             // Stopped (or finished): report the whole problem. A stopped search proved a bound for
             // the suffix only; the units before it add the optima of small blocks of them (blockBound),

@@ -33,7 +33,14 @@ struct SearchLimits {
 // `start` is a feasible partition into p groups (an upper bound) or empty. `done` (optional) is raised
 // towards 1 as the suffix problems complete. Without a proof before the limits expire, the result has
 // optimal = false, the best partition found and a valid lower bound. p must be in 1..model.size().
+// `provenBound` (optional) is raised to a valid lower bound of this problem each time a suffix
+// problem is solved (the suffix's optimum plus the block bound of the units before it).
 UnitPartition branchAndBound(const GroupCostModel& model, int p, std::span<const UnitMask> start,
-                             const SearchLimits& limits = {}, std::atomic<double>* done = nullptr);
+                             const SearchLimits& limits = {}, std::atomic<double>* done = nullptr,
+                             std::atomic<double>* provenBound = nullptr);
+
+// The lower bound branchAndBound starts from, known before any search: the units in its placement
+// order cut into small blocks, each solved exactly into p groups with the conflicts dropped.
+double blockLowerBound(const GroupCostModel& model, int p, std::span<const UnitMask> start);
 
 } // namespace vl

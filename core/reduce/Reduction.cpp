@@ -97,14 +97,28 @@ UnitCurve solveByBranchAndBound(const GroupCostModel& model, const ConstraintUni
     limits.cancelled = progress ? &stopped : options.cancelled;
     std::vector<std::atomic<double>> done(static_cast<std::size_t>(m));
     UnitCurve curve(static_cast<std::size_t>(m));
+    if (BoundWatch* watch = options.watch; watch && watch->groups >= 1 && watch->groups <= m &&
+                                           starts[static_cast<std::size_t>(watch->groups - 1)].size() ==
+                                               static_cast<std::size_t>(watch->groups)) {
+        // Known before the searches start (the watched one may wait for a thread for seconds).
+        const auto& start = starts[static_cast<std::size_t>(watch->groups - 1)];
+        watch->bestFound = partitionCost(model, start);
+        watch->lowerBound = std::min(blockLowerBound(model, watch->groups, start), watch->bestFound.load());
+    }
     auto solve = [&] {
         tbb::parallel_for(1, m + 1, [&](int p) {
             auto& entry = curve[static_cast<std::size_t>(p - 1)];
             if (!units.feasible(p)) {
                 entry.optimal = true; // proven: the constraints rule p out
             } else {
-                entry = branchAndBound(model, p, starts[static_cast<std::size_t>(p - 1)], limits,
-                                       &done[static_cast<std::size_t>(p - 1)]);
+                const auto& start = starts[static_cast<std::size_t>(p - 1)];
+                BoundWatch* watch = options.watch && options.watch->groups == p ? options.watch : nullptr;
+                entry = branchAndBound(model, p, start, limits, &done[static_cast<std::size_t>(p - 1)],
+                                       watch ? &watch->lowerBound : nullptr);
+                if (watch) {
+                    watch->bestFound = entry.cost;
+                    watch->lowerBound = entry.optimal ? entry.cost : entry.lowerBound;
+                }
             }
             done[static_cast<std::size_t>(p - 1)] = 1.0;
         });

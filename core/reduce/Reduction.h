@@ -47,10 +47,23 @@ struct ReductionProblem {
     ReductionConstraints constraints{};
 };
 
+// What a running branch and bound has proven so far about one number of groups: a lower bound that
+// only rises and the cost of the best grouping found, which only falls (the editor's progress bar of
+// the bound). Written by the search, read from any thread.
+struct BoundWatch {
+    explicit BoundWatch(int watchedGroups) : groups(watchedGroups) {}
+    const int groups; // the p watched
+    std::atomic<double> lowerBound{0.0};
+    std::atomic<double> bestFound{std::numeric_limits<double>::infinity()};
+};
+
 struct ReductionOptions {
     ReductionMethod method = ReductionMethod::Auto;
-    double timeLimitSeconds = 0;                  // branch and bound stops after this; 0 = no limit
-    const std::atomic<bool>* cancelled = nullptr; // set from another thread to stop early
+    double timeLimitSeconds = 0; // branch and bound stops after this; 0 = no limit
+    // Set from another thread to stop early: branch and bound then returns its best groupings with
+    // their bounds, as at the time limit (with or without a progress callback).
+    const std::atomic<bool>* cancelled = nullptr;
+    BoundWatch* watch = nullptr; // optional: kept up to date by branch and bound
 };
 
 struct Grouping {

@@ -230,3 +230,63 @@ TEST(ReductionHeuristics, PartitionsAreValidAndNeverBelowTheOptimum) {
         }
     }
 }
+
+TEST(BranchAndBound, TheWatchedBoundOnlyRisesStaysBelowTheOptimumAndEndsAtTheResult) {
+    // The editor's progress bar of the bound: sampled while the search runs, the watched lower bound
+    // never decreases and never passes the optimum (the DP's, on sets it still solves); the best found
+    // never increases and ends as the result's cost, the bound as its proven bound.
+    std::mt19937 rng(17);
+    for (int trial = 0; trial < 3; ++trial) {
+        const auto inst = trial == 0 ? test::randomInstance(rng, 18, 30) : test::rigInstance(rng, 18, 60, 5);
+        const int m = 6 + trial;
+        ReductionOptions dp;
+        dp.method = ReductionMethod::SubsetDp;
+        const double optimum =
+            reduceVisemes({inst.shapes, inst.frequencies, inst.weights, m}, dp).best().cost;
+        BoundWatch watch(m);
+        ReductionOptions options;
+        options.method = ReductionMethod::BranchAndBound;
+        options.watch = &watch;
+        std::vector<std::pair<double, double>> samples;
+        const auto result =
+            reduceVisemes({inst.shapes, inst.frequencies, inst.weights, m}, options, [&](double) {
+                samples.emplace_back(watch.lowerBound.load(), watch.bestFound.load());
+            });
+        samples.emplace_back(watch.lowerBound.load(), watch.bestFound.load());
+        const double tolerance = 1e-9 * optimum;
+        for (std::size_t i = 0; i < samples.size(); ++i) {
+            EXPECT_LE(samples[i].first, optimum + tolerance) << "sample " << i;
+            EXPECT_GE(samples[i].second, optimum - tolerance) << "sample " << i;
+            if (i > 0) {
+                EXPECT_GE(samples[i].first, samples[i - 1].first) << "sample " << i;
+                EXPECT_LE(samples[i].second, samples[i - 1].second) << "sample " << i;
+            }
+        }
+        EXPECT_TRUE(result.best().optimal);
+        EXPECT_EQ(watch.bestFound.load(), result.best().cost);
+        EXPECT_EQ(watch.lowerBound.load(), result.best().cost);
+    }
+}
+
+TEST(BranchAndBound, AStopRequestKeepsTheBestGroupingsWithTheirBounds) {
+    // The editor's Cancel on a large set: the flag set while the search runs (with a progress
+    // callback) ends it with valid groupings and certificates for every p, not an exception.
+    std::mt19937 rng(23);
+    const auto inst = test::randomInstance(rng, 34, 30);
+    std::atomic<bool> stop{false};
+    BoundWatch watch(10);
+    ReductionOptions options;
+    options.method = ReductionMethod::BranchAndBound;
+    options.timeLimitSeconds = 120;
+    options.cancelled = &stop;
+    options.watch = &watch;
+    int calls = 0;
+    const auto result =
+        reduceVisemes({inst.shapes, inst.frequencies, inst.weights, 10}, options, [&](double) {
+            if (++calls == 4) stop = true;
+        });
+    EXPECT_TRUE(test::isValidGrouping(result.best().groups, 34, 10));
+    for (const auto& g : result.curve) expectCertificate(g);
+    EXPECT_EQ(watch.bestFound.load(), result.best().cost);
+    EXPECT_LE(watch.lowerBound.load(), result.best().cost);
+}

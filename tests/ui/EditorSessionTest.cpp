@@ -469,6 +469,21 @@ TEST(EditorSession, CancellingALargeReductionReturnsAtOnce) {
     session.startReduction();
     EXPECT_TRUE(session.reductionRunning());
     session.cancelReduction();
+
+    // The panel's Cancel stops the search and keeps what it found: a grouping for every p with its
+    // proven gap, well before the 10 s limit.
+    session.startReduction();
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    ASSERT_TRUE(session.reductionRunning());
+    const auto stopped = std::chrono::steady_clock::now();
+    session.stopReduction();
+    session.finishBackgroundWork();
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - stopped).count(), 5.0);
+    ASSERT_NE(session.reductionCurve(), nullptr);
+    for (const Grouping& g : session.reductionCurve()->curve) {
+        EXPECT_TRUE(g.feasible());
+        EXPECT_LE(g.lowerBound, g.cost);
+    }
     std::filesystem::remove_all(dir);
 }
 

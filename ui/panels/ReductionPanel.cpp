@@ -34,7 +34,18 @@ void EditorUi::reductionPanel() {
     if (session.reductionRunning()) {
         ImGui::ProgressBar(static_cast<float>(session.reductionProgress()), ImVec2(-80, 0), "reducing...");
         ImGui::SameLine();
-        if (ctl::Button("Cancel")) session.cancelReduction();
+        if (ctl::Button("Cancel")) session.stopReduction();
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("Stops the search. A large set keeps the best groupings found so far, "
+                              "each with its proven gap.");
+        // Branch and bound: how far the proven lower bound has come towards the best grouping found.
+        if (const auto bound = session.reductionBound()) {
+            const double share = bound->bestFound > 0.0 ? bound->lowerBound / bound->bestFound : 1.0;
+            char text[96];
+            std::snprintf(text, sizeof text, "m = %d: bound %.0f %% of best found (gap %.1f %%)",
+                          bound->groups, 100.0 * share, 100.0 * (1.0 - share));
+            ImGui::ProgressBar(static_cast<float>(share), ImVec2(-80, 0), text);
+        }
     }
 
     constraintsSection();

@@ -178,9 +178,13 @@ class EditorSession {
     // Starts the reduction of the current inputs on a worker thread (no-op when already current).
     void startReduction() { reduction_.start(document()); }
     bool reductionRunning() const { return reduction_.running(); }
-    // Stops a running reduction (the searches stop within one progress poll); "Run now" restarts it.
+    // Drops a running reduction (the searches stop within one progress poll); "Run now" restarts it.
     void cancelReduction() { reduction_.cancel(); }
+    // The panel's Cancel: a large set's branch and bound stops within one progress poll and its best
+    // groupings are kept with their proven gaps; a small set's exact run is dropped.
+    void stopReduction() { reduction_.stop(); }
     double reductionProgress() const { return reduction_.progress(); }
+    std::optional<ReductionService::Bound> reductionBound() const { return reduction_.bound(); }
     // The curve if it is up to date with the inputs, else null.
     const ReductionResult* reductionCurve() const { return reduction_.curve(); }
     std::uint64_t reductionCurveRevision() const { return reduction_.curveRevision(); }

@@ -3,6 +3,7 @@
 #include "core/common/Error.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace vl::ui {
 
@@ -63,20 +64,44 @@ void ReductionService::start(const Document& document) {
     // is up, instead of keeping the designer waiting.
     ReductionOptions options;
     if (n > kMaxExactVisemes) options.timeLimitSeconds = kLargeSetSeconds;
+    // The bound of the target's search, for the progress bar, and a stop that keeps what was found.
+    auto watch = std::make_shared<BoundWatch>(std::clamp(document.target, 1, groups));
+    auto stop = std::make_shared<std::atomic<bool>>(false);
+    options.watch = watch.get();
+    options.cancelled = stop.get();
+    watch_ = watch;
+    stop_ = stop;
     // The worker holds the document's immutable meshes (viewed, not copied) and its own copies of
     // the rest.
     auto set = document.visemes;
     auto frequencies = std::make_shared<std::vector<double>>(documentFrequencies(document));
     auto weights = std::make_shared<std::vector<double>>(documentWeights(document));
     runningRevision_ = revision_;
+    runningLarge_ = n > kMaxExactVisemes;
     task_.start("Reducing " + std::to_string(n) + " visemes",
-                [set, frequencies, weights, groups, constraints, options](const auto& progress) {
+                [set, frequencies, weights, groups, constraints, options, watch, stop](const auto& progress) {
                     std::vector<std::span<const Vec3>> rows;
                     for (const auto& viseme : set->visemes) rows.emplace_back(viseme.positions);
                     const ReductionProblem problem{ShapeView(std::span<const std::span<const Vec3>>(rows)),
                                                    *frequencies, *weights, groups, constraints};
                     return std::make_shared<const ReductionResult>(reduceVisemes(problem, options, progress));
                 });
+}
+
+void ReductionService::stop() {
+    // Branch and bound returns its best groupings with their proven gaps; the exact DP (small sets,
+    // seconds at most) has nothing to keep and is cancelled.
+    if (task_.running() && stop_ && runningLarge_)
+        stop_->store(true);
+    else
+        task_.cancel();
+}
+
+std::optional<ReductionService::Bound> ReductionService::bound() const {
+    if (!task_.running() || !watch_ || !runningLarge_) return std::nullopt;
+    const double best = watch_->bestFound.load(), lower = watch_->lowerBound.load();
+    if (!std::isfinite(best)) return std::nullopt;
+    return Bound{watch_->groups, std::min(lower, best), best};
 }
 
 std::optional<std::string> ReductionService::poll() {

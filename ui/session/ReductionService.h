@@ -7,6 +7,7 @@
 #include "core/reduce/ReducedModel.h"
 #include "ui/session/BackgroundTask.h"
 
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -38,7 +39,18 @@ class ReductionService {
     bool failedOnCurrentInputs() const { return runningRevision_ == revision_ && !task_.running(); }
     // Collects a finished run; returns the error message of a failed one.
     std::optional<std::string> poll();
+    // Discards a running reduction.
     void cancel() { task_.cancel(); }
+    // The Cancel button: a large set's branch and bound stops and its best groupings are kept with
+    // their proven gaps (as at the time limit); a small set's exact run is cancelled.
+    void stop();
+    // The running branch and bound's proof for the target m: lower bound and best found so far
+    // (null when no branch and bound runs or nothing was found yet).
+    struct Bound {
+        int groups = 0;
+        double lowerBound = 0.0, bestFound = 0.0;
+    };
+    std::optional<Bound> bound() const;
     void wait() { task_.wait(); }
 
     // The curve if it is up to date with the inputs, else null. A seeded curve may stop before
@@ -75,6 +87,9 @@ class ReductionService {
     std::uint64_t curves_ = 0; // curves held so far (the last one's serial)
     std::uint64_t runningRevision_ = 0;
     BackgroundTask<std::shared_ptr<const ReductionResult>> task_;
+    std::shared_ptr<BoundWatch> watch_;       // of the running task
+    std::shared_ptr<std::atomic<bool>> stop_; // of the running task
+    bool runningLarge_ = false;               // the running task is a branch and bound
     // reducedModel() cache, keyed by the inputs revision, the curve and the number of groups.
     std::uint64_t modelRevision_ = 0;
     std::uint64_t modelCurve_ = 0;
