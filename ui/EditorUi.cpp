@@ -3,6 +3,7 @@
 #include "core/common/Error.h"
 #include "core/gltf/AvatarScan.h"
 #include "core/inspect/DistanceUnits.h"
+#include "core/project/BuiltinGeometry.h"
 #include "ui/widgets/Controls.h"
 
 #define GLFW_INCLUDE_NONE
@@ -213,7 +214,12 @@ nlohmann::json EditorUi::faceViewProbe() const {
                              {"centre", {centre[0], centre[1], centre[2]}}});
         }
     }
+    nlohmann::json weights = nlohmann::json::object();
+    if (const auto& cascade = session.face().cascade)
+        for (std::size_t k = 0; k < std::min(cascade->parameters.size(), shownFace_.weights.size()); ++k)
+            weights[cascade->parameters[k].name] = shownFace_.weights[k];
     return {{"panel", panelName(shownFace_.panel)},
+            {"weights", std::move(weights)},
             {"skin_triangles", shownFace_.skinTriangles},
             {"part_triangles", shownFace_.partTriangles},
             {"parts", std::move(parts)}};
@@ -647,9 +653,12 @@ void EditorUi::mainView(ImVec2 size) {
         if (faceMesh_.empty())
             emptyViewHint(events.imageMin, events.imageMax,
                           "No face loaded: use \"Load bundled face\" in the panel");
-        else
-            label = std::string("Deformable face (") +
-                    std::string(face::individualName(session.face().individual)) + ")";
+        else // a face built from the user's mesh is named by its mesh, not as the bundled one
+            label =
+                "Deformable face (" +
+                (builtinIndividualOf(*cascade) ? std::string(face::individualName(session.face().individual))
+                                               : cascade->name) +
+                ")";
     } else {
         std::vector<float> weights =
             speechShown() ? speechWeights(false) : visemeWeights(session.selectedViseme);
