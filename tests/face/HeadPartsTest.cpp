@@ -15,7 +15,8 @@ namespace {
 
 // The bundled head's teeth and tongue stay behind the lips (and the skin around the mouth) in every
 // Oculus viseme: the signed distance of every tooth and tongue vertex to the nearest skin of the
-// mouth region is positive (inside the head) or the vertex is seen through the opening.
+// mouth region is positive (inside the head) or the vertex is seen through the opening, and no edge of
+// them passes through the skin.
 TEST(HeadParts, TeethNeverPenetrateTheLipsInAnyBundledViseme) {
     const auto cascade = makeBundledFace();
     const auto parts = makeHeadParts(cascade);
@@ -32,6 +33,7 @@ TEST(HeadParts, TeethNeverPenetrateTheLipsInAnyBundledViseme) {
                 if (std::getenv("VL_DEBUG"))
                     std::printf("%d %-8s %-12s %8.3f (vertex %zu)\n", resolution, name.c_str(),
                                 c.part.c_str(), c.clearance, c.vertex);
+                EXPECT_EQ(c.crossings, 0u) << name << " " << c.part << " at resolution " << resolution;
                 EXPECT_GT(c.clearance, 0.05)
                     << name << " " << c.part << " vertex " << c.vertex << " at resolution " << resolution;
             }
