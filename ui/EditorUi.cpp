@@ -220,6 +220,7 @@ nlohmann::json EditorUi::faceViewProbe() const {
             weights[cascade->parameters[k].name] = shownFace_.weights[k];
     return {{"panel", panelName(shownFace_.panel)},
             {"weights", std::move(weights)},
+            {"renders", mainView_.renders()},
             {"skin_triangles", shownFace_.skinTriangles},
             {"part_triangles", shownFace_.partTriangles},
             {"parts", std::move(parts)}};

@@ -2,14 +2,15 @@
 // the Refine tab's view draws the eyeballs, teeth, tongue and mouth cavity beside the refined skin,
 // jaw_open dragged to its end lowers the lower teeth and the tongue where the view draws them (the
 // probe's "face_view": each part's centre at the drawn weights) and leaves the upper teeth, a
-// refinement keeps them; a face built from the user's mesh (Deformation > Use my mesh..., the
-// MediaPipe canonical face from VISEMELAB_SHARED_DATA_DIR, skipped loudly when absent) shows the
-// parts carried to it.
+// refinement keeps them, the idle view is not rendered again; a face built from the user's mesh
+// (Deformation > Use my mesh..., the MediaPipe canonical face from VISEMELAB_SHARED_DATA_DIR, skipped
+// loudly when absent) shows the parts carried to it.
 #include "GuiDriver.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <map>
 #include <string>
@@ -53,6 +54,7 @@ void openRefineTab(GuiDriver& gui) {
 void dragJawOpenToItsEnd(GuiDriver& gui) {
     const auto before = partCentres(gui);
     ASSERT_EQ(before.size(), 6u) << faceView(gui).dump();
+    const auto renders = faceView(gui)["renders"].get<std::uint64_t>();
     const auto slider = gui.control("jaw_open", "slider");
     const double y = slider["y"].get<double>() + 0.5 * slider["height"].get<double>();
     const double x = slider["x"].get<double>();
@@ -61,6 +63,7 @@ void dragJawOpenToItsEnd(GuiDriver& gui) {
     EXPECT_ALIVE(gui);
     EXPECT_EQ(gui.document()["undo"], "Set jaw_open");
     EXPECT_EQ(faceView(gui)["weights"]["jaw_open"].get<double>(), 1.0) << faceView(gui).dump();
+    EXPECT_GT(faceView(gui)["renders"].get<std::uint64_t>(), renders);
     const auto after = partCentres(gui);
     ASSERT_EQ(after.size(), 6u);
     // Relative to the head's size (the eyes' distance): an own face need not be in centimetres.
@@ -88,6 +91,11 @@ TEST(FacePartsClicks, RefineViewDrawsThePartsAndJawOpenMovesThem) {
                                                "tongue", "mouth_cavity"}));
 
     dragJawOpenToItsEnd(gui);
+
+    // Idle, the view is not rendered again (its scene's signature, parts included, is unchanged).
+    const auto rendersIdle = faceView(gui)["renders"].get<std::uint64_t>();
+    gui.waitFrames(20);
+    EXPECT_EQ(faceView(gui)["renders"].get<std::uint64_t>(), rendersIdle);
 
     // A refinement changes the skin, not the parts.
     const int skinBefore = faceView(gui)["skin_triangles"].get<int>();
