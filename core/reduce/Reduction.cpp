@@ -153,7 +153,7 @@ UnitCurve solveByBranchAndBound(const GroupCostModel& model, const ConstraintUni
 
 // The DP's run time on 2 cores: about 25 ms at 16 units and m = 10, x3.4 per further unit.
 double estimatedSubsetDpSeconds(int units, int m) {
-    return 0.025 * std::pow(3.4, units - 16) * std::max(1.0, m / 10.0);
+    return 0.015 * std::pow(3.0, units - 16) * std::max(1.0, m / 10.0);
 }
 
 } // namespace
