@@ -11,11 +11,11 @@
 // state T and the remainder R are split into tile, block and the lowest three bits: the 8 states of
 // a block take their 13 candidate splits from two blocks of 8 contiguous values (costs at T^R, the
 // layer below at R), unrolled with the 8 minima in registers - no loop-carried submask chain per
-// addition - and a pair of tiles (4 KiB each) serves all blocks of a tile from L1. Only the values are kept (all
-// layers); the groups are recovered afterwards by finding the split that gives each chosen value,
-// which is exact because the kernel and the recovery add the same two doubles. Layers run in
-// parallel over hi with TBB; values and groups do not depend on the thread count (each state is a
-// minimum over a fixed set, recovery scans in a fixed order).
+// addition - and a pair of tiles (4 KiB each) serves all blocks of a tile from L1. Only the values are kept
+// (all layers); the groups are recovered afterwards by finding the split that gives each chosen value, which
+// is exact because the kernel and the recovery add the same two doubles. Layers run in parallel over hi with
+// TBB; values and groups do not depend on the thread count (each state is a minimum over a fixed set,
+// recovery scans in a fixed order).
 #include "core/reduce/SubsetDp.h"
 
 #include <tbb/blocked_range.h>
@@ -74,7 +74,8 @@ inline void splitBlock(const double* c, const double* b, double* acc) {
     acc[4] = std::min(acc[4], c[4] + b[0]);
     acc[5] = std::min(acc[5], std::min(c[5] + b[0], c[1] + b[4]));
     acc[6] = std::min(acc[6], std::min(c[6] + b[0], c[2] + b[4]));
-    acc[7] = std::min(acc[7], std::min(std::min(c[7] + b[0], c[5] + b[2]), std::min(c[3] + b[4], c[1] + b[6])));
+    acc[7] =
+        std::min(acc[7], std::min(std::min(c[7] + b[0], c[5] + b[2]), std::min(c[3] + b[4], c[1] + b[6])));
 }
 
 constexpr int kBlockBits = 3;
@@ -188,7 +189,8 @@ UnitCurve solveSubsetDp(const GroupCostModel& model, int m, const std::function<
             // The top state: V holds unit 0 and any subset of the others.
             const std::vector<double>& below = layer[static_cast<std::size_t>(p - 2)];
             double value = kUnreached;
-            for (std::uint32_t r = 0; r <= all; ++r) value = std::min(value, cost[full ^ (r << 1)] + below[r]);
+            for (std::uint32_t r = 0; r <= all; ++r)
+                value = std::min(value, cost[full ^ (r << 1)] + below[r]);
             if (!(value < kUnreached)) return; // no partition into p groups respects the conflicts
             std::uint32_t t = remainderOf(all, p, value, true);
             entry.groups.push_back(full ^ (t << 1));
