@@ -14,10 +14,12 @@ std::vector<std::string> writeReductionOutputs(OutputSet& outputs, const ReduceO
     std::vector<std::string> written;
     // The keys share the neutral mesh's topology: its faces and (u,v) are formatted once per format.
     const MeshTextFormatter obj("key.obj", model.neutral), wrl("key.wrl", model.neutral);
+    std::string text; // one buffer for every file
     for (std::size_t k = 0; k < model.keys.size(); ++k) {
         for (const MeshTextFormatter* formatter : {&obj, &wrl}) {
             written.push_back(keyFileName(model, k, formatter == &obj ? ".obj" : ".wrl"));
-            outputs.add(written.back(), formatter->format(model.keys[k].positions));
+            formatter->format(model.keys[k].positions, text);
+            outputs.add(written.back(), text);
         }
     }
     written.emplace_back("mapping.json");

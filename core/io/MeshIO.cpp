@@ -128,24 +128,32 @@ MeshTextFormatter::MeshTextFormatter(const std::filesystem::path& path, const Me
 }
 
 std::string MeshTextFormatter::format(std::span<const Vec3> positions) const {
+    std::string out;
+    format(positions, out);
+    return out;
+}
+
+void MeshTextFormatter::format(std::span<const Vec3> positions, std::string& out) const {
     if (positions.size() != topology_.positions.size())
         throw std::invalid_argument("MeshTextFormatter: " + std::to_string(positions.size()) +
                                     " positions for a topology of " +
                                     std::to_string(topology_.positions.size()));
-    if (format_ == MeshFormat::Ply)
-        return formatPly({{positions.begin(), positions.end()}, topology_.uvs, topology_.triangles});
+    if (format_ == MeshFormat::Ply) {
+        out = formatPly({{positions.begin(), positions.end()}, topology_.uvs, topology_.triangles});
+        return;
+    }
     for (std::size_t i = 0; i < positions.size(); ++i)
         if (!std::isfinite(positions[i][0]) || !std::isfinite(positions[i][1]) ||
             !std::isfinite(positions[i][2]))
             throwInputError("mesh to write", "vertex " + std::to_string(i) + " has a non-finite coordinate");
-    std::string out;
+    out.clear();
     out.reserve(head_.size() + positions.size() * 70 + tail_.size());
     out += head_;
     if (format_ == MeshFormat::Obj)
         meshio::appendObjPositions(out, positions);
     else
         meshio::appendVrmlPositions(out, positions);
-    return out += tail_;
+    out += tail_;
 }
 
 void writeMesh(const std::filesystem::path& path, const MeshData& mesh) {

@@ -75,6 +75,9 @@ class MeshTextFormatter {
   public:
     MeshTextFormatter(const std::filesystem::path& path, const MeshData& topology);
     std::string format(std::span<const Vec3> positions) const;
+    // The same text into `out` (replacing its contents): a buffer reused for many files keeps its
+    // pages, where a fresh string of this size is mapped and faulted in anew each time.
+    void format(std::span<const Vec3> positions, std::string& out) const;
 
   private:
     MeshFormat format_;
