@@ -3,6 +3,7 @@
 #include "core/common/Error.h"
 #include "core/gltf/AvatarScan.h"
 #include "core/inspect/DistanceUnits.h"
+#include "core/project/BuiltinGeometry.h"
 #include "ui/widgets/Controls.h"
 
 #define GLFW_INCLUDE_NONE
@@ -191,10 +192,38 @@ nlohmann::json EditorUi::probeSummary() {
         {"avatar_mesh_report", avatarMeshReport()},
         {"avatar_gltfpack", avatarGltfpackChosen()},
         {"face_name", document.face.cascade ? document.face.cascade->name : std::string()},
-        {"own_face_step", ownFaceProbe()}};
+        {"own_face_step", ownFaceProbe()},
+        {"face_view", faceViewProbe()}};
     summary.update(polishSummary());
     summary.update(authoringProbe());
     return summary;
+}
+
+nlohmann::json EditorUi::faceViewProbe() const {
+    if (shownFace_.panel == Panel::Count) return nullptr;
+    // Each part's centre where the view drew it: the morph of the uploaded parts at the drawn weights.
+    nlohmann::json parts = nlohmann::json::array();
+    if (shownFace_.partTriangles > 0 && uploadedParts_) {
+        const std::vector<Vec3> positions = partsMesh_.blendedPositions(shownFace_.weights);
+        for (const HeadPartSamples::Part& part : uploadedParts_->parts) {
+            Vec3 centre(0, 0, 0);
+            for (std::size_t i = part.first; i < part.first + part.count; ++i) centre += positions[i];
+            if (part.count > 0) centre /= static_cast<double>(part.count);
+            parts.push_back({{"name", part.name},
+                             {"vertices", part.count},
+                             {"centre", {centre[0], centre[1], centre[2]}}});
+        }
+    }
+    nlohmann::json weights = nlohmann::json::object();
+    if (const auto& cascade = session.face().cascade)
+        for (std::size_t k = 0; k < std::min(cascade->parameters.size(), shownFace_.weights.size()); ++k)
+            weights[cascade->parameters[k].name] = shownFace_.weights[k];
+    return {{"panel", panelName(shownFace_.panel)},
+            {"weights", std::move(weights)},
+            {"renders", mainView_.renders()},
+            {"skin_triangles", shownFace_.skinTriangles},
+            {"part_triangles", shownFace_.partTriangles},
+            {"parts", std::move(parts)}};
 }
 
 nlohmann::json EditorUi::reductionProbe() const {
@@ -278,6 +307,18 @@ void EditorUi::syncGpu() {
         }
         weightsKey_.clear(), errorKey_.clear(), influenceKey_.clear();
         if (first) frameFace_ = true;
+    }
+    // The parts are made once per cascade (a refined skin keeps them); the sliders move them as
+    // morph weights, like the skin.
+    if (std::shared_ptr<const HeadPartSamples> parts = session.faceParts(); parts != uploadedParts_) {
+        uploadedParts_ = std::move(parts);
+        const bool shown =
+            uploadedParts_ && !uploadedParts_->rest.empty() && session.attempt("Head parts", [&] {
+                partsMesh_.setGeometry(uploadedParts_->rest, uploadedParts_->triangles,
+                                       uploadedParts_->targets);
+                partsMesh_.setColors(uploadedParts_->colours);
+            });
+        if (!shown) partsMesh_.setGeometry({}, {}, {});
     }
     const ReductionResult* curve = session.reductionCurve();
     const int groups = session.document().target;
@@ -510,6 +551,7 @@ void EditorUi::views(float left, float top, float width, float height) {
                                     ? ViewSubject::Face
                                     : ViewSubject::Visemes;
     subject_ = subject;
+    shownFace_ = {}; // the face view says what it draws
     ImGui::SetNextWindowPos(ImVec2(left, top));
     ImGui::SetNextWindowSize(ImVec2(width, height));
     ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
@@ -597,16 +639,27 @@ void EditorUi::mainView(ImVec2 size) {
         const ImVec2 viewMin = ImGui::GetCursorScreenPos();
         const UvInsetPlace place = uvInsetPlace(viewMin, ImVec2(viewMin.x + size.x, viewMin.y + size.y));
         if (inset) mainView_.excludeFromDrags(place.min, place.max);
+        // The skin (its influence colours when a field is selected) and the head's parts inside it,
+        // in their own colours, at the same weights.
+        DrawStyle partsStyle = style;
+        partsStyle.color = ColorMode::VertexColor;
+        shownFace_ = {activePanel_, q, faceMesh_.triangleCount(), 0};
         events = mainView_.show("main", size, [&](const glm::mat4& view, const glm::mat4& projection) {
             faceMesh_.draw(shader_, q, view, projection, style);
+            if (faceMesh_.empty() || partsMesh_.empty()) return;
+            partsMesh_.draw(shader_, q, view, projection, partsStyle);
+            shownFace_.partTriangles = partsMesh_.triangleCount();
         });
         if (inset) uvInset(place, selectedStage_, selectedInfluence_);
         if (faceMesh_.empty())
             emptyViewHint(events.imageMin, events.imageMax,
                           "No face loaded: use \"Load bundled face\" in the panel");
-        else
-            label = std::string("Deformable face (") +
-                    std::string(face::individualName(session.face().individual)) + ")";
+        else // a face built from the user's mesh is named by its mesh, not as the bundled one
+            label =
+                "Deformable face (" +
+                (builtinIndividualOf(*cascade) ? std::string(face::individualName(session.face().individual))
+                                               : cascade->name) +
+                ")";
     } else {
         std::vector<float> weights =
             speechShown() ? speechWeights(false) : visemeWeights(session.selectedViseme);

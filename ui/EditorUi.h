@@ -97,6 +97,7 @@ class EditorUi {
     void frequenciesPanel();
     void weightsPanel();
     void deformationPanel();
+    void parameterSliders(); // the face's preset, defaults and parameter sliders (Deformation, Refinement)
     void refinementPanel();
     void reductionPanel();
     void exportPanel();
@@ -129,12 +130,22 @@ class EditorUi {
     GpuMesh visemeMesh_; // neutral + one target per viseme
     GpuMesh mergedMesh_; // neutral + one target per merged group
     GpuMesh faceMesh_;   // face cascade at q = 0 + one target per parameter
+    GpuMesh partsMesh_;  // the head's parts (eyeballs, teeth, tongue, cavity) in the same form
     Viewport mainView_, beforeView_, afterView_;
     std::uint64_t uploadedGeometry_ = 0;
     // Caches hold what they show (shared, immutable) or its revision, never a bare address that a
     // later allocation could reuse.
     std::shared_ptr<const DeformationCascade> uploadedCascade_;
     std::shared_ptr<const MeshData> uploadedDomain_;
+    std::shared_ptr<const HeadPartSamples> uploadedParts_; // what partsMesh_ holds
+    // What the face view drew in its last frame (for the probe): the panel, the weights, and the
+    // triangles of skin and parts.
+    struct ShownFace {
+        Panel panel = Panel::Count;
+        std::vector<float> weights;
+        std::size_t skinTriangles = 0, partTriangles = 0;
+    } shownFace_;
+    nlohmann::json faceViewProbe() const;
     std::uint64_t uploadedMergedCurve_ = 0; // ReductionService::curveRevision()
     int uploadedMergedGroups_ = 0;
     // What each mesh's scalars currently show, to re-upload only on change.

@@ -7,10 +7,12 @@
 //     corners, the lips' middles and quarter points, eye corners);
 //  5. a closed mouth from the profile: the groove between the lips below the nose, followed sideways
 //     to its ends;
-//  6. whatever is still missing, estimated from the bundled face's proportions.
+//  6. closed eyes (no openings) from the eye sockets: core/face/ClosedEyes.h;
+//  7. whatever is still missing, estimated from the bundled face's proportions.
 #include "core/face/GeometryLandmarks.h"
 
 #include "core/deform/BundledFace.h"
+#include "core/face/ClosedEyes.h"
 #include "core/face/FaceFrame.h"
 #include "core/face/MeshGeometry.h"
 #include "core/face/SurfaceAnalysis.h"
@@ -573,8 +575,7 @@ GeometryFinding findLandmarksFromGeometry(const UvMesh& mesh) {
         }
     }
 
-    // 6. Whatever is missing, from the bundled face's proportions: offsets from the nose tip in the
-    // face's frame, scaled by the nose-to-mouth (or nose-to-eyes) distance, projected onto the surface.
+    // 6. Closed eyes (no openings): the eye sockets on the face's front, above the nose tip.
     static const auto bundledPositions = baseLandmarkPositions(makeBundledFace());
     const FaceFrame& bundled = bundledFaceFrame();
     const auto bundledLocal = [&](Landmark l) {
@@ -587,6 +588,33 @@ GeometryFinding findLandmarksFromGeometry(const UvMesh& mesh) {
         return user ? (frame.local(lm[a].position) + frame.local(lm[b].position)) * 0.5
                     : (bundledLocal(a) + bundledLocal(b)) * 0.5;
     };
+    const bool mouthFound = lm[Landmark::MouthCornerRight].found() && lm[Landmark::MouthCornerLeft].found();
+    if (mouthFound && !lm[Landmark::EyeInnerRight].found()) {
+        std::vector<std::array<Vec3, 3>> front;
+        front.reserve(regionTriangles.size());
+        for (const auto& t : regionTriangles)
+            front.push_back(
+                {frame.local(s.points[t[0]]), frame.local(s.points[t[1]]), frame.local(s.points[t[2]])});
+        const double mouthDepth = -middle(Landmark::MouthCornerRight, Landmark::MouthCornerLeft, true)[1];
+        const double mouthWidth =
+            (lm[Landmark::MouthCornerLeft].position - lm[Landmark::MouthCornerRight].position).norm();
+        const ClosedEyes eyes = findClosedEyes(front, mouthDepth, mouthWidth);
+        if (eyes.found) {
+            const double conf = eyes.confidence * orientationConfidence;
+            for (const int side : {0, 1}) {
+                const bool right = side == 0;
+                const std::string what = std::string(right ? "right " : "left ") + eyes.method;
+                lm[right ? Landmark::EyeInnerRight : Landmark::EyeInnerLeft] =
+                    fromPoint(mesh, regionMask, frame.world(eyes.inner[side]), conf, what + ", inner corner");
+                lm[right ? Landmark::EyeOuterRight : Landmark::EyeOuterLeft] =
+                    fromPoint(mesh, regionMask, frame.world(eyes.outer[side]), conf, what + ", outer corner");
+            }
+            out.notes.push_back("geometry: no eye openings; the eyes placed in the eye sockets");
+        }
+    }
+
+    // 7. Whatever is missing, from the bundled face's proportions: offsets from the nose tip in the
+    // face's frame, scaled by the nose-to-mouth (or nose-to-eyes) distance, projected onto the surface.
     double scale = 0.0;
     if (lm[Landmark::MouthCornerRight].found() && lm[Landmark::MouthCornerLeft].found())
         scale = middle(Landmark::MouthCornerRight, Landmark::MouthCornerLeft, true)[1] /

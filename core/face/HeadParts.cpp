@@ -444,6 +444,14 @@ std::vector<Vec3> HeadPartsSampler::evaluate(std::span<const double> q) const {
     return out;
 }
 
+std::vector<Vec3> HeadPartsSampler::displacement(std::size_t parameter) const {
+    if (parameter >= displacement_.size())
+        throwInputError("head parts", "no parameter " + std::to_string(parameter) + " (the face has " +
+                                          std::to_string(displacement_.size()) + ")");
+    const auto& d = displacement_[parameter];
+    return d.empty() ? std::vector<Vec3>(rest_.size(), Vec3(0, 0, 0)) : d;
+}
+
 MeshData partsMesh(std::span<const HeadPart> parts) {
     MeshData mesh;
     for (const auto& part : parts) {

@@ -48,6 +48,11 @@ class HeadPartsSampler {
     HeadPartsSampler(const DeformationCascade& cascade, std::span<const HeadPart> parts);
     std::size_t vertexCount() const { return rest_.size(); }
     std::vector<Vec3> evaluate(std::span<const double> q) const;
+    // The linear form of evaluate(): the positions at q = 0 and D_k, the displacement per unit of
+    // parameter k (all zero for a parameter no part follows), so that a morph shader reproduces any
+    // q as rest + sum_k q_k D_k.
+    const std::vector<Vec3>& rest() const { return rest_; }
+    std::vector<Vec3> displacement(std::size_t parameter) const;
 
   private:
     DeformationCascade ranges_; // parameter names and ranges only

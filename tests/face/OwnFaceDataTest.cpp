@@ -39,8 +39,8 @@ TEST(OwnFaceData, MediaPipeLayoutAndGeometryFinderAgree) {
                          layout.landmarks[Landmark::EyeInnerRight].position)
                             .norm();
     // The canonical face's mouth and eyes are closed: the mouth is found from the groove between the
-    // lips, the nose from the symmetry plane, both within a fifth of the inner eye distance of the
-    // layout's vertices. The eyes (no opening to find) are only estimated and said to be.
+    // lips, the nose from the symmetry plane, the eyes from their sockets (ClosedEyesTest.cpp), all
+    // within a fifth of the inner eye distance of the layout's vertices. Estimates say they are.
     for (const auto l : allLandmarks()) {
         if (!isRequired(l)) continue;
         const auto& found = geometry.landmarks[l];

@@ -126,7 +126,7 @@ TEST(OwnFaceRobustness, IctHeadCutFourTimesFinerGivesTheSameLandmarks) {
 }
 
 // The canonical face has its eyes and mouth closed (one boundary loop: the outer border): the mouth is
-// found from the groove between the lips, the eyes only estimated, and that holds in any pose.
+// found from the groove between the lips, the eyes from their sockets, and that holds in any pose.
 TEST(OwnFaceRobustness, MediaPipeFaceWithClosedEyesAndMouthGivesTheSameLandmarksInAnyPose) {
     SKIP_WITHOUT(kMediaPipe);
     const UvMesh mesh = loadUvMesh(kMediaPipe);

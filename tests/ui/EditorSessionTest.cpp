@@ -8,6 +8,8 @@
 #include "core/deform/Visemes.h"
 #include "core/export/Export.h"
 #include "core/export/VisemeFile.h"
+#include "core/face/FaceFrame.h"
+#include "core/face/HeadParts.h"
 #include "core/io/MeshIO.h"
 #include "core/paint/WeightBrush.h"
 #include "core/project/ProjectRun.h"
@@ -358,6 +360,100 @@ TEST(EditorSession, RefinementHandsOverTheSamplesOfItsMesh) {
     EXPECT_FALSE(session.faceSamplesReady());
     EXPECT_EQ(session.faceSamples().rest.size(), session.face().domain->uvs.size());
     EXPECT_TRUE(session.faceSamplesReady());
+}
+
+// The parts' centre in morph form at parameters q: rest + sum q_k (target_k - rest).
+Vec3 partCentre(const HeadPartSamples& samples, const std::string& name, const std::vector<double>& q) {
+    for (const HeadPartSamples::Part& part : samples.parts) {
+        if (part.name != name) continue;
+        Vec3 sum(0, 0, 0);
+        for (std::size_t i = part.first; i < part.first + part.count; ++i) {
+            Vec3 p = samples.rest[i];
+            for (std::size_t k = 0; k < q.size(); ++k) p += (samples.targets[k][i] - samples.rest[i]) * q[k];
+            sum += p;
+        }
+        return sum / static_cast<double>(part.count);
+    }
+    ADD_FAILURE() << "no part " << name;
+    return Vec3(0, 0, 0);
+}
+
+TEST(EditorSession, HeadPartsAreMadeOncePerFaceAndFollowTheParametersAsMorphs) {
+    EditorSession session;
+    EXPECT_EQ(session.faceParts(), nullptr);
+    session.loadFace();
+    const auto parts = session.faceParts();
+    ASSERT_NE(parts, nullptr);
+    std::vector<std::string> names;
+    for (const auto& part : parts->parts) names.push_back(part.name);
+    EXPECT_EQ(names, (std::vector<std::string>{"eye_right", "eye_left", "teeth_upper", "teeth_lower",
+                                               "tongue", "mouth_cavity"}));
+    ASSERT_EQ(parts->targets.size(), session.face().cascade->parameters.size());
+    ASSERT_EQ(parts->colours.size(), parts->rest.size());
+    ASSERT_FALSE(parts->triangles.empty());
+    EXPECT_EQ(parts->parts.back().first + parts->parts.back().count, parts->rest.size());
+
+    // The morph form is the core's evaluation at the face's parameters (here jaw_open at its max).
+    const DeformationCascade& cascade = *session.face().cascade;
+    const int jaw = cascade.findParameter("jaw_open");
+    ASSERT_GE(jaw, 0);
+    std::vector<double> q = session.face().parameters;
+    q[static_cast<std::size_t>(jaw)] = cascade.parameters[static_cast<std::size_t>(jaw)].max;
+    const auto core = face::makeHeadParts(cascade);
+    const std::vector<Vec3> expected = face::HeadPartsSampler(cascade, core).evaluate(q);
+    ASSERT_EQ(expected.size(), parts->rest.size());
+    for (std::size_t i = 0; i < expected.size(); ++i) {
+        Vec3 morph = parts->rest[i];
+        for (std::size_t k = 0; k < q.size(); ++k) morph += (parts->targets[k][i] - parts->rest[i]) * q[k];
+        ASSERT_LT((morph - expected[i]).norm(), 1e-9) << "vertex " << i;
+    }
+    // jaw_open lowers the lower teeth and the tongue; the upper teeth stay with the skull.
+    const std::vector<double> rest = session.face().parameters;
+    EXPECT_LT(partCentre(*parts, "teeth_lower", q)[1], partCentre(*parts, "teeth_lower", rest)[1] - 0.3);
+    EXPECT_LT(partCentre(*parts, "tongue", q)[1], partCentre(*parts, "tongue", rest)[1] - 0.2);
+    EXPECT_EQ(partCentre(*parts, "teeth_upper", q), partCentre(*parts, "teeth_upper", rest));
+
+    // A slider and a refined skin keep them; another face (retargeting) makes them again.
+    session.setParameter(jaw, q[static_cast<std::size_t>(jaw)]);
+    EXPECT_EQ(session.faceParts(), parts);
+    session.startRefinement(RefineAction::Refine);
+    session.finishBackgroundWork();
+    ASSERT_TRUE(session.lastRefinement().has_value());
+    EXPECT_EQ(session.faceParts(), parts);
+    session.setIndividual(face::Individual::Retarget);
+    const auto retargeted = session.faceParts();
+    ASSERT_NE(retargeted, nullptr);
+    EXPECT_NE(retargeted, parts);
+    EXPECT_NE(retargeted->rest, parts->rest);
+    session.undo();
+    EXPECT_EQ(session.faceParts()->rest, parts->rest);
+}
+
+TEST(EditorSession, AFaceBuiltFromTheUsersMeshShowsTheCarriedParts) {
+    const std::filesystem::path mediaPipe = std::filesystem::path(VISEMELAB_SHARED_DATA_DIR) /
+                                            "mediapipe-canonical-face" / "canonical_face_model.obj";
+    if (!std::filesystem::exists(mediaPipe))
+        GTEST_SKIP() << "shared data missing: " << mediaPipe << " (set VISEMELAB_SHARED_DATA_DIR)";
+    EditorSession session;
+    session.loadFace();
+    const auto bundled = session.faceParts();
+    session.useOwnFace(loadOwnFaceCandidate(mediaPipe));
+    const auto parts = session.faceParts();
+    ASSERT_NE(parts, nullptr);
+    ASSERT_NE(parts, bundled);
+    ASSERT_EQ(parts->parts.size(), bundled->parts.size());
+    for (const auto& message : session.messages())
+        EXPECT_NE(message.kind, StatusMessage::Kind::Error) << message.text;
+    // Carried to this face: the teeth sit between its mouth corners, the eyeballs at its eyes.
+    const auto landmarks = face::baseLandmarkPositions(*session.face().cascade);
+    const auto at = [&](face::Landmark l) { return landmarks[static_cast<std::size_t>(l)]; };
+    const std::vector<double> q = session.face().parameters;
+    const Vec3 mouth = (at(face::Landmark::MouthCornerLeft) + at(face::Landmark::MouthCornerRight)) * 0.5;
+    const double mouthWidth =
+        (at(face::Landmark::MouthCornerLeft) - at(face::Landmark::MouthCornerRight)).norm();
+    EXPECT_LT((partCentre(*parts, "teeth_upper", q) - mouth).norm(), mouthWidth);
+    const Vec3 eye = (at(face::Landmark::EyeInnerLeft) + at(face::Landmark::EyeOuterLeft)) * 0.5;
+    EXPECT_LT((partCentre(*parts, "eye_left", q) - eye).norm(), 0.5 * mouthWidth);
 }
 
 TEST(EditorSession, VisemesGeneratedOnARefinedMeshAreInterpolable) {

@@ -1,5 +1,6 @@
 // Refinement panel: the adaptive mesh's criterion and thresholds, refine / simplify / re-adapt
-// buttons running on a worker thread, live counts and timing, and the automatic mode.
+// buttons running on a worker thread, live counts and timing, the automatic mode, and the face's
+// parameter sliders (the same as the Deformation panel's: the view shows the face at them).
 #include "ui/EditorUi.h"
 #include "ui/panels/PanelWidgets.h"
 #include "ui/widgets/Controls.h"
@@ -112,7 +113,11 @@ void EditorUi::refinementPanel() {
     } else {
         ImGui::TextDisabled("The face is shown on a regular (u,v) grid until you refine.");
     }
-    ImGui::TextDisabled("Parameters: Deformation panel (the view shows the same face).");
+
+    sectionHeader("Parameters");
+    noteText("The view shows the refined skin and, inside it, the head's parts (eyeballs, teeth, tongue, "
+             "mouth cavity) at these values.");
+    parameterSliders();
 }
 
 } // namespace vl::ui

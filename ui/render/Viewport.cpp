@@ -96,6 +96,7 @@ ViewportEvents Viewport::show(const char* id, ImVec2 size, const SceneFn& scene,
     if (!shownSignature_ || *shownSignature_ != signature.value()) {
         render(scene, view, projection);
         shownSignature_ = signature.value();
+        ++renders_;
     }
 
     ImGui::PushID(id);

@@ -44,6 +44,9 @@ class Viewport {
         excludedMax_ = max;
     }
 
+    // How many times the scene was rendered (not shown again): for the GUI tests' idle checks.
+    std::uint64_t renders() const { return renders_; }
+
     OrbitCamera camera;
     glm::vec3 background{0.16f, 0.17f, 0.20f};
 
@@ -56,6 +59,7 @@ class Viewport {
     GLuint msaaFbo_ = 0, msaaColor_ = 0, msaaDepth_ = 0;
     GLuint resolveFbo_ = 0, resolveTexture_ = 0;
     std::optional<std::uint64_t> shownSignature_; // of the scene in resolveTexture_
+    std::uint64_t renders_ = 0;
     bool leftDragActive_ = false, otherDragActive_ = false;
     ImVec2 excludedMin_{0, 0}, excludedMax_{0, 0};
 };

@@ -586,6 +586,22 @@ bool EditorSession::faceSamplesReady() const {
     return samples_ && model.cascade && samplesCascade_ == model.cascade && samplesDomain_ == model.domain;
 }
 
+std::shared_ptr<const HeadPartSamples> EditorSession::faceParts() {
+    const std::shared_ptr<const DeformationCascade>& cascade = face().cascade;
+    if (!cascade) {
+        partsCascade_.reset();
+        parts_.reset();
+        return nullptr;
+    }
+    if (partsCascade_ != cascade || !parts_) {
+        partsCascade_ = cascade;
+        parts_ = std::make_shared<const HeadPartSamples>();
+        attempt("Head parts",
+                [&] { parts_ = std::make_shared<const HeadPartSamples>(sampleHeadParts(*cascade)); });
+    }
+    return parts_;
+}
+
 void EditorSession::adoptFaceSamples(std::shared_ptr<const DeformationCascade> cascade,
                                      std::shared_ptr<const MeshData> domain,
                                      std::shared_ptr<const FaceSamples> samples) {

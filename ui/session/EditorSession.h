@@ -157,6 +157,12 @@ class EditorSession {
     // Whether faceSamples() has the current face's samples without evaluating the cascade (after a
     // refinement: the worker's own samples).
     bool faceSamplesReady() const;
+    // The head's parts of the current face (eyeballs, teeth, tongue, mouth cavity; for a face built
+    // from the user's mesh, the bundled parts carried to it) in morph form, shown beside the skin in
+    // the face views. Made once per cascade: sliders move them through the morph weights, a field
+    // edit, retargeting or another face makes them again; a refined skin keeps them. Null without a
+    // face; empty (and said once in the status bar) when the face's landmarks carry no parts.
+    std::shared_ptr<const HeadPartSamples> faceParts();
     // Own face (Deformation > Use my mesh...): the face built from the user's mesh and confirmed
     // landmarks becomes the document's face (one undo step); the status bar says what the build found.
     void useOwnFace(const OwnFaceCandidate& candidate);
@@ -322,6 +328,9 @@ class EditorSession {
     std::shared_ptr<const DeformationCascade> samplesCascade_;
     std::shared_ptr<const MeshData> samplesDomain_;
     std::shared_ptr<const FaceSamples> samples_;
+    // faceParts() cache: the parts of partsCascade_.
+    std::shared_ptr<const DeformationCascade> partsCascade_;
+    std::shared_ptr<const HeadPartSamples> parts_;
     // visemeSetMadeByFace() cache: the answer for the set and cascade it holds.
     struct MadeByFace {
         std::shared_ptr<const VisemeSet> set;

@@ -2,6 +2,7 @@
 
 #include "core/deform/BundledFace.h"
 #include "core/deform/CascadeSampler.h"
+#include "core/face/HeadParts.h"
 
 #include <algorithm>
 #include <optional>
@@ -34,6 +35,26 @@ FaceSamples sampleFace(const DeformationCascade& cascade, const std::vector<Vec2
         out.targets.push_back(evaluateAll());
     }
     out.colours = face::faceColours(uvs);
+    return out;
+}
+
+HeadPartSamples sampleHeadParts(const DeformationCascade& cascade) {
+    const std::vector<face::HeadPart> parts = face::makeHeadParts(cascade);
+    const face::HeadPartsSampler sampler(cascade, parts);
+    const MeshData mesh = face::partsMesh(parts);
+    HeadPartSamples out;
+    for (const face::HeadPart& part : parts)
+        out.parts.push_back({part.name,
+                             out.parts.empty() ? 0 : out.parts.back().first + out.parts.back().count,
+                             part.rest.positions.size()});
+    out.rest = sampler.rest();
+    out.triangles = mesh.triangles;
+    for (std::size_t k = 0; k < cascade.parameters.size(); ++k) {
+        std::vector<Vec3> target = sampler.displacement(k);
+        for (std::size_t i = 0; i < target.size(); ++i) target[i] += out.rest[i];
+        out.targets.push_back(std::move(target));
+    }
+    out.colours = face::faceColours(mesh.uvs);
     return out;
 }
 

@@ -1,0 +1,51 @@
+// Closed eyes found from the shape of the face: the MediaPipe canonical face read without its layout
+// (from VISEMELAB_SHARED_DATA_DIR, skipped loudly when absent) has no eye openings; its eye corners
+// must come out near the layout's, found from the geometry and said to be.
+#include "core/face/LandmarkFinder.h"
+
+#include "tests/face/SharedFaces.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstdlib>
+
+namespace vl::face {
+namespace {
+
+using namespace test; // the shared faces
+
+constexpr Landmark kEyeCorners[] = {Landmark::EyeOuterRight, Landmark::EyeInnerRight, Landmark::EyeInnerLeft,
+                                    Landmark::EyeOuterLeft};
+
+// Each eye corner found from the geometry within `inner` (inner corners) or `outer` (outer corners)
+// inner eye distances of `truth`.
+void expectEyeCorners(const FaceLandmarks& found, const std::array<Vec3, kLandmarkCount>& truth, double inner,
+                      double outer) {
+    const auto at = [&](Landmark l) { return truth[static_cast<std::size_t>(l)]; };
+    const double eyes = (at(Landmark::EyeInnerLeft) - at(Landmark::EyeInnerRight)).norm();
+    for (const auto l : kEyeCorners) {
+        const double error = (found[l].position - at(l)).norm() / eyes;
+        const bool isInner = l == Landmark::EyeInnerRight || l == Landmark::EyeInnerLeft;
+        if (std::getenv("VL_DEBUG"))
+            std::printf("%-16s %-9s %3.0f%%  %.3f inner eye distances off  (%s)\n",
+                        std::string(landmarkName(l)).c_str(),
+                        std::string(sourceName(found[l].source)).c_str(), 100.0 * found[l].confidence, error,
+                        found[l].method.c_str());
+        EXPECT_EQ(found[l].source, LandmarkSource::Geometry) << landmarkName(l) << ": " << found[l].method;
+        EXPECT_LT(error, isInner ? inner : outer) << landmarkName(l) << ": " << found[l].method;
+        EXPECT_LE(found[l].confidence, 0.6) << landmarkName(l); // below what an opening earns
+    }
+}
+
+TEST(ClosedEyes, MediaPipeFaceEyeCornersFromItsGeometryMatchTheLayout) {
+    SKIP_WITHOUT(kMediaPipe);
+    const UvMesh mesh = loadUvMesh(kMediaPipe);
+    const FaceLandmarks layout = suggestLandmarks(mesh).landmarks;
+    std::array<Vec3, kLandmarkCount> truth{};
+    for (const auto l : allLandmarks()) truth[static_cast<std::size_t>(l)] = layout[l].position;
+    expectEyeCorners(suggestLandmarks(mesh, {}, false).landmarks, truth, 0.1, 0.2);
+}
+
+} // namespace
+} // namespace vl::face
