@@ -36,10 +36,23 @@ std::int64_t parseInteger(std::string_view token, std::string_view where) {
 }
 
 std::string formatDouble(double value) {
+    std::string text;
+    appendDouble(text, value);
+    return text;
+}
+
+void appendDouble(std::string& out, double value) {
     char buffer[32];
     const auto [ptr, ec] = std::to_chars(buffer, buffer + sizeof buffer, value);
     (void)ec; // 32 characters always suffice for the shortest round-trip form of a double
-    return std::string(buffer, ptr);
+    out.append(buffer, ptr);
+}
+
+void appendInteger(std::string& out, std::int64_t value) {
+    char buffer[24];
+    const auto [ptr, ec] = std::to_chars(buffer, buffer + sizeof buffer, value);
+    (void)ec; // 20 digits and a sign fit
+    out.append(buffer, ptr);
 }
 
 std::vector<std::string_view> splitWhitespace(std::string_view line) {

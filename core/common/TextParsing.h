@@ -15,6 +15,10 @@ std::int64_t parseInteger(std::string_view token, std::string_view where);
 
 // Shortest text that parses back to exactly the same double (round-trip exact).
 std::string formatDouble(double value);
+// The same text appended to `out` without a temporary string (writers format ~100k numbers per mesh).
+void appendDouble(std::string& out, double value);
+// Decimal text of an integer appended to `out`.
+void appendInteger(std::string& out, std::int64_t value);
 
 // Splits on spaces/tabs (and '\r'), skipping empty tokens.
 std::vector<std::string_view> splitWhitespace(std::string_view line);

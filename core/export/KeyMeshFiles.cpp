@@ -23,20 +23,15 @@ std::string keyFileName(const ReducedModel& model, std::size_t key, std::string_
            std::string(extension);
 }
 
-MeshData keyMeshData(const ReducedModel& model, std::size_t key) {
-    MeshData mesh = model.neutral;
-    mesh.positions = model.keys[key].positions;
-    return mesh;
-}
-
 std::vector<std::string> addKeyMeshFiles(OutputSet& outputs, const ReducedModel& model,
                                          std::string_view extension) {
     validateReducedModel(model, "export");
     std::vector<std::string> names{neutralFileName(extension)};
-    outputs.add(names.back(), formatMesh(names.back(), model.neutral));
+    const MeshTextFormatter formatter(names.back(), model.neutral); // the keys share its topology
+    outputs.add(names.back(), formatter.format(model.neutral.positions));
     for (std::size_t k = 0; k < model.keys.size(); ++k) {
         names.push_back(keyFileName(model, k, extension));
-        outputs.add(names.back(), formatMesh(names.back(), keyMeshData(model, k)));
+        outputs.add(names.back(), formatter.format(model.keys[k].positions));
     }
     return names;
 }

@@ -18,9 +18,6 @@ std::string fileSafeName(std::string_view name);
 std::string neutralFileName(std::string_view extension);
 std::string keyFileName(const ReducedModel& model, std::size_t key, std::string_view extension);
 
-// The key mesh as a full mesh (neutral topology and (u,v), the key's positions).
-MeshData keyMeshData(const ReducedModel& model, std::size_t key);
-
 // Stages the neutral and every key mesh with `extension` (".obj", ".ply" or ".wrl") in `outputs`;
 // returns the file names, neutral first.
 std::vector<std::string> addKeyMeshFiles(OutputSet& outputs, const ReducedModel& model,

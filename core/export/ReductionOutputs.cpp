@@ -12,11 +12,14 @@ namespace vl {
 std::vector<std::string> writeReductionOutputs(OutputSet& outputs, const ReduceOutcome& outcome) {
     const ReducedModel& model = outcome.model;
     std::vector<std::string> written;
+    // The keys share the neutral mesh's topology: its faces and (u,v) are formatted once per format.
+    const MeshTextFormatter obj("key.obj", model.neutral), wrl("key.wrl", model.neutral);
+    std::string text; // one buffer for every file
     for (std::size_t k = 0; k < model.keys.size(); ++k) {
-        const MeshData mesh = keyMeshData(model, k);
-        for (const char* extension : {".obj", ".wrl"}) {
-            written.push_back(keyFileName(model, k, extension));
-            outputs.add(written.back(), formatMesh(written.back(), mesh));
+        for (const MeshTextFormatter* formatter : {&obj, &wrl}) {
+            written.push_back(keyFileName(model, k, formatter == &obj ? ".obj" : ".wrl"));
+            formatter->format(model.keys[k].positions, text);
+            outputs.add(written.back(), text);
         }
     }
     written.emplace_back("mapping.json");

@@ -3,6 +3,7 @@
 
 #include "core/common/AtomicFile.h"
 #include "core/common/Error.h"
+#include "core/io/MeshIOSupport.h"
 
 #include <algorithm>
 #include <cctype>
@@ -71,6 +72,38 @@ MeshData readMesh(const std::filesystem::path& path, CornerTexCoords& corners) {
     return readMeshFile(path, &corners);
 }
 
+ReferenceMesh readReferenceMesh(const std::filesystem::path& path) {
+    if (meshFormatFromPath(path) != MeshFormat::Obj) return {readMesh(path), {}};
+    const std::string bytes = readFileToString(path);
+    try {
+        ReferenceMesh reference{parseObj(bytes, path.string()), {}};
+        reference.objStructure = objStructure(bytes);
+        return reference;
+    } catch (const std::bad_alloc&) {
+        throwInputError(path.string(),
+                        "not enough memory to read this mesh (" + std::to_string(bytes.size()) + " bytes)");
+    }
+}
+
+MeshData readMeshLike(const std::filesystem::path& path, const ReferenceMesh& reference) {
+    if (reference.objStructure.empty() || meshFormatFromPath(path) != MeshFormat::Obj) return readMesh(path);
+    const std::string bytes = readFileToString(path);
+    const std::string source = path.string();
+    try {
+        if (auto positions = parseObjPositionsMatching(bytes, source, reference.objStructure)) {
+            MeshData mesh;
+            mesh.positions = std::move(*positions);
+            mesh.triangles = reference.mesh.triangles;
+            mesh.uvs = reference.mesh.uvs;
+            return mesh;
+        }
+        return parseObj(bytes, source);
+    } catch (const std::bad_alloc&) {
+        throwInputError(source,
+                        "not enough memory to read this mesh (" + std::to_string(bytes.size()) + " bytes)");
+    }
+}
+
 std::string formatMesh(const std::filesystem::path& path, const MeshData& mesh) {
     switch (meshFormatFromPath(path)) {
     case MeshFormat::Obj:
@@ -81,6 +114,46 @@ std::string formatMesh(const std::filesystem::path& path, const MeshData& mesh) 
         return formatVrml(mesh);
     }
     throwInputError(path.string(), "unknown mesh format");
+}
+
+MeshTextFormatter::MeshTextFormatter(const std::filesystem::path& path, const MeshData& topology)
+    : format_(meshFormatFromPath(path)), topology_(topology) {
+    meshio::requireWritable(topology_);
+    if (format_ == MeshFormat::Ply) return; // binary, and as fast as copying
+    meshio::TextAroundPositions parts = format_ == MeshFormat::Obj
+                                            ? meshio::objTextAroundPositions(topology_)
+                                            : meshio::vrmlTextAroundPositions(topology_);
+    head_ = std::move(parts.head);
+    tail_ = std::move(parts.tail);
+}
+
+std::string MeshTextFormatter::format(std::span<const Vec3> positions) const {
+    std::string out;
+    format(positions, out);
+    return out;
+}
+
+void MeshTextFormatter::format(std::span<const Vec3> positions, std::string& out) const {
+    if (positions.size() != topology_.positions.size())
+        throw std::invalid_argument("MeshTextFormatter: " + std::to_string(positions.size()) +
+                                    " positions for a topology of " +
+                                    std::to_string(topology_.positions.size()));
+    if (format_ == MeshFormat::Ply) {
+        out = formatPly({{positions.begin(), positions.end()}, topology_.uvs, topology_.triangles});
+        return;
+    }
+    for (std::size_t i = 0; i < positions.size(); ++i)
+        if (!std::isfinite(positions[i][0]) || !std::isfinite(positions[i][1]) ||
+            !std::isfinite(positions[i][2]))
+            throwInputError("mesh to write", "vertex " + std::to_string(i) + " has a non-finite coordinate");
+    out.clear();
+    out.reserve(head_.size() + positions.size() * 70 + tail_.size());
+    out += head_;
+    if (format_ == MeshFormat::Obj)
+        meshio::appendObjPositions(out, positions);
+    else
+        meshio::appendVrmlPositions(out, positions);
+    out += tail_;
 }
 
 void writeMesh(const std::filesystem::path& path, const MeshData& mesh) {

@@ -22,6 +22,8 @@
 #include "core/mesh/Mesh.h"
 
 #include <filesystem>
+#include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -50,10 +52,38 @@ bool isMeshFile(const std::filesystem::path& path);
 MeshData readMesh(const std::filesystem::path& path);
 // The same, and the file's per-corner texture coordinates.
 MeshData readMesh(const std::filesystem::path& path, CornerTexCoords& corners);
+
+// A mesh read to stand for files of the same topology (a viseme set's neutral mesh).
+struct ReferenceMesh {
+    MeshData mesh;
+    std::string objStructure; // OBJ: the file's lines with each `v` line's numbers left out
+};
+ReferenceMesh readReferenceMesh(const std::filesystem::path& path);
+// The same result as readMesh(path). When `path` is an OBJ whose lines equal the reference's, in
+// order, except the numbers of its `v` lines, its faces and texture coordinates are the reference's
+// and only the `v` lines are parsed (a viseme exported beside its neutral mesh: a few times faster).
+MeshData readMeshLike(const std::filesystem::path& path, const ReferenceMesh& reference);
 // Writes atomically (temp file + rename) in the format of the extension.
 void writeMesh(const std::filesystem::path& path, const MeshData& mesh);
 // The file contents writeMesh writes, for writers that stage files (core/common/OutputSet.h).
 std::string formatMesh(const std::filesystem::path& path, const MeshData& mesh);
+
+// Formats meshes of one topology (vertex count, triangles, (u,v)) - the key meshes of a reduction -
+// in the format of `path`'s extension, the text that does not depend on the positions only once:
+// format(p) == formatMesh(path, {p, topology.uvs, topology.triangles}) for p of the topology's size.
+class MeshTextFormatter {
+  public:
+    MeshTextFormatter(const std::filesystem::path& path, const MeshData& topology);
+    std::string format(std::span<const Vec3> positions) const;
+    // The same text into `out` (replacing its contents): a buffer reused for many files keeps its
+    // pages, where a fresh string of this size is mapped and faulted in anew each time.
+    void format(std::span<const Vec3> positions, std::string& out) const;
+
+  private:
+    MeshFormat format_;
+    MeshData topology_;
+    std::string head_, tail_; // OBJ and VRML: the file around the positions
+};
 
 // Format-level entry points on in-memory text; `source` names the file in error messages.
 //
@@ -65,6 +95,12 @@ std::string formatMesh(const std::filesystem::path& path, const MeshData& mesh);
 MeshData parseObj(std::string_view text, std::string_view source);
 // The same, and the file's per-corner texture coordinates.
 MeshData parseObj(std::string_view text, std::string_view source, CornerTexCoords& corners);
+// The structure readMeshLike compares: every line of `text`, a `v` line as just "v".
+std::string objStructure(std::string_view text);
+// The positions of `text` when objStructure(text) == structure, else nothing; errors in `v` lines
+// are reported as parseObj reports them.
+std::optional<std::vector<Vec3>> parseObjPositionsMatching(std::string_view text, std::string_view source,
+                                                           std::string_view structure);
 // `v` lines, `vt` lines when the mesh has (u,v), and `f a b c` or `f a/a b/b c/c`.
 std::string formatObj(const MeshData& mesh);
 

@@ -73,7 +73,8 @@ void appendDoubles(std::string& out, std::string_view prefix, std::initializer_l
     out += prefix;
     const char* separator = "";
     for (const double value : values) {
-        out.append(separator).append(formatDouble(value));
+        out.append(separator);
+        appendDouble(out, value);
         separator = " ";
     }
     out += suffix;

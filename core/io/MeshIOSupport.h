@@ -58,4 +58,15 @@ void appendDoubles(std::string& out, std::string_view prefix, std::initializer_l
 std::vector<Vec2> uvsFromFirstCorners(std::span<const std::int64_t> cornerUV,
                                       std::span<const Vec2> texCoords);
 
+// A text format's file split around its vertex positions: head + positions + tail is the file, and
+// head and tail depend only on the mesh's counts, (u,v) and triangles (formatted once for many meshes
+// of one topology, MeshTextFormatter).
+struct TextAroundPositions {
+    std::string head, tail;
+};
+TextAroundPositions objTextAroundPositions(const MeshData& topology);
+void appendObjPositions(std::string& out, std::span<const Vec3> positions);
+TextAroundPositions vrmlTextAroundPositions(const MeshData& topology);
+void appendVrmlPositions(std::string& out, std::span<const Vec3> positions);
+
 } // namespace vl::meshio

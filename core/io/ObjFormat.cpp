@@ -30,17 +30,53 @@ class ObjParser {
 
     MeshData run() {
         meshio::requireNotBlank(text_, source_);
-        std::size_t pos = text_.starts_with("\xEF\xBB\xBF") ? 3 : 0; // UTF-8 byte order mark
-        while (pos < text_.size()) {
-            const void* newline = std::memchr(text_.data() + pos, '\n', text_.size() - pos);
-            const std::size_t end =
-                newline ? static_cast<std::size_t>(static_cast<const char*>(newline) - text_.data())
-                        : text_.size();
+        forEachLine(text_, [this](std::string_view line) {
             ++line_;
-            parseLine(text_.substr(pos, end - pos));
+            parseLine(line);
+            return true;
+        });
+        return finish();
+    }
+
+    // The `v` lines' positions when every other line equals the structure's line (see objStructure).
+    std::optional<std::vector<Vec3>> positionsMatching(std::string_view structure) {
+        meshio::requireNotBlank(text_, source_);
+        std::size_t at = 0; // read position in `structure`
+        const bool same = forEachLine(text_, [&](std::string_view line) {
+            ++line_;
+            const std::size_t newline = structure.find('\n', at);
+            if (newline == std::string_view::npos) return false; // more lines than the reference
+            const std::string_view expected = structure.substr(at, newline - at);
+            at = newline + 1;
+            if (!isVertexLine(line)) return line == expected;
+            if (expected != "v") return false;
+            std::size_t pos = 0;
+            (void)nextToken(line, pos);
+            parseVertex(line.substr(0, line.find('#')), pos);
+            return true;
+        });
+        if (!same || at != structure.size()) return std::nullopt;
+        return std::move(mesh_.positions);
+    }
+
+    static bool isVertexLine(std::string_view line) {
+        line = line.substr(0, line.find('#'));
+        std::size_t pos = 0;
+        return nextToken(line, pos) == "v";
+    }
+
+    // Calls visit(line) for each line after a UTF-8 byte order mark; stops when it returns false.
+    template <typename Visit> static bool forEachLine(std::string_view text, Visit&& visit) {
+        std::size_t pos = text.starts_with("\xEF\xBB\xBF") ? 3 : 0;
+        while (pos < text.size()) {
+            const void* newline = std::memchr(text.data() + pos, '\n', text.size() - pos);
+            const std::size_t end =
+                newline ? static_cast<std::size_t>(static_cast<const char*>(newline) - text.data())
+                        : text.size();
+            if (!visit(text.substr(pos, end - pos))) return false;
             pos = end + 1;
         }
-        return finish();
+        return true;
     }
 
   private:
@@ -208,23 +244,61 @@ MeshData parseObj(std::string_view text, std::string_view source, CornerTexCoord
     return ObjParser(text, source, &corners).run();
 }
 
+std::string objStructure(std::string_view text) {
+    std::string structure;
+    // The byte order mark is part of the structure: a file with one and a file without differ.
+    if (text.starts_with("\xEF\xBB\xBF")) structure = "\xEF\xBB\xBF\n";
+    ObjParser::forEachLine(text, [&](std::string_view line) {
+        structure.append(ObjParser::isVertexLine(line) ? std::string_view("v") : line).append("\n");
+        return true;
+    });
+    return structure;
+}
+
+std::optional<std::vector<Vec3>> parseObjPositionsMatching(std::string_view text, std::string_view source,
+                                                           std::string_view structure) {
+    const bool bom = text.starts_with("\xEF\xBB\xBF");
+    if (bom != structure.starts_with("\xEF\xBB\xBF\n")) return std::nullopt;
+    return ObjParser(text, source, nullptr).positionsMatching(bom ? structure.substr(4) : structure);
+}
+
 std::string formatObj(const MeshData& mesh) {
     meshio::requireWritable(mesh);
-    std::string out = "# VisemeLab mesh: " + std::to_string(mesh.positions.size()) + " vertices, " +
-                      std::to_string(mesh.triangles.size()) + " triangles\n";
-    out.reserve(mesh.positions.size() * 64 + mesh.triangles.size() * 40);
-    for (const auto& p : mesh.positions) meshio::appendDoubles(out, "v ", {p[0], p[1], p[2]}, "\n");
-    for (const auto& uv : mesh.uvs) meshio::appendDoubles(out, "vt ", {uv[0], uv[1]}, "\n");
-    for (const auto& t : mesh.triangles) {
+    meshio::TextAroundPositions parts = meshio::objTextAroundPositions(mesh);
+    std::string out = std::move(parts.head);
+    out.reserve(out.size() + mesh.positions.size() * 64 + parts.tail.size());
+    meshio::appendObjPositions(out, mesh.positions);
+    return out += parts.tail;
+}
+
+namespace meshio {
+
+TextAroundPositions objTextAroundPositions(const MeshData& topology) {
+    TextAroundPositions parts;
+    parts.head = "# VisemeLab mesh: " + std::to_string(topology.positions.size()) + " vertices, " +
+                 std::to_string(topology.triangles.size()) + " triangles\n";
+    std::string& out = parts.tail;
+    out.reserve(topology.uvs.size() * 48 + topology.triangles.size() * 40);
+    for (const auto& uv : topology.uvs) appendDoubles(out, "vt ", {uv[0], uv[1]}, "\n");
+    for (const auto& t : topology.triangles) {
         out += 'f';
         for (const auto v : t) {
-            const std::string index = std::to_string(v + 1);
-            out.append(" ").append(index);
-            if (mesh.hasUVs()) out.append("/").append(index);
+            out += ' ';
+            appendInteger(out, static_cast<std::int64_t>(v) + 1);
+            if (topology.hasUVs()) {
+                out += '/';
+                appendInteger(out, static_cast<std::int64_t>(v) + 1);
+            }
         }
         out += '\n';
     }
-    return out;
+    return parts;
 }
+
+void appendObjPositions(std::string& out, std::span<const Vec3> positions) {
+    for (const auto& p : positions) appendDoubles(out, "v ", {p[0], p[1], p[2]}, "\n");
+}
+
+} // namespace meshio
 
 } // namespace vl

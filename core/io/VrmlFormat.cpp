@@ -376,37 +376,57 @@ MeshData parseVrml(std::string_view text, std::string_view source, CornerTexCoor
 // an explicit texCoordIndex when there are texture coordinates. Any VRML97 reader reads it too.
 std::string formatVrml(const MeshData& mesh) {
     meshio::requireWritable(mesh);
-    std::string out = "#VRML V2.0 utf8\n# VisemeLab mesh: " + std::to_string(mesh.positions.size()) +
-                      " vertices, " + std::to_string(mesh.triangles.size()) + " triangles\n";
-    out.reserve(mesh.positions.size() * 70 + mesh.triangles.size() * (mesh.hasUVs() ? 120 : 60));
-    out += "Shape {\n  appearance Appearance { material Material { } }\n  geometry IndexedFaceSet {\n"
-           "    solid FALSE\n    coord Coordinate {\n      point [\n";
-    for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
-        const Vec3& p = mesh.positions[i];
-        meshio::appendDoubles(out, "        ", {p[0], p[1], p[2]},
-                              i + 1 < mesh.positions.size() ? ",\n" : "\n");
-    }
+    meshio::TextAroundPositions parts = meshio::vrmlTextAroundPositions(mesh);
+    std::string out = std::move(parts.head);
+    out.reserve(out.size() + mesh.positions.size() * 70 + parts.tail.size());
+    meshio::appendVrmlPositions(out, mesh.positions);
+    return out += parts.tail;
+}
+
+namespace meshio {
+
+TextAroundPositions vrmlTextAroundPositions(const MeshData& topology) {
+    TextAroundPositions parts;
+    parts.head = "#VRML V2.0 utf8\n# VisemeLab mesh: " + std::to_string(topology.positions.size()) +
+                 " vertices, " + std::to_string(topology.triangles.size()) +
+                 " triangles\n"
+                 "Shape {\n  appearance Appearance { material Material { } }\n  geometry IndexedFaceSet {\n"
+                 "    solid FALSE\n    coord Coordinate {\n      point [\n";
+    std::string& out = parts.tail;
+    out.reserve(topology.uvs.size() * 50 + topology.triangles.size() * (topology.hasUVs() ? 120 : 60));
     out += "      ]\n    }\n";
-    if (mesh.hasUVs()) {
+    if (topology.hasUVs()) {
         out += "    texCoord TextureCoordinate {\n      point [\n";
-        for (std::size_t i = 0; i < mesh.uvs.size(); ++i)
-            meshio::appendDoubles(out, "        ", {mesh.uvs[i][0], mesh.uvs[i][1]},
-                                  i + 1 < mesh.uvs.size() ? ",\n" : "\n");
+        for (std::size_t i = 0; i < topology.uvs.size(); ++i)
+            appendDoubles(out, "        ", {topology.uvs[i][0], topology.uvs[i][1]},
+                          i + 1 < topology.uvs.size() ? ",\n" : "\n");
         out += "      ]\n    }\n";
     }
     const auto indexList = [&](const char* field) {
         out += std::string("    ") + field + " [\n";
-        for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+        for (std::size_t t = 0; t < topology.triangles.size(); ++t) {
             out += "      ";
-            for (const auto v : mesh.triangles[t]) out.append(std::to_string(v)).append(", ");
-            out += t + 1 < mesh.triangles.size() ? "-1,\n" : "-1\n";
+            for (const auto v : topology.triangles[t]) {
+                appendInteger(out, static_cast<std::int64_t>(v));
+                out += ", ";
+            }
+            out += t + 1 < topology.triangles.size() ? "-1,\n" : "-1\n";
         }
         out += "    ]\n";
     };
     indexList("coordIndex");
-    if (mesh.hasUVs()) indexList("texCoordIndex"); // per-vertex (u,v): the same indices
+    if (topology.hasUVs()) indexList("texCoordIndex"); // per-vertex (u,v): the same indices
     out += "  }\n}\n";
-    return out;
+    return parts;
 }
+
+void appendVrmlPositions(std::string& out, std::span<const Vec3> positions) {
+    for (std::size_t i = 0; i < positions.size(); ++i) {
+        const Vec3& p = positions[i];
+        appendDoubles(out, "        ", {p[0], p[1], p[2]}, i + 1 < positions.size() ? ",\n" : "\n");
+    }
+}
+
+} // namespace meshio
 
 } // namespace vl

@@ -100,6 +100,9 @@ Json reductionToJson(const ProjectReduction& reduction, const std::vector<std::s
         curve.push_back(groupingToJson(reduction.result->curve[p], visemeNames,
                                        jsonPathAppend("/reduction/result/curve", p)));
     json["result"] = Json{{"curve", std::move(curve)}};
+    // The solver that ran; absent means the subset DP (the only one of older projects).
+    if (reduction.result->method != ReductionMethod::SubsetDp)
+        json["result"]["method"] = toString(reduction.result->method);
     return json;
 }
 
@@ -114,7 +117,7 @@ ProjectReduction reductionFromJson(const JsonNode& node, const std::vector<std::
     if (!node.has("result") || node["result"].isNull()) return reduction;
 
     const JsonNode result = node["result"];
-    result.allowOnly({"curve"});
+    result.allowOnly({"curve", "method"});
     const JsonNode curve = result["curve"];
     if (curve.size() == 0 || curve.size() > visemeNames.size())
         curve.fail("expected 1.." + std::to_string(visemeNames.size()) + " entries (p = 1..m), found " +
@@ -122,6 +125,12 @@ ProjectReduction reductionFromJson(const JsonNode& node, const std::vector<std::
     NameIndex indexOf; // names are unique (checked by the caller): one hash lookup per member
     for (std::size_t i = 0; i < visemeNames.size(); ++i) indexOf.emplace(visemeNames[i], i);
     ReductionResult parsed;
+    if (result.has("method")) {
+        const std::string method = result["method"].string();
+        if (method != "dp" && method != "bnb")
+            result["method"].fail("expected \"dp\" or \"bnb\", found \"" + method + "\"");
+        parsed.method = method == "bnb" ? ReductionMethod::BranchAndBound : ReductionMethod::SubsetDp;
+    }
     for (std::size_t p = 0; p < curve.size(); ++p)
         parsed.curve.push_back(groupingFromJson(curve[p], p + 1, visemeNames, indexOf));
     reduction.result = std::move(parsed);

@@ -68,14 +68,15 @@ VisemeSet loadVisemeSet(const std::filesystem::path& neutral,
                             std::to_string(visemes.size()));
     VisemeSet set;
     set.neutralSource = neutral;
-    set.neutral = readMesh(neutral);
+    ReferenceMesh reference = readReferenceMesh(neutral);
+    set.neutral = reference.mesh;
     checkVisemeSetSize(visemes.size(), set.vertexCount(), "viseme set of " + neutral.string());
     std::unordered_set<std::string> names;
     for (const auto& [name, file] : visemes) {
         if (name.empty()) throwInputError(file.string(), "viseme has an empty name");
         if (!names.insert(name).second)
             throwInputError(file.string(), "duplicate viseme name '" + name + "'");
-        MeshData mesh = readMesh(file);
+        MeshData mesh = readMeshLike(file, reference); // parses only the positions of a typical export
         checkInterpolable(set.neutral, neutral.string(), mesh, file.string());
         set.visemes.push_back({name, file, std::move(mesh.positions)});
     }

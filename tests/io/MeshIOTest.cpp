@@ -134,6 +134,31 @@ TEST(MeshWriters, RejectMeshesThatWouldNotReadBack) {
     expectInputError([&] { formatVrml(mesh); }, {"mesh to write", "vertex 1", "non-finite"});
 }
 
+TEST(MeshTextFormatter, EqualsFormatMeshForEveryMeshOfTheTopology) {
+    for (const bool uvs : {false, true}) {
+        const MeshData topology = test::randomMesh(uvs ? 5 : 6, 30, 50, uvs);
+        for (const char* name : {"a.obj", "a.wrl", "a.ply"}) {
+            const MeshTextFormatter formatter(name, topology);
+            for (std::uint64_t seed = 10; seed < 13; ++seed) {
+                MeshData mesh = topology;
+                mesh.positions = test::randomMesh(seed, 30, 10, false).positions;
+                EXPECT_EQ(formatMesh(name, mesh), formatter.format(mesh.positions))
+                    << name << " seed " << seed;
+            }
+        }
+    }
+}
+
+TEST(MeshTextFormatter, RejectsNonFinitePositionsAndOtherVertexCounts) {
+    const MeshData topology = test::randomMesh(3, 6, 4, true);
+    const MeshTextFormatter formatter("a.obj", topology);
+    std::vector<Vec3> positions = topology.positions;
+    positions[4][1] = std::numeric_limits<double>::quiet_NaN();
+    expectInputError([&] { formatter.format(positions); }, {"mesh to write", "vertex 4", "non-finite"});
+    positions.pop_back();
+    EXPECT_THROW(formatter.format(positions), std::invalid_argument);
+}
+
 } // namespace
 } // namespace vl
 

@@ -70,6 +70,11 @@ TEST(ProjectRoundTrip, EqualityNoticesEveryKindOfChange) {
     EXPECT_TRUE(changed([](Project& p) { p.reduction.result.reset(); }));
     EXPECT_TRUE(changed(
         [](Project& p) { p.reduction.result->curve[0].optimal = !p.reduction.result->curve[0].optimal; }));
+    EXPECT_TRUE(changed([](Project& p) {
+        p.reduction.result->method = p.reduction.result->method == ReductionMethod::SubsetDp
+                                         ? ReductionMethod::BranchAndBound
+                                         : ReductionMethod::SubsetDp;
+    }));
     EXPECT_TRUE(changed([](Project& p) { p.reduction.constraints.pinned.push_back(p.visemes[0].name); }));
     EXPECT_TRUE(changed([](Project& p) { p.reduction.constraints.apart.emplace_back("x", "y"); }));
     EXPECT_TRUE(changed([](Project& p) { p.reduction.constraints.together.emplace_back("x", "y"); }));

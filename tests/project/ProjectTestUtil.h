@@ -281,6 +281,7 @@ inline Project randomProject(std::mt19937_64& rng, const std::filesystem::path& 
             }
             result.curve.push_back(std::move(grouping));
         }
+        if (rng() % 2) result.method = ReductionMethod::BranchAndBound;
         project.reduction.result = std::move(result);
     }
     if (n > 1 && rng() % 2 == 0) {
