@@ -32,6 +32,7 @@ void addRefineCommand(CLI::App& app, CommandRunner& run);
 void addExportCommand(CLI::App& app, CommandRunner& run);
 void addProjectCommand(CLI::App& app, CommandRunner& run);
 void addFaceCommand(CLI::App& app, CommandRunner& run);
+void addFaceMouthCommand(CLI::App& face, CommandRunner& run); // `face mouth`, added by addFaceCommand
 void addAvatarCommand(CLI::App& app, CommandRunner& run);
 void addSayCommand(CLI::App& app, CommandRunner& run);
 

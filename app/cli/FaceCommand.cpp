@@ -237,6 +237,7 @@ void addFaceCommand(CLI::App& app, CommandRunner& run) {
     build->add_flag("--ignore-layout", o->ignoreLayout,
                     "Find landmarks from the geometry even on a known layout (to compare the two)");
     build->callback([&run, o] { run = [o] { return runFaceBuild(*o); }; });
+    addFaceMouthCommand(*cmd, run);
 }
 
 } // namespace vl::cli

@@ -9,6 +9,8 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <string_view>
+#include <vector>
 
 namespace vl::cli {
 
@@ -23,6 +25,7 @@ struct RenderCliOptions {
     double pitch = 0.0;
     bool wireframe = false;
     bool faceColours = false;
+    std::string focus; // "X,Y,Z,R": frame this sphere instead of each mesh
 };
 
 void parseSize(const std::string& text, preview::RenderOptions& options) {
@@ -36,6 +39,20 @@ void parseSize(const std::string& text, preview::RenderOptions& options) {
     options.height = static_cast<int>(h);
 }
 
+void parseFocus(const std::string& text, preview::RenderOptions& options) {
+    std::vector<double> values;
+    std::string_view rest = text;
+    while (!rest.empty()) {
+        const auto comma = rest.find(',');
+        values.push_back(parseFiniteDouble(trim(rest.substr(0, comma)), "--focus"));
+        rest = comma == std::string_view::npos ? std::string_view() : rest.substr(comma + 1);
+    }
+    if (values.size() != 4 || !(values[3] > 0.0))
+        throwInputError("--focus", "expected X,Y,Z,R with a radius R > 0, got '" + text + "'");
+    options.focusCentre = Vec3(values[0], values[1], values[2]);
+    options.focusRadius = values[3];
+}
+
 int runRender(const RenderCliOptions& o) {
     if (o.columns < 1) throwInputError("--columns", "must be at least 1");
     preview::RenderOptions options;
@@ -43,6 +60,7 @@ int runRender(const RenderCliOptions& o) {
     options.yawDegrees = o.yaw;
     options.pitchDegrees = o.pitch;
     options.wireframe = o.wireframe;
+    if (!o.focus.empty()) parseFocus(o.focus, options);
     std::vector<preview::Image> images;
     std::vector<std::string> labels; // file names without extension
     for (const auto& file : o.meshes) {
@@ -74,6 +92,9 @@ void addRenderCommand(CLI::App& app, CommandRunner& run) {
     cmd->add_option("--yaw", options->yaw, "Camera turn to the mesh's right (+x), degrees")
         ->capture_default_str();
     cmd->add_option("--pitch", options->pitch, "Camera raise, degrees")->capture_default_str();
+    cmd->add_option("--focus", options->focus,
+                    "Frame the sphere X,Y,Z,R (mesh units) instead of the whole mesh: a close-up at one "
+                    "scale for every mesh");
     cmd->add_flag("--wireframe", options->wireframe, "Overlay the triangle edges");
     cmd->add_flag("--face-colours", options->faceColours,
                   "Colour by (u,v) as the bundled face (lips, eyes, brows)");

@@ -30,8 +30,9 @@ struct Camera {
 Camera makeCamera(const MeshData& mesh, const RenderOptions& o, int width, int height) {
     Vec3 lo, hi;
     bounds(mesh.positions, lo, hi);
-    const Vec3 centre = (lo + hi) * 0.5;
-    const double radius = std::max((hi - lo).norm() * 0.5, 1e-9);
+    const bool focused = o.focusRadius > 0.0;
+    const Vec3 centre = focused ? o.focusCentre : (lo + hi) * 0.5;
+    const double radius = focused ? o.focusRadius : std::max((hi - lo).norm() * 0.5, 1e-9);
     const double yaw = o.yawDegrees * M_PI / 180.0;
     const double pitch = o.pitchDegrees * M_PI / 180.0;
     const double halfFov = 0.5 * o.fovDegrees * M_PI / 180.0;
@@ -42,6 +43,12 @@ Camera makeCamera(const MeshData& mesh, const RenderOptions& o, int width, int h
     const Vec3 worldUp = std::abs(towardEye[1]) > 0.99 ? Vec3(0, 0, -1) : Vec3(0, 1, 0);
     c.right = OpenMesh::cross(c.forward, worldUp).normalized();
     c.up = OpenMesh::cross(c.right, c.forward);
+    c.cx = 0.5 * width;
+    c.cy = 0.5 * height;
+    if (focused) { // the focus sphere fills the image's shorter side
+        c.focal = 0.5 * std::min(width, height) / std::tan(halfFov);
+        return c;
+    }
     // Zoom so the projected mesh fills the image with a small margin.
     double extentX = 1e-12, extentY = 1e-12;
     for (const auto& p : mesh.positions) {
@@ -51,8 +58,6 @@ Camera makeCamera(const MeshData& mesh, const RenderOptions& o, int width, int h
         extentY = std::max(extentY, std::abs(OpenMesh::dot(d, c.up)) / z);
     }
     c.focal = 0.92 * std::min(0.5 * width / extentX, 0.5 * height / extentY);
-    c.cx = 0.5 * width;
-    c.cy = 0.5 * height;
     return c;
 }
 

@@ -25,6 +25,10 @@ struct RenderOptions {
     double yawDegrees = 0.0;
     double pitchDegrees = 0.0;
     double fovDegrees = 30.0;
+    // Frame this sphere (centre, radius in mesh units) instead of the whole mesh: a close-up, e.g. of
+    // the mouth; the same focus on several meshes keeps one scale. A radius <= 0 frames the whole mesh.
+    Vec3 focusCentre{0, 0, 0};
+    double focusRadius = 0.0;
     bool wireframe = false;
     std::vector<Vec3> vertexColours; // empty (uniform grey-beige) or one RGB in [0,1] per vertex
     Vec3 background{0.13, 0.14, 0.17};

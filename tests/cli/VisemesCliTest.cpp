@@ -205,6 +205,62 @@ TEST(CliRender, WritesAPngOfAMesh) {
     EXPECT_EQ(test::runCli("render " + (dir / "aa.obj").string() + " --out x.png --size 64").exitCode, 3);
     EXPECT_EQ(test::runCli("render " + (dir / "missing.obj").string() + " --out x.png").exitCode, 3);
     EXPECT_EQ(test::runCli("render").exitCode, 2);
+    // --focus: a close-up of the mouth at one scale; a bad sphere is refused.
+    const auto close = dir / "close.png";
+    const auto focused = test::runCli("render " + (dir / "aa.obj").string() +
+                                      " --focus 0,-3,5,2 --size 40x30 --out " + close.string());
+    ASSERT_EQ(focused.exitCode, 0) << focused.output;
+    ASSERT_TRUE(stbi_info(close.c_str(), &w, &h, &n));
+    EXPECT_EQ(w, 40);
+    for (const auto* bad : {"0,0,0", "0,0,0,0", "0,0,x,1"}) {
+        const auto r2 = test::runCli("render " + (dir / "aa.obj").string() + " --focus " + bad + " --out " +
+                                     close.string());
+        EXPECT_EQ(r2.exitCode, 3) << bad << ": " << r2.output;
+        EXPECT_NE(r2.output.find("--focus"), std::string::npos) << r2.output;
+    }
+    fs::remove_all(dir);
+}
+
+TEST(CliFaceMouth, MeasuresVisemeMeshesAgainstTheNeutral) {
+    const auto dir = freshDir("cli_face_mouth");
+    ASSERT_EQ(test::runCli("visemes --resolution 20 --out " + dir.string()).exitCode, 0);
+    const auto json = dir / "mouth.json";
+    const auto r = test::runCli("face mouth --neutral " + (dir / "neutral.obj").string() + " " +
+                                (dir / "PP.obj").string() + " " + (dir / "aa.obj").string() + " " +
+                                (dir / "ou.obj").string() + " --json " + json.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    // A Markdown table: header, rule, the neutral and one row per mesh.
+    EXPECT_NE(r.output.find("| mesh | opening |"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("| (neutral) |"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("| aa |"), std::string::npos) << r.output;
+    std::ifstream in(json);
+    const auto j = nlohmann::json::parse(in);
+    ASSERT_EQ(j["meshes"].size(), 3u);
+    const auto& pp = j["meshes"][0];
+    const auto& aa = j["meshes"][1];
+    const auto& ou = j["meshes"][2];
+    EXPECT_EQ(aa["name"], "aa");
+    EXPECT_LT(pp["relative_to_neutral"]["upper_lip_forward"].get<double>(), 0.0); // pressed, rolled in
+    EXPECT_LT(pp["opening"].get<double>(), 0.1);
+    EXPECT_GT(aa["opening"].get<double>(), 1.0);
+    EXPECT_GT(aa["lower_teeth_seen"].get<double>(), 0.0);
+    EXPECT_EQ(pp["lower_teeth_seen"].get<double>(), 0.0);
+    EXPECT_LT(ou["relative_to_neutral"]["width_ratio"].get<double>(), 1.0);
+    EXPECT_GT(ou["relative_to_neutral"]["upper_lip_forward"].get<double>(), 0.0);
+    EXPECT_TRUE(aa["lower_lip_to_upper_teeth"].is_number());
+    // Without parts (--skin-only) there are no teeth to measure; a mesh of no face domain is refused.
+    ASSERT_EQ(test::runCli("visemes --resolution 12 --skin-only --out " + (dir / "skin").string()).exitCode,
+              0);
+    const auto skin =
+        test::runCli("face mouth " + (dir / "skin" / "aa.obj").string() + " --json " + json.string());
+    ASSERT_EQ(skin.exitCode, 0) << skin.output;
+    std::ifstream again(json);
+    EXPECT_TRUE(nlohmann::json::parse(again)["meshes"][0]["lower_lip_to_upper_teeth"].is_null());
+    std::ofstream(dir / "tri.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    const auto bad = test::runCli("face mouth " + (dir / "tri.obj").string());
+    EXPECT_EQ(bad.exitCode, 3) << bad.output;
+    EXPECT_NE(bad.output.find("tri.obj"), std::string::npos) << bad.output;
+    EXPECT_EQ(test::runCli("face mouth").exitCode, 2);
     fs::remove_all(dir);
 }
 

@@ -23,6 +23,19 @@ MeshData square(double z, double size) {
     return m;
 }
 
+// A red square (half-size 1 at z = 0) and a blue one of half-size `size` moved by `offset`, with the
+// options of a 64 x 64 render of them.
+MeshData redAndBlue(const Vec3& offset, double size, preview::RenderOptions& o) {
+    MeshData m = square(0.0, 1.0);
+    for (const auto& p : square(0.0, size).positions) m.positions.push_back(p + offset);
+    m.triangles.push_back({4, 5, 6});
+    m.triangles.push_back({4, 6, 7});
+    o.width = o.height = 64;
+    o.vertexColours = {Vec3(1, 0, 0), Vec3(1, 0, 0), Vec3(1, 0, 0), Vec3(1, 0, 0),
+                       Vec3(0, 0, 1), Vec3(0, 0, 1), Vec3(0, 0, 1), Vec3(0, 0, 1)};
+    return m;
+}
+
 TEST(Preview, FillsTheMeshAndLeavesTheBackground) {
     MeshData m = square(0.0, 1.0);
     m.positions.push_back(Vec3(-3, -3, 0)); // unused vertices widen the framing
@@ -40,15 +53,8 @@ TEST(Preview, FillsTheMeshAndLeavesTheBackground) {
 }
 
 TEST(Preview, NearerSurfaceHidesFartherOne) {
-    MeshData m = square(0.0, 1.0);
-    const MeshData front = square(0.5, 0.5);
-    for (const auto& p : front.positions) m.positions.push_back(p);
-    m.triangles.push_back({4, 5, 6});
-    m.triangles.push_back({4, 6, 7});
     preview::RenderOptions o;
-    o.width = o.height = 64;
-    o.vertexColours = {Vec3(1, 0, 0), Vec3(1, 0, 0), Vec3(1, 0, 0), Vec3(1, 0, 0),
-                       Vec3(0, 0, 1), Vec3(0, 0, 1), Vec3(0, 0, 1), Vec3(0, 0, 1)};
+    MeshData m = redAndBlue(Vec3(0, 0, 0.5), 0.5, o);
     // Draw order must not matter: try both.
     for (int order = 0; order < 2; ++order) {
         if (order == 1) std::swap(m.triangles[0], m.triangles[2]), std::swap(m.triangles[1], m.triangles[3]);
@@ -90,6 +96,29 @@ TEST(Preview, ContactSheetLabelsEachCell) {
     EXPECT_GT(changedLeft, 5);
     EXPECT_GT(changedRight, 5);
     EXPECT_THROW(preview::contactSheet({im, im}, 2, {"one"}), InputError);
+}
+
+TEST(Preview, FocusFramesASphereInsteadOfTheMesh) {
+    // A red square at the origin and a blue one far to its right: the whole mesh shows both small;
+    // a focus on the blue one fills the image with it and leaves the red one out.
+    preview::RenderOptions o;
+    const MeshData m = redAndBlue(Vec3(20, 0, 0), 1.0, o);
+    const auto count = [](const preview::Image& im, int channel) {
+        int n = 0;
+        for (int y = 0; y < im.height; ++y)
+            for (int x = 0; x < im.width; ++x) n += pixel(im, x, y)[channel] > 100 ? 1 : 0;
+        return n;
+    };
+    const auto whole = preview::render(m, o);
+    EXPECT_GT(count(whole, 0), 0);
+    EXPECT_LT(count(whole, 2), 64 * 64 / 10);
+    o.focusCentre = Vec3(20, 0, 0);
+    o.focusRadius = 1.0;
+    const auto close = preview::render(m, o);
+    EXPECT_EQ(count(close, 0), 0);
+    // The square's half side is the focus radius: it covers nearly all of the image.
+    EXPECT_GT(count(close, 2), 64 * 64 / 2);
+    EXPECT_GT(pixel(close, 32, 32)[2], 100);
 }
 
 TEST(Preview, RejectsBadInput) {
