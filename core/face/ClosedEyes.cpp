@@ -120,7 +120,7 @@ ClosedEyes findClosedEyes(std::span<const std::array<Vec3, 3>> triangles, double
         // telling: beside the nose's bridge every face is recessed.)
         const auto inWindow = [&](const Vec2& p) {
             const double x = sign * p[0];
-            return x > 0.15 * unit && x < 1.9 * unit && p[1] > 0.25 * unit && p[1] < 1.7 * unit;
+            return x > 0.15 * unit && x < 1.9 * unit && p[1] > 0.25 * unit && p[1] < 2.0 * unit;
         };
         double deepest = 0.0;
         for (int j = 0; j < depth.ny(); ++j)
