@@ -107,7 +107,7 @@ ClosedEyes findClosedEyes(std::span<const std::array<Vec3, 3>> triangles, double
     const double cell = unit / 30.0;
     const FrontDepth depth(triangles, Vec2(-2.6 * unit, -0.6 * unit), Vec2(2.6 * unit, 2.4 * unit), cell);
     const auto recess = depth.recess(static_cast<int>(std::lround(0.45 * unit / cell)));
-    // The eyeball under the closed lids bulges in the socket: protrusion at the eyeball's scale.
+    // The relief of the lids over the eyeball: depth below the mean around, at the eyeball's scale.
     const auto bulge = depth.recess(static_cast<int>(std::lround(0.15 * unit / cell)));
     const auto cellsOf = [&](const std::vector<double>& v, int i, int j) {
         return v[std::size_t(j) * depth.nx() + i];
@@ -120,7 +120,7 @@ ClosedEyes findClosedEyes(std::span<const std::array<Vec3, 3>> triangles, double
         // telling: beside the nose's bridge every face is recessed.)
         const auto inWindow = [&](const Vec2& p) {
             const double x = sign * p[0];
-            return x > 0.15 * unit && x < 1.9 * unit && p[1] > 0.25 * unit && p[1] < 1.7 * unit;
+            return x > 0.15 * unit && x < 1.9 * unit && p[1] > 0.25 * unit && p[1] < 2.0 * unit;
         };
         double deepest = 0.0;
         for (int j = 0; j < depth.ny(); ++j)
@@ -138,38 +138,63 @@ ClosedEyes findClosedEyes(std::span<const std::array<Vec3, 3>> triangles, double
                 weight += r - 0.5 * deepest;
             }
         const double y = sum / weight;
-        // Across: the eyeball's bulge along the socket's line (a band of cells about it), the columns
-        // within a quarter of the bulge's range below its top averaged.
-        std::vector<std::pair<double, double>> profile; // (x, mean bulge)
-        for (int i = 0; i < depth.nx(); ++i) {
-            const double x = depth.point(i, 0)[0];
-            // Eye centres are about 0.6 mouth widths from the middle (Farkas: 6.2 cm apart, the mouth
-            // 5.2 cm wide); the face turns back beyond.
-            if (sign * x < 0.3 * mouthWidth || sign * x > 1.0 * mouthWidth) continue;
+        // Across: the eye's middle is the centre of symmetry of the surface along the socket's line.
+        // Under closed lids the eye shows as a bulge (the eyeball) on some faces and as a dip between
+        // two ridges (lids folding into the socket) on others; both are symmetric about the eye's
+        // middle, while the socket's slope down from the nose is not. For each candidate middle and
+        // each row of a band about the line, the surface's relief at the eyeball's scale (`bulge`)
+        // within half an eye width either side, less its linear trend, is compared with its mirror
+        // image: the sum of products of mirrored values, high where the relief is strong and
+        // symmetric, weighted by the distance from the candidate so that the eye's whole width counts
+        // more than small features near its middle. Candidates lie 0.4 to 0.85 mouth widths from the
+        // face's middle (Farkas: eye centres 6.2 cm apart, the mouth 5.2 cm wide, so about 0.6); the
+        // best local maximum inside that range is the middle (one at its ends is the slope of
+        // something else).
+        const int half = static_cast<int>(std::lround(0.24 * mouthWidth / cell));
+        std::vector<double> score(static_cast<std::size_t>(depth.nx()), kNone);
+        std::vector<double> row(static_cast<std::size_t>(2 * half + 1));
+        for (int i = half; i + half < depth.nx(); ++i) {
+            const double x = sign * depth.point(i, 0)[0];
+            if (x < 0.4 * mouthWidth || x > 0.85 * mouthWidth) continue;
             double total = 0.0;
-            int count = 0;
+            int rows = 0;
             for (int j = 0; j < depth.ny(); ++j) {
-                const double b = cellsOf(bulge, i, j);
-                if (std::abs(depth.point(i, j)[1] - y) > 0.12 * unit || std::isnan(b)) continue;
-                total -= b; // recess negated: how far the surface stands out
-                ++count;
+                if (std::abs(depth.point(i, j)[1] - y) > 0.25 * unit) continue;
+                bool complete = true;
+                double mean = 0.0, slope = 0.0, moment = 0.0;
+                for (int k = -half; k <= half && complete; ++k) {
+                    const double b = cellsOf(bulge, i + k, j);
+                    complete = !std::isnan(b);
+                    row[static_cast<std::size_t>(k + half)] = b;
+                    mean += b;
+                    slope += k * b;
+                    moment += double(k) * k;
+                }
+                if (!complete) continue;
+                mean /= 2 * half + 1;
+                slope /= moment;
+                for (int k = 1; k <= half; ++k)
+                    total += double(k) / half * (row[std::size_t(half + k)] - mean - slope * k) *
+                             (row[std::size_t(half - k)] - mean + slope * k);
+                ++rows;
             }
-            if (count > 0) profile.emplace_back(x, total / count);
+            if (rows > 0) score[static_cast<std::size_t>(i)] = total / rows;
         }
-        if (profile.size() < 3) return out;
-        const auto [low, high] = std::minmax_element(
-            profile.begin(), profile.end(), [](const auto& a, const auto& b) { return a.second < b.second; });
-        const double threshold = high->second - 0.25 * (high->second - low->second);
-        // The run of columns above the threshold that holds the top.
-        auto first = high, last = high;
-        while (first != profile.begin() && std::prev(first)->second >= threshold) --first;
-        while (std::next(last) != profile.end() && std::next(last)->second >= threshold) ++last;
-        double xs = 0.0, w = 0.0;
-        for (auto it = first; it != std::next(last); ++it) {
-            xs += it->first * (it->second - threshold + 1e-12);
-            w += it->second - threshold + 1e-12;
+        int best = -1;
+        for (int i = 1; i + 1 < depth.nx(); ++i) {
+            const double a = score[std::size_t(i - 1)], b = score[std::size_t(i)],
+                         c = score[std::size_t(i + 1)];
+            if (std::isnan(a) || std::isnan(b) || std::isnan(c) || b < a || b < c) continue;
+            if (best < 0 || b > score[std::size_t(best)]) best = i;
         }
-        const double x = xs / w;
+        if (best < 0) return out; // nothing eye-like and symmetric where eyes are
+        double x = depth.point(best, 0)[0];
+        {
+            // The maximum between cells, from the parabola through it and its neighbours.
+            const double a = score[std::size_t(best - 1)], b = score[std::size_t(best)],
+                         c = score[std::size_t(best + 1)], curvature = a - 2.0 * b + c;
+            if (curvature < 0.0) x += 0.5 * (a - c) / curvature * cell;
+        }
         out.centre[side] = Vec3(x, y, depth.zAt(x, y));
     }
     // Mirror images averaged: the eyes are symmetric about the plane x = 0.
@@ -190,8 +215,8 @@ ClosedEyes findClosedEyes(std::span<const std::array<Vec3, 3>> triangles, double
     }
     out.found = true;
     out.confidence = 0.3 + 0.3 * std::clamp(1.0 - asymmetry / 0.3, 0.0, 1.0);
-    out.method = "eye socket (its height) and the eyeball's bulge in it (its middle), corners at "
-                 "average proportions";
+    out.method = "eye socket (its height) and the centre of symmetry of the lids along it (its middle), "
+                 "corners at average proportions";
     return out;
 }
 

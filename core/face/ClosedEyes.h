@@ -2,8 +2,9 @@
 // Closed eyes found from the shape of a face: with no eye opening to follow, each eye lies in its eye
 // socket, the depression between the brow and the cheek beside the nose: its height is that of the most
 // recessed part of the face's front surface (its depth below the average around it, at the socket's
-// scale) on each side of the symmetry plane above the nose tip, and its middle is where the eyeball
-// bulges under the closed lids along that line (the bulge at the eyeball's scale). The two eyes,
+// scale) on each side of the symmetry plane above the nose tip, and its middle is the centre of symmetry
+// of the lids' relief along that line (a bulge where the lids lie over the eyeball, a dip between two
+// ridges where they fold into the socket: both are symmetric about the eye's middle). The two eyes,
 // averaged as mirror images, give the eye centres; the corners lie either side of each centre at
 // average proportions (scaled by the distance between the centres found).
 //
