@@ -42,4 +42,4 @@ fine=()
 for v in "${order[@]}"; do fine+=("$tmp/fine/$v.obj"); done
 mkdir -p docs/images
 "$cli" render "${fine[@]}" --face-colours --focus "$focus" --size 200x160 --columns 5 \
-  --out docs/images/viseme-review-mouths.png
+  --out docs/images/viseme-review-mouths.png >&2 # stdout keeps only the table

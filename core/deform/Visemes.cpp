@@ -12,7 +12,9 @@ std::vector<VisemeParameters> oculusVisemes() {
     // Mouth shapes after the Oculus/Meta viseme reference; values are fractions of each muscle's range.
     return {
         {"sil", {}},
-        {"PP", {{"lip_press", 1.0}, {"lip_pucker", 0.15}}},
+        // Lips pressed shut: lip_press alone (a pucker, even a slight one, parts the lip middles), at the
+        // ARPAbet M's 0.8: a harder press pushes the lips onto the lower teeth (docs/viseme-review.md).
+        {"PP", {{"lip_press", 0.8}}},
         {"FF",
          {{"lower_lip_tuck", 1.0},
           {"upper_lip_raise", 0.35},
