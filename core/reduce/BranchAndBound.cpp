@@ -79,9 +79,10 @@ class SuffixSearch {
 
   private:
     bool expired() {
+        constexpr unsigned kCheckEvery = 256;
         thread_local unsigned counter = 0;
-        if ((++counter & 255u) != 0) return false;
-        if (limits_.expired()) stopped_.store(true, std::memory_order_relaxed);
+        if ((++counter % kCheckEvery) != 0) return false;
+        if (limits_.expired(kCheckEvery)) stopped_.store(true, std::memory_order_relaxed);
         return stopped_.load(std::memory_order_relaxed);
     }
 

@@ -16,6 +16,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <cstdint>
 #include <span>
 
 namespace vl {
@@ -23,7 +24,13 @@ namespace vl {
 struct SearchLimits {
     std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
     const std::atomic<bool>* cancelled = nullptr; // set by another thread to stop early
-    bool expired() const {
+    // A work limit that, unlike the deadline, gives the same answer on a slow or loaded machine:
+    // the searches sharing `nodes` stop once they have visited about `nodeBudget` tree nodes together.
+    std::atomic<std::uint64_t>* nodes = nullptr;
+    std::uint64_t nodeBudget = 0;
+    // Called once per `visited` nodes of one search.
+    bool expired(std::uint64_t visited) const {
+        if (nodes && nodes->fetch_add(visited, std::memory_order_relaxed) + visited > nodeBudget) return true;
         return (cancelled && cancelled->load(std::memory_order_relaxed)) ||
                std::chrono::steady_clock::now() >= deadline;
     }

@@ -202,6 +202,26 @@ TEST(BranchAndBound, AutoPicksTheDpForSmallSetsAndProvesLargerOnes) {
     EXPECT_TRUE(result.best().optimal);
 }
 
+TEST(BranchAndBound, AutoInTheDpRangeTriesBranchAndBoundFirstAndFallsBackToTheDp) {
+    // n = 16: a set with structure (a rig's mouth shapes) is proved by branch and bound within its
+    // share; a structureless one (random shapes) needs ~30x that share and goes to the DP. The share
+    // is counted in search nodes, so both choices are the same on any machine and under sanitizers.
+    std::mt19937 rng(21);
+    const auto rig = test::rigInstance(rng, 16, 40, 5);
+    const auto proved = reduceVisemes({rig.shapes, rig.frequencies, rig.weights, 10});
+    EXPECT_EQ(proved.method, ReductionMethod::BranchAndBound);
+    const auto random = test::randomInstance(rng, 16, 40);
+    const auto fallback = reduceVisemes({random.shapes, random.frequencies, random.weights, 10});
+    EXPECT_EQ(fallback.method, ReductionMethod::SubsetDp);
+    for (const auto* result : {&proved, &fallback})
+        for (const auto& grouping : result->curve) EXPECT_TRUE(grouping.optimal);
+    // Whichever solver ran, the optimum is the DP's.
+    const auto dp =
+        reduceVisemes({rig.shapes, rig.frequencies, rig.weights, 10}, {ReductionMethod::SubsetDp});
+    for (std::size_t p = 0; p < dp.curve.size(); ++p)
+        EXPECT_NEAR(proved.curve[p].cost, dp.curve[p].cost, 1e-9 * (1 + dp.curve[p].cost)) << p;
+}
+
 TEST(ReductionHeuristics, PartitionsAreValidAndNeverBelowTheOptimum) {
     std::mt19937 rng(10);
     for (int trial = 0; trial < 6; ++trial) {
