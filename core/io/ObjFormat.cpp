@@ -50,9 +50,11 @@ class ObjParser {
             at = newline + 1;
             if (!isVertexLine(line)) return line == expected;
             if (expected != "v") return false;
+            // Tokens end at a comment as in parseLine: in "v#1 2 3" the keyword token is "v".
+            const std::string_view statement = line.substr(0, line.find('#'));
             std::size_t pos = 0;
-            (void)nextToken(line, pos);
-            parseVertex(line.substr(0, line.find('#')), pos);
+            (void)nextToken(statement, pos);
+            parseVertex(statement, pos);
             return true;
         });
         if (!same || at != structure.size()) return std::nullopt;

@@ -113,9 +113,12 @@ TEST(ObjStructure, PositionsOnlyParseEqualsTheFullParseForRandomVariants) {
                     edited.erase(edited.begin() + static_cast<std::ptrdiff_t>(at));
                 structureKept = false;
                 break;
-            case 4: // a broken vertex line: the same error either way
-                if (vertexLine) edited[at] = "v 1 nan-ish";
+            case 4: { // a broken vertex line, or a comment cutting into one: the same outcome either way
+                static const char* const kOddVertexLines[] = {"v 1 nan-ish", "v#1 2 3", "v 1 2#3",
+                                                              "v 1 2 3#"};
+                if (vertexLine) edited[at] = kOddVertexLines[rng() % std::size(kOddVertexLines)];
                 break;
+            }
             case 5: // a byte order mark only in the viseme
                 edited.front() = "\xEF\xBB\xBF" + edited.front();
                 structureKept = false;
