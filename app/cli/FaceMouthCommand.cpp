@@ -1,7 +1,8 @@
 // `visemelab face mouth MESH... [--neutral N] [--json OUT]`: the mouth of viseme meshes of a face (as
-// `visemelab visemes` writes them) measured: lip opening at the midline, mouth width, how far the lips
-// stand forward, the teeth and tongue seen from the front, the lower lip's distance to the upper
-// incisors; with --neutral, each relative to the neutral face. A Markdown table on stdout.
+// `visemelab visemes` writes them) measured: lip opening at the midline (and half and three quarters
+// of the way to the corners: the outline), mouth width, how far the lips stand forward, the teeth and tongue
+// seen from the front, the lower lip's distance to the upper incisors; with --neutral, each relative to the
+// neutral face. A Markdown table on stdout.
 #include "app/cli/Command.h"
 #include "core/common/AtomicFile.h"
 #include "core/face/MouthMeasures.h"
@@ -29,6 +30,9 @@ nlohmann::json toJson(const face::MouthMeasures& m) {
     const auto point = [](const Vec3& p) { return nlohmann::json::array({p[0], p[1], p[2]}); };
     nlohmann::json j;
     j["opening"] = m.opening;
+    j["opening_profile"] = nlohmann::json::array();
+    for (std::size_t k = 0; k < m.openingProfile.size(); ++k)
+        j["opening_profile"].push_back({{"at", face::kOpeningProfileAt[k]}, {"height", m.openingProfile[k]}});
     j["lip_distance"] = m.lipDistance;
     j["width"] = m.width;
     j["upper_lip_front"] = m.upperLipFront;
@@ -67,11 +71,11 @@ int runFaceMouth(const FaceMouthCliOptions& o) {
     nlohmann::json report;
     report["units"] = "the meshes' units (centimetres for the bundled faces); areas in squared units";
     if (neutral) report["neutral"] = toJson(*neutral);
-    std::printf(
-        "| mesh | opening | Δ opening | width | width / neutral | upper lip forward | lower lip forward "
-        "| teeth apart | upper teeth seen | lower teeth seen | tongue seen | tongue ahead of teeth "
-        "| lower lip to upper incisors |\n|---");
-    for (int k = 0; k < 12; ++k) std::printf("|---:");
+    std::printf("| mesh | opening | Δ opening | opening at ½ | opening at ¾ | width | width / neutral | "
+                "upper lip forward | lower lip forward "
+                "| teeth apart | upper teeth seen | lower teeth seen | tongue seen | tongue ahead of teeth "
+                "| lower lip to upper incisors |\n|---");
+    for (int k = 0; k < 14; ++k) std::printf("|---:");
     std::printf("|\n");
     const auto row = [&](const std::string& name, const face::MouthMeasures& m) {
         const auto relative = [&](double value, double base) {
@@ -83,6 +87,8 @@ int runFaceMouth(const FaceMouthCliOptions& o) {
         const std::string cells[] = {name,
                                      number(m.opening),
                                      relative(m.opening, neutral ? neutral->opening : 0.0),
+                                     number(m.openingProfile[2]),
+                                     number(m.openingProfile[3]),
                                      number(m.width),
                                      neutral ? number(m.width / neutral->width) : "-",
                                      relative(m.upperLipFront, neutral ? neutral->upperLipFront : 0.0),

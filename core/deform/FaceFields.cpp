@@ -68,10 +68,21 @@ constexpr Vec2 kUpperMid{kMouthU, kMouthV + kMouthHalfHeight};
 constexpr Vec2 kLowerMid{kMouthU, kMouthV - kMouthHalfHeight};
 
 std::vector<InfluenceField> jawOpen() {
+    const Vec3 down(0, -1, -0.28);
     return {// The mandible: constant over the chin and the lower lip's flat rim, falling off to zero just
-            // below the upper rim; the corners follow about a quarter of the way. The opening is a
-            // rounded U; the field decreases to the jaw line.
-            region({kMouthU, 0.12}, {0.45, 0.197}, {0, -1, -0.28}, 2.0, {0.35, 0.163}),
+            // below the upper rim; the field decreases to the jaw line. The lower teeth and the tongue
+            // follow it (core/face/HeadParts.h: anchored on the chin, inside this plateau).
+            region({kMouthU, 0.12}, {0.45, 0.197}, down, 2.0, {0.35, 0.163}),
+            // The modioli (where the lip muscles meet beside each corner) hold the corners: the lower
+            // lip follows the jaw less towards them, so its rim drops in a rounded U with about an
+            // ellipse's profile along the width (0.86 of the middle's drop half-way out, 0.62 three
+            // quarters out) instead of a flat bottom with steep sides (a trapezoid opening). Centred
+            // below each corner, they cancel part of the mandible there; the chin (and the teeth
+            // anchored on it) and the upper lip are out of their reach.
+            region({kMouthU - kMouthHalfWidth, kMouthV - 0.03}, {0.1, 0.05}, -down, 1.3, {0, 0},
+                   Falloff::Gaussian),
+            region({kMouthU + kMouthHalfWidth, kMouthV - 0.03}, {0.1, 0.05}, -down, 1.3, {0, 0},
+                   Falloff::Gaussian),
             // The lower lip drops a little further than the teeth, uncovering their edges.
             region(kLowerMid, {0.1, 0.035}, {0, -1, -0.05}, 0.2, {0.07, 0.015}),
             // The upper lip arches up a little as the lips part.

@@ -15,11 +15,15 @@ namespace vl::face {
 
 namespace {
 
+// Where the lower teeth, the tongue and the cavity's floor follow the jaw: the chin, inside the
+// mandible's plateau of jaw_open (core/deform/FaceFields.cpp), so they move with it rigidly.
+constexpr Vec2 kMandibleAnchor{kMouthU, 0.16};
+
 // A part under construction: vertices with (u,v), anchors and weights added together.
 struct PartBuilder {
     HeadPart part;
     int followAll = -1, followJaw = -1; // indices into part.follows
-    Vec2 anchor{kMouthU, 0.16};
+    Vec2 anchor = kMandibleAnchor;
 
     std::uint32_t add(const Vec3& p, const Vec2& uv) {
         part.rest.positions.push_back(p);
@@ -34,7 +38,7 @@ struct PartBuilder {
         part.rest.triangles.push_back({a, c, d});
     }
     int follow(int parameter) {
-        part.follows.push_back({parameter, std::vector<double>(part.rest.positions.size(), 0.0)});
+        part.follows.push_back({parameter, std::vector<double>(part.rest.positions.size(), 0.0), {}});
         return static_cast<int>(part.follows.size()) - 1;
     }
     int own(int parameter) {
@@ -284,7 +288,7 @@ PartBuilder cavity(const DeformationCascade& cascade, const FaceFrame& frame, do
     for (int j = kHalf - 1; j >= 1; --j) {
         const double u = kMouthU - kMouthHalfWidth + 2.0 * kMouthHalfWidth * j / kHalf;
         rim.emplace_back(u, kMouthV - mouthHoleHalfHeight(u));
-        angle.push_back(M_PI * (1.0 + double(kHalf - j) / kHalf));
+        angle.push_back(M_PI * (1.0 + double(j) / kHalf));
     }
     const int columns = static_cast<int>(rim.size());
     // Depth, half-width, roof and floor heights of the rings (bundled centimetres), blend from the rim.
@@ -313,7 +317,13 @@ PartBuilder cavity(const DeformationCascade& cascade, const FaceFrame& frame, do
     b.anchor = Vec2(kMouthU, kMouthV - kMouthHalfHeight);
     const auto back = b.add(centre - (frame.forward * 5.8 + frame.up * 0.2) * scale,
                             Vec2(double(HeadTile::Cavity) + 0.5, 1.0));
-    if (followJaw >= 0) b.part.follows[followJaw].weight[back] = 0.5;
+    if (followJaw >= 0) {
+        b.part.follows[followJaw].weight[back] = 0.5;
+        // The floor's share of the jaw is the mandible's (as the lower teeth's), not the lip rim's: near
+        // the corners the rim follows the jaw less, and a floor following it would rise in front of the
+        // lower teeth.
+        b.part.follows[followJaw].anchors.assign(b.part.rest.positions.size(), kMandibleAnchor);
+    }
     stitchTube(b, first, kRings, columns, -1, back);
     // Faces point into the cavity (its inside is what is seen through the open mouth).
     const Vec3 axisPoint = centre - frame.forward * (2.5 * scale);
@@ -418,7 +428,7 @@ HeadPartsSampler::HeadPartsSampler(const DeformationCascade& cascade, std::span<
         for (const auto& f : part.follows)
             for (std::size_t i = 0; i < n; ++i) {
                 if (f.weight[i] == 0.0) continue;
-                const auto& d = fieldsAt(part.anchors[i]);
+                const auto& d = fieldsAt(f.anchors.empty() ? part.anchors[i] : f.anchors[i]);
                 for (std::size_t p = 0; p < k; ++p) {
                     if (f.parameter >= 0 && static_cast<std::size_t>(f.parameter) != p) continue;
                     if (d[p][0] == 0.0 && d[p][1] == 0.0 && d[p][2] == 0.0) continue;

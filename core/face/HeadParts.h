@@ -4,7 +4,8 @@
 // the face domain and follows a fraction of the displacement the cascade's fields give there,
 // per parameter: the lower teeth and the tongue follow the jaw (jaw_open at the chin, the mandible),
 // the upper teeth and the eyeballs follow nothing (the skull), the cavity's rim follows the lips'
-// rim exactly and its depths blend into the jaw (floor) or the skull (roof). Parameters that act on
+// rim exactly and its depths blend into the jaw (floor: the mandible as the lower teeth follow it, not
+// the lower lip, which the modioli hold back near the corners) or the skull (roof). Parameters that act on
 // a part alone (the tongue's tongue_up and tongue_out) add their own per-vertex displacements.
 //
 // Parts are derived from the cascade, not stored: the bundled head's parts, carried to another face
@@ -28,6 +29,7 @@ struct HeadPart {
     struct Follow {
         int parameter = -1;         // cascade parameter index, or -1 for every parameter
         std::vector<double> weight; // per vertex
+        std::vector<Vec2> anchors;  // per vertex where this follow samples the fields; empty: `anchors`
     };
     std::vector<Follow> follows;
     struct Own {

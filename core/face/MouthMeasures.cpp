@@ -128,6 +128,68 @@ void seenAreas(const MeshData& head, const std::vector<Label>& labels, const Vec
     }
 }
 
+// The inner lip contour seen from the front: the skin's boundary round the mouth hole, split into the
+// upper and the lower rim (each from corner to corner, in (x, y)), and the opening's height between
+// them at fractions of the way from the middle to the corners.
+void measureOpeningProfile(const MeshData& head, std::string_view where, MouthMeasures& m) {
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
+    for (const auto& t : head.triangles) {
+        if (headTileOf(head.uvs[t[0]][0]) != HeadTile::Skin) continue;
+        for (int k = 0; k < 3; ++k)
+            edges.emplace_back(std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3]));
+    }
+    std::sort(edges.begin(), edges.end());
+    const auto nearHole = [&](std::uint32_t v) {
+        const Vec2& uv = head.uvs[v];
+        return std::abs(uv[0] - kMouthU) <= kMouthHalfWidth + 1e-6 &&
+               std::abs(uv[1] - kMouthV) <= kMouthHalfHeight + 1e-6;
+    };
+    // Boundary edges (in one triangle only) round the hole: their vertices, by rim.
+    std::vector<std::uint32_t> upper, lower;
+    for (std::size_t k = 0; k < edges.size(); ++k) {
+        const bool single =
+            (k == 0 || edges[k - 1] != edges[k]) && (k + 1 == edges.size() || edges[k + 1] != edges[k]);
+        if (!single || !nearHole(edges[k].first) || !nearHole(edges[k].second)) continue;
+        for (const auto v : {edges[k].first, edges[k].second}) {
+            const double dv = head.uvs[v][1] - kMouthV;
+            if (dv >= -1e-6) upper.push_back(v); // the corners (dv = 0) are on both rims
+            if (dv <= 1e-6) lower.push_back(v);
+        }
+    }
+    const auto byU = [&](std::vector<std::uint32_t>& rim) {
+        std::sort(rim.begin(), rim.end());
+        rim.erase(std::unique(rim.begin(), rim.end()), rim.end());
+        std::sort(rim.begin(), rim.end(), [&](auto a, auto b) { return head.uvs[a][0] < head.uvs[b][0]; });
+        if (rim.size() < 2)
+            throwInputError(where, "the mouth hole has no rim: expected a mesh of the face domain");
+    };
+    byU(upper);
+    byU(lower);
+    // The rim's height at x: where the rim crosses x (the lowest crossing of the upper rim, the
+    // highest of the lower one: the opening's edge).
+    const auto heightAt = [&](const std::vector<std::uint32_t>& rim, double x, bool isUpper) {
+        double best = isUpper ? std::numeric_limits<double>::max() : -std::numeric_limits<double>::max();
+        for (std::size_t k = 0; k + 1 < rim.size(); ++k) {
+            const Vec3 &a = head.positions[rim[k]], &b = head.positions[rim[k + 1]];
+            if ((x < a[0] && x < b[0]) || (x > a[0] && x > b[0])) continue;
+            const double s = a[0] == b[0] ? 0.5 : (x - a[0]) / (b[0] - a[0]);
+            const double y = a[1] + s * (b[1] - a[1]);
+            best = isUpper ? std::min(best, y) : std::max(best, y);
+        }
+        return best;
+    };
+    const double middle = 0.5 * (m.cornerLeft[0] + m.cornerRight[0]);
+    const double half = 0.5 * (m.cornerLeft[0] - m.cornerRight[0]);
+    for (std::size_t k = 0; k < kOpeningProfileAt.size(); ++k) {
+        double sum = 0.0;
+        for (const double side : {-1.0, 1.0}) {
+            const double x = middle + side * kOpeningProfileAt[k] * half;
+            sum += heightAt(upper, x, true) - heightAt(lower, x, false);
+        }
+        m.openingProfile[k] = 0.5 * sum;
+    }
+}
+
 } // namespace
 
 MouthMeasures measureMouth(const MeshData& head, std::string_view where) {
@@ -145,6 +207,7 @@ MouthMeasures measureMouth(const MeshData& head, std::string_view where) {
     m.opening = m.upperLip[1] - m.lowerLip[1];
     m.lipDistance = (m.upperLip - m.lowerLip).norm();
     m.width = (m.cornerLeft - m.cornerRight).norm();
+    measureOpeningProfile(head, where, m);
 
     // The lips' outer surfaces near the midline: the bands of the face domain above and below the
     // mouth line that the lips cover.

@@ -8,6 +8,7 @@
 // looks along +z with +y up (the bundled faces' frame); lengths are in the mesh's units.
 #include "core/mesh/Mesh.h"
 
+#include <array>
 #include <optional>
 #include <string_view>
 
@@ -17,7 +18,13 @@ struct MouthMeasures {
     // The inner lip contour's landmarks: mouth corners (the face's right one, then its left one) and
     // the middles of the upper and lower lip.
     Vec3 cornerRight{0, 0, 0}, cornerLeft{0, 0, 0}, upperLip{0, 0, 0}, lowerLip{0, 0, 0};
-    double opening = 0.0;     // upper lip middle above the lower lip middle (y); about 0 when closed
+    double opening = 0.0; // upper lip middle above the lower lip middle (y); about 0 when closed
+    // The opening's outline seen from the front: the upper lip's inner contour above the lower one's
+    // (y) at the fractions kOpeningProfileAt of the way from the middle to each mouth corner (in x;
+    // the middle is halfway between the corners), the two sides averaged. A rounded opening falls
+    // off like an ellipse (about 1, 0.97, 0.87, 0.66 of the middle's); a trapezoid stays near the
+    // middle's height to three quarters of the way and drops at the corners.
+    std::array<double, 4> openingProfile{};
     double lipDistance = 0.0; // the two lip middles apart (3D)
     double width = 0.0;       // mouth corner to mouth corner (3D)
     // The foremost (z) point of each lip's outer surface near the midline.
@@ -35,6 +42,9 @@ struct MouthMeasures {
 // Throws InputError (naming `where`) when the mesh has no (u,v), when a landmark of the mouth is not
 // a vertex of its skin, or when its teeth are not two separate rows.
 MouthMeasures measureMouth(const MeshData& head, std::string_view where = "mesh");
+
+// Where openingProfile measures: fractions of the way from the mouth's middle to its corners.
+constexpr std::array<double, 4> kOpeningProfileAt{0.0, 0.25, 0.5, 0.75};
 
 // The front view that measures the areas seen has pixels of this fraction of the mouth's width.
 constexpr double kMouthPixelPerWidth = 1.0 / 400.0;
