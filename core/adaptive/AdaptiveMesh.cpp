@@ -2,9 +2,11 @@
 
 #include "core/adaptive/Criteria.h"
 
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <deque>
 #include <stdexcept>
 
@@ -225,24 +227,56 @@ std::vector<OpenMesh::FaceHandle> AdaptiveMesh::affectedFaces(const std::vector<
 }
 
 AdaptStats AdaptiveMesh::refine(const Criterion& criterion) {
+    // In rounds: every queued face is tested in parallel against the mesh as the round found it (the
+    // tests are ~75 % of the time), then the faces that failed are split in queue order. A split changes
+    // the faces around its new vertices; those are queued again (affectedFaces, as one face at a time
+    // would) and their test of this round is stale, so they are not split on it. Every split is thus
+    // decided on the faces exactly as they are when it happens, and the round ends with every face
+    // either tested on its current neighbourhood or queued: the invariant of the one-at-a-time loop.
+    constexpr std::size_t kGrain = 32;
     AdaptStats stats;
     const int maxDepth = criterion.maxDepth();
     FaceQueue queue;
     for (const auto f : mesh_.faces()) queue.push(f);
+    std::vector<FaceHandle> round;
+    std::vector<char> fails;
+    std::vector<std::uint32_t> changedInRound; // per face: the round that last changed it
+    std::uint32_t roundNumber = 0;
     std::vector<VertexHandle> created;
     std::vector<FaceHandle> changed;
     while (!queue.empty()) {
-        const auto f = queue.pop();
-        if (mesh_.status(f).deleted() || level(f) >= maxDepth) continue;
-        ++stats.tests;
-        if (!criterion.needsRefinement(*this, f)) continue;
-        created.clear();
-        refineFace(f, &created);
-        stats.splits += created.size();
-        changed.clear();
-        for (const auto v : created)
-            for (const auto child : mesh_.vf_range(v)) changed.push_back(child);
-        for (const auto g : affectedFaces(changed, criterion)) queue.push(g);
+        round.clear();
+        while (!queue.empty()) {
+            const auto f = queue.pop();
+            if (!mesh_.status(f).deleted() && level(f) < maxDepth) round.push_back(f);
+        }
+        stats.tests += round.size();
+        fails.assign(round.size(), 0);
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, round.size(), kGrain), [&](const auto& range) {
+            for (std::size_t i = range.begin(); i != range.end(); ++i)
+                fails[i] = criterion.needsRefinement(*this, round[i]) ? 1 : 0;
+        });
+        ++roundNumber;
+        for (std::size_t i = 0; i < round.size(); ++i) {
+            const auto f = round[i];
+            const auto index = static_cast<std::size_t>(f.idx());
+            if (!fails[i] || mesh_.status(f).deleted() ||
+                (index < changedInRound.size() && changedInRound[index] == roundNumber))
+                continue;
+            created.clear();
+            refineFace(f, &created);
+            stats.splits += created.size();
+            changed.clear();
+            for (const auto v : created)
+                for (const auto child : mesh_.vf_range(v)) changed.push_back(child);
+            for (const auto g : affectedFaces(changed, criterion)) {
+                queue.push(g);
+                const auto k = static_cast<std::size_t>(g.idx());
+                if (k >= changedInRound.size())
+                    changedInRound.resize(std::max(k + 1, 2 * changedInRound.size()), 0);
+                changedInRound[k] = roundNumber;
+            }
+        }
     }
     return stats;
 }

@@ -40,6 +40,23 @@ TriangleError triangleContourError(const Surface& surface, const std::array<Vec2
     return error;
 }
 
+bool triangleContourErrorExceeds(const Surface& surface, const std::array<Vec2, 3>& uv,
+                                 const std::array<Vec3, 3>& p, const std::vector<Vec3>& pattern,
+                                 double averageLimit, double maximumLimit) {
+    if (pattern.empty()) return 0.0 > averageLimit || 0.0 > maximumLimit;
+    const auto count = static_cast<double>(pattern.size());
+    double sum = 0.0;
+    for (const auto& w : pattern) {
+        const Vec2 at = w[0] * uv[0] + w[1] * uv[1] + w[2] * uv[2];
+        const Vec3 linear = w[0] * p[0] + w[1] * p[1] + w[2] * p[2];
+        const double e = (surface.sample(at) - linear).norm();
+        if (e > maximumLimit) return true;
+        sum += e;
+        if (sum / count > averageLimit) return true; // the remaining samples only add
+    }
+    return false;
+}
+
 ContourErrorStats measureContourError(const MeshData& mesh, const Surface& surface, int samplesPerSide) {
     if (!mesh.hasUVs()) throwInputError("contour error", "the mesh has no (u,v) coordinates");
     const auto pattern = contourSamplePattern(samplesPerSide);

@@ -24,6 +24,12 @@ struct TriangleError {
 TriangleError triangleContourError(const Surface& surface, const std::array<Vec2, 3>& uv,
                                    const std::array<Vec3, 3>& p, const std::vector<Vec3>& pattern);
 
+// triangleContourError(...).average > averageLimit || .maximum > maximumLimit, decided from as few
+// samples as possible: the refinement test (the same answer to the bit; the sum only grows).
+bool triangleContourErrorExceeds(const Surface& surface, const std::array<Vec2, 3>& uv,
+                                 const std::array<Vec3, 3>& p, const std::vector<Vec3>& pattern,
+                                 double averageLimit, double maximumLimit);
+
 struct ContourErrorStats {
     double average = 0.0; // integral of the error over the domain / domain area (in (u,v))
     double maximum = 0.0;

@@ -67,8 +67,8 @@ class ContourCriterion final : public Criterion {
             uv[k] = mesh.uv(v);
             p[k++] = mesh.position(v);
         }
-        const TriangleError e = triangleContourError(mesh.surface(), uv, p, pattern_);
-        return e.average > params_.averageError || e.maximum > params_.maximumError;
+        return triangleContourErrorExceeds(mesh.surface(), uv, p, pattern_, params_.averageError,
+                                           params_.maximumError);
     }
 
   private:

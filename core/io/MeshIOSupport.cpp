@@ -89,4 +89,13 @@ std::vector<Vec2> uvsFromFirstCorners(std::span<const std::int64_t> cornerUV,
     return uvs;
 }
 
+std::string joinAroundPositions(TextAroundPositions parts, std::span<const Vec3> positions,
+                                AppendPositions appendPositions) {
+    constexpr std::size_t kBytesPerPosition = 70; // three shortest doubles and separators, generously
+    std::string out = std::move(parts.head);
+    out.reserve(out.size() + positions.size() * kBytesPerPosition + parts.tail.size());
+    appendPositions(out, positions);
+    return out += parts.tail;
+}
+
 } // namespace vl::meshio

@@ -68,5 +68,9 @@ TextAroundPositions objTextAroundPositions(const MeshData& topology);
 void appendObjPositions(std::string& out, std::span<const Vec3> positions);
 TextAroundPositions vrmlTextAroundPositions(const MeshData& topology);
 void appendVrmlPositions(std::string& out, std::span<const Vec3> positions);
+// The whole file: parts.head + positions (by appendPositions) + parts.tail, in one allocation.
+using AppendPositions = void (*)(std::string&, std::span<const Vec3>);
+std::string joinAroundPositions(TextAroundPositions parts, std::span<const Vec3> positions,
+                                AppendPositions appendPositions);
 
 } // namespace vl::meshio

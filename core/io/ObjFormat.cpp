@@ -266,11 +266,8 @@ std::optional<std::vector<Vec3>> parseObjPositionsMatching(std::string_view text
 
 std::string formatObj(const MeshData& mesh) {
     meshio::requireWritable(mesh);
-    meshio::TextAroundPositions parts = meshio::objTextAroundPositions(mesh);
-    std::string out = std::move(parts.head);
-    out.reserve(out.size() + mesh.positions.size() * 64 + parts.tail.size());
-    meshio::appendObjPositions(out, mesh.positions);
-    return out += parts.tail;
+    return meshio::joinAroundPositions(meshio::objTextAroundPositions(mesh), mesh.positions,
+                                       meshio::appendObjPositions);
 }
 
 namespace meshio {

@@ -376,11 +376,8 @@ MeshData parseVrml(std::string_view text, std::string_view source, CornerTexCoor
 // an explicit texCoordIndex when there are texture coordinates. Any VRML97 reader reads it too.
 std::string formatVrml(const MeshData& mesh) {
     meshio::requireWritable(mesh);
-    meshio::TextAroundPositions parts = meshio::vrmlTextAroundPositions(mesh);
-    std::string out = std::move(parts.head);
-    out.reserve(out.size() + mesh.positions.size() * 70 + parts.tail.size());
-    meshio::appendVrmlPositions(out, mesh.positions);
-    return out += parts.tail;
+    return meshio::joinAroundPositions(meshio::vrmlTextAroundPositions(mesh), mesh.positions,
+                                       meshio::appendVrmlPositions);
 }
 
 namespace meshio {

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <random>
+
 namespace vl {
 namespace {
 
@@ -30,6 +32,39 @@ TEST(ContourError, PlanesHaveNoError) {
     const auto e = triangleContourError(plane, uv, p, contourSamplePattern(5));
     EXPECT_NEAR(e.average, 0.0, 1e-15);
     EXPECT_NEAR(e.maximum, 0.0, 1e-15);
+}
+
+TEST(ContourError, TheEarlyStoppingTestAgreesWithTheFullErrorOnRandomTriangles) {
+    // The refinement test stops at the first sample over the maximum or once the running sum alone
+    // puts the average over its limit; the answer must be that of the full computation, also for
+    // limits right at a triangle's own average or maximum.
+    const test::BumpySurface surface(test::gridDomain(1, 1, test::Diagonals::Same));
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    int exceeded = 0, held = 0;
+    for (int trial = 0; trial < 2000; ++trial) {
+        std::array<Vec2, 3> uv;
+        std::array<Vec3, 3> p;
+        const double size = 0.02 + 0.3 * unit(rng);
+        const Vec2 origin(unit(rng) * (1 - size), unit(rng) * (1 - size));
+        for (int k = 0; k < 3; ++k) {
+            uv[k] = origin + size * Vec2(unit(rng), unit(rng));
+            p[k] = surface.sample(uv[k]) + Vec3(0, 0, 0.01 * (unit(rng) - 0.5)); // off the surface too
+        }
+        const auto pattern = contourSamplePattern(1 + trial % 6);
+        const TriangleError full = triangleContourError(surface, uv, p, pattern);
+        const double limits[] = {
+            0.0, full.average, full.maximum, full.average * unit(rng), full.maximum * (1 + unit(rng)), 1e9};
+        for (const double average : limits)
+            for (const double maximum : limits) {
+                const bool expected = full.average > average || full.maximum > maximum;
+                EXPECT_EQ(triangleContourErrorExceeds(surface, uv, p, pattern, average, maximum), expected)
+                    << "trial " << trial;
+                (expected ? exceeded : held) += 1;
+            }
+    }
+    EXPECT_GT(exceeded, 1000);
+    EXPECT_GT(held, 1000);
 }
 
 // On the paraboloid z = u^2 + v^2 the error of a triangle at x is sum_i w_i |x_i - x|^2, whose exact

@@ -7,8 +7,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 namespace vl {
 namespace {
@@ -147,6 +150,60 @@ TEST(Refinement, ContourRefinementIsAdaptiveAndMeetsTheMeasuredError) {
     const auto measured = measureContourError(am.toMeshData(), surface, 8);
     EXPECT_LT(measured.average, s.contour.averageError);
     EXPECT_LT(measured.maximum, 2 * s.contour.maximumError); // other sample points than the test's
+}
+
+// The mesh as a set of (u,v) triangles with their positions, independent of element order.
+std::vector<std::array<double, 15>> canonicalTriangles(const AdaptiveMesh& am) {
+    const MeshData m = am.toMeshData();
+    std::vector<std::array<double, 15>> out;
+    for (const auto& t : m.triangles) {
+        std::array<std::array<double, 5>, 3> corners;
+        for (int k = 0; k < 3; ++k) {
+            const auto v = t[static_cast<std::size_t>(k)];
+            corners[static_cast<std::size_t>(k)] = {m.uvs[v][0], m.uvs[v][1], m.positions[v][0],
+                                                    m.positions[v][1], m.positions[v][2]};
+        }
+        std::sort(corners.begin(), corners.end());
+        std::array<double, 15> row;
+        for (int k = 0; k < 15; ++k)
+            row[static_cast<std::size_t>(k)] =
+                corners[static_cast<std::size_t>(k / 5)][static_cast<std::size_t>(k % 5)];
+        out.push_back(row);
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+TEST(Refinement, RoundsGiveTheMeshOfTheOneFaceAtATimeReference) {
+    // refine() tests a round of faces in parallel and splits afterwards; the obvious reference splits
+    // any face that fails, one at a time, until a pass over all faces splits nothing. For a criterion
+    // that reads only the face itself (contour, depth) the refined mesh is unique: both must agree.
+    for (const auto& [name, domain] : test::testDomains()) {
+        SCOPED_TRACE(name);
+        const BumpySurface surface(domain);
+        CriterionSettings depth;
+        depth.kind = CriterionKind::Depth;
+        depth.depth.depth = 4;
+        for (const auto& s : {contourSettings(0.004, 0.015), contourSettings(0.001, 0.004, 6), depth}) {
+            const auto criterion = makeCriterion(s);
+            AdaptiveMesh rounds(surface);
+            rounds.refine(*criterion);
+            AdaptiveMesh reference(surface);
+            for (bool split = true; split;) {
+                split = false;
+                std::vector<AdaptiveMesh::FaceHandle> faces(reference.mesh().faces_begin(),
+                                                            reference.mesh().faces_end());
+                for (const auto f : faces)
+                    if (!reference.mesh().status(f).deleted() && reference.level(f) < criterion->maxDepth() &&
+                        criterion->needsRefinement(reference, f)) {
+                        reference.refineFace(f);
+                        split = true;
+                    }
+            }
+            EXPECT_EQ(rounds.faceCount(), reference.faceCount());
+            EXPECT_TRUE(canonicalTriangles(rounds) == canonicalTriangles(reference));
+        }
+    }
 }
 
 TEST(Refinement, NormalsCriterionHoldsOnEveryEdgeOrTheCap) {
