@@ -28,7 +28,7 @@ std::vector<VisemeParameters> oculusVisemes() {
           {"risorius_r", 0.15},
           {"tongue_out", 1.0}}},
         {"DD",
-         {{"jaw_open", 0.3},
+         {{"jaw_open", 0.2},
           {"risorius_l", 0.3},
           {"risorius_r", 0.3},
           {"upper_lip_raise", 0.15},
