@@ -47,8 +47,19 @@ AdaptiveMesh::AdaptiveMesh(const Surface& surface, RbmtMethod method)
     mesh_.add_property(vertexLevel_);
     mesh_.add_property(faceLevel_);
     mesh_.add_property(refinementMark_);
+    buildFromBase();
+    for (std::size_t t = 0; t < base_.triangles.size(); ++t) {
+        const auto& tri = base_.triangles[t];
+        const auto k = base_.refinementEdge[t];
+        baseBlockEdges_.insert(edgeKey(tri[k], tri[(k + 1) % 3]));
+    }
+}
+
+void AdaptiveMesh::buildFromBase() {
+    mesh_.clean(); // no elements; the properties stay
+    deletedFaces_ = deletedVertices_ = 0;
     for (const auto& uv : base_.uvs) {
-        const auto v = mesh_.add_vertex(surface.sample(uv));
+        const auto v = mesh_.add_vertex(surface_->sample(uv));
         mesh_.set_texcoord2D(v, uv);
         mesh_.property(vertexLevel_, v) = 0;
     }
@@ -63,11 +74,6 @@ AdaptiveMesh::AdaptiveMesh(const Surface& surface, RbmtMethod method)
             mesh_.property(refinementMark_, h) =
                 mesh_.from_vertex_handle(h).idx() == static_cast<int>(tri[k]) &&
                 mesh_.to_vertex_handle(h).idx() == static_cast<int>(tri[(k + 1) % 3]);
-    }
-    for (std::size_t t = 0; t < base_.triangles.size(); ++t) {
-        const auto& tri = base_.triangles[t];
-        const auto k = base_.refinementEdge[t];
-        baseBlockEdges_.insert(edgeKey(tri[k], tri[(k + 1) % 3]));
     }
 }
 
@@ -227,6 +233,10 @@ std::vector<OpenMesh::FaceHandle> AdaptiveMesh::affectedFaces(const std::vector<
 }
 
 AdaptStats AdaptiveMesh::refine(const Criterion& criterion) {
+    return refineFrom(criterion, std::vector<FaceHandle>(mesh_.faces_begin(), mesh_.faces_end()));
+}
+
+AdaptStats AdaptiveMesh::refineFrom(const Criterion& criterion, const std::vector<FaceHandle>& start) {
     // In rounds: every queued face is tested in parallel against the mesh as the round found it (the
     // tests are ~75 % of the time), then the faces that failed are split in queue order. A split changes
     // the faces around its new vertices; those are queued again (affectedFaces, as one face at a time
@@ -237,7 +247,7 @@ AdaptStats AdaptiveMesh::refine(const Criterion& criterion) {
     AdaptStats stats;
     const int maxDepth = criterion.maxDepth();
     FaceQueue queue;
-    for (const auto f : mesh_.faces()) queue.push(f);
+    for (const auto f : start) queue.push(f);
     std::vector<FaceHandle> round;
     std::vector<char> fails;
     std::vector<std::uint32_t> changedInRound; // per face: the round that last changed it
@@ -282,12 +292,29 @@ AdaptStats AdaptiveMesh::refine(const Criterion& criterion) {
 }
 
 AdaptStats AdaptiveMesh::simplify(const Criterion& criterion) {
+    return simplifyWithin(criterion, UvBox::everywhere());
+}
+
+bool AdaptiveMesh::faceMeets(FaceHandle f, const UvBox& region) const {
+    UvBox box;
+    for (const auto v : mesh_.fv_range(f)) box.include({uv(v), uv(v)});
+    return region.meets(box.lo, box.hi);
+}
+
+bool AdaptiveMesh::ringMeets(VertexHandle v, const UvBox& region) const {
+    UvBox box{uv(v), uv(v)};
+    for (const auto w : mesh_.vv_range(v)) box.include({uv(w), uv(w)});
+    return region.meets(box.lo, box.hi);
+}
+
+AdaptStats AdaptiveMesh::simplifyWithin(const Criterion& criterion, const UvBox& region) {
+    const bool everywhere = region.isEverywhere();
     AdaptStats stats;
     std::vector<VertexHandle> candidates;
     while (true) {
         candidates.clear();
         for (const auto v : mesh_.vertices())
-            if (level(v) >= 1) candidates.push_back(v);
+            if (level(v) >= 1 && (everywhere || ringMeets(v, region))) candidates.push_back(v);
         // Finest first: welding children makes their parents' centres weldable in the same round.
         std::stable_sort(candidates.begin(), candidates.end(),
                          [&](VertexHandle x, VertexHandle y) { return level(x) > level(y); });
@@ -312,10 +339,42 @@ AdaptStats AdaptiveMesh::simplify(const Criterion& criterion) {
     return stats;
 }
 
-AdaptStats AdaptiveMesh::adapt(const Criterion& criterion) {
-    resample();
-    AdaptStats stats = simplify(criterion);
-    const AdaptStats refined = refine(criterion);
+AdaptStats AdaptiveMesh::adapt(const Criterion& criterion, const UvBox& changed) {
+    // Rebuild when the change reaches more than this share of the vertices: a full re-adaptation
+    // (resample, weld tests everywhere, refine tests everywhere) costs more than refining the base
+    // mesh again (bench_adaptive BM_ReadaptContourJaw against BM_RebuildContourJaw).
+    constexpr double kRebuildShare = 0.5;
+    if (changed.empty()) return {};
+    if (changed.isEverywhere()) { // no hint: re-adapt all of it
+        resample();
+        AdaptStats stats = simplify(criterion);
+        const AdaptStats refined = refine(criterion);
+        stats.splits += refined.splits;
+        stats.tests += refined.tests;
+        return stats;
+    }
+    std::size_t inside = 0, live = 0;
+    for (const auto v : mesh_.vertices()) {
+        ++live;
+        if (changed.contains(uv(v))) ++inside;
+    }
+    if (static_cast<double>(inside) > kRebuildShare * static_cast<double>(live)) {
+        buildFromBase();
+        AdaptStats stats = refine(criterion);
+        stats.rebuilt = true;
+        return stats;
+    }
+    const auto n = static_cast<int>(mesh_.n_vertices());
+    tbb::parallel_for(0, n, [&](int i) {
+        const auto v = mesh_.vertex_handle(i);
+        if (!mesh_.status(v).deleted() && changed.contains(uv(v)))
+            mesh_.set_point(v, surface_->sample(uv(v)));
+    });
+    AdaptStats stats = simplifyWithin(criterion, changed);
+    std::vector<FaceHandle> start;
+    for (const auto f : mesh_.faces())
+        if (faceMeets(f, changed)) start.push_back(f);
+    const AdaptStats refined = refineFrom(criterion, affectedFaces(start, criterion));
     stats.splits += refined.splits;
     stats.tests += refined.tests;
     return stats;

@@ -13,6 +13,7 @@
 // Levels count edge bisections: uniform refinement to depth D has (base faces) * 2^D faces.
 #include "core/adaptive/RbmtBase.h"
 #include "core/adaptive/Surface.h"
+#include "core/adaptive/UvBox.h"
 
 #include <cstdint>
 #include <unordered_set>
@@ -26,6 +27,7 @@ struct AdaptStats {
     std::size_t splits = 0; // edge splits, forced ones included
     std::size_t welds = 0;  // welds kept
     std::size_t tests = 0;  // refinement tests evaluated
+    bool rebuilt = false;   // adapt() refined the base mesh again instead (a change reaching most of it)
 };
 
 class AdaptiveMesh {
@@ -80,7 +82,13 @@ class AdaptiveMesh {
     // needing refinement (the criterion's simplification test). Collects garbage afterwards.
     AdaptStats simplify(const Criterion& criterion);
     // Re-adapts after a change of the surface or the thresholds: resample(), simplify(), refine().
-    AdaptStats adapt(const Criterion& criterion);
+    // `changed` is where in (u,v) the surface changed since the mesh was last adapted to `criterion`
+    // (CascadeSurface::setParameters returns it; everywhere, the default, when unknown or after a
+    // change of the thresholds: then all of the mesh is re-adapted). Given a box, only vertices, welds
+    // and faces that meet it are resampled and tested; elsewhere the mesh stays as it was, so it may
+    // keep splits that only the old shape forced. When the box holds more than half of the vertices,
+    // the mesh is rebuilt from the base mesh instead (cheaper than re-adapting, and minimal).
+    AdaptStats adapt(const Criterion& criterion, const UvBox& changed = UvBox::everywhere());
     // Re-samples every vertex position (call after the surface's parameters changed).
     void resample();
     // Compacts the OpenMesh arrays (invalidates handles held outside).
@@ -91,6 +99,15 @@ class AdaptiveMesh {
 
   private:
     static std::uint64_t edgeKey(std::uint32_t a, std::uint32_t b);
+    // The base mesh again (level 0 only), sampled.
+    void buildFromBase();
+    // refine() starting from the faces `start` (and those their splits change) only.
+    AdaptStats refineFrom(const Criterion& criterion, const std::vector<FaceHandle>& start);
+    // simplify() over the vertices whose ring meets `region`.
+    AdaptStats simplifyWithin(const Criterion& criterion, const UvBox& region);
+    // The (u,v) bounding box of a face's or a vertex ring's corners meets `region`.
+    bool faceMeets(FaceHandle f, const UvBox& region) const;
+    bool ringMeets(VertexHandle v, const UvBox& region) const;
     VertexHandle refineFace(FaceHandle f, std::vector<VertexHandle>* created);
     // The endpoints of the edge whose split created v, when v can be welded.
     bool weldEndpoints(VertexHandle v, VertexHandle& a, VertexHandle& b) const;

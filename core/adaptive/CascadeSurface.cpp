@@ -3,6 +3,8 @@
 #include "core/common/Error.h"
 #include "core/deform/FaceDomain.h"
 
+#include <algorithm>
+
 namespace vl {
 
 CascadeSurface::CascadeSurface(DeformationCascade cascade, MeshData baseDomain, std::vector<double> q)
@@ -11,9 +13,35 @@ CascadeSurface::CascadeSurface(DeformationCascade cascade, MeshData baseDomain, 
     setParameters(std::move(q));
 }
 
-void CascadeSurface::setParameters(std::vector<double> q) {
+namespace {
+
+// Where a field can be non-zero: everywhere for a sampled field, else its regions' boxes (a rotated
+// ellipse lies within the circle of its larger radius).
+UvBox fieldSupport(const VectorField& field) {
+    if (!field.sampled.samples.empty()) return UvBox::everywhere();
+    UvBox box;
+    for (const auto& region : field.influences) {
+        const Vec2 r =
+            region.rotation == 0.0 ? region.radii : Vec2(1, 1) * std::max(region.radii[0], region.radii[1]);
+        box.include({region.centre - r, region.centre + r});
+    }
+    return box;
+}
+
+} // namespace
+
+UvBox CascadeSurface::setParameters(std::vector<double> q) {
     checkParameterValues(cascade_, q);
+    UvBox changed;
+    if (q_.size() != q.size()) {
+        changed = UvBox::everywhere();
+    } else {
+        for (const auto& stage : cascade_.stages)
+            if (stage.kind == StageKind::AddVector && q_[stage.parameter] != q[stage.parameter])
+                changed.include(fieldSupport(stage.field));
+    }
     q_ = std::move(q);
+    return changed;
 }
 
 AdaptStats refineForPoses(AdaptiveMesh& mesh, CascadeSurface& surface, const Criterion& criterion,

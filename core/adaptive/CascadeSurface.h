@@ -21,8 +21,10 @@ class CascadeSurface : public Surface {
 
     const DeformationCascade& cascade() const { return cascade_; }
     const std::vector<double>& parameters() const { return q_; }
-    // Checks q first; the mesh must be resampled (adapt/resample) afterwards.
-    void setParameters(std::vector<double> q);
+    // Checks q first; the mesh must be resampled (adapt/resample) afterwards. Returns where in (u,v)
+    // the surface may have changed: outside it every sample is the same to the bit (a field adds exactly
+    // zero outside its influence regions), so adapt(criterion, changed) need not look there.
+    UvBox setParameters(std::vector<double> q);
 
   private:
     DeformationCascade cascade_;

@@ -771,6 +771,45 @@ TEST(EditorSession, AutomaticReAdaptationIsDerivedStateAndNeverAnUndoStep) {
     EXPECT_FALSE(session.canUndo());
 }
 
+TEST(EditorSession, AutomaticReAdaptationLooksOnlyWhereTheSliderChangedTheFace) {
+    EditorSession session;
+    session.autoReduce = false;
+    session.autoRefine = true;
+    CriterionSettings contour;
+    contour.kind = CriterionKind::Contour;
+    contour.maxDepth = 7;
+    session.loadFace();
+    session.setRefinementSettings(contour);
+    session.finishBackgroundWork();
+    ASSERT_TRUE(session.lastRefinement().has_value());
+    const std::size_t triangles = session.lastRefinement()->triangles;
+
+    // One brow: re-adapted where its field reaches, far fewer tests than faces.
+    session.setParameter(session.face().cascade->findParameter("frontalis_l"), 1.0);
+    session.endEdit();
+    session.finishBackgroundWork();
+    ASSERT_TRUE(session.lastRefinement().has_value());
+    EXPECT_EQ(session.lastRefinement()->action, "re-adapted");
+    EXPECT_LT(session.lastRefinement()->stats.tests, triangles / 2);
+    EXPECT_TRUE(meshShowsParameters(session.face(), session.face().parameters));
+
+    // Every muscle at once reaches most of the face: refined again from the base mesh.
+    std::vector<double> all;
+    for (const auto& p : session.face().cascade->parameters) all.push_back(p.max);
+    session.setParameters(all, "All");
+    session.finishBackgroundWork();
+    EXPECT_TRUE(session.lastRefinement()->stats.rebuilt);
+    EXPECT_TRUE(meshShowsParameters(session.face(), all));
+
+    // New thresholds: all of the mesh is re-adapted (no change box applies to them).
+    contour.contour.averageError *= 2;
+    session.setRefinementSettings(contour);
+    session.finishBackgroundWork();
+    EXPECT_EQ(session.lastRefinement()->action, "re-adapted");
+    EXPECT_GE(session.lastRefinement()->stats.tests, session.lastRefinement()->trianglesBefore / 2);
+    EXPECT_TRUE(meshShowsParameters(session.face(), all));
+}
+
 } // namespace
 } // namespace vl::ui
 

@@ -105,6 +105,9 @@ void EditorUi::refinementPanel() {
         if (report->fromBaseMesh)
             ImGui::TextWrapped("Started again from the %zu-vertex base mesh (a new face or field).",
                                report->verticesAtStart);
+        else if (report->stats.rebuilt)
+            ImGui::TextWrapped("Refined again from the base mesh: the change reached most of the face, "
+                               "where that is quicker than re-adapting.");
         ImGui::Text("Refined: %zu vertices added (edge splits)", report->stats.splits);
         ImGui::Text("Coarsened: %zu vertices removed (welds)", report->stats.welds);
         ImGui::TextDisabled("Triangles: %zu before, %zu after; %zu refinement tests", report->trianglesBefore,

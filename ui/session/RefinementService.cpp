@@ -5,6 +5,7 @@
 #include "core/deform/FaceDomain.h"
 
 #include <chrono>
+#include <optional>
 
 namespace vl::ui {
 namespace {
@@ -16,6 +17,9 @@ struct AdaptiveWork {
     std::shared_ptr<const DeformationCascade> cascade;
     std::unique_ptr<CascadeSurface> surface;
     std::unique_ptr<AdaptiveMesh> mesh;
+    // The thresholds the mesh was last refined, simplified or adapted under: with the same ones, a
+    // re-adaptation only needs to look where the sliders changed the surface.
+    std::optional<CriterionSettings> settings;
 };
 
 RefinementService::RefinementService() : work_(std::make_shared<AdaptiveWork>()) {}
@@ -75,10 +79,11 @@ void RefinementService::start(const Document& document, RefineAction action, boo
                     std::make_unique<CascadeSurface>(*cascade, face::faceBaseDomain(kBaseResolution), q);
                 work->mesh = std::make_unique<AdaptiveMesh>(*work->surface);
                 work->cascade = cascade;
+                work->settings.reset();
                 outcome.report.fromBaseMesh = true;
-            } else {
-                work->surface->setParameters(q);
             }
+            UvBox changed = work->surface->setParameters(q);
+            if (work->settings != settings) changed = UvBox::everywhere();
             outcome.report.verticesAtStart = work->mesh->mesh().n_vertices();
             if (action == RefineAction::Refine) {
                 work->mesh->resample();
@@ -89,9 +94,13 @@ void RefinementService::start(const Document& document, RefineAction action, boo
                 outcome.report.stats = work->mesh->simplify(*criterion);
                 outcome.report.action = "simplified";
             } else {
-                outcome.report.stats = work->mesh->adapt(*criterion);
-                outcome.report.action = "re-adapted";
+                outcome.report.stats = work->mesh->adapt(*criterion, changed);
+                outcome.report.action = outcome.report.stats.rebuilt
+                                            ? "rebuilt (the change reached most of the face)"
+                                            : "re-adapted";
             }
+            // Each of the three leaves every face satisfying these thresholds (or at the cap).
+            work->settings = settings;
             outcome.report.maxLevel = work->mesh->maxLevel();
             result = work->mesh->toMeshData();
         }
