@@ -345,31 +345,20 @@ AdaptStats AdaptiveMesh::adapt(const Criterion& criterion, const UvBox& changed)
     // mesh again (bench_adaptive BM_ReadaptContourJaw against BM_RebuildContourJaw).
     constexpr double kRebuildShare = 0.5;
     if (changed.empty()) return {};
-    if (changed.isEverywhere()) { // no hint: re-adapt all of it
-        resample();
-        AdaptStats stats = simplify(criterion);
-        const AdaptStats refined = refine(criterion);
-        stats.splits += refined.splits;
-        stats.tests += refined.tests;
-        return stats;
+    if (!changed.isEverywhere()) {
+        std::size_t inside = 0, live = 0;
+        for (const auto v : mesh_.vertices()) {
+            ++live;
+            if (changed.contains(uv(v))) ++inside;
+        }
+        if (static_cast<double>(inside) > kRebuildShare * static_cast<double>(live)) {
+            buildFromBase();
+            AdaptStats stats = refine(criterion);
+            stats.rebuilt = true;
+            return stats;
+        }
     }
-    std::size_t inside = 0, live = 0;
-    for (const auto v : mesh_.vertices()) {
-        ++live;
-        if (changed.contains(uv(v))) ++inside;
-    }
-    if (static_cast<double>(inside) > kRebuildShare * static_cast<double>(live)) {
-        buildFromBase();
-        AdaptStats stats = refine(criterion);
-        stats.rebuilt = true;
-        return stats;
-    }
-    const auto n = static_cast<int>(mesh_.n_vertices());
-    tbb::parallel_for(0, n, [&](int i) {
-        const auto v = mesh_.vertex_handle(i);
-        if (!mesh_.status(v).deleted() && changed.contains(uv(v)))
-            mesh_.set_point(v, surface_->sample(uv(v)));
-    });
+    resampleWithin(changed);
     AdaptStats stats = simplifyWithin(criterion, changed);
     std::vector<FaceHandle> start;
     for (const auto f : mesh_.faces())
@@ -381,10 +370,14 @@ AdaptStats AdaptiveMesh::adapt(const Criterion& criterion, const UvBox& changed)
 }
 
 void AdaptiveMesh::resample() {
+    resampleWithin(UvBox::everywhere());
+}
+
+void AdaptiveMesh::resampleWithin(const UvBox& region) {
     const auto n = static_cast<int>(mesh_.n_vertices());
     tbb::parallel_for(0, n, [&](int i) {
         const auto v = mesh_.vertex_handle(i);
-        if (!mesh_.status(v).deleted()) mesh_.set_point(v, surface_->sample(mesh_.texcoord2D(v)));
+        if (!mesh_.status(v).deleted() && region.contains(uv(v))) mesh_.set_point(v, surface_->sample(uv(v)));
     });
 }
 

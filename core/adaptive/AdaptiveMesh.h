@@ -103,6 +103,8 @@ class AdaptiveMesh {
     void buildFromBase();
     // refine() starting from the faces `start` (and those their splits change) only.
     AdaptStats refineFrom(const Criterion& criterion, const std::vector<FaceHandle>& start);
+    // resample() of the vertices inside `region`.
+    void resampleWithin(const UvBox& region);
     // simplify() over the vertices whose ring meets `region`.
     AdaptStats simplifyWithin(const Criterion& criterion, const UvBox& region);
     // The (u,v) bounding box of a face's or a vertex ring's corners meets `region`.
