@@ -25,14 +25,24 @@ std::vector<Vec3> contourSamplePattern(int n) {
     return pattern;
 }
 
+namespace {
+
+// The error at barycentric point w: the surface against the triangle's linear interpolation (eq. 5).
+double sampleError(const Surface& surface, const std::array<Vec2, 3>& uv, const std::array<Vec3, 3>& p,
+                   const Vec3& w) {
+    const Vec2 at = w[0] * uv[0] + w[1] * uv[1] + w[2] * uv[2];
+    const Vec3 linear = w[0] * p[0] + w[1] * p[1] + w[2] * p[2];
+    return (surface.sample(at) - linear).norm();
+}
+
+} // namespace
+
 TriangleError triangleContourError(const Surface& surface, const std::array<Vec2, 3>& uv,
                                    const std::array<Vec3, 3>& p, const std::vector<Vec3>& pattern) {
     TriangleError error;
     double sum = 0.0;
     for (const auto& w : pattern) {
-        const Vec2 at = w[0] * uv[0] + w[1] * uv[1] + w[2] * uv[2];
-        const Vec3 linear = w[0] * p[0] + w[1] * p[1] + w[2] * p[2];
-        const double e = (surface.sample(at) - linear).norm();
+        const double e = sampleError(surface, uv, p, w);
         sum += e;
         error.maximum = std::max(error.maximum, e);
     }
@@ -47,9 +57,7 @@ bool triangleContourErrorExceeds(const Surface& surface, const std::array<Vec2, 
     const auto count = static_cast<double>(pattern.size());
     double sum = 0.0;
     for (const auto& w : pattern) {
-        const Vec2 at = w[0] * uv[0] + w[1] * uv[1] + w[2] * uv[2];
-        const Vec3 linear = w[0] * p[0] + w[1] * p[1] + w[2] * p[2];
-        const double e = (surface.sample(at) - linear).norm();
+        const double e = sampleError(surface, uv, p, w);
         if (e > maximumLimit) return true;
         sum += e;
         if (sum / count > averageLimit) return true; // the remaining samples only add
