@@ -12,7 +12,7 @@
 // the two lowest units of a state are the four lanes of one SIMD vector, so one vector addition and
 // minimum serve four states (9 of every 16 lane sums are splits, the others add +inf; computeLayer
 // below), and a pair of tiles serves all splits between two tiles from L1. Against the scalar
-// kernel before it: 2.3x fewer instructions on the floating-point ports. Only the values are kept (all
+// kernel before it: 2.25x fewer instructions on the floating-point ports. Only the values are kept (all
 // layers); the groups are recovered afterwards by finding the split that gives each chosen value, which is
 // exact because the kernel and the recovery add the same two doubles. Layers run in parallel over tiles with
 // TBB; values and groups do not depend on the thread count or the instruction set (each state is a minimum
