@@ -27,7 +27,8 @@ std::vector<std::string> addKeyMeshFiles(OutputSet& outputs, const ReducedModel&
                                          std::string_view extension) {
     validateReducedModel(model, "export");
     std::vector<std::string> names{neutralFileName(extension)};
-    const MeshTextFormatter formatter(names.back(), model.neutral); // the keys share its topology
+    // The keys share the neutral's topology; all are written as float32 (MeshIO.h, docs/export.md).
+    const MeshTextFormatter formatter(names.back(), model.neutral, PositionPrecision::Float32);
     outputs.add(names.back(), formatter.format(model.neutral.positions));
     for (std::size_t k = 0; k < model.keys.size(); ++k) {
         names.push_back(keyFileName(model, k, extension));

@@ -13,7 +13,9 @@ std::vector<std::string> writeReductionOutputs(OutputSet& outputs, const ReduceO
     const ReducedModel& model = outcome.model;
     std::vector<std::string> written;
     // The keys share the neutral mesh's topology: its faces and (u,v) are formatted once per format.
-    const MeshTextFormatter obj("key.obj", model.neutral), wrl("key.wrl", model.neutral);
+    // Positions as float32, what every consumer of key meshes stores (MeshIO.h, docs/export.md).
+    const MeshTextFormatter obj("key.obj", model.neutral, PositionPrecision::Float32),
+        wrl("key.wrl", model.neutral, PositionPrecision::Float32);
     std::string text; // one buffer for every file
     for (std::size_t k = 0; k < model.keys.size(); ++k) {
         for (const MeshTextFormatter* formatter : {&obj, &wrl}) {

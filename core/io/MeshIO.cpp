@@ -104,21 +104,40 @@ MeshData readMeshLike(const std::filesystem::path& path, const ReferenceMesh& re
     }
 }
 
-std::string formatMesh(const std::filesystem::path& path, const MeshData& mesh) {
-    switch (meshFormatFromPath(path)) {
+std::string formatMesh(const std::filesystem::path& path, const MeshData& mesh, PositionPrecision precision) {
+    const MeshFormat format = meshFormatFromPath(path);
+    if (precision == PositionPrecision::Exact) {
+        switch (format) {
+        case MeshFormat::Obj:
+            return formatObj(mesh);
+        case MeshFormat::Ply:
+            return formatPly(mesh);
+        case MeshFormat::Vrml:
+            return formatVrml(mesh);
+        }
+    }
+    meshio::requireWritable(mesh, precision);
+    switch (format) {
     case MeshFormat::Obj:
-        return formatObj(mesh);
-    case MeshFormat::Ply:
-        return formatPly(mesh);
+        return meshio::joinAroundPositions(meshio::objTextAroundPositions(mesh), mesh.positions, precision,
+                                           meshio::appendObjPositions);
+    case MeshFormat::Ply: {
+        MeshData rounded = mesh;
+        for (Vec3& p : rounded.positions)
+            for (int k = 0; k < 3; ++k) p[k] = static_cast<float>(p[k]);
+        return formatPly(rounded);
+    }
     case MeshFormat::Vrml:
-        return formatVrml(mesh);
+        return meshio::joinAroundPositions(meshio::vrmlTextAroundPositions(mesh), mesh.positions, precision,
+                                           meshio::appendVrmlPositions);
     }
     throwInputError(path.string(), "unknown mesh format");
 }
 
-MeshTextFormatter::MeshTextFormatter(const std::filesystem::path& path, const MeshData& topology)
-    : format_(meshFormatFromPath(path)), topology_(topology) {
-    meshio::requireWritable(topology_);
+MeshTextFormatter::MeshTextFormatter(const std::filesystem::path& path, const MeshData& topology,
+                                     PositionPrecision precision)
+    : format_(meshFormatFromPath(path)), precision_(precision), topology_(topology) {
+    meshio::requireWritable(topology_);     // (u,v) and triangles; format() checks the positions it gets
     if (format_ == MeshFormat::Ply) return; // binary, and as fast as copying
     meshio::TextAroundPositions parts = format_ == MeshFormat::Obj
                                             ? meshio::objTextAroundPositions(topology_)
@@ -139,20 +158,19 @@ void MeshTextFormatter::format(std::span<const Vec3> positions, std::string& out
                                     " positions for a topology of " +
                                     std::to_string(topology_.positions.size()));
     if (format_ == MeshFormat::Ply) {
-        out = formatPly({{positions.begin(), positions.end()}, topology_.uvs, topology_.triangles});
+        out =
+            formatMesh("mesh.ply", {{positions.begin(), positions.end()}, topology_.uvs, topology_.triangles},
+                       precision_);
         return;
     }
-    for (std::size_t i = 0; i < positions.size(); ++i)
-        if (!std::isfinite(positions[i][0]) || !std::isfinite(positions[i][1]) ||
-            !std::isfinite(positions[i][2]))
-            throwInputError("mesh to write", "vertex " + std::to_string(i) + " has a non-finite coordinate");
+    meshio::requireWritablePositions(positions, precision_);
     out.clear();
     out.reserve(head_.size() + positions.size() * 70 + tail_.size());
     out += head_;
     if (format_ == MeshFormat::Obj)
-        meshio::appendObjPositions(out, positions);
+        meshio::appendObjPositions(out, positions, precision_);
     else
-        meshio::appendVrmlPositions(out, positions);
+        meshio::appendVrmlPositions(out, positions, precision_);
     out += tail_;
 }
 

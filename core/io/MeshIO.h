@@ -18,7 +18,9 @@
 // that no face uses. Without any texture coordinates `uvs` is empty.
 //
 // Writers print doubles in their shortest exact form (OBJ, VRML) or as float64 (PLY), so reading a
-// written mesh gives back bit-identical positions, (u,v) and triangles.
+// written mesh gives back bit-identical positions, (u,v) and triangles. Writers given
+// PositionPrecision::Float32 (the key meshes of a reduction and its exports) print each position
+// coordinate as float32 instead; (u,v) and triangles stay exact.
 #include "core/mesh/Mesh.h"
 
 #include <filesystem>
@@ -31,6 +33,19 @@
 namespace vl {
 
 enum class MeshFormat { Obj, Ply, Vrml };
+
+// How a writer prints vertex positions.
+enum class PositionPrecision {
+    // A double's shortest exact text (OBJ, VRML) or float64 (PLY): reads back bit-identical.
+    Exact,
+    // float32: OBJ and VRML print the shortest text that reads back as the same float32
+    // (std::to_chars of static_cast<float>(x)), PLY stores double(static_cast<float>(x)); either way
+    // static_cast<float> of the read-back value equals static_cast<float>(x). For key meshes (every
+    // consumer - runtime package, glTF, Blender, XfaceEd - stores float32, and a frequency-weighted
+    // mean's last double digits are noise): about half the text of Exact. A coordinate beyond
+    // float32's range is refused ("mesh to write: ...").
+    Float32,
+};
 
 // Texture coordinates as the file indexes them, per triangle corner: what a tool needs that samples
 // a surface over its (u,v) and so must see the UV seams that one (u,v) per vertex hides (core/face).
@@ -65,15 +80,19 @@ ReferenceMesh readReferenceMesh(const std::filesystem::path& path);
 MeshData readMeshLike(const std::filesystem::path& path, const ReferenceMesh& reference);
 // Writes atomically (temp file + rename) in the format of the extension.
 void writeMesh(const std::filesystem::path& path, const MeshData& mesh);
-// The file contents writeMesh writes, for writers that stage files (core/common/OutputSet.h).
-std::string formatMesh(const std::filesystem::path& path, const MeshData& mesh);
+// The file contents writeMesh writes, for writers that stage files (core/common/OutputSet.h);
+// formatObj, formatPly or formatVrml for Exact.
+std::string formatMesh(const std::filesystem::path& path, const MeshData& mesh,
+                       PositionPrecision precision = PositionPrecision::Exact);
 
 // Formats meshes of one topology (vertex count, triangles, (u,v)) - the key meshes of a reduction -
 // in the format of `path`'s extension, the text that does not depend on the positions only once:
-// format(p) == formatMesh(path, {p, topology.uvs, topology.triangles}) for p of the topology's size.
+// format(p) == formatMesh(path, {p, topology.uvs, topology.triangles}, precision) for p of the
+// topology's size.
 class MeshTextFormatter {
   public:
-    MeshTextFormatter(const std::filesystem::path& path, const MeshData& topology);
+    MeshTextFormatter(const std::filesystem::path& path, const MeshData& topology,
+                      PositionPrecision precision);
     std::string format(std::span<const Vec3> positions) const;
     // The same text into `out` (replacing its contents): a buffer reused for many files keeps its
     // pages, where a fresh string of this size is mapped and faulted in anew each time.
@@ -81,6 +100,7 @@ class MeshTextFormatter {
 
   private:
     MeshFormat format_;
+    PositionPrecision precision_;
     MeshData topology_;
     std::string head_, tail_; // OBJ and VRML: the file around the positions
 };

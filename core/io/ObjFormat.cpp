@@ -267,7 +267,7 @@ std::optional<std::vector<Vec3>> parseObjPositionsMatching(std::string_view text
 std::string formatObj(const MeshData& mesh) {
     meshio::requireWritable(mesh);
     return meshio::joinAroundPositions(meshio::objTextAroundPositions(mesh), mesh.positions,
-                                       meshio::appendObjPositions);
+                                       PositionPrecision::Exact, meshio::appendObjPositions);
 }
 
 namespace meshio {
@@ -294,8 +294,8 @@ TextAroundPositions objTextAroundPositions(const MeshData& topology) {
     return parts;
 }
 
-void appendObjPositions(std::string& out, std::span<const Vec3> positions) {
-    for (const auto& p : positions) appendDoubles(out, "v ", {p[0], p[1], p[2]}, "\n");
+void appendObjPositions(std::string& out, std::span<const Vec3> positions, PositionPrecision precision) {
+    for (const auto& p : positions) appendPosition(out, "v ", p, precision, "\n");
 }
 
 } // namespace meshio

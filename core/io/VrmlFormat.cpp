@@ -377,7 +377,7 @@ MeshData parseVrml(std::string_view text, std::string_view source, CornerTexCoor
 std::string formatVrml(const MeshData& mesh) {
     meshio::requireWritable(mesh);
     return meshio::joinAroundPositions(meshio::vrmlTextAroundPositions(mesh), mesh.positions,
-                                       meshio::appendVrmlPositions);
+                                       PositionPrecision::Exact, meshio::appendVrmlPositions);
 }
 
 namespace meshio {
@@ -417,11 +417,9 @@ TextAroundPositions vrmlTextAroundPositions(const MeshData& topology) {
     return parts;
 }
 
-void appendVrmlPositions(std::string& out, std::span<const Vec3> positions) {
-    for (std::size_t i = 0; i < positions.size(); ++i) {
-        const Vec3& p = positions[i];
-        appendDoubles(out, "        ", {p[0], p[1], p[2]}, i + 1 < positions.size() ? ",\n" : "\n");
-    }
+void appendVrmlPositions(std::string& out, std::span<const Vec3> positions, PositionPrecision precision) {
+    for (std::size_t i = 0; i < positions.size(); ++i)
+        appendPosition(out, "        ", positions[i], precision, i + 1 < positions.size() ? ",\n" : "\n");
 }
 
 } // namespace meshio

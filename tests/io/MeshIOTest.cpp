@@ -134,24 +134,86 @@ TEST(MeshWriters, RejectMeshesThatWouldNotReadBack) {
     expectInputError([&] { formatVrml(mesh); }, {"mesh to write", "vertex 1", "non-finite"});
 }
 
+// Random awkward doubles (test::randomDouble) brought within float32's range: the ones beyond it
+// are replaced by their remainder modulo 1e30, which keeps a full mantissa.
+std::vector<Vec3> withinFloat32Range(std::vector<Vec3> positions) {
+    for (Vec3& p : positions)
+        for (int k = 0; k < 3; ++k)
+            if (std::abs(p[k]) > std::numeric_limits<float>::max()) p[k] = std::fmod(p[k], 1e30);
+    return positions;
+}
+
 TEST(MeshTextFormatter, EqualsFormatMeshForEveryMeshOfTheTopology) {
-    for (const bool uvs : {false, true}) {
-        const MeshData topology = test::randomMesh(uvs ? 5 : 6, 30, 50, uvs);
-        for (const char* name : {"a.obj", "a.wrl", "a.ply"}) {
-            const MeshTextFormatter formatter(name, topology);
-            for (std::uint64_t seed = 10; seed < 13; ++seed) {
-                MeshData mesh = topology;
-                mesh.positions = test::randomMesh(seed, 30, 10, false).positions;
-                EXPECT_EQ(formatMesh(name, mesh), formatter.format(mesh.positions))
-                    << name << " seed " << seed;
+    for (const PositionPrecision precision : {PositionPrecision::Exact, PositionPrecision::Float32})
+        for (const bool uvs : {false, true}) {
+            const MeshData topology = test::randomMesh(uvs ? 5 : 6, 30, 50, uvs);
+            for (const char* name : {"a.obj", "a.wrl", "a.ply"}) {
+                const MeshTextFormatter formatter(name, topology, precision);
+                for (std::uint64_t seed = 10; seed < 13; ++seed) {
+                    MeshData mesh = topology;
+                    mesh.positions = withinFloat32Range(test::randomMesh(seed, 30, 10, false).positions);
+                    EXPECT_EQ(formatMesh(name, mesh, precision), formatter.format(mesh.positions))
+                        << name << " seed " << seed << " float32 "
+                        << (precision == PositionPrecision::Float32);
+                }
             }
         }
+}
+
+// Key meshes (docs/export.md): every coordinate reads back as the same float32, (u,v) and faces
+// exactly, in every format; the text is shorter than a double's, and a coordinate given with at most
+// 7 significant digits is written back as the same text.
+TEST(MeshWriters, Float32PositionsReadBackAsTheSameFloats) {
+    for (std::uint64_t seed = 20; seed < 26; ++seed) {
+        MeshData mesh = test::randomMesh(seed, 40, 60, seed % 2 == 0);
+        mesh.positions = withinFloat32Range(mesh.positions);
+        for (const char* name : {"a.obj", "a.wrl", "a.ply"}) {
+            SCOPED_TRACE(std::string(name) + " seed " + std::to_string(seed));
+            const std::string text = formatMesh(name, mesh, PositionPrecision::Float32);
+            const std::string source(name);
+            const MeshData back = source.ends_with(".obj")   ? parseObj(text, source)
+                                  : source.ends_with(".wrl") ? parseVrml(text, source)
+                                                             : parsePly(text, source);
+            test::expectSameFloat32Positions(mesh.positions, back.positions);
+            MeshData exact = back; // (u,v) and faces compared bit for bit
+            exact.positions = mesh.positions;
+            test::expectIdenticalMesh(mesh, exact);
+            if (!source.ends_with(".ply")) {
+                EXPECT_LT(text.size(), formatMesh(name, mesh).size());
+            }
+        }
+    }
+    MeshData sample;
+    sample.positions = {Vec3(-3.970852, -12.144, -12.833978), Vec3(1, 0, 0), Vec3(0, 1e-3, 0.5)};
+    sample.triangles = {{0, 1, 2}};
+    const std::string obj = formatMesh("a.obj", sample, PositionPrecision::Float32);
+    EXPECT_NE(obj.find("\nv -3.970852 -12.144 -12.833978\nv 1 0 0\nv 0 0.001 0.5\n"), std::string::npos)
+        << obj;
+    // A mean: 16-17 significant digits as a double, at most 9 as float32.
+    sample.positions[1] = Vec3(1.0 / 3.0, 0, 0);
+    EXPECT_NE(formatObj(sample).find("\nv 0.3333333333333333 0 0\n"), std::string::npos);
+    EXPECT_NE(formatMesh("a.obj", sample, PositionPrecision::Float32).find("\nv 0.33333334 0 0\n"),
+              std::string::npos);
+}
+
+TEST(MeshWriters, Float32RefusesCoordinatesBeyondItsRange) {
+    MeshData mesh;
+    mesh.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, -1e39, 0)};
+    mesh.triangles = {{0, 1, 2}};
+    EXPECT_NO_THROW(formatObj(mesh)); // a double holds it
+    for (const char* name : {"a.obj", "a.wrl", "a.ply"}) {
+        expectInputError([&] { formatMesh(name, mesh, PositionPrecision::Float32); },
+                         {"mesh to write", "vertex 2", "float32"});
+        const MeshTextFormatter formatter(name,
+                                          {{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)}, {}, mesh.triangles},
+                                          PositionPrecision::Float32);
+        expectInputError([&] { formatter.format(mesh.positions); }, {"mesh to write", "vertex 2", "float32"});
     }
 }
 
 TEST(MeshTextFormatter, RejectsNonFinitePositionsAndOtherVertexCounts) {
     const MeshData topology = test::randomMesh(3, 6, 4, true);
-    const MeshTextFormatter formatter("a.obj", topology);
+    const MeshTextFormatter formatter("a.obj", topology, PositionPrecision::Exact);
     std::vector<Vec3> positions = topology.positions;
     positions[4][1] = std::numeric_limits<double>::quiet_NaN();
     expectInputError([&] { formatter.format(positions); }, {"mesh to write", "vertex 4", "non-finite"});
