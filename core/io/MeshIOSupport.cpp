@@ -103,27 +103,12 @@ std::vector<Vec2> uvsFromFirstCorners(std::span<const std::int64_t> cornerUV,
     return uvs;
 }
 
-void appendPosition(std::string& out, std::string_view prefix, const Vec3& p, PositionPrecision precision,
-                    std::string_view suffix) {
-    char buffer[80]; // 3 x 24 (the longest shortest double) + 2 separators
-    char* const end = buffer + sizeof buffer;
-    char* at = buffer;
-    for (int k = 0; k < 3; ++k) {
-        if (k > 0) *at++ = ' ';
-        at = precision == PositionPrecision::Float32 ? std::to_chars(at, end, static_cast<float>(p[k])).ptr
-                                                     : std::to_chars(at, end, p[k]).ptr;
-    }
-    out += prefix;
-    out.append(buffer, at);
-    out += suffix;
-}
-
-std::string joinAroundPositions(TextAroundPositions parts, std::span<const Vec3> positions,
-                                PositionPrecision precision, AppendPositions appendPositions) {
+std::string joinAroundPositions(TextAroundPositions parts, const PositionText& positions,
+                                AppendPositions appendPositions) {
     constexpr std::size_t kBytesPerPosition = 70; // three shortest doubles and separators, generously
     std::string out = std::move(parts.head);
-    out.reserve(out.size() + positions.size() * kBytesPerPosition + parts.tail.size());
-    appendPositions(out, positions, precision);
+    out.reserve(out.size() + positions.vertexCount() * kBytesPerPosition + parts.tail.size());
+    appendPositions(out, positions);
     return out += parts.tail;
 }
 

@@ -69,15 +69,12 @@ struct TextAroundPositions {
     std::string head, tail;
 };
 TextAroundPositions objTextAroundPositions(const MeshData& topology);
-void appendObjPositions(std::string& out, std::span<const Vec3> positions, PositionPrecision precision);
+void appendObjPositions(std::string& out, const PositionText& positions);
 TextAroundPositions vrmlTextAroundPositions(const MeshData& topology);
-void appendVrmlPositions(std::string& out, std::span<const Vec3> positions, PositionPrecision precision);
-// Appends `prefix`, the position's three coordinates in `precision` separated by spaces, then `suffix`.
-void appendPosition(std::string& out, std::string_view prefix, const Vec3& p, PositionPrecision precision,
-                    std::string_view suffix);
+void appendVrmlPositions(std::string& out, const PositionText& positions);
 // The whole file: parts.head + positions (by appendPositions) + parts.tail, in one allocation.
-using AppendPositions = void (*)(std::string&, std::span<const Vec3>, PositionPrecision);
-std::string joinAroundPositions(TextAroundPositions parts, std::span<const Vec3> positions,
-                                PositionPrecision precision, AppendPositions appendPositions);
+using AppendPositions = void (*)(std::string&, const PositionText&);
+std::string joinAroundPositions(TextAroundPositions parts, const PositionText& positions,
+                                AppendPositions appendPositions);
 
 } // namespace vl::meshio

@@ -266,8 +266,9 @@ std::optional<std::vector<Vec3>> parseObjPositionsMatching(std::string_view text
 
 std::string formatObj(const MeshData& mesh) {
     meshio::requireWritable(mesh);
-    return meshio::joinAroundPositions(meshio::objTextAroundPositions(mesh), mesh.positions,
-                                       PositionPrecision::Exact, meshio::appendObjPositions);
+    return meshio::joinAroundPositions(meshio::objTextAroundPositions(mesh),
+                                       PositionText(mesh.positions, PositionPrecision::Exact),
+                                       meshio::appendObjPositions);
 }
 
 namespace meshio {
@@ -294,8 +295,12 @@ TextAroundPositions objTextAroundPositions(const MeshData& topology) {
     return parts;
 }
 
-void appendObjPositions(std::string& out, std::span<const Vec3> positions, PositionPrecision precision) {
-    for (const auto& p : positions) appendPosition(out, "v ", p, precision, "\n");
+void appendObjPositions(std::string& out, const PositionText& positions) {
+    for (std::size_t i = 0; i < positions.vertexCount(); ++i) {
+        out += "v ";
+        out += positions.vertex(i);
+        out += '\n';
+    }
 }
 
 } // namespace meshio

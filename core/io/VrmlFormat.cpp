@@ -376,8 +376,9 @@ MeshData parseVrml(std::string_view text, std::string_view source, CornerTexCoor
 // an explicit texCoordIndex when there are texture coordinates. Any VRML97 reader reads it too.
 std::string formatVrml(const MeshData& mesh) {
     meshio::requireWritable(mesh);
-    return meshio::joinAroundPositions(meshio::vrmlTextAroundPositions(mesh), mesh.positions,
-                                       PositionPrecision::Exact, meshio::appendVrmlPositions);
+    return meshio::joinAroundPositions(meshio::vrmlTextAroundPositions(mesh),
+                                       PositionText(mesh.positions, PositionPrecision::Exact),
+                                       meshio::appendVrmlPositions);
 }
 
 namespace meshio {
@@ -417,9 +418,12 @@ TextAroundPositions vrmlTextAroundPositions(const MeshData& topology) {
     return parts;
 }
 
-void appendVrmlPositions(std::string& out, std::span<const Vec3> positions, PositionPrecision precision) {
-    for (std::size_t i = 0; i < positions.size(); ++i)
-        appendPosition(out, "        ", positions[i], precision, i + 1 < positions.size() ? ",\n" : "\n");
+void appendVrmlPositions(std::string& out, const PositionText& positions) {
+    for (std::size_t i = 0; i < positions.vertexCount(); ++i) {
+        out += "        ";
+        out += positions.vertex(i);
+        out += i + 1 < positions.vertexCount() ? ",\n" : "\n";
+    }
 }
 
 } // namespace meshio

@@ -3,6 +3,8 @@
 #include "core/io/MeshIO.h"
 #include "MeshIOTestUtil.h"
 
+#include <charconv>
+#include <cmath>
 #include <fstream>
 #include <unistd.h>
 
@@ -209,6 +211,70 @@ TEST(MeshWriters, Float32RefusesCoordinatesBeyondItsRange) {
                                           PositionPrecision::Float32);
         expectInputError([&] { formatter.format(mesh.positions); }, {"mesh to write", "vertex 2", "float32"});
     }
+}
+
+// Positions formatted once (PositionText) give the same files, and a coordinate copied from the
+// reference's text is the text formatting it gives: equal bits reuse it; -0 and 0, or doubles that
+// differ but round to one float, are told apart exactly as the precision tells them apart.
+TEST(PositionText, ReusingTheReferenceGivesTheTextOfFormattingEveryCoordinate) {
+    for (const PositionPrecision precision : {PositionPrecision::Exact, PositionPrecision::Float32})
+        for (std::uint64_t seed = 30; seed < 34; ++seed) {
+            SCOPED_TRACE("seed " + std::to_string(seed) + " float32 " +
+                         std::to_string(precision == PositionPrecision::Float32));
+            const MeshData topology = test::randomMesh(seed, 40, 60, seed % 2 == 0);
+            const std::vector<Vec3> base = withinFloat32Range(topology.positions);
+            std::vector<Vec3> moved =
+                withinFloat32Range(test::randomMesh(seed + 100, 40, 10, false).positions);
+            for (std::size_t i = 0; i < moved.size(); ++i)
+                for (int k = 0; k < 3; ++k) {
+                    const double b = base[i][k];
+                    switch ((i * 3 + static_cast<std::size_t>(k)) % 5) {
+                    case 0: // unmoved
+                    case 1:
+                        moved[i][k] = b;
+                        break;
+                    case 2: // the same float, another double (where there is one)
+                        moved[i][k] = std::nextafter(b, 0.0) == 0.0 ? b : std::nextafter(b, 0.0);
+                        break;
+                    case 3: // zero of the other sign
+                        moved[i][k] = b == 0.0 ? -b : moved[i][k];
+                        break;
+                    default: // moved
+                        break;
+                    }
+                }
+            const PositionText reference(base, precision);
+            const PositionText reused(moved, precision, &reference), fresh(moved, precision);
+            ASSERT_EQ(reused.vertexCount(), moved.size());
+            for (std::size_t i = 0; i < moved.size(); ++i) {
+                ASSERT_EQ(reused.vertex(i), fresh.vertex(i)) << "vertex " << i;
+                for (int k = 0; k < 3; ++k) {
+                    char buffer[32];
+                    const auto end =
+                        precision == PositionPrecision::Float32
+                            ? std::to_chars(buffer, buffer + 32, static_cast<float>(moved[i][k])).ptr
+                            : std::to_chars(buffer, buffer + 32, moved[i][k]).ptr;
+                    ASSERT_EQ(reused.coordinate(i, k), std::string_view(buffer, end));
+                }
+            }
+            MeshData mesh = topology;
+            mesh.positions = moved;
+            for (const char* name : {"a.obj", "a.wrl", "a.ply"}) {
+                const MeshTextFormatter formatter(name, topology, precision);
+                std::string text;
+                formatter.format(reused, text);
+                EXPECT_EQ(text, formatMesh(name, mesh, precision)) << name;
+            }
+        }
+    // A reference of another precision or size is not used.
+    const std::vector<Vec3> one{Vec3(1.0 / 3.0, 0, 0)};
+    const PositionText exact(one, PositionPrecision::Exact);
+    EXPECT_EQ(PositionText(one, PositionPrecision::Float32, &exact).vertex(0), "0.33333334 0 0");
+    const MeshTextFormatter formatter("a.obj",
+                                      {{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)}, {}, {{0, 1, 2}}},
+                                      PositionPrecision::Float32);
+    std::string text;
+    EXPECT_THROW(formatter.format(exact, text), std::invalid_argument);
 }
 
 TEST(MeshTextFormatter, RejectsNonFinitePositionsAndOtherVertexCounts) {
