@@ -280,14 +280,17 @@ TextAroundPositions objTextAroundPositions(const MeshData& topology) {
     std::string& out = parts.tail;
     out.reserve(topology.uvs.size() * 48 + topology.triangles.size() * 40);
     for (const auto& uv : topology.uvs) appendDoubles(out, "vt ", {uv[0], uv[1]}, "\n");
+    std::string index;
     for (const auto& t : topology.triangles) {
         out += 'f';
         for (const auto v : t) {
+            index.clear();
+            appendInteger(index, static_cast<std::int64_t>(v) + 1);
             out += ' ';
-            appendInteger(out, static_cast<std::int64_t>(v) + 1);
-            if (topology.hasUVs()) {
+            out += index;
+            if (topology.hasUVs()) { // the (u,v) of a vertex has its index
                 out += '/';
-                appendInteger(out, static_cast<std::int64_t>(v) + 1);
+                out += index;
             }
         }
         out += '\n';

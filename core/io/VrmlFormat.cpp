@@ -400,16 +400,22 @@ TextAroundPositions vrmlTextAroundPositions(const MeshData& topology) {
                           i + 1 < topology.uvs.size() ? ",\n" : "\n");
         out += "      ]\n    }\n";
     }
-    const auto indexList = [&](const char* field) {
-        out += std::string("    ") + field + " [\n";
-        for (std::size_t t = 0; t < topology.triangles.size(); ++t) {
-            out += "      ";
-            for (const auto v : topology.triangles[t]) {
-                appendInteger(out, static_cast<std::int64_t>(v));
-                out += ", ";
-            }
-            out += t + 1 < topology.triangles.size() ? "-1,\n" : "-1\n";
+    // The faces' index list, formatted once for coordIndex and texCoordIndex.
+    std::string indices;
+    indices.reserve(topology.triangles.size() * 30);
+    for (std::size_t t = 0; t < topology.triangles.size(); ++t) {
+        indices += "      ";
+        for (const auto v : topology.triangles[t]) {
+            appendInteger(indices, static_cast<std::int64_t>(v));
+            indices += ", ";
         }
+        indices += t + 1 < topology.triangles.size() ? "-1,\n" : "-1\n";
+    }
+    const auto indexList = [&](std::string_view field) {
+        out += "    ";
+        out += field;
+        out += " [\n";
+        out += indices;
         out += "    ]\n";
     };
     indexList("coordIndex");
