@@ -27,11 +27,20 @@ std::vector<std::string> addKeyMeshFiles(OutputSet& outputs, const ReducedModel&
                                          std::string_view extension) {
     validateReducedModel(model, "export");
     std::vector<std::string> names{neutralFileName(extension)};
-    const MeshTextFormatter formatter(names.back(), model.neutral); // the keys share its topology
-    outputs.add(names.back(), formatter.format(model.neutral.positions));
+    // The keys share the neutral's topology; all are written as float32 (MeshIO.h, docs/export.md),
+    // and coordinates a key shares with the neutral are formatted once.
+    constexpr PositionPrecision kPrecision = PositionPrecision::Float32;
+    const MeshTextFormatter formatter(names.back(), model.neutral, kPrecision);
+    const PositionText neutral(model.neutral.positions, kPrecision);
+    std::string text; // one buffer for every file
+    formatter.format(neutral, text);
+    outputs.add(names.back(), text);
+    PositionText positions;
     for (std::size_t k = 0; k < model.keys.size(); ++k) {
         names.push_back(keyFileName(model, k, extension));
-        outputs.add(names.back(), formatter.format(model.keys[k].positions));
+        positions.assign(model.keys[k].positions, kPrecision, &neutral);
+        formatter.format(positions, text);
+        outputs.add(names.back(), text);
     }
     return names;
 }

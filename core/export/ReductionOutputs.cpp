@@ -13,12 +13,20 @@ std::vector<std::string> writeReductionOutputs(OutputSet& outputs, const ReduceO
     const ReducedModel& model = outcome.model;
     std::vector<std::string> written;
     // The keys share the neutral mesh's topology: its faces and (u,v) are formatted once per format.
-    const MeshTextFormatter obj("key.obj", model.neutral), wrl("key.wrl", model.neutral);
+    // Positions as float32, what every consumer of key meshes stores (MeshIO.h, docs/export.md), each
+    // key's formatted once for its OBJ and VRML; coordinates a key shares with the neutral (most of a
+    // face does not move in a viseme) are formatted once for all keys.
+    constexpr PositionPrecision kPrecision = PositionPrecision::Float32;
+    const MeshTextFormatter obj("key.obj", model.neutral, kPrecision),
+        wrl("key.wrl", model.neutral, kPrecision);
+    const PositionText neutral(model.neutral.positions, kPrecision);
+    PositionText positions;
     std::string text; // one buffer for every file
     for (std::size_t k = 0; k < model.keys.size(); ++k) {
+        positions.assign(model.keys[k].positions, kPrecision, &neutral);
         for (const MeshTextFormatter* formatter : {&obj, &wrl}) {
             written.push_back(keyFileName(model, k, formatter == &obj ? ".obj" : ".wrl"));
-            formatter->format(model.keys[k].positions, text);
+            formatter->format(positions, text);
             outputs.add(written.back(), text);
         }
     }

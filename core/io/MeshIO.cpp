@@ -6,7 +6,9 @@
 #include "core/io/MeshIOSupport.h"
 
 #include <algorithm>
+#include <bit>
 #include <cctype>
+#include <charconv>
 #include <optional>
 
 namespace vl {
@@ -104,21 +106,89 @@ MeshData readMeshLike(const std::filesystem::path& path, const ReferenceMesh& re
     }
 }
 
-std::string formatMesh(const std::filesystem::path& path, const MeshData& mesh) {
-    switch (meshFormatFromPath(path)) {
+std::string formatMesh(const std::filesystem::path& path, const MeshData& mesh, PositionPrecision precision) {
+    const MeshFormat format = meshFormatFromPath(path);
+    meshio::requireWritable(mesh, precision);
+    switch (format) {
     case MeshFormat::Obj:
-        return formatObj(mesh);
+        return meshio::joinAroundPositions(meshio::objTextAroundPositions(mesh),
+                                           PositionText(mesh.positions, precision),
+                                           meshio::appendObjPositions);
     case MeshFormat::Ply:
-        return formatPly(mesh);
+        if (precision == PositionPrecision::Exact) return formatPly(mesh);
+        return formatPly({PositionText(mesh.positions, precision).values(), mesh.uvs, mesh.triangles});
     case MeshFormat::Vrml:
-        return formatVrml(mesh);
+        return meshio::joinAroundPositions(meshio::vrmlTextAroundPositions(mesh),
+                                           PositionText(mesh.positions, precision),
+                                           meshio::appendVrmlPositions);
     }
     throwInputError(path.string(), "unknown mesh format");
 }
 
-MeshTextFormatter::MeshTextFormatter(const std::filesystem::path& path, const MeshData& topology)
-    : format_(meshFormatFromPath(path)), topology_(topology) {
-    meshio::requireWritable(topology_);
+PositionText::PositionText(std::span<const Vec3> positions, PositionPrecision precision,
+                           const PositionText* reference) {
+    assign(positions, precision, reference);
+}
+
+void PositionText::assign(std::span<const Vec3> positions, PositionPrecision precision,
+                          const PositionText* reference) {
+    meshio::requireWritablePositions(positions, precision);
+    if (reference && (reference->precision_ != precision || reference->vertexCount() != positions.size()))
+        reference = nullptr;
+    precision_ = precision;
+    text_.clear();
+    ends_.clear();
+    bits_.clear();
+    text_.reserve(positions.size() * (precision == PositionPrecision::Float32 ? 36 : 60));
+    ends_.reserve(3 * positions.size());
+    bits_.reserve(3 * positions.size());
+    char buffer[32]; // the longest shortest double is 24 characters
+    for (std::size_t i = 0; i < positions.size(); ++i)
+        for (int k = 0; k < 3; ++k) {
+            const double x = positions[i][k];
+            const auto f = static_cast<float>(x);
+            const std::uint64_t bits = precision == PositionPrecision::Float32
+                                           ? std::bit_cast<std::uint32_t>(f)
+                                           : std::bit_cast<std::uint64_t>(x);
+            if (k > 0) text_ += ' ';
+            const std::size_t c = ends_.size();
+            if (reference && reference->bits_[c] == bits) {
+                text_ += reference->coordinate(i, k);
+            } else {
+                const auto end = precision == PositionPrecision::Float32
+                                     ? std::to_chars(buffer, buffer + sizeof buffer, f).ptr
+                                     : std::to_chars(buffer, buffer + sizeof buffer, x).ptr;
+                text_.append(buffer, end);
+            }
+            ends_.push_back(text_.size());
+            bits_.push_back(bits);
+        }
+}
+
+std::string_view PositionText::vertex(std::size_t i) const {
+    const std::size_t from = start(3 * i);
+    return std::string_view(text_).substr(from, ends_[3 * i + 2] - from);
+}
+
+std::string_view PositionText::coordinate(std::size_t i, int axis) const {
+    const std::size_t c = 3 * i + static_cast<std::size_t>(axis);
+    return std::string_view(text_).substr(start(c), ends_[c] - start(c));
+}
+
+std::vector<Vec3> PositionText::values() const {
+    std::vector<Vec3> positions(vertexCount());
+    for (std::size_t c = 0; c < bits_.size(); ++c)
+        positions[c / 3][static_cast<int>(c % 3)] =
+            precision_ == PositionPrecision::Float32
+                ? static_cast<double>(std::bit_cast<float>(static_cast<std::uint32_t>(bits_[c])))
+                : std::bit_cast<double>(bits_[c]);
+    return positions;
+}
+
+MeshTextFormatter::MeshTextFormatter(const std::filesystem::path& path, const MeshData& topology,
+                                     PositionPrecision precision)
+    : format_(meshFormatFromPath(path)), precision_(precision), topology_(topology) {
+    meshio::requireWritable(topology_);     // (u,v) and triangles; format() checks the positions it gets
     if (format_ == MeshFormat::Ply) return; // binary, and as fast as copying
     meshio::TextAroundPositions parts = format_ == MeshFormat::Obj
                                             ? meshio::objTextAroundPositions(topology_)
@@ -138,16 +208,20 @@ void MeshTextFormatter::format(std::span<const Vec3> positions, std::string& out
         throw std::invalid_argument("MeshTextFormatter: " + std::to_string(positions.size()) +
                                     " positions for a topology of " +
                                     std::to_string(topology_.positions.size()));
-    if (format_ == MeshFormat::Ply) {
-        out = formatPly({{positions.begin(), positions.end()}, topology_.uvs, topology_.triangles});
+    format(PositionText(positions, precision_), out);
+}
+
+void MeshTextFormatter::format(const PositionText& positions, std::string& out) const {
+    if (positions.vertexCount() != topology_.positions.size() || positions.precision() != precision_)
+        throw std::invalid_argument("MeshTextFormatter: " + std::to_string(positions.vertexCount()) +
+                                    " positions of another precision or for a topology of " +
+                                    std::to_string(topology_.positions.size()));
+    if (format_ == MeshFormat::Ply) { // binary: the values the text stands for
+        out = formatPly({positions.values(), topology_.uvs, topology_.triangles});
         return;
     }
-    for (std::size_t i = 0; i < positions.size(); ++i)
-        if (!std::isfinite(positions[i][0]) || !std::isfinite(positions[i][1]) ||
-            !std::isfinite(positions[i][2]))
-            throwInputError("mesh to write", "vertex " + std::to_string(i) + " has a non-finite coordinate");
     out.clear();
-    out.reserve(head_.size() + positions.size() * 70 + tail_.size());
+    out.reserve(head_.size() + positions.vertexCount() * 70 + tail_.size());
     out += head_;
     if (format_ == MeshFormat::Obj)
         meshio::appendObjPositions(out, positions);

@@ -18,9 +18,12 @@
 // that no face uses. Without any texture coordinates `uvs` is empty.
 //
 // Writers print doubles in their shortest exact form (OBJ, VRML) or as float64 (PLY), so reading a
-// written mesh gives back bit-identical positions, (u,v) and triangles.
+// written mesh gives back bit-identical positions, (u,v) and triangles. Writers given
+// PositionPrecision::Float32 (the key meshes of a reduction and its exports) print each position
+// coordinate as float32 instead; (u,v) and triangles stay exact.
 #include "core/mesh/Mesh.h"
 
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <span>
@@ -31,6 +34,19 @@
 namespace vl {
 
 enum class MeshFormat { Obj, Ply, Vrml };
+
+// How a writer prints vertex positions.
+enum class PositionPrecision {
+    // A double's shortest exact text (OBJ, VRML) or float64 (PLY): reads back bit-identical.
+    Exact,
+    // float32: OBJ and VRML print the shortest text that reads back as the same float32
+    // (std::to_chars of static_cast<float>(x)), PLY stores double(static_cast<float>(x)); either way
+    // static_cast<float> of the read-back value equals static_cast<float>(x). For key meshes (every
+    // consumer - runtime package, glTF, Blender, XfaceEd - stores float32, and a frequency-weighted
+    // mean's last double digits are noise): about half the text of Exact. A coordinate beyond
+    // float32's range is refused ("mesh to write: ...").
+    Float32,
+};
 
 // Texture coordinates as the file indexes them, per triangle corner: what a tool needs that samples
 // a surface over its (u,v) and so must see the UV seams that one (u,v) per vertex hides (core/face).
@@ -65,22 +81,63 @@ ReferenceMesh readReferenceMesh(const std::filesystem::path& path);
 MeshData readMeshLike(const std::filesystem::path& path, const ReferenceMesh& reference);
 // Writes atomically (temp file + rename) in the format of the extension.
 void writeMesh(const std::filesystem::path& path, const MeshData& mesh);
-// The file contents writeMesh writes, for writers that stage files (core/common/OutputSet.h).
-std::string formatMesh(const std::filesystem::path& path, const MeshData& mesh);
+// The file contents writeMesh writes, for writers that stage files (core/common/OutputSet.h);
+// formatObj, formatPly or formatVrml for Exact.
+std::string formatMesh(const std::filesystem::path& path, const MeshData& mesh,
+                       PositionPrecision precision = PositionPrecision::Exact);
+
+// The positions of one mesh as text in `precision`, each coordinate formatted once for every file
+// that writes them (a key mesh's OBJ and VRML). A coordinate whose value in `precision` has the same
+// bits as the same vertex's same coordinate in `reference` (the neutral mesh: most of a face does
+// not move in a viseme) copies the reference's text, which is the text formatting it gives.
+class PositionText {
+  public:
+    PositionText() = default;
+    // Throws InputError "mesh to write: ..." for positions a writer refuses (non-finite, beyond
+    // float32's range for Float32).
+    PositionText(std::span<const Vec3> positions, PositionPrecision precision,
+                 const PositionText* reference = nullptr);
+    // The same, reusing this object's buffers.
+    void assign(std::span<const Vec3> positions, PositionPrecision precision,
+                const PositionText* reference = nullptr);
+
+    std::size_t vertexCount() const { return ends_.size() / 3; }
+    PositionPrecision precision() const { return precision_; }
+    // "x y z": the vertex's coordinates separated by single spaces.
+    std::string_view vertex(std::size_t i) const;
+    std::string_view coordinate(std::size_t i, int axis) const;
+    // The positions as written: the doubles (Exact) or double(float(x)) (Float32).
+    std::vector<Vec3> values() const;
+
+  private:
+    std::size_t start(std::size_t c) const { return c == 0 ? 0 : ends_[c - 1] + (c % 3 == 0 ? 0 : 1); }
+
+    PositionPrecision precision_ = PositionPrecision::Exact;
+    std::string text_;                // every vertex's "x y z", one after another
+    std::vector<std::size_t> ends_;   // end of coordinate c = 3 * vertex + axis in text_
+    std::vector<std::uint64_t> bits_; // coordinate c's bits in `precision`
+};
 
 // Formats meshes of one topology (vertex count, triangles, (u,v)) - the key meshes of a reduction -
 // in the format of `path`'s extension, the text that does not depend on the positions only once:
-// format(p) == formatMesh(path, {p, topology.uvs, topology.triangles}) for p of the topology's size.
+// format(p) == formatMesh(path, {p, topology.uvs, topology.triangles}, precision) for p of the
+// topology's size.
 class MeshTextFormatter {
   public:
-    MeshTextFormatter(const std::filesystem::path& path, const MeshData& topology);
+    MeshTextFormatter(const std::filesystem::path& path, const MeshData& topology,
+                      PositionPrecision precision);
     std::string format(std::span<const Vec3> positions) const;
     // The same text into `out` (replacing its contents): a buffer reused for many files keeps its
     // pages, where a fresh string of this size is mapped and faulted in anew each time.
     void format(std::span<const Vec3> positions, std::string& out) const;
+    // The same from positions already formatted in this formatter's precision (throws
+    // std::invalid_argument for another precision or vertex count): the OBJ and VRML of one key
+    // mesh format its coordinates once.
+    void format(const PositionText& positions, std::string& out) const;
 
   private:
     MeshFormat format_;
+    PositionPrecision precision_;
     MeshData topology_;
     std::string head_, tail_; // OBJ and VRML: the file around the positions
 };

@@ -3,6 +3,7 @@
 #include "core/common/Error.h"
 
 #include <algorithm>
+#include <limits>
 
 namespace vl::meshio {
 
@@ -47,16 +48,29 @@ void requireVerticesAndFaces(const MeshData& mesh, std::string_view source) {
     if (mesh.triangles.empty()) throwInputError(source, "no faces");
 }
 
-void requireWritable(const MeshData& mesh) {
+void requireWritablePositions(std::span<const Vec3> positions, PositionPrecision precision) {
+    constexpr std::string_view where = "mesh to write";
+    for (std::size_t i = 0; i < positions.size(); ++i) {
+        const auto& p = positions[i];
+        if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+            throwInputError(where, "vertex " + std::to_string(i) + " has a non-finite coordinate");
+        if (precision == PositionPrecision::Float32) {
+            // Rounds to infinity as a float: the text would be "inf", which no reader accepts.
+            constexpr double kLimit = std::numeric_limits<float>::max();
+            if (std::abs(p[0]) > kLimit || std::abs(p[1]) > kLimit || std::abs(p[2]) > kLimit)
+                throwInputError(where, "vertex " + std::to_string(i) +
+                                           " has a coordinate beyond float32's range (key meshes are "
+                                           "written as float32)");
+        }
+    }
+}
+
+void requireWritable(const MeshData& mesh, PositionPrecision precision) {
     constexpr std::string_view where = "mesh to write";
     if (mesh.hasUVs() && mesh.uvs.size() != mesh.positions.size())
         throwInputError(where, std::to_string(mesh.uvs.size()) + " (u,v) pairs for " +
                                    std::to_string(mesh.positions.size()) + " vertices");
-    for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
-        const auto& p = mesh.positions[i];
-        if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
-            throwInputError(where, "vertex " + std::to_string(i) + " has a non-finite coordinate");
-    }
+    requireWritablePositions(mesh.positions, precision);
     for (std::size_t i = 0; i < mesh.uvs.size(); ++i)
         if (!std::isfinite(mesh.uvs[i][0]) || !std::isfinite(mesh.uvs[i][1]))
             throwInputError(where, "vertex " + std::to_string(i) + " has a non-finite (u,v)");
@@ -89,11 +103,11 @@ std::vector<Vec2> uvsFromFirstCorners(std::span<const std::int64_t> cornerUV,
     return uvs;
 }
 
-std::string joinAroundPositions(TextAroundPositions parts, std::span<const Vec3> positions,
+std::string joinAroundPositions(TextAroundPositions parts, const PositionText& positions,
                                 AppendPositions appendPositions) {
     constexpr std::size_t kBytesPerPosition = 70; // three shortest doubles and separators, generously
     std::string out = std::move(parts.head);
-    out.reserve(out.size() + positions.size() * kBytesPerPosition + parts.tail.size());
+    out.reserve(out.size() + positions.vertexCount() * kBytesPerPosition + parts.tail.size());
     appendPositions(out, positions);
     return out += parts.tail;
 }

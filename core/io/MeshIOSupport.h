@@ -2,6 +2,7 @@
 // Pieces every mesh format reader and writer shares (internal to core/io): fast number tokens,
 // fan triangulation with the polygon checks, and the final "is this a mesh" checks.
 #include "core/common/TextParsing.h"
+#include "core/io/MeshIO.h"
 #include "core/mesh/Mesh.h"
 
 #include <charconv>
@@ -46,8 +47,11 @@ void requireNotBlank(std::string_view text, std::string_view source);
 void requireVerticesAndFaces(const MeshData& mesh, std::string_view source);
 
 // A mesh a writer can save so that it reads back: (u,v) empty or one per vertex, indices in range,
-// finite numbers. Throws InputError "mesh to write: ..." otherwise.
-void requireWritable(const MeshData& mesh);
+// finite numbers (positions within float32's range for PositionPrecision::Float32). Throws
+// InputError "mesh to write: ..." otherwise.
+void requireWritable(const MeshData& mesh, PositionPrecision precision = PositionPrecision::Exact);
+// The positions' part of requireWritable.
+void requireWritablePositions(std::span<const Vec3> positions, PositionPrecision precision);
 
 // Appends `prefix`, the values in their shortest exact form separated by spaces, then `suffix`.
 void appendDoubles(std::string& out, std::string_view prefix, std::initializer_list<double> values,
@@ -65,12 +69,12 @@ struct TextAroundPositions {
     std::string head, tail;
 };
 TextAroundPositions objTextAroundPositions(const MeshData& topology);
-void appendObjPositions(std::string& out, std::span<const Vec3> positions);
+void appendObjPositions(std::string& out, const PositionText& positions);
 TextAroundPositions vrmlTextAroundPositions(const MeshData& topology);
-void appendVrmlPositions(std::string& out, std::span<const Vec3> positions);
+void appendVrmlPositions(std::string& out, const PositionText& positions);
 // The whole file: parts.head + positions (by appendPositions) + parts.tail, in one allocation.
-using AppendPositions = void (*)(std::string&, std::span<const Vec3>);
-std::string joinAroundPositions(TextAroundPositions parts, std::span<const Vec3> positions,
+using AppendPositions = void (*)(std::string&, const PositionText&);
+std::string joinAroundPositions(TextAroundPositions parts, const PositionText& positions,
                                 AppendPositions appendPositions);
 
 } // namespace vl::meshio

@@ -266,7 +266,8 @@ std::optional<std::vector<Vec3>> parseObjPositionsMatching(std::string_view text
 
 std::string formatObj(const MeshData& mesh) {
     meshio::requireWritable(mesh);
-    return meshio::joinAroundPositions(meshio::objTextAroundPositions(mesh), mesh.positions,
+    return meshio::joinAroundPositions(meshio::objTextAroundPositions(mesh),
+                                       PositionText(mesh.positions, PositionPrecision::Exact),
                                        meshio::appendObjPositions);
 }
 
@@ -279,14 +280,17 @@ TextAroundPositions objTextAroundPositions(const MeshData& topology) {
     std::string& out = parts.tail;
     out.reserve(topology.uvs.size() * 48 + topology.triangles.size() * 40);
     for (const auto& uv : topology.uvs) appendDoubles(out, "vt ", {uv[0], uv[1]}, "\n");
+    std::string index;
     for (const auto& t : topology.triangles) {
         out += 'f';
         for (const auto v : t) {
+            index.clear();
+            appendInteger(index, static_cast<std::int64_t>(v) + 1);
             out += ' ';
-            appendInteger(out, static_cast<std::int64_t>(v) + 1);
-            if (topology.hasUVs()) {
+            out += index;
+            if (topology.hasUVs()) { // the (u,v) of a vertex has its index
                 out += '/';
-                appendInteger(out, static_cast<std::int64_t>(v) + 1);
+                out += index;
             }
         }
         out += '\n';
@@ -294,8 +298,12 @@ TextAroundPositions objTextAroundPositions(const MeshData& topology) {
     return parts;
 }
 
-void appendObjPositions(std::string& out, std::span<const Vec3> positions) {
-    for (const auto& p : positions) appendDoubles(out, "v ", {p[0], p[1], p[2]}, "\n");
+void appendObjPositions(std::string& out, const PositionText& positions) {
+    for (std::size_t i = 0; i < positions.vertexCount(); ++i) {
+        out += "v ";
+        out += positions.vertex(i);
+        out += '\n';
+    }
 }
 
 } // namespace meshio

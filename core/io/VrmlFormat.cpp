@@ -376,7 +376,8 @@ MeshData parseVrml(std::string_view text, std::string_view source, CornerTexCoor
 // an explicit texCoordIndex when there are texture coordinates. Any VRML97 reader reads it too.
 std::string formatVrml(const MeshData& mesh) {
     meshio::requireWritable(mesh);
-    return meshio::joinAroundPositions(meshio::vrmlTextAroundPositions(mesh), mesh.positions,
+    return meshio::joinAroundPositions(meshio::vrmlTextAroundPositions(mesh),
+                                       PositionText(mesh.positions, PositionPrecision::Exact),
                                        meshio::appendVrmlPositions);
 }
 
@@ -399,16 +400,22 @@ TextAroundPositions vrmlTextAroundPositions(const MeshData& topology) {
                           i + 1 < topology.uvs.size() ? ",\n" : "\n");
         out += "      ]\n    }\n";
     }
-    const auto indexList = [&](const char* field) {
-        out += std::string("    ") + field + " [\n";
-        for (std::size_t t = 0; t < topology.triangles.size(); ++t) {
-            out += "      ";
-            for (const auto v : topology.triangles[t]) {
-                appendInteger(out, static_cast<std::int64_t>(v));
-                out += ", ";
-            }
-            out += t + 1 < topology.triangles.size() ? "-1,\n" : "-1\n";
+    // The faces' index list, formatted once for coordIndex and texCoordIndex.
+    std::string indices;
+    indices.reserve(topology.triangles.size() * 30);
+    for (std::size_t t = 0; t < topology.triangles.size(); ++t) {
+        indices += "      ";
+        for (const auto v : topology.triangles[t]) {
+            appendInteger(indices, static_cast<std::int64_t>(v));
+            indices += ", ";
         }
+        indices += t + 1 < topology.triangles.size() ? "-1,\n" : "-1\n";
+    }
+    const auto indexList = [&](std::string_view field) {
+        out += "    ";
+        out += field;
+        out += " [\n";
+        out += indices;
         out += "    ]\n";
     };
     indexList("coordIndex");
@@ -417,10 +424,11 @@ TextAroundPositions vrmlTextAroundPositions(const MeshData& topology) {
     return parts;
 }
 
-void appendVrmlPositions(std::string& out, std::span<const Vec3> positions) {
-    for (std::size_t i = 0; i < positions.size(); ++i) {
-        const Vec3& p = positions[i];
-        appendDoubles(out, "        ", {p[0], p[1], p[2]}, i + 1 < positions.size() ? ",\n" : "\n");
+void appendVrmlPositions(std::string& out, const PositionText& positions) {
+    for (std::size_t i = 0; i < positions.vertexCount(); ++i) {
+        out += "        ";
+        out += positions.vertex(i);
+        out += i + 1 < positions.vertexCount() ? ",\n" : "\n";
     }
 }
 

@@ -2,6 +2,7 @@
 #include "core/common/AtomicFile.h"
 #include "core/common/Error.h"
 #include "tests/export/TestModels.h"
+#include "tests/io/MeshIOTestUtil.h"
 
 #include <gtest/gtest.h>
 
@@ -39,13 +40,15 @@ TEST(Xface, ExportThenImportRoundTrips) {
     EXPECT_TRUE(std::filesystem::exists(dir / "reduced_0_key0.wrl"));
 
     const XfaceFace face = loadXfaceFace(dir / "face.fdp");
-    EXPECT_EQ(face.set.neutral.positions, model.neutral.positions);
+    // Key meshes are written as float32 (docs/export.md).
+    test::expectSameFloat32Positions(model.neutral.positions, face.set.neutral.positions);
     EXPECT_EQ(face.set.neutral.triangles, model.neutral.triangles);
     ASSERT_EQ(face.set.visemes.size(), 3u);
     EXPECT_EQ(face.set.visemes[0].name, "key0");
     EXPECT_EQ(face.set.visemes[1].name, "key1+m1");
     EXPECT_EQ(face.set.visemes[2].name, "oh_ooh");
-    for (std::size_t k = 0; k < 3; ++k) EXPECT_EQ(face.set.visemes[k].positions, model.keys[k].positions);
+    for (std::size_t k = 0; k < 3; ++k)
+        test::expectSameFloat32Positions(model.keys[k].positions, face.set.visemes[k].positions);
     // Every phoneme maps to the alias of its merged viseme; pauses (# and _) show the neutral face.
     // (the pauses the .dic shows with the neutral are listed apart: they are not visemes).
     ASSERT_EQ(face.dictionary.entries.size(), model.phonemeToKey.size());

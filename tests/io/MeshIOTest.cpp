@@ -3,6 +3,8 @@
 #include "core/io/MeshIO.h"
 #include "MeshIOTestUtil.h"
 
+#include <charconv>
+#include <cmath>
 #include <fstream>
 #include <unistd.h>
 
@@ -134,24 +136,150 @@ TEST(MeshWriters, RejectMeshesThatWouldNotReadBack) {
     expectInputError([&] { formatVrml(mesh); }, {"mesh to write", "vertex 1", "non-finite"});
 }
 
+// Random awkward doubles (test::randomDouble) brought within float32's range: the ones beyond it
+// are replaced by their remainder modulo 1e30, which keeps a full mantissa.
+std::vector<Vec3> withinFloat32Range(std::vector<Vec3> positions) {
+    for (Vec3& p : positions)
+        for (int k = 0; k < 3; ++k)
+            if (std::abs(p[k]) > std::numeric_limits<float>::max()) p[k] = std::fmod(p[k], 1e30);
+    return positions;
+}
+
 TEST(MeshTextFormatter, EqualsFormatMeshForEveryMeshOfTheTopology) {
-    for (const bool uvs : {false, true}) {
-        const MeshData topology = test::randomMesh(uvs ? 5 : 6, 30, 50, uvs);
+    for (const PositionPrecision precision : {PositionPrecision::Exact, PositionPrecision::Float32})
+        for (const bool uvs : {false, true}) {
+            const MeshData topology = test::randomMesh(uvs ? 5 : 6, 30, 50, uvs);
+            for (const char* name : {"a.obj", "a.wrl", "a.ply"}) {
+                const MeshTextFormatter formatter(name, topology, precision);
+                for (std::uint64_t seed = 10; seed < 13; ++seed) {
+                    MeshData mesh = topology;
+                    mesh.positions = withinFloat32Range(test::randomMesh(seed, 30, 10, false).positions);
+                    EXPECT_EQ(formatMesh(name, mesh, precision), formatter.format(mesh.positions))
+                        << name << " seed " << seed << " float32 "
+                        << (precision == PositionPrecision::Float32);
+                }
+            }
+        }
+}
+
+// Key meshes (docs/export.md): every coordinate reads back as the same float32, (u,v) and faces
+// exactly, in every format; the text is shorter than a double's, and a coordinate given with at most
+// 7 significant digits is written back as the same text.
+TEST(MeshWriters, Float32PositionsReadBackAsTheSameFloats) {
+    for (std::uint64_t seed = 20; seed < 26; ++seed) {
+        MeshData mesh = test::randomMesh(seed, 40, 60, seed % 2 == 0);
+        mesh.positions = withinFloat32Range(mesh.positions);
         for (const char* name : {"a.obj", "a.wrl", "a.ply"}) {
-            const MeshTextFormatter formatter(name, topology);
-            for (std::uint64_t seed = 10; seed < 13; ++seed) {
-                MeshData mesh = topology;
-                mesh.positions = test::randomMesh(seed, 30, 10, false).positions;
-                EXPECT_EQ(formatMesh(name, mesh), formatter.format(mesh.positions))
-                    << name << " seed " << seed;
+            SCOPED_TRACE(std::string(name) + " seed " + std::to_string(seed));
+            const std::string text = formatMesh(name, mesh, PositionPrecision::Float32);
+            const std::string source(name);
+            const MeshData back = source.ends_with(".obj")   ? parseObj(text, source)
+                                  : source.ends_with(".wrl") ? parseVrml(text, source)
+                                                             : parsePly(text, source);
+            test::expectSameFloat32Positions(mesh.positions, back.positions);
+            MeshData exact = back; // (u,v) and faces compared bit for bit
+            exact.positions = mesh.positions;
+            test::expectIdenticalMesh(mesh, exact);
+            if (!source.ends_with(".ply")) {
+                EXPECT_LT(text.size(), formatMesh(name, mesh).size());
             }
         }
     }
+    MeshData sample;
+    sample.positions = {Vec3(-3.970852, -12.144, -12.833978), Vec3(1, 0, 0), Vec3(0, 1e-3, 0.5)};
+    sample.triangles = {{0, 1, 2}};
+    const std::string obj = formatMesh("a.obj", sample, PositionPrecision::Float32);
+    EXPECT_NE(obj.find("\nv -3.970852 -12.144 -12.833978\nv 1 0 0\nv 0 0.001 0.5\n"), std::string::npos)
+        << obj;
+    // A mean: 16-17 significant digits as a double, at most 9 as float32.
+    sample.positions[1] = Vec3(1.0 / 3.0, 0, 0);
+    EXPECT_NE(formatObj(sample).find("\nv 0.3333333333333333 0 0\n"), std::string::npos);
+    EXPECT_NE(formatMesh("a.obj", sample, PositionPrecision::Float32).find("\nv 0.33333334 0 0\n"),
+              std::string::npos);
+}
+
+TEST(MeshWriters, Float32RefusesCoordinatesBeyondItsRange) {
+    MeshData mesh;
+    mesh.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, -1e39, 0)};
+    mesh.triangles = {{0, 1, 2}};
+    EXPECT_NO_THROW(formatObj(mesh)); // a double holds it
+    for (const char* name : {"a.obj", "a.wrl", "a.ply"}) {
+        expectInputError([&] { formatMesh(name, mesh, PositionPrecision::Float32); },
+                         {"mesh to write", "vertex 2", "float32"});
+        const MeshTextFormatter formatter(name,
+                                          {{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)}, {}, mesh.triangles},
+                                          PositionPrecision::Float32);
+        expectInputError([&] { formatter.format(mesh.positions); }, {"mesh to write", "vertex 2", "float32"});
+    }
+}
+
+// Positions formatted once (PositionText) give the same files, and a coordinate copied from the
+// reference's text is the text formatting it gives: equal bits reuse it; -0 and 0, or doubles that
+// differ but round to one float, are told apart exactly as the precision tells them apart.
+TEST(PositionText, ReusingTheReferenceGivesTheTextOfFormattingEveryCoordinate) {
+    for (const PositionPrecision precision : {PositionPrecision::Exact, PositionPrecision::Float32})
+        for (std::uint64_t seed = 30; seed < 34; ++seed) {
+            SCOPED_TRACE("seed " + std::to_string(seed) + " float32 " +
+                         std::to_string(precision == PositionPrecision::Float32));
+            const MeshData topology = test::randomMesh(seed, 40, 60, seed % 2 == 0);
+            const std::vector<Vec3> base = withinFloat32Range(topology.positions);
+            std::vector<Vec3> moved =
+                withinFloat32Range(test::randomMesh(seed + 100, 40, 10, false).positions);
+            for (std::size_t i = 0; i < moved.size(); ++i)
+                for (int k = 0; k < 3; ++k) {
+                    const double b = base[i][k];
+                    switch ((i * 3 + static_cast<std::size_t>(k)) % 5) {
+                    case 0: // unmoved
+                    case 1:
+                        moved[i][k] = b;
+                        break;
+                    case 2: // the same float, another double (where there is one)
+                        moved[i][k] = std::nextafter(b, 0.0) == 0.0 ? b : std::nextafter(b, 0.0);
+                        break;
+                    case 3: // zero of the other sign
+                        moved[i][k] = b == 0.0 ? -b : moved[i][k];
+                        break;
+                    default: // moved
+                        break;
+                    }
+                }
+            const PositionText reference(base, precision);
+            const PositionText reused(moved, precision, &reference), fresh(moved, precision);
+            ASSERT_EQ(reused.vertexCount(), moved.size());
+            for (std::size_t i = 0; i < moved.size(); ++i) {
+                ASSERT_EQ(reused.vertex(i), fresh.vertex(i)) << "vertex " << i;
+                for (int k = 0; k < 3; ++k) {
+                    char buffer[32];
+                    const auto end =
+                        precision == PositionPrecision::Float32
+                            ? std::to_chars(buffer, buffer + 32, static_cast<float>(moved[i][k])).ptr
+                            : std::to_chars(buffer, buffer + 32, moved[i][k]).ptr;
+                    ASSERT_EQ(reused.coordinate(i, k), std::string_view(buffer, end));
+                }
+            }
+            MeshData mesh = topology;
+            mesh.positions = moved;
+            for (const char* name : {"a.obj", "a.wrl", "a.ply"}) {
+                const MeshTextFormatter formatter(name, topology, precision);
+                std::string text;
+                formatter.format(reused, text);
+                EXPECT_EQ(text, formatMesh(name, mesh, precision)) << name;
+            }
+        }
+    // A reference of another precision or size is not used.
+    const std::vector<Vec3> one{Vec3(1.0 / 3.0, 0, 0)};
+    const PositionText exact(one, PositionPrecision::Exact);
+    EXPECT_EQ(PositionText(one, PositionPrecision::Float32, &exact).vertex(0), "0.33333334 0 0");
+    const MeshTextFormatter formatter("a.obj",
+                                      {{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)}, {}, {{0, 1, 2}}},
+                                      PositionPrecision::Float32);
+    std::string text;
+    EXPECT_THROW(formatter.format(exact, text), std::invalid_argument);
 }
 
 TEST(MeshTextFormatter, RejectsNonFinitePositionsAndOtherVertexCounts) {
     const MeshData topology = test::randomMesh(3, 6, 4, true);
-    const MeshTextFormatter formatter("a.obj", topology);
+    const MeshTextFormatter formatter("a.obj", topology, PositionPrecision::Exact);
     std::vector<Vec3> positions = topology.positions;
     positions[4][1] = std::numeric_limits<double>::quiet_NaN();
     expectInputError([&] { formatter.format(positions); }, {"mesh to write", "vertex 4", "non-finite"});

@@ -16,6 +16,7 @@
 #include <random>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace vl::test {
 
@@ -74,6 +75,19 @@ inline void expectIdenticalMesh(const MeshData& expected, const MeshData& actual
             ASSERT_TRUE(sameBits(expected.uvs[i][k], actual.uvs[i][k]))
                 << "uv " << i << " component " << k << ": " << expected.uvs[i][k] << " vs "
                 << actual.uvs[i][k];
+}
+
+// Positions written as float32 (PositionPrecision::Float32) and read back: every coordinate rounds
+// to the same float32 as the one written, and has the same sign (the text keeps -0).
+inline void expectSameFloat32Positions(const std::vector<Vec3>& written, const std::vector<Vec3>& readBack) {
+    ASSERT_EQ(written.size(), readBack.size());
+    for (std::size_t i = 0; i < written.size(); ++i)
+        for (int k = 0; k < 3; ++k) {
+            const auto w = static_cast<float>(written[i][k]), r = static_cast<float>(readBack[i][k]);
+            ASSERT_EQ(std::bit_cast<std::uint32_t>(w), std::bit_cast<std::uint32_t>(r))
+                << "vertex " << i << " coordinate " << k << ": " << written[i][k] << " written, "
+                << readBack[i][k] << " read back";
+        }
 }
 
 // Runs `action`, which must throw InputError whose message contains every one of `parts`.
