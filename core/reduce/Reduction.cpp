@@ -29,9 +29,13 @@ constexpr double kInfiniteCost = std::numeric_limits<double>::infinity();
 // gets the first share of the DP's time: on real viseme sets it proves n = 16 about 7x faster than
 // the DP (bench_reduce BM_ReduceArpabet), on structureless ones the DP follows.
 constexpr int kAutoDpUnits = 12;
-// Auto gives branch and bound this share of the DP's predicted time first, at the search's node rate
-// on 2 cores (1.5 M nodes in 70 ms at n = 16, 160 k in 12 ms at n = 24: bench_reduce).
+// Auto gives branch and bound this share of the DP's predicted time at 16 units first, at the search's
+// node rate on 2 cores (1.5 M nodes in 70 ms at n = 16, 160 k in 12 ms at n = 24: bench_reduce), and
+// twice as many nodes per further unit while the DP's time triples: real sets need few more nodes per
+// unit (ARPAbet meshes: 7 k nodes at n = 16, 15 k at 18, 44 k at 20; a rig's 16 shapes 12 k), and on
+// structureless ones the share is then 3 % of the DP's time at n = 20 instead of 15 %.
 constexpr double kBranchAndBoundShare = 0.15;
+constexpr int kBranchAndBoundShareUnits = 16;
 constexpr double kBranchAndBoundNodesPerSecond = 2e7;
 
 void validate(const ReductionProblem& problem) {
@@ -162,9 +166,9 @@ UnitCurve solveByBranchAndBound(const GroupCostModel& model, const ConstraintUni
     return curve;
 }
 
-// The DP's run time on 2 cores: about 25 ms at 16 units and m = 10, x3.4 per further unit.
+// The DP's run time on 2 cores: about 7 ms at 16 units and m = 10 (SIMD kernel), x3 per further unit.
 double estimatedSubsetDpSeconds(int units, int m) {
-    return 0.015 * std::pow(3.0, units - 16) * std::max(1.0, m / 10.0);
+    return 0.007 * std::pow(3.0, units - 16) * std::max(1.0, m / 10.0);
 }
 
 } // namespace
@@ -237,7 +241,9 @@ ReductionResult reduceVisemes(const ReductionProblem& problem, const ReductionOp
         const double dpSeconds = estimatedSubsetDpSeconds(count, solvable);
         // The share is counted in search nodes, not seconds, so that the solver chosen (and the
         // project file recording it) is the same on a slow, loaded or instrumented machine.
-        const double shareSeconds = kBranchAndBoundShare * dpSeconds;
+        const double shareSeconds = kBranchAndBoundShare *
+                                    estimatedSubsetDpSeconds(kBranchAndBoundShareUnits, solvable) *
+                                    std::pow(2.0, count - kBranchAndBoundShareUnits);
         const auto budget = static_cast<std::uint64_t>(shareSeconds * kBranchAndBoundNodesPerSecond);
         curve = solveByBranchAndBound(model, units, solvable, options, progress, budget);
         result.method = ReductionMethod::BranchAndBound;
