@@ -87,23 +87,28 @@ ReferenceMesh readReferenceMesh(const std::filesystem::path& path) {
     }
 }
 
-MeshData readMeshLike(const std::filesystem::path& path, const ReferenceMesh& reference) {
-    if (reference.objStructure.empty() || meshFormatFromPath(path) != MeshFormat::Obj) return readMesh(path);
+MeshLike readPositionsLike(const std::filesystem::path& path, const ReferenceMesh& reference) {
+    if (reference.objStructure.empty() || meshFormatFromPath(path) != MeshFormat::Obj)
+        return {readMesh(path)};
     const std::string bytes = readFileToString(path);
     const std::string source = path.string();
     try {
-        if (auto positions = parseObjPositionsMatching(bytes, source, reference.objStructure)) {
-            MeshData mesh;
-            mesh.positions = std::move(*positions);
-            mesh.triangles = reference.mesh.triangles;
-            mesh.uvs = reference.mesh.uvs;
-            return mesh;
-        }
-        return parseObj(bytes, source);
+        if (auto positions = parseObjPositionsMatching(bytes, source, reference.objStructure))
+            return {{std::move(*positions), {}, {}}, true};
+        return {parseObj(bytes, source)};
     } catch (const std::bad_alloc&) {
         throwInputError(source,
                         "not enough memory to read this mesh (" + std::to_string(bytes.size()) + " bytes)");
     }
+}
+
+MeshData readMeshLike(const std::filesystem::path& path, const ReferenceMesh& reference) {
+    MeshLike read = readPositionsLike(path, reference);
+    if (read.sameTopology) {
+        read.mesh.triangles = reference.mesh.triangles;
+        read.mesh.uvs = reference.mesh.uvs;
+    }
+    return std::move(read.mesh);
 }
 
 std::string formatMesh(const std::filesystem::path& path, const MeshData& mesh, PositionPrecision precision) {

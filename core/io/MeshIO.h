@@ -79,6 +79,15 @@ ReferenceMesh readReferenceMesh(const std::filesystem::path& path);
 // order, except the numbers of its `v` lines, its faces and texture coordinates are the reference's
 // and only the `v` lines are parsed (a viseme exported beside its neutral mesh: a few times faster).
 MeshData readMeshLike(const std::filesystem::path& path, const ReferenceMesh& reference);
+// The same without copying the reference's faces and (u,v) (a viseme set keeps only the positions
+// of its visemes): when `sameTopology`, `path` took that fast path, mesh.positions are its positions
+// and its faces and (u,v) are the reference's (mesh.triangles and mesh.uvs are left empty);
+// otherwise `mesh` is readMesh(path).
+struct MeshLike {
+    MeshData mesh;
+    bool sameTopology = false;
+};
+MeshLike readPositionsLike(const std::filesystem::path& path, const ReferenceMesh& reference);
 // Writes atomically (temp file + rename) in the format of the extension.
 void writeMesh(const std::filesystem::path& path, const MeshData& mesh);
 // The file contents writeMesh writes, for writers that stage files (core/common/OutputSet.h);

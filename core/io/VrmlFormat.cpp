@@ -374,6 +374,9 @@ MeshData parseVrml(std::string_view text, std::string_view source, CornerTexCoor
 // The layout XfacePlayer's VRML loader reads (it loops on other legal VRML97): values separated by
 // commas, a comma after every index including each face's -1, no comma before a closing ']', and
 // an explicit texCoordIndex when there are texture coordinates. Any VRML97 reader reads it too.
+// XfacePlayer reads tokens with `>>`, so a comma must be followed by white space (here a space or a
+// line end) and indentation does not matter: the long point and index lists are written without it,
+// one point or face per line (a seventh of a key mesh's bytes).
 std::string formatVrml(const MeshData& mesh) {
     meshio::requireWritable(mesh);
     return meshio::joinAroundPositions(meshio::vrmlTextAroundPositions(mesh),
@@ -396,7 +399,7 @@ TextAroundPositions vrmlTextAroundPositions(const MeshData& topology) {
     if (topology.hasUVs()) {
         out += "    texCoord TextureCoordinate {\n      point [\n";
         for (std::size_t i = 0; i < topology.uvs.size(); ++i)
-            appendDoubles(out, "        ", {topology.uvs[i][0], topology.uvs[i][1]},
+            appendDoubles(out, "", {topology.uvs[i][0], topology.uvs[i][1]},
                           i + 1 < topology.uvs.size() ? ",\n" : "\n");
         out += "      ]\n    }\n";
     }
@@ -404,7 +407,6 @@ TextAroundPositions vrmlTextAroundPositions(const MeshData& topology) {
     std::string indices;
     indices.reserve(topology.triangles.size() * 30);
     for (std::size_t t = 0; t < topology.triangles.size(); ++t) {
-        indices += "      ";
         for (const auto v : topology.triangles[t]) {
             appendInteger(indices, static_cast<std::int64_t>(v));
             indices += ", ";
@@ -426,7 +428,6 @@ TextAroundPositions vrmlTextAroundPositions(const MeshData& topology) {
 
 void appendVrmlPositions(std::string& out, const PositionText& positions) {
     for (std::size_t i = 0; i < positions.vertexCount(); ++i) {
-        out += "        ";
         out += positions.vertex(i);
         out += i + 1 < positions.vertexCount() ? ",\n" : "\n";
     }

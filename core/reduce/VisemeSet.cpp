@@ -76,9 +76,10 @@ VisemeSet loadVisemeSet(const std::filesystem::path& neutral,
         if (name.empty()) throwInputError(file.string(), "viseme has an empty name");
         if (!names.insert(name).second)
             throwInputError(file.string(), "duplicate viseme name '" + name + "'");
-        MeshData mesh = readMeshLike(file, reference); // parses only the positions of a typical export
-        checkInterpolable(set.neutral, neutral.string(), mesh, file.string());
-        set.visemes.push_back({name, file, std::move(mesh.positions)});
+        // Parses only the positions of a typical export, whose faces are then the neutral's.
+        MeshLike read = readPositionsLike(file, reference);
+        if (!read.sameTopology) checkInterpolable(set.neutral, neutral.string(), read.mesh, file.string());
+        set.visemes.push_back({name, file, std::move(read.mesh.positions)});
     }
     return set;
 }

@@ -173,10 +173,21 @@ TEST(ObjStructure, ReadMeshLikeEqualsReadMeshOnFiles) {
     for (const auto& [name, text] : {std::pair{"a.obj", viseme}, std::pair{"b.obj", other}}) {
         const fs::path path = write(name, text);
         test::expectIdenticalMesh(readMesh(path), readMeshLike(path, ref));
+        // Without the copies: the fast path (the viseme) leaves the reference's faces and (u,v) out.
+        const MeshLike read = readPositionsLike(path, ref);
+        EXPECT_EQ(read.sameTopology, name == std::string("a.obj")) << name;
+        MeshData full = read.mesh;
+        if (read.sameTopology) {
+            EXPECT_TRUE(read.mesh.triangles.empty() && read.mesh.uvs.empty());
+            full.triangles = ref.mesh.triangles;
+            full.uvs = ref.mesh.uvs;
+        }
+        test::expectIdenticalMesh(readMesh(path), full);
     }
     // Other formats go through readMesh.
     writeMesh(dir / "c.ply", readMesh(dir / "a.obj"));
     test::expectIdenticalMesh(readMesh(dir / "c.ply"), readMeshLike(dir / "c.ply", ref));
+    EXPECT_FALSE(readPositionsLike(dir / "c.ply", ref).sameTopology);
     fs::remove_all(dir);
 }
 

@@ -92,9 +92,13 @@ TEST(VrmlFormat, WritesTheLayoutXfacePlayerReads) {
         for (std::size_t i = 0; i < indices.size(); ++i) {
             if (indices[i] == ',') ++commas;
             if ((std::isdigit(static_cast<unsigned char>(indices[i])) || indices[i] == '-') &&
-                (i == 0 || indices[i - 1] == ' '))
+                (i == 0 || indices[i - 1] == ' ' || indices[i - 1] == '\n'))
                 ++numbers;
         }
+        // XfacePlayer reads "value ," pairs with `>>`: a comma followed by anything but white space
+        // would be read together with the next value.
+        for (std::size_t i = text.find(','); i != std::string::npos; i = text.find(',', i + 1))
+            ASSERT_TRUE(i + 1 < text.size() && (text[i + 1] == ' ' || text[i + 1] == '\n')) << i;
         EXPECT_EQ(numbers, 4 * mesh.triangles.size());
         EXPECT_EQ(commas, numbers - 1); // after every index but the last
         EXPECT_EQ(indices.substr(indices.size() - 3), "-1\n");
