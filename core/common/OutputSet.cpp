@@ -1,6 +1,5 @@
 #include "core/common/OutputSet.h"
 
-#include "core/common/AtomicFile.h"
 #include "core/common/Error.h"
 #include "core/common/FileWriting.h"
 #include "core/common/InputRegistry.h"
@@ -64,6 +63,11 @@ void OutputSet::add(const std::string& fileName, std::string_view contents) {
         throwInputError(destination.string(), "not a plain file name for an output of " + folder_.string());
     if (std::any_of(staged_.begin(), staged_.end(), [&](const Staged& s) { return s.name == fileName; }))
         throwInputError(destination.string(), "written twice by the same run");
+    stage(fileName, contents);
+}
+
+void OutputSet::stage(const std::string& fileName, std::string_view contents) {
+    const std::filesystem::path destination = folder_ / fileName;
     refuseOverwritingInput(destination);
     Staged staged{fileName, fileio::writeTarget(destination), {}};
     const fileio::TemporaryFile temp = fileio::createTemporaryFor(staged.target, destination.string());
@@ -77,6 +81,16 @@ void OutputSet::add(const std::string& fileName, std::string_view contents) {
 
 std::vector<std::filesystem::path> OutputSet::commit() {
     if (committed_) throwInputError(folder_.string(), "the output set was already written");
+    // The manifest is staged last, so it goes through the same barrier and is renamed after every
+    // output it lists.
+    const std::size_t outputs = staged_.size();
+    const std::filesystem::path manifest = manifestPath(folder_, setName_);
+    const std::vector<std::string> previous = readManifest(manifest);
+    std::string text = "# Files the last '" + setName_ +
+                       "' run of VisemeLab wrote into this folder; the next "
+                       "run removes those it does not write again.\n";
+    for (const Staged& s : staged_) text += s.name + "\n";
+    stage(manifest.filename().string(), text);
     // The barrier: every new file is on disk before the first one replaces an old one.
     for (const Staged& s : staged_) {
         const int fd = ::open(s.temporary.c_str(), O_RDONLY | O_CLOEXEC);
@@ -99,21 +113,14 @@ std::vector<std::filesystem::path> OutputSet::commit() {
                 std::filesystem::remove(staged_[j].temporary, ec);
             throwInputError((folder_ / s.name).string(),
                             "cannot replace the file: " + ec.message() + " (" + std::to_string(i) + " of " +
-                                std::to_string(staged_.size()) + " outputs were written)");
+                                std::to_string(outputs) + " outputs were written)");
         }
         folders.insert(s.target.has_parent_path() ? s.target.parent_path() : std::filesystem::path("."));
-        written.push_back(folder_ / s.name);
+        if (i < outputs) written.push_back(folder_ / s.name);
     }
     committed_ = true;
     for (const auto& folder : folders) fileio::syncFolder(folder);
-
-    const std::filesystem::path manifest = manifestPath(folder_, setName_);
-    const std::vector<std::string> previous = readManifest(manifest);
-    std::string text = "# Files the last '" + setName_ +
-                       "' run of VisemeLab wrote into this folder; the next "
-                       "run removes those it does not write again.\n";
-    for (const Staged& s : staged_) text += s.name + "\n";
-    writeFileAtomically(manifest, text);
+    staged_.pop_back(); // the manifest: not an output of the set
     removeStaleOutputs(previous);
     return written;
 }

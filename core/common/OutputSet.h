@@ -1,10 +1,11 @@
 #pragma once
 // Several files written into one folder as a set (reduce --out, export obj/vrml, visemes --out):
 //   1. add() writes each file to a temporary beside its destination (nothing visible changes);
-//   2. commit() makes every temporary durable (fsync: one barrier before the first rename), renames
-//      them over their destinations, fsyncs the folder, then records what it wrote in the folder's
-//      manifest (.visemelab-<set>.manifest) and removes the files the previous run of the same set
-//      wrote that this run did not: no stale outputs, and files the set never wrote are never touched;
+//   2. commit() stages the folder's manifest of the set (.visemelab-<set>.manifest: the files this
+//      run writes), makes every temporary durable (fsync: one barrier before the first rename),
+//      renames them over their destinations (the manifest last), fsyncs the folder once, then removes
+//      the files the previous run of the same set wrote that this run did not: no stale outputs, and
+//      files the set never wrote are never touched;
 //   3. an OutputSet destroyed without commit() (an error, an exception) removes its temporaries,
 //      and a new OutputSet sweeps the temporaries of runs that were killed.
 // Every destination is checked against the run's inputs (InputRegistry.h) before anything is
@@ -50,6 +51,7 @@ class OutputSet {
         std::filesystem::path target; // the file replaced (a symlink's target)
         std::filesystem::path temporary;
     };
+    void stage(const std::string& fileName, std::string_view contents);
     void discardTemporaries();
     void removeStaleOutputs(const std::vector<std::string>& previous);
 
