@@ -57,23 +57,28 @@ void OutputSet::discardTemporaries() {
 }
 
 void OutputSet::add(const std::string& fileName, std::string_view contents) {
+    add(fileName, {contents});
+}
+
+void OutputSet::add(const std::string& fileName, std::initializer_list<std::string_view> parts) {
     const std::filesystem::path destination = folder_ / fileName;
     if (committed_) throwInputError(destination.string(), "the output set was already written");
     if (!isPlainFileName(fileName))
         throwInputError(destination.string(), "not a plain file name for an output of " + folder_.string());
     if (std::any_of(staged_.begin(), staged_.end(), [&](const Staged& s) { return s.name == fileName; }))
         throwInputError(destination.string(), "written twice by the same run");
-    stage(fileName, contents);
+    stage(fileName, parts);
 }
 
-void OutputSet::stage(const std::string& fileName, std::string_view contents) {
+void OutputSet::stage(const std::string& fileName, std::initializer_list<std::string_view> parts) {
     const std::filesystem::path destination = folder_ / fileName;
     refuseOverwritingInput(destination);
     Staged staged{fileName, fileio::writeTarget(destination), {}};
     const fileio::TemporaryFile temp = fileio::createTemporaryFor(staged.target, destination.string());
     staged.temporary = temp.path;
     staged_.push_back(staged); // from here the destructor removes the temporary on failure
-    const bool ok = fileio::writeAll(temp.fd, contents);
+    const bool ok = std::all_of(parts.begin(), parts.end(),
+                                [&](std::string_view part) { return fileio::writeAll(temp.fd, part); });
     const std::string problem = ok ? std::string() : fileio::lastSystemError();
     ::close(temp.fd);
     if (!ok) throwInputError(destination.string(), "write failed (" + problem + "); no output was changed");
@@ -90,7 +95,7 @@ std::vector<std::filesystem::path> OutputSet::commit() {
                        "' run of VisemeLab wrote into this folder; the next "
                        "run removes those it does not write again.\n";
     for (const Staged& s : staged_) text += s.name + "\n";
-    stage(manifest.filename().string(), text);
+    stage(manifest.filename().string(), {text});
     // The barrier: every new file is on disk before the first one replaces an old one.
     for (const Staged& s : staged_) {
         const int fd = ::open(s.temporary.c_str(), O_RDONLY | O_CLOEXEC);

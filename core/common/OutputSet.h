@@ -15,6 +15,7 @@
 //     out.add("neutral.obj", text);
 //     out.commit();
 #include <filesystem>
+#include <initializer_list>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -36,6 +37,9 @@ class OutputSet {
     // Stages `fileName` (a plain name inside the folder, not hidden, given once per set) with
     // `contents`. Throws InputError naming the file when it cannot be written (disk full, ...).
     void add(const std::string& fileName, std::string_view contents);
+    // The same with the contents given as parts written one after another (parts many files share
+    // need not be copied into one string first).
+    void add(const std::string& fileName, std::initializer_list<std::string_view> parts);
 
     // The durability barrier, the renames, the manifest and the removal of stale outputs, as above.
     // Returns the destinations in the order they were added.
@@ -51,7 +55,7 @@ class OutputSet {
         std::filesystem::path target; // the file replaced (a symlink's target)
         std::filesystem::path temporary;
     };
-    void stage(const std::string& fileName, std::string_view contents);
+    void stage(const std::string& fileName, std::initializer_list<std::string_view> parts);
     void discardTemporaries();
     void removeStaleOutputs(const std::vector<std::string>& previous);
 

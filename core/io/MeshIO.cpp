@@ -238,10 +238,7 @@ void MeshTextFormatter::format(std::span<const Vec3> positions, std::string& out
 }
 
 void MeshTextFormatter::format(const PositionText& positions, std::string& out) const {
-    if (positions.vertexCount() != topology_.positions.size() || positions.precision() != precision_)
-        throw std::invalid_argument("MeshTextFormatter: " + std::to_string(positions.vertexCount()) +
-                                    " positions of another precision or for a topology of " +
-                                    std::to_string(topology_.positions.size()));
+    requireFormatOf(positions);
     if (format_ == MeshFormat::Ply) { // binary: the values the text stands for
         out = formatPly({positions.values(), topology_.uvs, topology_.triangles});
         return;
@@ -249,11 +246,33 @@ void MeshTextFormatter::format(const PositionText& positions, std::string& out) 
     out.clear();
     out.reserve(head_.size() + positions.vertexCount() * 70 + tail_.size());
     out += head_;
+    appendPositions(out, positions);
+    out += tail_;
+}
+
+MeshTextFormatter::Parts MeshTextFormatter::parts(const PositionText& positions, std::string& buffer) const {
+    if (format_ == MeshFormat::Ply) {
+        format(positions, buffer);
+        return {{}, buffer, {}};
+    }
+    requireFormatOf(positions);
+    buffer.clear();
+    appendPositions(buffer, positions);
+    return {head_, buffer, tail_};
+}
+
+void MeshTextFormatter::appendPositions(std::string& out, const PositionText& positions) const {
     if (format_ == MeshFormat::Obj)
         meshio::appendObjPositions(out, positions);
     else
         meshio::appendVrmlPositions(out, positions);
-    out += tail_;
+}
+
+void MeshTextFormatter::requireFormatOf(const PositionText& positions) const {
+    if (positions.vertexCount() != topology_.positions.size() || positions.precision() != precision_)
+        throw std::invalid_argument("MeshTextFormatter: " + std::to_string(positions.vertexCount()) +
+                                    " positions of another precision or for a topology of " +
+                                    std::to_string(topology_.positions.size()));
 }
 
 void writeMesh(const std::filesystem::path& path, const MeshData& mesh) {

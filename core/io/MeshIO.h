@@ -146,8 +146,17 @@ class MeshTextFormatter {
     // std::invalid_argument for another precision or vertex count): the OBJ and VRML of one key
     // mesh format its coordinates once.
     void format(const PositionText& positions, std::string& out) const;
+    // The same file as parts to write one after another (OutputSet::add): head + middle + tail ==
+    // format(positions). The text around the positions is the formatter's own, not copied into each
+    // file's text; `buffer` holds the middle.
+    struct Parts {
+        std::string_view head, middle, tail;
+    };
+    Parts parts(const PositionText& positions, std::string& buffer) const;
 
   private:
+    void requireFormatOf(const PositionText& positions) const;
+    void appendPositions(std::string& out, const PositionText& positions) const;
     MeshFormat format_;
     PositionPrecision precision_;
     MeshData topology_;

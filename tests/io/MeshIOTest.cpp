@@ -261,9 +261,12 @@ TEST(PositionText, ReusingTheReferenceGivesTheTextOfFormattingEveryCoordinate) {
             mesh.positions = moved;
             for (const char* name : {"a.obj", "a.wrl", "a.ply"}) {
                 const MeshTextFormatter formatter(name, topology, precision);
-                std::string text;
+                std::string text, buffer;
                 formatter.format(reused, text);
                 EXPECT_EQ(text, formatMesh(name, mesh, precision)) << name;
+                const MeshTextFormatter::Parts file = formatter.parts(reused, buffer);
+                EXPECT_EQ(std::string(file.head) + std::string(file.middle) + std::string(file.tail), text)
+                    << name;
             }
         }
     // A reference of another precision or size is not used.
