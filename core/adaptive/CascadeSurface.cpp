@@ -41,6 +41,7 @@ UvBox CascadeSurface::setParameters(std::vector<double> q) {
                 changed.include(fieldSupport(stage.field));
     }
     q_ = std::move(q);
+    pose_ = CascadeAtPose(cascade_, q_);
     return changed;
 }
 

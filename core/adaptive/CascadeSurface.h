@@ -4,6 +4,7 @@
 // current parameter vector. Changing the parameters and calling AdaptiveMesh::adapt re-adapts.
 #include "core/adaptive/AdaptiveMesh.h"
 #include "core/adaptive/Criteria.h"
+#include "core/deform/CascadeAtPose.h"
 #include "core/deform/DeformationCascade.h"
 
 #include <span>
@@ -17,7 +18,8 @@ class CascadeSurface : public Surface {
     CascadeSurface(DeformationCascade cascade, MeshData baseDomain, std::vector<double> q);
 
     const MeshData& baseDomain() const override { return domain_; }
-    Vec3 sample(const Vec2& uv) const override { return cascade_.evaluateUnchecked(uv[0], uv[1], q_); }
+    // The cascade's point (DeformationCascade::evaluateUnchecked to the bit), through the pose's index.
+    Vec3 sample(const Vec2& uv) const override { return pose_.at(cascade_, uv[0], uv[1]); }
 
     const DeformationCascade& cascade() const { return cascade_; }
     const std::vector<double>& parameters() const { return q_; }
@@ -30,6 +32,7 @@ class CascadeSurface : public Surface {
     DeformationCascade cascade_;
     MeshData domain_;
     std::vector<double> q_;
+    CascadeAtPose pose_; // cascade_ at q_
 };
 
 // Refines `mesh` until the criterion holds under every parameter vector of `poses` (refining for each

@@ -1,11 +1,15 @@
 #include "core/common/Error.h"
+#include "core/deform/BundledFace.h"
+#include "core/deform/CascadeAtPose.h"
 #include "core/deform/CascadeSampler.h"
 #include "core/deform/DeformationCascade.h"
 #include "tests/deform/ErrorMessage.h"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
+#include <string>
 
 namespace vl {
 namespace {
@@ -98,6 +102,50 @@ TEST(CascadeSampler, AgreesWithPerPointEvaluationOnRandomCascades) {
                     << "trial " << trial << " vertex " << i;
             }
         }
+    }
+}
+
+// The refinement's sampling function: the indexed evaluation at one pose against the plain one, to
+// the bit, on random cascades (rotated regions, regions reaching past the square, two Constant
+// stages) and on the bundled face, at random points, points outside the square and points on the
+// borders of regions and of the index's cells.
+TEST(CascadeAtPose, EqualsThePlainEvaluationToTheBit) {
+    std::mt19937 rng(23);
+    std::uniform_real_distribution<double> unit(0.0, 1.0), q01(-1.0, 2.0);
+    const auto check = [&](const DeformationCascade& c, const std::vector<double>& q,
+                           const std::string& what) {
+        const CascadeAtPose pose(c, q);
+        std::vector<Vec2> points;
+        for (int i = 0; i < 3000; ++i) points.emplace_back(1.2 * unit(rng) - 0.1, 1.2 * unit(rng) - 0.1);
+        for (int i = 0; i <= 64; ++i) points.emplace_back(i / 64.0, unit(rng)); // cell borders, 0 and 1
+        for (const auto& stage : c.stages)
+            for (const auto& r : stage.field.influences)
+                for (const double sign : {-1.0, 1.0}) {
+                    points.emplace_back(r.centre[0] + sign * r.radii[0], r.centre[1]);
+                    points.emplace_back(r.centre[0], r.centre[1] + sign * r.radii[1]);
+                    points.emplace_back(std::nextafter(r.centre[0] + sign * r.radii[0], r.centre[0]),
+                                        r.centre[1]);
+                }
+        for (const auto& uv : points) {
+            const Vec3 plain = c.evaluateUnchecked(uv[0], uv[1], q), indexed = pose.at(c, uv[0], uv[1]);
+            for (int a = 0; a < 3; ++a)
+                ASSERT_EQ(indexed[a], plain[a]) << what << " at (" << uv[0] << ", " << uv[1] << ")";
+        }
+    };
+    for (int trial = 0; trial < 20; ++trial) {
+        const DeformationCascade c = randomCascade(rng, 1 + trial % 6);
+        std::vector<double> q(c.parameters.size());
+        for (auto& x : q) x = unit(rng) < 0.3 ? 0.0 : q01(rng);
+        check(c, q, "random cascade " + std::to_string(trial));
+    }
+    const DeformationCascade face = face::makeBundledFace();
+    for (int trial = 0; trial < 5; ++trial) {
+        std::vector<double> q(face.parameters.size());
+        for (std::size_t k = 0; k < q.size(); ++k)
+            q[k] = unit(rng) < 0.5 ? 0.0
+                                   : face.parameters[k].min +
+                                         unit(rng) * (face.parameters[k].max - face.parameters[k].min);
+        check(face, q, "bundled face, pose " + std::to_string(trial));
     }
 }
 
