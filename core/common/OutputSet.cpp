@@ -1,6 +1,5 @@
 #include "core/common/OutputSet.h"
 
-#include "core/common/AtomicFile.h"
 #include "core/common/Error.h"
 #include "core/common/FileWriting.h"
 #include "core/common/InputRegistry.h"
@@ -58,18 +57,28 @@ void OutputSet::discardTemporaries() {
 }
 
 void OutputSet::add(const std::string& fileName, std::string_view contents) {
+    add(fileName, {contents});
+}
+
+void OutputSet::add(const std::string& fileName, std::initializer_list<std::string_view> parts) {
     const std::filesystem::path destination = folder_ / fileName;
     if (committed_) throwInputError(destination.string(), "the output set was already written");
     if (!isPlainFileName(fileName))
         throwInputError(destination.string(), "not a plain file name for an output of " + folder_.string());
     if (std::any_of(staged_.begin(), staged_.end(), [&](const Staged& s) { return s.name == fileName; }))
         throwInputError(destination.string(), "written twice by the same run");
+    stage(fileName, parts);
+}
+
+void OutputSet::stage(const std::string& fileName, std::initializer_list<std::string_view> parts) {
+    const std::filesystem::path destination = folder_ / fileName;
     refuseOverwritingInput(destination);
     Staged staged{fileName, fileio::writeTarget(destination), {}};
     const fileio::TemporaryFile temp = fileio::createTemporaryFor(staged.target, destination.string());
     staged.temporary = temp.path;
     staged_.push_back(staged); // from here the destructor removes the temporary on failure
-    const bool ok = fileio::writeAll(temp.fd, contents);
+    const bool ok = std::all_of(parts.begin(), parts.end(),
+                                [&](std::string_view part) { return fileio::writeAll(temp.fd, part); });
     const std::string problem = ok ? std::string() : fileio::lastSystemError();
     ::close(temp.fd);
     if (!ok) throwInputError(destination.string(), "write failed (" + problem + "); no output was changed");
@@ -77,6 +86,16 @@ void OutputSet::add(const std::string& fileName, std::string_view contents) {
 
 std::vector<std::filesystem::path> OutputSet::commit() {
     if (committed_) throwInputError(folder_.string(), "the output set was already written");
+    // The manifest is staged last, so it goes through the same barrier and is renamed after every
+    // output it lists.
+    const std::size_t outputs = staged_.size();
+    const std::filesystem::path manifest = manifestPath(folder_, setName_);
+    const std::vector<std::string> previous = readManifest(manifest);
+    std::string text = "# Files the last '" + setName_ +
+                       "' run of VisemeLab wrote into this folder; the next "
+                       "run removes those it does not write again.\n";
+    for (const Staged& s : staged_) text += s.name + "\n";
+    stage(manifest.filename().string(), {text});
     // The barrier: every new file is on disk before the first one replaces an old one.
     for (const Staged& s : staged_) {
         const int fd = ::open(s.temporary.c_str(), O_RDONLY | O_CLOEXEC);
@@ -99,21 +118,14 @@ std::vector<std::filesystem::path> OutputSet::commit() {
                 std::filesystem::remove(staged_[j].temporary, ec);
             throwInputError((folder_ / s.name).string(),
                             "cannot replace the file: " + ec.message() + " (" + std::to_string(i) + " of " +
-                                std::to_string(staged_.size()) + " outputs were written)");
+                                std::to_string(outputs) + " outputs were written)");
         }
         folders.insert(s.target.has_parent_path() ? s.target.parent_path() : std::filesystem::path("."));
-        written.push_back(folder_ / s.name);
+        if (i < outputs) written.push_back(folder_ / s.name);
     }
     committed_ = true;
     for (const auto& folder : folders) fileio::syncFolder(folder);
-
-    const std::filesystem::path manifest = manifestPath(folder_, setName_);
-    const std::vector<std::string> previous = readManifest(manifest);
-    std::string text = "# Files the last '" + setName_ +
-                       "' run of VisemeLab wrote into this folder; the next "
-                       "run removes those it does not write again.\n";
-    for (const Staged& s : staged_) text += s.name + "\n";
-    writeFileAtomically(manifest, text);
+    staged_.pop_back(); // the manifest: not an output of the set
     removeStaleOutputs(previous);
     return written;
 }

@@ -1,10 +1,11 @@
 #pragma once
 // Several files written into one folder as a set (reduce --out, export obj/vrml, visemes --out):
 //   1. add() writes each file to a temporary beside its destination (nothing visible changes);
-//   2. commit() makes every temporary durable (fsync: one barrier before the first rename), renames
-//      them over their destinations, fsyncs the folder, then records what it wrote in the folder's
-//      manifest (.visemelab-<set>.manifest) and removes the files the previous run of the same set
-//      wrote that this run did not: no stale outputs, and files the set never wrote are never touched;
+//   2. commit() stages the folder's manifest of the set (.visemelab-<set>.manifest: the files this
+//      run writes), makes every temporary durable (fsync: one barrier before the first rename),
+//      renames them over their destinations (the manifest last), fsyncs the folder once, then removes
+//      the files the previous run of the same set wrote that this run did not: no stale outputs, and
+//      files the set never wrote are never touched;
 //   3. an OutputSet destroyed without commit() (an error, an exception) removes its temporaries,
 //      and a new OutputSet sweeps the temporaries of runs that were killed.
 // Every destination is checked against the run's inputs (InputRegistry.h) before anything is
@@ -14,6 +15,7 @@
 //     out.add("neutral.obj", text);
 //     out.commit();
 #include <filesystem>
+#include <initializer_list>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -35,6 +37,9 @@ class OutputSet {
     // Stages `fileName` (a plain name inside the folder, not hidden, given once per set) with
     // `contents`. Throws InputError naming the file when it cannot be written (disk full, ...).
     void add(const std::string& fileName, std::string_view contents);
+    // The same with the contents given as parts written one after another (parts many files share
+    // need not be copied into one string first).
+    void add(const std::string& fileName, std::initializer_list<std::string_view> parts);
 
     // The durability barrier, the renames, the manifest and the removal of stale outputs, as above.
     // Returns the destinations in the order they were added.
@@ -50,6 +55,7 @@ class OutputSet {
         std::filesystem::path target; // the file replaced (a symlink's target)
         std::filesystem::path temporary;
     };
+    void stage(const std::string& fileName, std::initializer_list<std::string_view> parts);
     void discardTemporaries();
     void removeStaleOutputs(const std::vector<std::string>& previous);
 

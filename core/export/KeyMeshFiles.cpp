@@ -32,15 +32,17 @@ std::vector<std::string> addKeyMeshFiles(OutputSet& outputs, const ReducedModel&
     constexpr PositionPrecision kPrecision = PositionPrecision::Float32;
     const MeshTextFormatter formatter(names.back(), model.neutral, kPrecision);
     const PositionText neutral(model.neutral.positions, kPrecision);
-    std::string text; // one buffer for every file
-    formatter.format(neutral, text);
-    outputs.add(names.back(), text);
+    std::string text; // every file's positions; its faces and (u,v) are written from the formatter's text
+    const auto add = [&](const PositionText& positions) {
+        const MeshTextFormatter::Parts file = formatter.parts(positions, text);
+        outputs.add(names.back(), {file.head, file.middle, file.tail});
+    };
+    add(neutral);
     PositionText positions;
     for (std::size_t k = 0; k < model.keys.size(); ++k) {
         names.push_back(keyFileName(model, k, extension));
         positions.assign(model.keys[k].positions, kPrecision, &neutral);
-        formatter.format(positions, text);
-        outputs.add(names.back(), text);
+        add(positions);
     }
     return names;
 }

@@ -21,13 +21,13 @@ std::vector<std::string> writeReductionOutputs(OutputSet& outputs, const ReduceO
         wrl("key.wrl", model.neutral, kPrecision);
     const PositionText neutral(model.neutral.positions, kPrecision);
     PositionText positions;
-    std::string text; // one buffer for every file
+    std::string text; // every file's positions; its faces and (u,v) are written from the formatter's text
     for (std::size_t k = 0; k < model.keys.size(); ++k) {
         positions.assign(model.keys[k].positions, kPrecision, &neutral);
         for (const MeshTextFormatter* formatter : {&obj, &wrl}) {
             written.push_back(keyFileName(model, k, formatter == &obj ? ".obj" : ".wrl"));
-            formatter->format(positions, text);
-            outputs.add(written.back(), text);
+            const MeshTextFormatter::Parts file = formatter->parts(positions, text);
+            outputs.add(written.back(), {file.head, file.middle, file.tail});
         }
     }
     written.emplace_back("mapping.json");

@@ -9,6 +9,7 @@
 #include <bit>
 #include <cctype>
 #include <charconv>
+#include <cstring>
 #include <optional>
 
 namespace vl {
@@ -141,33 +142,53 @@ void PositionText::assign(std::span<const Vec3> positions, PositionPrecision pre
     if (reference && (reference->precision_ != precision || reference->vertexCount() != positions.size()))
         reference = nullptr;
     precision_ = precision;
-    text_.clear();
-    ends_.clear();
-    bits_.clear();
-    text_.reserve(positions.size() * (precision == PositionPrecision::Float32 ? 36 : 60));
-    ends_.reserve(3 * positions.size());
-    bits_.reserve(3 * positions.size());
-    char buffer[32]; // the longest shortest double is 24 characters
-    for (std::size_t i = 0; i < positions.size(); ++i)
-        for (int k = 0; k < 3; ++k) {
+    // Written through a pointer into text_, which only grows (a buffer reused for every key is not
+    // cleared again): at most 24 characters (the longest shortest double) and a separator each.
+    constexpr std::size_t kMaxCoordinate = 25;
+    const std::size_t count = 3 * positions.size();
+    if (text_.size() < count * kMaxCoordinate) text_.resize(count * kMaxCoordinate);
+    ends_.resize(count);
+    bits_.resize(count);
+    char* const begin = text_.data();
+    char* at = begin;
+    for (std::size_t i = 0, c = 0; i < positions.size(); ++i)
+        for (int k = 0; k < 3; ++k, ++c) {
             const double x = positions[i][k];
             const auto f = static_cast<float>(x);
             const std::uint64_t bits = precision == PositionPrecision::Float32
                                            ? std::bit_cast<std::uint32_t>(f)
                                            : std::bit_cast<std::uint64_t>(x);
-            if (k > 0) text_ += ' ';
-            const std::size_t c = ends_.size();
+            if (k > 0) *at++ = ' ';
             if (reference && reference->bits_[c] == bits) {
-                text_ += reference->coordinate(i, k);
+                const std::size_t from = reference->start(c), length = reference->ends_[c] - from;
+                std::memcpy(at, reference->text_.data() + from, length);
+                at += length;
             } else {
-                const auto end = precision == PositionPrecision::Float32
-                                     ? std::to_chars(buffer, buffer + sizeof buffer, f).ptr
-                                     : std::to_chars(buffer, buffer + sizeof buffer, x).ptr;
-                text_.append(buffer, end);
+                at = precision == PositionPrecision::Float32 ? std::to_chars(at, at + 24, f).ptr
+                                                             : std::to_chars(at, at + 24, x).ptr;
             }
-            ends_.push_back(text_.size());
-            bits_.push_back(bits);
+            ends_[c] = static_cast<std::size_t>(at - begin);
+            bits_[c] = bits;
         }
+}
+
+void PositionText::appendLines(std::string& out, std::string_view prefix, std::string_view separator,
+                               std::string_view last) const {
+    const std::size_t vertices = vertexCount();
+    if (vertices == 0) return;
+    const std::size_t from = out.size();
+    out.resize(from + ends_.back() + vertices * (prefix.size() + separator.size()) - separator.size() +
+               last.size());
+    char* at = out.data() + from;
+    const auto put = [&at](std::string_view text) {
+        std::memcpy(at, text.data(), text.size());
+        at += text.size();
+    };
+    for (std::size_t i = 0; i < vertices; ++i) {
+        put(prefix);
+        put(vertex(i));
+        put(i + 1 < vertices ? separator : last);
+    }
 }
 
 std::string_view PositionText::vertex(std::size_t i) const {
@@ -217,10 +238,7 @@ void MeshTextFormatter::format(std::span<const Vec3> positions, std::string& out
 }
 
 void MeshTextFormatter::format(const PositionText& positions, std::string& out) const {
-    if (positions.vertexCount() != topology_.positions.size() || positions.precision() != precision_)
-        throw std::invalid_argument("MeshTextFormatter: " + std::to_string(positions.vertexCount()) +
-                                    " positions of another precision or for a topology of " +
-                                    std::to_string(topology_.positions.size()));
+    requireFormatOf(positions);
     if (format_ == MeshFormat::Ply) { // binary: the values the text stands for
         out = formatPly({positions.values(), topology_.uvs, topology_.triangles});
         return;
@@ -228,11 +246,33 @@ void MeshTextFormatter::format(const PositionText& positions, std::string& out) 
     out.clear();
     out.reserve(head_.size() + positions.vertexCount() * 70 + tail_.size());
     out += head_;
+    appendPositions(out, positions);
+    out += tail_;
+}
+
+MeshTextFormatter::Parts MeshTextFormatter::parts(const PositionText& positions, std::string& buffer) const {
+    if (format_ == MeshFormat::Ply) {
+        format(positions, buffer);
+        return {{}, buffer, {}};
+    }
+    requireFormatOf(positions);
+    buffer.clear();
+    appendPositions(buffer, positions);
+    return {head_, buffer, tail_};
+}
+
+void MeshTextFormatter::appendPositions(std::string& out, const PositionText& positions) const {
     if (format_ == MeshFormat::Obj)
         meshio::appendObjPositions(out, positions);
     else
         meshio::appendVrmlPositions(out, positions);
-    out += tail_;
+}
+
+void MeshTextFormatter::requireFormatOf(const PositionText& positions) const {
+    if (positions.vertexCount() != topology_.positions.size() || positions.precision() != precision_)
+        throw std::invalid_argument("MeshTextFormatter: " + std::to_string(positions.vertexCount()) +
+                                    " positions of another precision or for a topology of " +
+                                    std::to_string(topology_.positions.size()));
 }
 
 void writeMesh(const std::filesystem::path& path, const MeshData& mesh) {

@@ -117,12 +117,15 @@ class PositionText {
     std::string_view coordinate(std::size_t i, int axis) const;
     // The positions as written: the doubles (Exact) or double(float(x)) (Float32).
     std::vector<Vec3> values() const;
+    // Appends prefix + vertex(i) + separator for every vertex, `last` instead of the last separator.
+    void appendLines(std::string& out, std::string_view prefix, std::string_view separator,
+                     std::string_view last) const;
 
   private:
     std::size_t start(std::size_t c) const { return c == 0 ? 0 : ends_[c - 1] + (c % 3 == 0 ? 0 : 1); }
 
     PositionPrecision precision_ = PositionPrecision::Exact;
-    std::string text_;                // every vertex's "x y z", one after another
+    std::string text_;                // every vertex's "x y z", one after another (then unused space)
     std::vector<std::size_t> ends_;   // end of coordinate c = 3 * vertex + axis in text_
     std::vector<std::uint64_t> bits_; // coordinate c's bits in `precision`
 };
@@ -143,8 +146,17 @@ class MeshTextFormatter {
     // std::invalid_argument for another precision or vertex count): the OBJ and VRML of one key
     // mesh format its coordinates once.
     void format(const PositionText& positions, std::string& out) const;
+    // The same file as parts to write one after another (OutputSet::add): head + middle + tail ==
+    // format(positions). The text around the positions is the formatter's own, not copied into each
+    // file's text; `buffer` holds the middle.
+    struct Parts {
+        std::string_view head, middle, tail;
+    };
+    Parts parts(const PositionText& positions, std::string& buffer) const;
 
   private:
+    void requireFormatOf(const PositionText& positions) const;
+    void appendPositions(std::string& out, const PositionText& positions) const;
     MeshFormat format_;
     PositionPrecision precision_;
     MeshData topology_;

@@ -299,11 +299,7 @@ TextAroundPositions objTextAroundPositions(const MeshData& topology) {
 }
 
 void appendObjPositions(std::string& out, const PositionText& positions) {
-    for (std::size_t i = 0; i < positions.vertexCount(); ++i) {
-        out += "v ";
-        out += positions.vertex(i);
-        out += '\n';
-    }
+    positions.appendLines(out, "v ", "\n", "\n");
 }
 
 } // namespace meshio

@@ -427,10 +427,7 @@ TextAroundPositions vrmlTextAroundPositions(const MeshData& topology) {
 }
 
 void appendVrmlPositions(std::string& out, const PositionText& positions) {
-    for (std::size_t i = 0; i < positions.vertexCount(); ++i) {
-        out += positions.vertex(i);
-        out += i + 1 < positions.vertexCount() ? ",\n" : "\n";
-    }
+    positions.appendLines(out, "", ",\n", "\n");
 }
 
 } // namespace meshio

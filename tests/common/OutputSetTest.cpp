@@ -26,7 +26,7 @@ TEST(OutputSet, NothingChangesUntilCommit) {
     writeText(dir / "a.obj", "old a");
     OutputSet set(dir.path, "export-obj");
     set.add("a.obj", "new a");
-    set.add("b.obj", "new b");
+    set.add("b.obj", {"new", "", " b"}); // parts written one after another
     EXPECT_EQ(readText(dir / "a.obj"), "old a");
     EXPECT_FALSE(std::filesystem::exists(dir / "b.obj"));
     const auto written = set.commit();
