@@ -92,7 +92,7 @@ std::vector<double> shiftedCosts(const std::vector<double>& c1) {
 }
 
 // The plain submask enumeration of a layer for the states t < 2^bits (they only split into smaller
-// ones): the layer's first tile, and whole layers of fewer than kLaneBits + 1 bits.
+// ones): the layer's first tile, and whole layers of one tile or less (up to 9 units).
 void computeLayerPlain(int bits, const std::vector<double>& c1, const std::vector<double>& below,
                        std::vector<double>& out) {
     out[0] = kUnreached;
@@ -126,11 +126,10 @@ void computeLayerPlain(int bits, const std::vector<double>& c1, const std::vecto
 // C[(tm ^ rm) | top] + B[rm] and C[tm ^ rm] + B[rm | top], which are all of its splits. Four
 // minima per state (one per s) keep the min latency off the additions' critical path. Compiled
 // for AVX2 and for the baseline (SSE2): the same additions and minima, so the same values to the bit.
-[[gnu::target_clones("avx2", "default")]] void splitTilePair(int tileBits, const double* C, const double* B,
-                                                             double* acc) {
+[[gnu::target_clones("avx2", "default")]] void splitTilePair(const double* C, const double* B, double* acc) {
     constexpr std::size_t kCostStride = kLanes * kLanes; // the four shifted vectors of one x
     const Lanes inf = {kUnreached, kUnreached, kUnreached, kUnreached};
-    const std::uint32_t top = 1u << (tileBits - 1);
+    constexpr std::uint32_t top = 1u << (kTileBits - 1);
     for (std::uint32_t tm = 0; tm < top; ++tm) {
         Lanes low[kLanes] = {inf, inf, inf, inf}, high[kLanes] = {inf, inf, inf, inf};
         for (std::uint32_t rm = tm;; rm = (rm - 1) & tm) {
@@ -165,12 +164,15 @@ void computeLayerPlain(int bits, const std::vector<double>& c1, const std::vecto
     }
 }
 
+// The bits of a tile: its middle bits and the lane bits.
+constexpr int kTileShift = kTileBits + kLaneBits;
+
 // One layer: out[t] = min over r subset of t minus its highest unit of c1[t ^ r] + below[r], for all
-// t < 2^bits (bits > kLaneBits); +inf where t has fewer than q units (below is +inf there).
+// t < 2^bits (bits > kTileShift, so at least two tiles); +inf where t has fewer than q units (below is
+// +inf there).
 void computeLayer(int bits, int q, const std::vector<double>& c1, const std::vector<double>& shifted,
                   const std::vector<double>& below, std::vector<double>& out) {
-    const int tileBits = std::min(kTileBits, bits - kLaneBits);
-    const int shift = tileBits + kLaneBits;
+    constexpr int shift = kTileShift;
     const std::uint32_t tiles = 1u << (bits - shift);
     tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, tiles, 1), [&](const auto& range) {
         std::vector<double> acc(std::size_t{1} << shift);
@@ -185,8 +187,7 @@ void computeLayer(int bits, int q, const std::vector<double>& c1, const std::vec
                 for (std::uint32_t rh = free;; rh = (rh - 1) & free) {
                     // Splits whose remainder has fewer than q - 1 units add +inf: skip them.
                     if (std::popcount(rh) + shift >= q - 1)
-                        splitTilePair(tileBits,
-                                      &shifted[static_cast<std::size_t>(hh ^ rh) << (shift + kLaneBits)],
+                        splitTilePair(&shifted[static_cast<std::size_t>(hh ^ rh) << (shift + kLaneBits)],
                                       &below[static_cast<std::size_t>(rh) << shift], acc.data());
                     if (rh == 0) break;
                 }
@@ -211,7 +212,7 @@ UnitCurve solveSubsetDp(const GroupCostModel& model, int m, const std::function<
     std::vector<double>& c1 = layer[0];
     c1.resize(states);
     for (std::size_t t = 0; t < states; ++t) c1[t] = t ? cost[t << 1] : kUnreached;
-    const std::vector<double> shifted = bits > kLaneBits && m > 2 ? shiftedCosts(c1) : std::vector<double>{};
+    const std::vector<double> shifted = bits > kTileShift && m > 2 ? shiftedCosts(c1) : std::vector<double>{};
 
     // The remainder r (of the units 1..n-1) that gives `value` for state t of layer q (q >= 2), or
     // for the top state (all units, q groups) when top is set: the first in a fixed order.
@@ -260,7 +261,7 @@ UnitCurve solveSubsetDp(const GroupCostModel& model, int m, const std::function<
     for (int q = 2; q <= m - 1; ++q) {
         auto& out = layer[static_cast<std::size_t>(q - 1)];
         out.resize(states);
-        if (bits > kLaneBits)
+        if (bits > kTileShift)
             computeLayer(bits, q, c1, shifted, layer[static_cast<std::size_t>(q - 2)], out);
         else
             computeLayerPlain(bits, c1, layer[static_cast<std::size_t>(q - 2)], out);
