@@ -7,26 +7,31 @@
 // every state below the top one then excludes unit 0, so layers are indexed by subsets of
 // {1..n-1} (2^(n-1) entries, bit i = unit i+1).
 //
-// Speed: a layer is 3^(n-1)/2 additions, so the loop around each one decides the run time. Inside a
-// layer the split keeps the state's highest unit in V (any fixed unit enumerates each partition once);
-// the two lowest units of a state are the four lanes of one SIMD vector, so one vector addition and
-// minimum serve four states (9 of every 16 lane sums are splits, the others add +inf; computeLayer
-// below), and a pair of tiles serves all splits between two tiles from L1. Against the scalar
-// kernel before it: 2.25x fewer instructions on the floating-point ports. Only the values are kept (all
-// layers); the groups are recovered afterwards by finding the split that gives each chosen value, which is
-// exact because the kernel and the recovery add the same two doubles. Layers run in parallel over tiles with
-// TBB; values and groups do not depend on the thread count or the instruction set (each state is a minimum
-// over a fixed set, recovery scans in a fixed order).
+// Speed: a layer is 3^(n-1)/2 splits, so the loop around them decides the run time. Each split keeps
+// the state's highest unit in V (any fixed unit enumerates each partition once), so its remainder is
+// a smaller state; all layers of a state are one row, and one pass over the states in increasing
+// order fills every layer: a split adds its group cost to the remainder's whole row (layers 1..K-1)
+// and takes the minimum into the state's row (layers 2..K). Every SIMD lane is a wanted sum, and the
+// run reads the splits once instead of once per layer: against the layer-by-layer kernel before it
+// (two units as the four lanes, 9 of 16 lane sums wanted) 1.8x fewer vector additions at m = 10. A
+// pair of tiles serves all splits between two tiles from L1. Only the values are kept; the groups are
+// recovered afterwards by finding the split that gives each chosen value, which is exact because the
+// kernel and the recovery add the same two doubles. Tiles with the same highest unit run in parallel
+// with TBB; values and groups do not depend on the thread count or the instruction set (each state is
+// a minimum over a fixed set, recovery scans in a fixed order).
 #include "core/reduce/SubsetDp.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <span>
+#include <utility>
 
 namespace vl {
 
@@ -66,46 +71,35 @@ std::vector<double> allGroupCosts(const GroupCostModel& model) {
     return cost;
 }
 
-// Layer layout for the kernel: a state t = (hh, tm, l) - tile hh (parallel), its middle bits tm
-// (kTileBits), and two lane bits l, the four states of one SIMD vector. A split keeps t's highest unit
-// in V = t ^ r, so for hh != 0 the remainder's middle and lane parts are free: r = (rh, rm, s) with
-// rh a subset of hh minus its highest unit, rm of tm, s of l. For a fixed s the four lanes l take
-// c1[(hh^rh, tm^rm, l^s)] + below[(rh, rm, s)] when s is a subset of l: one vector of the shifted
-// costs below (+inf where s is not a subset of l) plus one broadcast value. All splits of a tile pair
-// (hh, rh) read one tile of shifted costs and one of the layer below, both in L1.
-constexpr int kLaneBits = 2;
-constexpr std::uint32_t kLanes = 1u << kLaneBits;
-constexpr int kTileBits =
-    6; // 2^6 x 4 vectors of shifted costs = 8 KiB; the layer below and the minima 2 KiB each
-
+// Row layout: all layers of one state side by side, rows[t * stride + q - 1] = best[q][t << 1] for
+// q = 1..K (K = m - 1). Every split r of t (r a subset of t minus its highest unit, so r < t) adds one
+// group cost c1[t ^ r] to the whole row of r, giving the row of t one layer up: out[t][q] = min over r
+// of c1[t ^ r] + row[r][q - 1] for q = 2..K at once. Rows of smaller states are final before t needs
+// them, so one pass in increasing t fills every layer, and every SIMD lane is a wanted sum.
+constexpr int kLanes = 4;
 using Lanes = double __attribute__((vector_size(kLanes * sizeof(double))));
+constexpr int kMaxVectors = 6; // K - 1 <= 21 layers: every m the DP accepts
 
-// shifted[(x * kLanes + s) * kLanes + l] = c1[x * kLanes + (l ^ s)] if s is a subset of l, else +inf:
-// the four vectors of one x side by side. Layer independent, so built once per run.
-std::vector<double> shiftedCosts(const std::vector<double>& c1) {
-    std::vector<double> shifted(c1.size() * kLanes);
-    for (std::size_t x = 0; x < c1.size() / kLanes; ++x)
-        for (std::uint32_t s = 0; s < kLanes; ++s)
-            for (std::uint32_t l = 0; l < kLanes; ++l)
-                shifted[(x * kLanes + s) * kLanes + l] = (l & s) == s ? c1[x * kLanes + (l ^ s)] : kUnreached;
-    return shifted;
+// A row holds the vectors plus one more: room for the store of layers 2..K at offset 1.
+constexpr std::size_t rowStride(int vectors) {
+    return static_cast<std::size_t>(kLanes) * static_cast<std::size_t>(vectors + 1);
 }
 
-// The plain submask enumeration of a layer for the states t < 2^bits (they only split into smaller
-// ones): the layer's first tile, and whole layers of one tile or less (up to 9 units).
-void computeLayerPlain(int bits, const std::vector<double>& c1, const std::vector<double>& below,
-                       std::vector<double>& out) {
-    out[0] = kUnreached;
-    for (std::uint32_t t = 1; t < (1u << bits); ++t) {
-        const std::uint32_t others = t ^ std::bit_floor(t);
-        double best = kUnreached;
-        for (std::uint32_t r = others;; r = (r - 1) & others) {
-            best = std::min(best, c1[t ^ r] + below[r]);
-            if (r == 0) break;
-        }
-        out[t] = best;
+struct Rows {
+    int layers = 0;             // K = m - 1
+    int vectors = 0;            // SIMD vectors for the K - 1 layers a split updates
+    std::size_t stride = 0;     // rowStride(vectors)
+    std::vector<Lanes> storage; // 32-byte aligned rows
+    double* data() { return reinterpret_cast<double*>(storage.data()); }
+    double at(std::uint32_t t, int q) const {
+        return reinterpret_cast<const double*>(storage.data())[t * stride + static_cast<std::size_t>(q - 1)];
     }
-}
+};
+
+// Tiles of 2^7 states: a tile pair reads one tile of rows (12 KiB at m = 10) and keeps one of
+// minima (8 KiB), both in L1.
+constexpr int kTileBits = 7;
+constexpr std::uint32_t kTileStates = 1u << kTileBits;
 
 // Helpers take and give vectors by reference: a 32-byte vector passed by value has a different ABI
 // with and without AVX, and the kernels are compiled for both.
@@ -119,82 +113,151 @@ void computeLayerPlain(int bits, const std::vector<double>& c1, const std::vecto
     a = b < a ? b : a;
 }
 
-// A tile pair (hh, rh), hh != 0: t's highest unit is hh's, so every rm subset of tm is allowed.
-// acc[tm] = min(acc[tm], the minimum over the splits), with `C` the shifted costs of tile hh ^ rh and
-// `B` the layer below at tile rh. Two states per pass, tm and tm | top (top: the highest middle
-// bit), sharing loads: for each rm subset of tm, tm takes C[tm ^ rm] + B[rm], and tm | top takes
-// C[(tm ^ rm) | top] + B[rm] and C[tm ^ rm] + B[rm | top], which are all of its splits. Four
-// minima per state (one per s) keep the min latency off the additions' critical path. Compiled
-// for AVX2 and for the baseline (SSE2): the same additions and minima, so the same values to the bit.
-[[gnu::target_clones("avx2", "default")]] void splitTilePair(const double* C, const double* B, double* acc) {
-    constexpr std::size_t kCostStride = kLanes * kLanes; // the four shifted vectors of one x
+// Keeps a loaded vector in a register for its two additions: GCC would otherwise fold the load into
+// both, one load more per pair. Only a 256-bit register can hold it, so only the AVX2 copy asks;
+// clang (sanitizer builds) rejects the constraint there and chooses its own way.
+[[gnu::always_inline]] inline void pinInRegister([[maybe_unused]] Lanes& v) {
+#if !defined(__clang__)
+    asm("" : "+x"(v));
+#endif
+}
+
+// The states t < limit one by one, in increasing order (each split's row is already final): whole
+// DPs of one tile or less, and the first tile (its states split only inside it).
+void fillRowsPlain(std::uint32_t limit, const std::vector<double>& c1, Rows& rows) {
+    const int K = rows.layers;
+    std::vector<double> best(static_cast<std::size_t>(K));
+    for (std::uint32_t t = 1; t < limit; ++t) {
+        std::fill(best.begin(), best.end(), kUnreached);
+        const std::uint32_t others = t ^ std::bit_floor(t);
+        for (std::uint32_t r = others;; r = (r - 1) & others) {
+            const double c = c1[t ^ r];
+            const double* below = rows.data() + r * rows.stride;
+            for (int q = 2; q <= K; ++q)
+                best[static_cast<std::size_t>(q - 1)] =
+                    std::min(best[static_cast<std::size_t>(q - 1)], c + below[q - 2]);
+            if (r == 0) break;
+        }
+        double* row = rows.data() + t * rows.stride;
+        row[0] = c1[t];
+        std::copy(best.begin() + 1, best.end(), row + 1);
+    }
+}
+
+// The middle states below `top` ordered by their number of units: the split loop of a state runs
+// 2^units times, so equal trip counts in a row keep the loop exit predicted.
+constexpr auto kLowerHalfByUnitCount = [] {
+    std::array<std::uint32_t, kTileStates / 2> order{};
+    std::size_t next = 0;
+    for (int units = 0; units < kTileBits; ++units)
+        for (std::uint32_t tm = 0; tm < order.size(); ++tm)
+            if (std::popcount(tm) == units) order[next++] = tm;
+    return order;
+}();
+
+// A tile pair (hh, rh), hh != 0: t's highest unit is in hh, so every rm subset of tm is a split.
+// `C` = c1 of tile hh ^ rh, `B` = the rows of tile rh, acc[tm * V * 4 ...] = the running minima of
+// state tm's layers 2..K. Two states per pass, tm and tm | top (top: the tile's highest bit), sharing
+// loads: tm takes C[tm ^ rm] + B[rm]; tm | top takes C[(tm ^ rm) | top] + B[rm] and
+// C[tm ^ rm] + B[rm | top], which are all of its splits. kPin: pinInRegister.
+template <int V, bool kPin>
+[[gnu::always_inline]] inline void splitTilePairBody(const double* C, const double* B, double* acc) {
+    constexpr std::uint32_t top = kTileStates / 2;
+    constexpr std::size_t stride = rowStride(V);
+    constexpr std::size_t accStride = static_cast<std::size_t>(V) * kLanes;
     const Lanes inf = {kUnreached, kUnreached, kUnreached, kUnreached};
-    constexpr std::uint32_t top = 1u << (kTileBits - 1);
-    for (std::uint32_t tm = 0; tm < top; ++tm) {
-        Lanes low[kLanes] = {inf, inf, inf, inf}, high[kLanes] = {inf, inf, inf, inf};
+    for (const std::uint32_t tm : kLowerHalfByUnitCount) {
+        Lanes low[V], high[V];
+        for (int v = 0; v < V; ++v) low[v] = high[v] = inf;
         for (std::uint32_t rm = tm;; rm = (rm - 1) & tm) {
-            const double* c = C + static_cast<std::size_t>(tm ^ rm) * kCostStride;
-            const double* cTop = c + static_cast<std::size_t>(top) * kCostStride;
-            const double* b = B + static_cast<std::size_t>(rm) * kLanes;
-            const double* bTop = b + static_cast<std::size_t>(top) * kLanes;
-#pragma GCC unroll 4
-            for (std::uint32_t s = 0; s < kLanes; ++s) {
-                Lanes cs, withTop, topInR;
-                loadLanes(cs, c + s * kLanes);
-                loadLanes(withTop, cTop + s * kLanes);
-                topInR = cs + bTop[s];
-                cs += b[s];
-                withTop += b[s];
-                takeMin(low[s], cs);
-                takeMin(withTop, topInR);
-                takeMin(high[s], withTop);
+            // rm and tm ^ rm are below top, so "| top" is "+ top": a constant offset.
+            const double c = C[tm ^ rm], cTop = C[(tm ^ rm) + top];
+            const double* b = B + rm * stride;
+            const double* bTop = b + top * stride;
+            for (int v = 0; v < V; ++v) {
+                Lanes below, belowTop;
+                loadLanes(below, b + v * kLanes);
+                if constexpr (kPin) pinInRegister(below);
+                loadLanes(belowTop, bTop + v * kLanes);
+                takeMin(low[v], below + c);
+                Lanes viaTop = below + cTop;
+                takeMin(viaTop, belowTop + c);
+                takeMin(high[v], viaTop);
             }
             if (rm == 0) break;
         }
         for (const auto& [state, part] : {std::pair{tm, &low[0]}, std::pair{tm | top, &high[0]}}) {
-            takeMin(part[0], part[1]);
-            takeMin(part[2], part[3]);
-            takeMin(part[0], part[2]);
-            Lanes merged;
-            double* dst = acc + static_cast<std::size_t>(state) * kLanes;
-            loadLanes(merged, dst);
-            takeMin(merged, part[0]);
-            storeLanes(dst, merged);
+            double* dst = acc + state * accStride;
+            for (int v = 0; v < V; ++v) {
+                Lanes merged;
+                loadLanes(merged, dst + v * kLanes);
+                takeMin(merged, part[v]);
+                storeLanes(dst + v * kLanes, merged);
+            }
         }
     }
 }
 
-// The bits of a tile: its middle bits and the lane bits.
-constexpr int kTileShift = kTileBits + kLaneBits;
+using TilePairKernel = void (*)(const double*, const double*, double*);
 
-// One layer: out[t] = min over r subset of t minus its highest unit of c1[t ^ r] + below[r], for all
-// t < 2^bits (bits > kTileShift, so at least two tiles); +inf where t has fewer than q units (below is
-// +inf there).
-void computeLayer(int bits, int q, const std::vector<double>& c1, const std::vector<double>& shifted,
-                  const std::vector<double>& below, std::vector<double>& out) {
-    constexpr int shift = kTileShift;
-    const std::uint32_t tiles = 1u << (bits - shift);
-    tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, tiles, 1), [&](const auto& range) {
-        std::vector<double> acc(std::size_t{1} << shift);
-        for (std::uint32_t hh = range.begin(); hh != range.end(); ++hh) {
-            if (hh == 0) { // t's highest unit is in the tile: the few states of tile 0 one by one
-                computeLayerPlain(shift, c1, below, out);
-                continue;
-            }
-            std::fill(acc.begin(), acc.end(), kUnreached);
-            if (std::popcount(hh) + shift >= q) {
-                const std::uint32_t free = hh ^ std::bit_floor(hh);
+template <int V>
+[[gnu::target("avx2")]] void splitTilePairAvx2(const double* C, const double* B, double* acc) {
+    splitTilePairBody<V, true>(C, B, acc);
+}
+template <int V> void splitTilePairBaseline(const double* C, const double* B, double* acc) {
+    splitTilePairBody<V, false>(C, B, acc);
+}
+
+// The kernel for V vectors per row, AVX2 when the CPU has it. Both copies do the same additions and
+// minima, so they give the same values to the bit.
+TilePairKernel tilePairKernel(int vectors) {
+    static const bool avx2 = __builtin_cpu_supports("avx2");
+    return [&]<int... V>(std::integer_sequence<int, V...>) {
+        TilePairKernel kernel = nullptr;
+        ((kernel =
+              V + 1 == vectors ? (avx2 ? &splitTilePairAvx2<V + 1> : &splitTilePairBaseline<V + 1>) : kernel),
+         ...);
+        return kernel;
+    }
+    (std::make_integer_sequence<int, kMaxVectors>{});
+}
+
+// Every row of states t < 2^bits (bits > kTileBits). Tiles whose highest unit is the same only read
+// rows of lower tiles, so each such level runs in parallel over its tiles; `progress` after each
+// level, in proportion to its work (3^level).
+void fillRows(int bits, const std::vector<double>& c1, Rows& rows,
+              const std::function<void(double)>& progress) {
+    fillRowsPlain(kTileStates, c1, rows);
+    const TilePairKernel kernel = tilePairKernel(rows.vectors);
+    const std::size_t accStride = static_cast<std::size_t>(rows.vectors) * kLanes;
+    const int levels = bits - kTileBits;
+    const double totalWork = (std::pow(3.0, levels) - 1) / 2;
+    double doneWork = 0;
+    for (int level = 0; level < levels; ++level) {
+        const std::uint32_t first = 1u << level;
+        tbb::parallel_for(tbb::blocked_range<std::uint32_t>(first, 2 * first, 1), [&](const auto& range) {
+            std::vector<Lanes> accBuffer(kTileStates * static_cast<std::size_t>(rows.vectors));
+            const std::span<double> acc(reinterpret_cast<double*>(accBuffer.data()), kTileStates * accStride);
+            for (std::uint32_t hh = range.begin(); hh != range.end(); ++hh) {
+                std::fill(acc.begin(), acc.end(), kUnreached);
+                const std::uint32_t free = hh ^ first;
                 for (std::uint32_t rh = free;; rh = (rh - 1) & free) {
-                    // Splits whose remainder has fewer than q - 1 units add +inf: skip them.
-                    if (std::popcount(rh) + shift >= q - 1)
-                        splitTilePair(&shifted[static_cast<std::size_t>(hh ^ rh) << (shift + kLaneBits)],
-                                      &below[static_cast<std::size_t>(rh) << shift], acc.data());
+                    kernel(&c1[static_cast<std::size_t>(hh ^ rh) << kTileBits],
+                           rows.data() + (static_cast<std::size_t>(rh) << kTileBits) * rows.stride,
+                           acc.data());
                     if (rh == 0) break;
                 }
+                for (std::uint32_t tm = 0; tm < kTileStates; ++tm) {
+                    const std::size_t t = (static_cast<std::size_t>(hh) << kTileBits) | tm;
+                    double* row = rows.data() + t * rows.stride;
+                    row[0] = c1[t];
+                    std::copy_n(&acc[tm * accStride], rows.layers - 1, row + 1);
+                }
             }
-            std::copy(acc.begin(), acc.end(), &out[static_cast<std::size_t>(hh) << shift]);
-        }
-    });
+        });
+        doneWork += std::pow(3.0, level);
+        if (progress) progress(doneWork / totalWork);
+    }
 }
 
 } // namespace
@@ -206,46 +269,63 @@ UnitCurve solveSubsetDp(const GroupCostModel& model, int m, const std::function<
 
     const int bits = n - 1;
     const std::uint32_t full = (1u << n) - 1u;
-    const std::size_t states = std::size_t{1} << bits;
-    // layer[q - 1][t] = best[q][t << 1] for q = 1..m-1 (layer 1: the group costs themselves).
-    std::vector<std::vector<double>> layer(static_cast<std::size_t>(std::max(m - 1, 1)));
-    std::vector<double>& c1 = layer[0];
-    c1.resize(states);
-    for (std::size_t t = 0; t < states; ++t) c1[t] = t ? cost[t << 1] : kUnreached;
-    const std::vector<double> shifted = bits > kTileShift && m > 2 ? shiftedCosts(c1) : std::vector<double>{};
+    const std::uint32_t states = 1u << bits;
+    std::vector<double> c1(states); // layer 1: the group costs of the states (units 1..n-1)
+    for (std::uint32_t t = 0; t < states; ++t)
+        c1[t] = t ? cost[static_cast<std::size_t>(t) << 1] : kUnreached;
+    Rows rows;
+    rows.layers = std::max(m - 1, 1);
+    rows.vectors = (rows.layers - 1 + kLanes - 1) / kLanes;
+    rows.stride = rowStride(rows.vectors);
+    const Lanes inf = {kUnreached, kUnreached, kUnreached, kUnreached};
+    rows.storage.assign(states * rows.stride / kLanes, inf); // lanes past layer K read +inf
+    if (rows.layers == 1)
+        for (std::uint32_t t = 0; t < states; ++t) rows.data()[t * rows.stride] = c1[t];
+    else if (bits > kTileBits)
+        fillRows(bits, c1, rows, [&](double done) {
+            if (progress) progress(0.05 + 0.9 * done);
+        });
+    else
+        fillRowsPlain(states, c1, rows);
+
+    // The top state (all units): its group holds unit 0 and any subset of the others, the remainder r
+    // takes p - 1 groups. topValue[p - 2] for p = 2..m in one pass over r.
+    std::vector<double> topValue(static_cast<std::size_t>(rows.layers), kUnreached);
+    if (m >= 2)
+        for (std::uint32_t r = 0; r < states; ++r) {
+            const double c = cost[full ^ (r << 1)];
+            for (int q = 1; q <= m - 1; ++q)
+                topValue[static_cast<std::size_t>(q - 1)] =
+                    std::min(topValue[static_cast<std::size_t>(q - 1)], c + rows.at(r, q));
+        }
 
     // The remainder r (of the units 1..n-1) that gives `value` for state t of layer q (q >= 2), or
-    // for the top state (all units, q groups) when top is set: the first in a fixed order.
+    // for the top state (all units, q groups) when top is set: the first in a fixed order. Exact: the
+    // scan adds the same two doubles as the pass that found `value`.
     auto remainderOf = [&](std::uint32_t t, int q, double value, bool top) {
-        const std::vector<double>& below = layer[static_cast<std::size_t>(q - 2)];
         const std::uint32_t others = top ? t : (t ^ std::bit_floor(t));
         for (std::uint32_t r = others;; r = (r - 1) & others) {
             const double c = top ? cost[full ^ (r << 1)] : c1[t ^ r];
-            if (c + below[r] == value) return r;
+            if (c + rows.at(r, q - 1) == value) return r;
             if (r == 0) break;
         }
         return std::uint32_t{0}; // unreachable: value is one of the sums scanned
     };
 
     UnitCurve curve(static_cast<std::size_t>(m));
-    auto finish = [&](int p) {
+    for (int p = 1; p <= m; ++p) {
         UnitPartition& entry = curve[static_cast<std::size_t>(p - 1)];
         entry.optimal = true;
-        const std::uint32_t all = static_cast<std::uint32_t>(states - 1);
         if (p == 1) {
-            if (!(cost[full] < kUnreached)) return; // conflicting units: no single group
+            if (!(cost[full] < kUnreached)) continue; // conflicting units: no single group
             entry.groups.push_back(full);
         } else {
-            // The top state: V holds unit 0 and any subset of the others.
-            const std::vector<double>& below = layer[static_cast<std::size_t>(p - 2)];
-            double value = kUnreached;
-            for (std::uint32_t r = 0; r <= all; ++r)
-                value = std::min(value, cost[full ^ (r << 1)] + below[r]);
-            if (!(value < kUnreached)) return; // no partition into p groups respects the conflicts
-            std::uint32_t t = remainderOf(all, p, value, true);
+            const double value = topValue[static_cast<std::size_t>(p - 2)];
+            if (!(value < kUnreached)) continue; // no partition into p groups respects the conflicts
+            std::uint32_t t = remainderOf(states - 1, p, value, true);
             entry.groups.push_back(full ^ (t << 1));
             for (int q = p - 1; q >= 2; --q) {
-                const std::uint32_t r = remainderOf(t, q, layer[static_cast<std::size_t>(q - 1)][t], false);
+                const std::uint32_t r = remainderOf(t, q, rows.at(t, q), false);
                 entry.groups.push_back(static_cast<UnitMask>(t ^ r) << 1);
                 t = r;
             }
@@ -255,18 +335,6 @@ UnitCurve solveSubsetDp(const GroupCostModel& model, int m, const std::function<
                   [](UnitMask a, UnitMask b) { return std::countr_zero(a) < std::countr_zero(b); });
         entry.cost = partitionCost(model, entry.groups);
         entry.lowerBound = entry.cost;
-    };
-    finish(1);
-    if (m >= 2) finish(2);
-    for (int q = 2; q <= m - 1; ++q) {
-        auto& out = layer[static_cast<std::size_t>(q - 1)];
-        out.resize(states);
-        if (bits > kTileShift)
-            computeLayer(bits, q, c1, shifted, layer[static_cast<std::size_t>(q - 2)], out);
-        else
-            computeLayerPlain(bits, c1, layer[static_cast<std::size_t>(q - 2)], out);
-        finish(q + 1);
-        if (progress) progress(0.05 + 0.95 * q / (m - 1));
     }
     if (progress) progress(1.0);
     return curve;

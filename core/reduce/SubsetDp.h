@@ -8,7 +8,7 @@
 
 namespace vl {
 
-// Largest number of units the DP accepts (memory: every layer is kept, ~150 MB at m = 10).
+// Largest number of units the DP accepts (memory: every layer is kept, ~200 MB at m = 10).
 constexpr int kMaxSubsetDpUnits = 22;
 
 // For each p = 1..m: the optimal partition into p groups respecting the conflicts (optimal = true,

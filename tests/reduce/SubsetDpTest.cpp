@@ -1,6 +1,7 @@
-// The subset DP's SIMD layer kernel against the DP written the obvious way: every subset, every split
-// containing its lowest unit, one double at a time. Sizes from the first that uses the kernel
-// (10 units: two tiles) up, with and without units that may not share a group.
+// The subset DP's SIMD kernel against the DP written the obvious way: every subset, every split
+// containing its lowest unit, one layer and one double at a time. Sizes from the plain loop (up to 8
+// units: one tile) to several tiles, every width of a row (m), with and without units that may not
+// share a group.
 #include "core/reduce/SubsetDp.h"
 #include "core/reduce/GramMatrix.h"
 #include "core/reduce/GroupCostModel.h"
@@ -42,7 +43,7 @@ std::vector<double> plainDp(const GroupCostModel& model, int m) {
 
 TEST(SubsetDp, LayerKernelAgreesWithThePlainRecursion) {
     std::mt19937 rng(2026);
-    for (int n = 10; n <= 14; ++n) {
+    for (int n = 6; n <= 14; ++n) {
         for (int variant = 0; variant < 4; ++variant) {
             const auto inst = test::randomInstance(rng, n, 9, variant == 1);
             ReductionConstraints constraints;
@@ -50,27 +51,32 @@ TEST(SubsetDp, LayerKernelAgreesWithThePlainRecursion) {
             const GroupCostModel model =
                 makeGroupCostModel(centredGram(inst.shapes, inst.frequencies, inst.weights), inst.frequencies,
                                    constraintUnits(constraints, n));
-            const UnitCurve curve = solveSubsetDp(model, n);
             const std::vector<double> reference = plainDp(model, n);
-            ASSERT_EQ(curve.size(), reference.size());
-            for (int p = 1; p <= n; ++p) {
-                const UnitPartition& entry = curve[static_cast<std::size_t>(p - 1)];
-                const double expected = reference[static_cast<std::size_t>(p - 1)];
-                EXPECT_TRUE(entry.optimal);
-                if (!(expected < std::numeric_limits<double>::infinity())) {
-                    EXPECT_TRUE(entry.groups.empty()) << "n=" << n << " p=" << p;
-                    continue;
+            // m sets how many layers share a row: 1 (m = 2), one vector (3..6), two, and up to n.
+            for (const int m : {2, 3, 6, 7, 10, n}) {
+                if (m > n) continue;
+                const UnitCurve curve = solveSubsetDp(model, m);
+                ASSERT_EQ(curve.size(), static_cast<std::size_t>(m));
+                for (int p = 1; p <= m; ++p) {
+                    const UnitPartition& entry = curve[static_cast<std::size_t>(p - 1)];
+                    const double expected = reference[static_cast<std::size_t>(p - 1)];
+                    EXPECT_TRUE(entry.optimal);
+                    if (!(expected < std::numeric_limits<double>::infinity())) {
+                        EXPECT_TRUE(entry.groups.empty()) << "n=" << n << " p=" << p;
+                        continue;
+                    }
+                    ASSERT_EQ(static_cast<int>(entry.groups.size()), p) << "n=" << n << " p=" << p;
+                    UnitMask all = 0;
+                    for (const UnitMask g : entry.groups) {
+                        EXPECT_NE(g, 0u);
+                        EXPECT_EQ(all & g, 0u);
+                        EXPECT_TRUE(model.allowed(g));
+                        all |= g;
+                    }
+                    EXPECT_EQ(all, (UnitMask{1} << n) - 1);
+                    EXPECT_NEAR(entry.cost, expected, 1e-12 * model.scale + 1e-300)
+                        << "n=" << n << " p=" << p;
                 }
-                ASSERT_EQ(static_cast<int>(entry.groups.size()), p) << "n=" << n << " p=" << p;
-                UnitMask all = 0;
-                for (const UnitMask g : entry.groups) {
-                    EXPECT_NE(g, 0u);
-                    EXPECT_EQ(all & g, 0u);
-                    EXPECT_TRUE(model.allowed(g));
-                    all |= g;
-                }
-                EXPECT_EQ(all, (UnitMask{1} << n) - 1);
-                EXPECT_NEAR(entry.cost, expected, 1e-12 * model.scale + 1e-300) << "n=" << n << " p=" << p;
             }
         }
     }
