@@ -144,10 +144,10 @@ void fillRowsPlain(std::uint32_t limit, const std::vector<double>& c1, Rows& row
     }
 }
 
-// The middle states below `top` ordered by their number of units: the split loop of a state runs
-// 2^units times, so equal trip counts in a row keep the loop exit predicted.
-constexpr auto kLowerHalfByUnitCount = [] {
-    std::array<std::uint32_t, kTileStates / 2> order{};
+// The states of a tile's lowest quarter ordered by their number of units: the split loop of a state
+// runs 2^units times, so equal trip counts in a row keep the loop exit predicted.
+constexpr auto kLowQuarterByUnitCount = [] {
+    std::array<std::uint32_t, kTileStates / 4> order{};
     std::size_t next = 0;
     for (int units = 0; units < kTileBits; ++units)
         for (std::uint32_t tm = 0; tm < order.size(); ++tm)
@@ -157,41 +157,52 @@ constexpr auto kLowerHalfByUnitCount = [] {
 
 // A tile pair (hh, rh), hh != 0: t's highest unit is in hh, so every rm subset of tm is a split.
 // `C` = c1 of tile hh ^ rh, `B` = the rows of tile rh, acc[tm * V * 4 ...] = the running minima of
-// state tm's layers 2..K. Two states per pass, tm and tm | top (top: the tile's highest bit), sharing
-// loads: tm takes C[tm ^ rm] + B[rm]; tm | top takes C[(tm ^ rm) | top] + B[rm] and
-// C[tm ^ rm] + B[rm | top], which are all of its splits. kPin: pinInRegister.
+// state tm's layers 2..K. Four states per pass, tm | A for A a subset of the tile's two highest bits
+// {h1, h2}, sharing loads: with d = tm ^ rm, state tm | A takes C[d | X] + B[rm | Y] for every split
+// of A into disjoint X and Y (1, 2, 2 and 4 sums), which are all of its splits. Per pass: 4 group
+// costs and 4 V rows loaded for 9 V vector sums. kPin: pinInRegister.
 template <int V, bool kPin>
 [[gnu::always_inline]] inline void splitTilePairBody(const double* C, const double* B, double* acc) {
-    constexpr std::uint32_t top = kTileStates / 2;
+    constexpr std::uint32_t h1 = kTileStates / 4, h2 = kTileStates / 2; // tm, rm, d < h1: "|" is "+"
     constexpr std::size_t stride = rowStride(V);
     constexpr std::size_t accStride = static_cast<std::size_t>(V) * kLanes;
     const Lanes inf = {kUnreached, kUnreached, kUnreached, kUnreached};
-    for (const std::uint32_t tm : kLowerHalfByUnitCount) {
-        Lanes low[V], high[V];
-        for (int v = 0; v < V; ++v) low[v] = high[v] = inf;
+    for (const std::uint32_t tm : kLowQuarterByUnitCount) {
+        Lanes best[4][V]; // by A: {}, {h1}, {h2}, {h1, h2}
+        for (auto& state : best)
+            for (int v = 0; v < V; ++v) state[v] = inf;
         for (std::uint32_t rm = tm;; rm = (rm - 1) & tm) {
-            // rm and tm ^ rm are below top, so "| top" is "+ top": a constant offset.
-            const double c = C[tm ^ rm], cTop = C[(tm ^ rm) + top];
+            const double* c = C + (tm ^ rm);
+            const double c0 = c[0], c1 = c[h1], c2 = c[h2], c12 = c[h1 + h2];
             const double* b = B + rm * stride;
-            const double* bTop = b + top * stride;
             for (int v = 0; v < V; ++v) {
-                Lanes below, belowTop;
-                loadLanes(below, b + v * kLanes);
-                if constexpr (kPin) pinInRegister(below);
-                loadLanes(belowTop, bTop + v * kLanes);
-                takeMin(low[v], below + c);
-                Lanes viaTop = below + cTop;
-                takeMin(viaTop, belowTop + c);
-                takeMin(high[v], viaTop);
+                Lanes row;
+                loadLanes(row, b + v * kLanes); // Y = {}
+                if constexpr (kPin) pinInRegister(row);
+                takeMin(best[0][v], row + c0);
+                takeMin(best[1][v], row + c1);
+                takeMin(best[2][v], row + c2);
+                takeMin(best[3][v], row + c12);
+                loadLanes(row, b + h1 * stride + v * kLanes); // Y = {h1}
+                if constexpr (kPin) pinInRegister(row);
+                takeMin(best[1][v], row + c0);
+                takeMin(best[3][v], row + c2);
+                loadLanes(row, b + h2 * stride + v * kLanes); // Y = {h2}
+                if constexpr (kPin) pinInRegister(row);
+                takeMin(best[2][v], row + c0);
+                takeMin(best[3][v], row + c1);
+                loadLanes(row, b + (h1 + h2) * stride + v * kLanes); // Y = {h1, h2}
+                takeMin(best[3][v], row + c0);
             }
             if (rm == 0) break;
         }
-        for (const auto& [state, part] : {std::pair{tm, &low[0]}, std::pair{tm | top, &high[0]}}) {
-            double* dst = acc + state * accStride;
+        constexpr std::uint32_t offset[4] = {0, h1, h2, h1 + h2};
+        for (int a = 0; a < 4; ++a) {
+            double* dst = acc + (tm + offset[a]) * accStride;
             for (int v = 0; v < V; ++v) {
                 Lanes merged;
                 loadLanes(merged, dst + v * kLanes);
-                takeMin(merged, part[v]);
+                takeMin(merged, best[a][v]);
                 storeLanes(dst + v * kLanes, merged);
             }
         }
