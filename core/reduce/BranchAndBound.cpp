@@ -346,7 +346,7 @@ UnitPartition branchAndBound(const GroupCostModel& model, int p, std::span<const
             // the suffix only; the units before it add the optima of small blocks of them (blockBound),
             // or, when larger, all units in blocks.
             result.lowerBound = std::max(0.0, std::min(best, unexplored));
-            if (first > 0 && unexplored < kNoBound)
+            if (first > 0 && unexplored < kNoBound && limits.tightenStoppedBound)
                 result.lowerBound = std::max(
                     result.lowerBound +
                         blockBound(model, std::span(order.data(), static_cast<std::size_t>(first)), p),

@@ -28,6 +28,10 @@ struct SearchLimits {
     // the searches sharing `nodes` stop once they have visited about `nodeBudget` tree nodes together.
     std::atomic<std::uint64_t>* nodes = nullptr;
     std::uint64_t nodeBudget = 0;
+    // A stopped search's lower bound adds the exact optima of blocks of the units before its suffix
+    // (subset DPs: milliseconds per p). Off when the caller discards a stopped search's bound anyway
+    // (Auto's portfolio runs the DP next); the bound reported is then the suffix's alone, still valid.
+    bool tightenStoppedBound = true;
     // Called once per `visited` nodes of one search.
     bool expired(std::uint64_t visited) const {
         if (nodes && nodes->fetch_add(visited, std::memory_order_relaxed) + visited > nodeBudget) return true;

@@ -93,7 +93,7 @@ Grouping toGrouping(const UnitPartition& entry, const ConstraintUnits& units) {
 // on its own thread so the calling thread can report progress.
 UnitCurve solveByBranchAndBound(const GroupCostModel& model, const ConstraintUnits& units, int m,
                                 const ReductionOptions& options, const ProgressCallback& progress,
-                                std::uint64_t nodeBudget = 0) {
+                                std::uint64_t nodeBudget = 0, bool tightenStoppedBound = true) {
     const auto starts = heuristicPartitions(model, m);
     SearchLimits limits;
     std::atomic<std::uint64_t> nodes{0};
@@ -101,6 +101,7 @@ UnitCurve solveByBranchAndBound(const GroupCostModel& model, const ConstraintUni
         limits.nodes = &nodes;
         limits.nodeBudget = nodeBudget;
     }
+    limits.tightenStoppedBound = tightenStoppedBound;
     if (options.timeLimitSeconds > 0)
         limits.deadline = std::chrono::steady_clock::now() +
                           std::chrono::duration_cast<std::chrono::steady_clock::duration>(
@@ -245,12 +246,13 @@ ReductionResult reduceVisemes(const ReductionProblem& problem, const ReductionOp
                                     estimatedSubsetDpSeconds(kBranchAndBoundShareUnits, solvable) *
                                     std::pow(2.0, count - kBranchAndBoundShareUnits);
         const auto budget = static_cast<std::uint64_t>(shareSeconds * kBranchAndBoundNodesPerSecond);
-        curve = solveByBranchAndBound(model, units, solvable, options, progress, budget);
+        const bool dpFits =
+            options.timeLimitSeconds <= 0 || options.timeLimitSeconds >= shareSeconds + dpSeconds;
+        // When the DP follows an unproven search, that search's bounds are discarded: skip them.
+        curve = solveByBranchAndBound(model, units, solvable, options, progress, budget, !dpFits);
         result.method = ReductionMethod::BranchAndBound;
         const bool proven =
             std::all_of(curve.begin(), curve.end(), [](const UnitPartition& e) { return e.optimal; });
-        const bool dpFits =
-            options.timeLimitSeconds <= 0 || options.timeLimitSeconds >= shareSeconds + dpSeconds;
         if (!proven && dpFits && !(options.cancelled && options.cancelled->load())) {
             curve = solveSubsetDp(model, solvable, progress);
             result.method = ReductionMethod::SubsetDp;

@@ -300,24 +300,28 @@ UnitCurve solveSubsetDp(const GroupCostModel& model, int m, const std::function<
         fillRowsPlain(states, c1, rows);
 
     // The top state (all units): its group holds unit 0 and any subset of the others, the remainder r
-    // takes p - 1 groups. topValue[p - 2] for p = 2..m in one pass over r.
+    // takes p - 1 groups. topValue[p - 2] for p = 2..m in one pass over r, with topRemainder the
+    // largest r that gives it (the one the scan below would find first), read in order instead of one
+    // strided scan of every row per p.
     std::vector<double> topValue(static_cast<std::size_t>(rows.layers), kUnreached);
+    std::vector<std::uint32_t> topRemainder(static_cast<std::size_t>(rows.layers), 0);
     if (m >= 2)
         for (std::uint32_t r = 0; r < states; ++r) {
             const double c = cost[full ^ (r << 1)];
-            for (int q = 1; q <= m - 1; ++q)
-                topValue[static_cast<std::size_t>(q - 1)] =
-                    std::min(topValue[static_cast<std::size_t>(q - 1)], c + rows.at(r, q));
+            const double* row = rows.data() + r * rows.stride;
+            for (std::size_t k = 0; k < static_cast<std::size_t>(m - 1); ++k)
+                if (const double sum = c + row[k]; sum <= topValue[k]) {
+                    topValue[k] = sum;
+                    topRemainder[k] = r;
+                }
         }
 
-    // The remainder r (of the units 1..n-1) that gives `value` for state t of layer q (q >= 2), or
-    // for the top state (all units, q groups) when top is set: the first in a fixed order. Exact: the
-    // scan adds the same two doubles as the pass that found `value`.
-    auto remainderOf = [&](std::uint32_t t, int q, double value, bool top) {
-        const std::uint32_t others = top ? t : (t ^ std::bit_floor(t));
+    // The remainder r (of the units 1..n-1) that gives `value` for state t of layer q (q >= 2): the
+    // first in a fixed order. Exact: the scan adds the same two doubles as the pass that found `value`.
+    auto remainderOf = [&](std::uint32_t t, int q, double value) {
+        const std::uint32_t others = t ^ std::bit_floor(t);
         for (std::uint32_t r = others;; r = (r - 1) & others) {
-            const double c = top ? cost[full ^ (r << 1)] : c1[t ^ r];
-            if (c + rows.at(r, q - 1) == value) return r;
+            if (c1[t ^ r] + rows.at(r, q - 1) == value) return r;
             if (r == 0) break;
         }
         return std::uint32_t{0}; // unreachable: value is one of the sums scanned
@@ -333,10 +337,10 @@ UnitCurve solveSubsetDp(const GroupCostModel& model, int m, const std::function<
         } else {
             const double value = topValue[static_cast<std::size_t>(p - 2)];
             if (!(value < kUnreached)) continue; // no partition into p groups respects the conflicts
-            std::uint32_t t = remainderOf(states - 1, p, value, true);
+            std::uint32_t t = topRemainder[static_cast<std::size_t>(p - 2)];
             entry.groups.push_back(full ^ (t << 1));
             for (int q = p - 1; q >= 2; --q) {
-                const std::uint32_t r = remainderOf(t, q, rows.at(t, q), false);
+                const std::uint32_t r = remainderOf(t, q, rows.at(t, q));
                 entry.groups.push_back(static_cast<UnitMask>(t ^ r) << 1);
                 t = r;
             }
