@@ -173,8 +173,8 @@ void checkFlagCombinations(const ReduceOptions& o) {
     if (!o.fdp.empty() &&
         (!o.project.empty() || !o.neutral.empty() || !o.visemes.empty() || !o.visemeDir.empty()))
         throwUsage("--fdp already names the meshes; drop --project/--neutral/--viseme/--visemes");
-    if (o.method != "auto" && o.method != "dp" && o.method != "bnb")
-        throwUsage("--method must be auto, dp or bnb, got '" + o.method + "'");
+    if (o.method != "auto" && o.method != "dp" && o.method != "bnb" && o.method != "lp")
+        throwUsage("--method must be auto, dp, bnb or lp, got '" + o.method + "'");
     if (!(o.timeLimit >= 0)) throwUsage("--time-limit must be >= 0 seconds (0: no limit)");
     constraintFlags(o); // A,B syntax
 }
@@ -311,7 +311,8 @@ void addReduceCommand(CLI::App& app, CommandRunner& run) {
     cmd->add_option("--apart", options->apart, "Never merge these two visemes: A,B (repeatable)");
     cmd->add_option("--together", options->together, "Always merge these two visemes: A,B (repeatable)");
     cmd->add_option("--method", options->method,
-                    "Solver: auto, dp (subset DP, n <= 22) or bnb (branch and bound, n <= 64)")
+                    "Solver: auto, dp (subset DP, n <= 22), lp (set-partitioning LP, n <= 26) or bnb (branch "
+                    "and bound, n <= 64)")
         ->capture_default_str();
     cmd->add_option("--time-limit", options->timeLimit,
                     "Seconds branch and bound may search for a proof; then the best grouping found is "

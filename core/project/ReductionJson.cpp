@@ -127,9 +127,11 @@ ProjectReduction reductionFromJson(const JsonNode& node, const std::vector<std::
     ReductionResult parsed;
     if (result.has("method")) {
         const std::string method = result["method"].string();
-        if (method != "dp" && method != "bnb")
-            result["method"].fail("expected \"dp\" or \"bnb\", found \"" + method + "\"");
-        parsed.method = method == "bnb" ? ReductionMethod::BranchAndBound : ReductionMethod::SubsetDp;
+        if (method != "dp" && method != "bnb" && method != "lp")
+            result["method"].fail("expected \"dp\", \"bnb\" or \"lp\", found \"" + method + "\"");
+        parsed.method = method == "bnb"  ? ReductionMethod::BranchAndBound
+                        : method == "lp" ? ReductionMethod::ColumnGeneration
+                                         : ReductionMethod::SubsetDp;
     }
     for (std::size_t p = 0; p < curve.size(); ++p)
         parsed.curve.push_back(groupingFromJson(curve[p], p + 1, visemeNames, indexOf));

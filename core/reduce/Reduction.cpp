@@ -1,6 +1,7 @@
 // The reduction entry point: validates the problem, builds the Gram matrix and the cost model of the
 // constraint units once, runs the chosen solver and turns unit partitions back into viseme groups.
 #include "core/reduce/Reduction.h"
+#include "core/reduce/ColumnGeneration.h"
 
 #include "core/common/Error.h"
 #include "core/common/TextParsing.h"
@@ -172,6 +173,57 @@ double estimatedSubsetDpSeconds(int units, int m) {
     return 0.0055 * std::pow(3.0, units - 16) * std::max(1.0, m / 10.0);
 }
 
+// Auto's first share for branch and bound (kBranchAndBoundShare), in seconds and in search nodes.
+double branchAndBoundShareSeconds(int units, int m) {
+    return kBranchAndBoundShare * estimatedSubsetDpSeconds(kBranchAndBoundShareUnits, m) *
+           std::pow(2.0, units - kBranchAndBoundShareUnits);
+}
+std::uint64_t branchAndBoundShareNodes(int units, int m) {
+    return static_cast<std::uint64_t>(branchAndBoundShareSeconds(units, m) * kBranchAndBoundNodesPerSecond);
+}
+
+// The LP by column generation for every feasible p = 1..m, one p after another (each prices in
+// parallel), from the heuristics' partitions; p the heuristics found no partition for stays unproven.
+UnitCurve solveByColumnGeneration(const GroupCostModel& model, const ConstraintUnits& units, int m,
+                                  const ReductionOptions& options, const ProgressCallback& progress) {
+    const auto starts = heuristicPartitions(model, m);
+    const std::vector<double> costs = allSubsetCosts(model);
+    SearchLimits limits;
+    limits.cancelled = options.cancelled;
+    if (options.timeLimitSeconds > 0)
+        limits.deadline = std::chrono::steady_clock::now() +
+                          std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                              std::chrono::duration<double>(options.timeLimitSeconds));
+    UnitCurve curve(static_cast<std::size_t>(m));
+    for (int p = 1; p <= m; ++p) {
+        auto& entry = curve[static_cast<std::size_t>(p - 1)];
+        const auto& start = starts[static_cast<std::size_t>(p - 1)];
+        if (!units.feasible(p))
+            entry.optimal = true; // proven: the constraints rule p out
+        else if (!start.empty())
+            entry = solveByColumnGeneration(model, costs, p, start, limits);
+        if (progress) progress(static_cast<double>(p) / m);
+    }
+    return curve;
+}
+
+// Per p, the better of two runs' results: a proof from either, the cheaper grouping, the higher bound.
+UnitCurve betterOf(UnitCurve first, const UnitCurve& second) {
+    for (std::size_t i = 0; i < first.size(); ++i) {
+        UnitPartition& a = first[i];
+        const UnitPartition& b = second[i];
+        if (a.optimal) continue;
+        if (b.optimal) {
+            a = b;
+            continue;
+        }
+        const double bound = std::max(a.lowerBound, b.lowerBound);
+        if (!b.groups.empty() && (a.groups.empty() || b.cost < a.cost)) a = b;
+        a.lowerBound = std::min(bound, a.cost);
+    }
+    return first;
+}
+
 } // namespace
 
 const char* toString(ReductionMethod method) {
@@ -182,15 +234,17 @@ const char* toString(ReductionMethod method) {
         return "dp";
     case ReductionMethod::BranchAndBound:
         return "bnb";
+    case ReductionMethod::ColumnGeneration:
+        return "lp";
     }
     return "auto";
 }
 
 ReductionMethod reductionMethodFromString(std::string_view text, std::string_view where) {
-    for (const auto method :
-         {ReductionMethod::Auto, ReductionMethod::SubsetDp, ReductionMethod::BranchAndBound})
+    for (const auto method : {ReductionMethod::Auto, ReductionMethod::SubsetDp,
+                              ReductionMethod::BranchAndBound, ReductionMethod::ColumnGeneration})
         if (text == toString(method)) return method;
-    throwInputError(where, "unknown method '" + std::string(text) + "' (expected auto, dp or bnb)");
+    throwInputError(where, "unknown method '" + std::string(text) + "' (expected auto, dp, bnb or lp)");
 }
 
 double Grouping::gap() const {
@@ -230,6 +284,11 @@ ReductionResult reduceVisemes(const ReductionProblem& problem, const ReductionOp
 
     ReductionResult result;
     result.method = options.method;
+    if (result.method == ReductionMethod::ColumnGeneration && count > kMaxColumnGenerationUnits)
+        throwInputError("reduction", "the LP solver takes at most " +
+                                         std::to_string(kMaxColumnGenerationUnits) +
+                                         " visemes (it prices all 2^n groups), the problem has " +
+                                         std::to_string(count) + "; use branch and bound");
     if (result.method == ReductionMethod::SubsetDp && count > kMaxSubsetDpUnits)
         throwInputError("reduction", "the subset DP takes at most " + std::to_string(kMaxSubsetDpUnits) +
                                          " visemes (2^n subsets), the problem has " + std::to_string(count) +
@@ -242,10 +301,8 @@ ReductionResult reduceVisemes(const ReductionProblem& problem, const ReductionOp
         const double dpSeconds = estimatedSubsetDpSeconds(count, solvable);
         // The share is counted in search nodes, not seconds, so that the solver chosen (and the
         // project file recording it) is the same on a slow, loaded or instrumented machine.
-        const double shareSeconds = kBranchAndBoundShare *
-                                    estimatedSubsetDpSeconds(kBranchAndBoundShareUnits, solvable) *
-                                    std::pow(2.0, count - kBranchAndBoundShareUnits);
-        const auto budget = static_cast<std::uint64_t>(shareSeconds * kBranchAndBoundNodesPerSecond);
+        const double shareSeconds = branchAndBoundShareSeconds(count, solvable);
+        const std::uint64_t budget = branchAndBoundShareNodes(count, solvable);
         const bool dpFits =
             options.timeLimitSeconds <= 0 || options.timeLimitSeconds >= shareSeconds + dpSeconds;
         // When the DP follows an unproven search, that search's bounds are discarded: skip them.
@@ -256,6 +313,39 @@ ReductionResult reduceVisemes(const ReductionProblem& problem, const ReductionOp
         if (!proven && dpFits && !(options.cancelled && options.cancelled->load())) {
             curve = solveSubsetDp(model, solvable, progress);
             result.method = ReductionMethod::SubsetDp;
+        }
+    } else if ((result.method == ReductionMethod::Auto && count > kMaxSubsetDpUnits &&
+                count <= kMaxColumnGenerationUnits) ||
+               result.method == ReductionMethod::ColumnGeneration) {
+        // Above the DP's limit: with Auto, branch and bound first gets the same share as in the DP's
+        // range (structured sets are proved in milliseconds), then the LP, which proves most sets,
+        // structured or not, for the p left; branch and bound again, in the time left, for any p the
+        // LP did not prove.
+        const auto started = std::chrono::steady_clock::now();
+        const bool automatic = result.method == ReductionMethod::Auto;
+        auto allProven = [](const UnitCurve& c) {
+            return std::all_of(c.begin(), c.end(), [](const UnitPartition& e) { return e.optimal; });
+        };
+        if (automatic) {
+            curve = solveByBranchAndBound(model, units, solvable, options, progress,
+                                          branchAndBoundShareNodes(count, solvable), false);
+            result.method = ReductionMethod::BranchAndBound;
+        }
+        if (!automatic || !allProven(curve)) {
+            UnitCurve lp = solveByColumnGeneration(model, units, solvable, options, progress);
+            curve = automatic ? betterOf(std::move(lp), curve) : std::move(lp);
+            result.method = ReductionMethod::ColumnGeneration;
+            const double spent =
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+            const bool timeLeft = options.timeLimitSeconds <= 0 || spent < options.timeLimitSeconds;
+            if (automatic && !allProven(curve) && timeLeft &&
+                !(options.cancelled && options.cancelled->load())) {
+                ReductionOptions rest = options;
+                if (rest.timeLimitSeconds > 0) rest.timeLimitSeconds -= spent;
+                curve =
+                    betterOf(std::move(curve), solveByBranchAndBound(model, units, solvable, rest, progress));
+                result.method = ReductionMethod::BranchAndBound;
+            }
         }
     } else {
         if (result.method == ReductionMethod::Auto)

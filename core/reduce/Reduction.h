@@ -30,12 +30,13 @@ constexpr int kMaxReductionVisemes = 64;
 constexpr int kMaxExactVisemes = 20;
 
 enum class ReductionMethod {
-    Auto,           // the subset DP for small sets, branch and bound otherwise
-    SubsetDp,       // the paper's DP (at most 22 units)
-    BranchAndBound, // repetitive branch and bound
+    Auto,             // the subset DP for small sets, then the LP, then branch and bound
+    SubsetDp,         // the paper's DP (at most 22 units)
+    BranchAndBound,   // repetitive branch and bound
+    ColumnGeneration, // the set-partitioning LP by column generation (at most 26 units)
 };
 
-const char* toString(ReductionMethod method); // "auto", "dp", "bnb"
+const char* toString(ReductionMethod method); // "auto", "dp", "bnb", "lp"
 // Throws InputError at `where` for anything else.
 ReductionMethod reductionMethodFromString(std::string_view text, std::string_view where);
 

@@ -39,38 +39,6 @@ namespace {
 
 constexpr double kUnreached = std::numeric_limits<double>::infinity();
 
-std::vector<double> allGroupCosts(const GroupCostModel& model) {
-    const int n = model.size();
-    const std::size_t count = std::size_t{1} << n;
-    std::vector<double> cost(count, 0.0), Q(count, 0.0);
-    // Parallel over blocks of the high bits: each block only reads sets with a smaller highest unit,
-    // which earlier blocks (sequential in the outer loop over j) have finished.
-    for (int j = 0; j < n; ++j) {
-        const std::size_t lo = std::size_t{1} << j;
-        const double* row = &model.cross[static_cast<std::size_t>(j) * static_cast<std::size_t>(n)];
-        const double fj = model.weight[static_cast<std::size_t>(j)],
-                     dj = model.self[static_cast<std::size_t>(j)];
-        const UnitMask conflictsJ = model.conflicts[static_cast<std::size_t>(j)];
-        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, lo, 4096), [&](const auto& range) {
-            for (std::size_t rest = range.begin(); rest != range.end(); ++rest) {
-                const std::size_t s = rest | lo;
-                double cross = 0, F = fj, D = dj;
-                for (std::size_t bits = rest; bits; bits &= bits - 1) {
-                    const int i = std::countr_zero(bits);
-                    cross += row[i];
-                    F += model.weight[static_cast<std::size_t>(i)];
-                    D += model.self[static_cast<std::size_t>(i)];
-                }
-                Q[s] = Q[rest] + 2 * cross + row[j];
-                const bool conflict = std::isinf(cost[rest]) || (rest & conflictsJ) != 0;
-                // Rounding may push D - Q/F slightly below 0.
-                cost[s] = conflict ? kUnreached : (F > 0 ? std::max(0.0, D - Q[s] / F) : 0.0);
-            }
-        });
-    }
-    return cost;
-}
-
 // Row layout: all layers of one state side by side, rows[t * stride + q - 1] = best[q][t << 1] for
 // q = 1..K (K = m - 1). Every split r of t (r a subset of t minus its highest unit, so r < t) adds one
 // group cost c1[t ^ r] to the whole row of r, giving the row of t one layer up: out[t][q] = min over r
@@ -273,9 +241,41 @@ void fillRows(int bits, const std::vector<double>& c1, Rows& rows,
 
 } // namespace
 
+std::vector<double> allSubsetCosts(const GroupCostModel& model) {
+    const int n = model.size();
+    const std::size_t count = std::size_t{1} << n;
+    std::vector<double> cost(count, 0.0), Q(count, 0.0);
+    // Parallel over blocks of the high bits: each block only reads sets with a smaller highest unit,
+    // which earlier blocks (sequential in the outer loop over j) have finished.
+    for (int j = 0; j < n; ++j) {
+        const std::size_t lo = std::size_t{1} << j;
+        const double* row = &model.cross[static_cast<std::size_t>(j) * static_cast<std::size_t>(n)];
+        const double fj = model.weight[static_cast<std::size_t>(j)],
+                     dj = model.self[static_cast<std::size_t>(j)];
+        const UnitMask conflictsJ = model.conflicts[static_cast<std::size_t>(j)];
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, lo, 4096), [&](const auto& range) {
+            for (std::size_t rest = range.begin(); rest != range.end(); ++rest) {
+                const std::size_t s = rest | lo;
+                double cross = 0, F = fj, D = dj;
+                for (std::size_t bits = rest; bits; bits &= bits - 1) {
+                    const int i = std::countr_zero(bits);
+                    cross += row[i];
+                    F += model.weight[static_cast<std::size_t>(i)];
+                    D += model.self[static_cast<std::size_t>(i)];
+                }
+                Q[s] = Q[rest] + 2 * cross + row[j];
+                const bool conflict = std::isinf(cost[rest]) || (rest & conflictsJ) != 0;
+                // Rounding may push D - Q/F slightly below 0.
+                cost[s] = conflict ? kUnreached : (F > 0 ? std::max(0.0, D - Q[s] / F) : 0.0);
+            }
+        });
+    }
+    return cost;
+}
+
 UnitCurve solveSubsetDp(const GroupCostModel& model, int m, const std::function<void(double)>& progress) {
     const int n = model.size();
-    const std::vector<double> cost = allGroupCosts(model);
+    const std::vector<double> cost = allSubsetCosts(model);
     if (progress) progress(0.05);
 
     const int bits = n - 1;

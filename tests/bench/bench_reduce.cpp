@@ -49,9 +49,9 @@ void BM_Reduce(benchmark::State& state) {
     state.SetLabel("n=" + std::to_string(n) + " m=" + std::to_string(m));
 }
 
-// The same cases by one solver each (the DP is the baseline of the branch and bound, measured in the
-// same run): the exact subset DP up to n = 20, branch and bound (certified optimum, 60 s at most) up
-// to n = 24. Random shapes: no structure for the bounds to use, the hard case.
+// The same cases by one solver each (the DP is the baseline of the others, measured in the same run):
+// the exact subset DP up to n = 20, the set-partitioning LP and branch and bound (certified optimum,
+// 60 s at most) up to n = 24. Random shapes: no structure for the bounds to use, the hard case.
 void BM_ReduceBy(benchmark::State& state, vl::ReductionMethod method) {
     const int n = static_cast<int>(state.range(0));
     const int m = static_cast<int>(state.range(1));
@@ -74,6 +74,14 @@ BENCHMARK_CAPTURE(BM_ReduceBy, dp, vl::ReductionMethod::SubsetDp)
     ->Unit(benchmark::kMillisecond)
     ->MeasureProcessCPUTime()
     ->Iterations(3)
+    ->Repetitions(3);
+BENCHMARK_CAPTURE(BM_ReduceBy, lp, vl::ReductionMethod::ColumnGeneration)
+    ->Args({16, 10, 1500})
+    ->Args({20, 10, 1500})
+    ->Args({24, 10, 1500})
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime()
+    ->Iterations(1)
     ->Repetitions(3);
 BENCHMARK_CAPTURE(BM_ReduceBy, branch_and_bound, vl::ReductionMethod::BranchAndBound)
     ->Args({16, 10, 1500})

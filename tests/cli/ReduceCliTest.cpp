@@ -176,13 +176,13 @@ TEST(CliReduce, ReducesTheBundledSample) {
 TEST(CliReduce, ReportAlwaysCarriesTheCertificate) {
     TempDir dir("visemelab_cli_certificate");
     writeSmallSet(dir.path);
-    for (const char* method : {"auto", "dp", "bnb"}) {
+    for (const char* method : {"auto", "dp", "bnb", "lp"}) {
         const auto out = dir.path / method;
         const auto r = test::runCli("reduce --visemes " + dir.path.string() + " -m 2 --method " + method +
                                     " --out " + out.string());
         ASSERT_EQ(r.exitCode, 0) << r.output;
         const auto report = readJson(out / "report.json");
-        EXPECT_EQ(report["method"], std::string(method) == "bnb" ? "bnb" : "dp");
+        EXPECT_EQ(report["method"], std::string(method) == "auto" ? "dp" : method);
         EXPECT_EQ(report["optimal"], true);
         EXPECT_EQ(report["gap"], 0.0);
         EXPECT_EQ(report["lower_bound"], report["cost"]);
@@ -224,7 +224,8 @@ TEST(CliReduce, ConstraintFlagsAreHonouredAndInfeasibleOnesExplained) {
                 "unknown viseme 'zz' (the visemes are: a, b, c)");
     expectError(test::runCli("reduce" + set + " -m 2 --apart a"), 2,
                 "--apart expects two viseme names as A,B");
-    expectError(test::runCli("reduce" + set + " -m 2 --method fast"), 2, "--method must be auto, dp or bnb");
+    expectError(test::runCli("reduce" + set + " -m 2 --method fast"), 2,
+                "--method must be auto, dp, bnb or lp");
     expectError(test::runCli("reduce" + set + " -m 2 --time-limit -1"), 2, "--time-limit must be >= 0");
 }
 

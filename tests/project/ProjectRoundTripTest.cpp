@@ -75,6 +75,7 @@ TEST(ProjectRoundTrip, EqualityNoticesEveryKindOfChange) {
                                          ? ReductionMethod::BranchAndBound
                                          : ReductionMethod::SubsetDp;
     }));
+    EXPECT_TRUE(changed([](Project& p) { p.reduction.result->method = ReductionMethod::ColumnGeneration; }));
     EXPECT_TRUE(changed([](Project& p) { p.reduction.constraints.pinned.push_back(p.visemes[0].name); }));
     EXPECT_TRUE(changed([](Project& p) { p.reduction.constraints.apart.emplace_back("x", "y"); }));
     EXPECT_TRUE(changed([](Project& p) { p.reduction.constraints.together.emplace_back("x", "y"); }));

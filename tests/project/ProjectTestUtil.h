@@ -281,7 +281,8 @@ inline Project randomProject(std::mt19937_64& rng, const std::filesystem::path& 
             }
             result.curve.push_back(std::move(grouping));
         }
-        if (rng() % 2) result.method = ReductionMethod::BranchAndBound;
+        if (const auto pick = rng() % 3; pick > 0)
+            result.method = pick == 1 ? ReductionMethod::BranchAndBound : ReductionMethod::ColumnGeneration;
         project.reduction.result = std::move(result);
     }
     if (n > 1 && rng() % 2 == 0) {
