@@ -1,13 +1,14 @@
 // Column generation for the set-partitioning LP of ColumnGeneration.h.
 //
 // Master: min sum_S c(S) x_S  s.t.  sum_{S ni a} x_S = 1 for every unit a,  sum_S x_S = p,  x >= 0,
-// over the columns generated so far, solved by CLP (COIN-OR) and re-solved warm after each round.
-// Pricing: the reduced cost c(S) - pi(S) - mu of every one of the 2^n sets, with pi(S) from two
-// tables (low and high bits of S), in parallel; the most negative sets become columns. It stops when
+// over the columns generated so far, solved by CLP (COIN-OR, loaded on first use: ClpLibrary.h) and re-solved
+// warm after each round. Pricing: the reduced cost c(S) - pi(S) - mu of every one of the 2^n sets, with pi(S)
+// from two tables (low and high bits of S), in parallel; the most negative sets become columns. It stops when
 // no set has a negative reduced cost: the master's optimum is then the LP's over all 2^n columns.
 #include "core/reduce/ColumnGeneration.h"
 
-#include <coin/ClpSimplex.hpp>
+#include "core/reduce/ClpLibrary.h"
+
 #include <tbb/blocked_range.h>
 #include <tbb/combinable.h>
 #include <tbb/parallel_for.h>
@@ -16,6 +17,7 @@
 #include <bit>
 #include <cmath>
 #include <limits>
+#include <memory>
 
 namespace vl {
 
@@ -107,13 +109,16 @@ UnitPartition solveByColumnGeneration(const GroupCostModel& model, std::span<con
     // The master works on costs scaled so that the start partition costs 1: CLP's tolerances are
     // absolute, and viseme costs range from 1e-6 to 1e3 with the units of the meshes.
     const double unit = result.cost > 0 ? result.cost : 1.0;
-    ClpSimplex lp;
-    lp.setLogLevel(0);
-    lp.setPrimalTolerance(1e-10);
-    lp.setDualTolerance(1e-10);
-    lp.resize(n + 1, 0);
-    for (int a = 0; a < n; ++a) lp.setRowBounds(a, 1.0, 1.0);
-    lp.setRowBounds(n, p, p);
+    const ClpLibrary& clp = clpLibrary();
+    const std::unique_ptr<Clp_Simplex, decltype(clp.deleteModel)> lp(clp.newModel(), clp.deleteModel);
+    clp.setLogLevel(lp.get(), 0);
+    clp.setPrimalTolerance(lp.get(), 1e-10);
+    clp.setDualTolerance(lp.get(), 1e-10);
+    clp.resize(lp.get(), n + 1, 0);
+    std::vector<double> rowBounds(static_cast<std::size_t>(n) + 1, 1.0);
+    rowBounds[static_cast<std::size_t>(n)] = p;
+    clp.chgRowLower(lp.get(), rowBounds.data());
+    clp.chgRowUpper(lp.get(), rowBounds.data());
     std::vector<UnitMask> columns;
     std::vector<int> rows;
     std::vector<double> ones;
@@ -122,8 +127,10 @@ UnitPartition solveByColumnGeneration(const GroupCostModel& model, std::span<con
         for (UnitMask bits = set; bits; bits &= bits - 1) rows.push_back(std::countr_zero(bits));
         rows.push_back(n);
         ones.assign(rows.size(), 1.0);
-        lp.addColumn(static_cast<int>(rows.size()), rows.data(), ones.data(), 0.0, COIN_DBL_MAX,
-                     groupCosts[static_cast<std::size_t>(set)] / unit);
+        const double lower = 0, upper = std::numeric_limits<double>::max(),
+                     objective = groupCosts[static_cast<std::size_t>(set)] / unit;
+        const CoinBigIndex starts[2] = {0, static_cast<CoinBigIndex>(rows.size())};
+        clp.addColumns(lp.get(), 1, &lower, &upper, &objective, starts, rows.data(), ones.data());
         columns.push_back(set);
     };
     // First columns: the start partition (a feasible master) and every unit alone.
@@ -136,9 +143,9 @@ UnitPartition solveByColumnGeneration(const GroupCostModel& model, std::span<con
     const double tolerance = model.tolerance();
     std::vector<double> pi(static_cast<std::size_t>(n));
     for (int round = 0; round < kMaxRounds && !limits.expired(0); ++round) {
-        lp.primal(round == 0 ? 0 : 1);
-        if (!lp.isProvenOptimal()) break; // numerical trouble: keep the bound reached so far
-        const double* duals = lp.dualRowSolution();
+        clp.primal(lp.get(), 0);                   // from the last round's basis
+        if (!clp.isProvenOptimal(lp.get())) break; // numerical trouble: keep the bound reached so far
+        const double* duals = clp.dualRowSolution(lp.get());
         for (int a = 0; a < n; ++a) pi[static_cast<std::size_t>(a)] = duals[a] * unit;
         const double mu = duals[n] * unit;
         const Pricing priced = price(groupCosts, n, pi, mu, -tolerance, keep);
@@ -148,7 +155,7 @@ UnitPartition solveByColumnGeneration(const GroupCostModel& model, std::span<con
         result.lowerBound = std::max(result.lowerBound, bound);
 
         // An integral master optimum is a partition: keep it when it beats the best so far.
-        const double* x = lp.primalColumnSolution();
+        const double* x = clp.primalColumnSolution(lp.get());
         std::vector<UnitMask> chosen;
         bool integral = true;
         for (std::size_t j = 0; j < columns.size() && integral; ++j) {
