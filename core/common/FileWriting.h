@@ -3,6 +3,7 @@
 // symlinks followed to the file they name, temporaries beside the destination that keep its mode,
 // fsync of the folder after a rename, and the sweep of temporaries left by a killed process.
 #include <filesystem>
+#include <span>
 #include <string_view>
 
 namespace vl::fileio {
@@ -23,6 +24,9 @@ TemporaryFile createTemporaryFor(const std::filesystem::path& target, std::strin
 
 // Writes every byte (retrying short writes); false on an error, with errno set.
 bool writeAll(int fd, std::string_view data);
+// The same for the concatenation of `parts`, in one writev where the kernel takes it all: the page
+// cache then sees one long write (large folios) instead of a few short ones.
+bool writeAll(int fd, std::span<const std::string_view> parts);
 
 // fsync of a folder, so that the renames into it survive a power cut. Errors are ignored: some
 // file systems cannot sync a folder, and the data itself is already durable.

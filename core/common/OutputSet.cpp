@@ -77,8 +77,7 @@ void OutputSet::stage(const std::string& fileName, std::initializer_list<std::st
     const fileio::TemporaryFile temp = fileio::createTemporaryFor(staged.target, destination.string());
     staged.temporary = temp.path;
     staged_.push_back(staged); // from here the destructor removes the temporary on failure
-    const bool ok = std::all_of(parts.begin(), parts.end(),
-                                [&](std::string_view part) { return fileio::writeAll(temp.fd, part); });
+    const bool ok = fileio::writeAll(temp.fd, std::span<const std::string_view>(parts.begin(), parts.size()));
     const std::string problem = ok ? std::string() : fileio::lastSystemError();
     // Start writing the data out now, without waiting: the device works on this file while the next
     // ones are formatted, and the barrier's fsync then mostly waits. Advisory, so errors are ignored

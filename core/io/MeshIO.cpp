@@ -136,17 +136,36 @@ PositionText::PositionText(std::span<const Vec3> positions, PositionPrecision pr
     assign(positions, precision, reference);
 }
 
+namespace {
+
+// Copies of a few bytes (a coordinate, a vertex line) as one fixed-size move instead of a call to
+// memmove per piece: both buffers keep kCopySlack bytes past any piece's end, so reading and writing
+// those extra bytes stays inside them (what is written past the piece is overwritten next, or cut).
+constexpr std::size_t kCopySlack = 32;
+
+char* copyPiece(char* to, const char* from, std::size_t length) {
+    if (length <= kCopySlack)
+        std::memcpy(to, from, kCopySlack);
+    else
+        std::memcpy(to, from, length);
+    return to + length;
+}
+
+} // namespace
+
 void PositionText::assign(std::span<const Vec3> positions, PositionPrecision precision,
                           const PositionText* reference) {
     meshio::requireWritablePositions(positions, precision);
-    if (reference && (reference->precision_ != precision || reference->vertexCount() != positions.size()))
+    if (reference && (reference == this || reference->precision_ != precision ||
+                      reference->vertexCount() != positions.size()))
         reference = nullptr;
     precision_ = precision;
     // Written through a pointer into text_, which only grows (a buffer reused for every key is not
-    // cleared again): at most 24 characters (the longest shortest double) and a separator each.
+    // cleared again): at most 24 characters (the longest shortest double) and a separator each, and
+    // the slack of copyPiece.
     constexpr std::size_t kMaxCoordinate = 25;
     const std::size_t count = 3 * positions.size();
-    if (text_.size() < count * kMaxCoordinate) text_.resize(count * kMaxCoordinate);
+    if (text_.size() < count * kMaxCoordinate + kCopySlack) text_.resize(count * kMaxCoordinate + kCopySlack);
     ends_.resize(count);
     bits_.resize(count);
     char* const begin = text_.data();
@@ -160,9 +179,8 @@ void PositionText::assign(std::span<const Vec3> positions, PositionPrecision pre
                                            : std::bit_cast<std::uint64_t>(x);
             if (k > 0) *at++ = ' ';
             if (reference && reference->bits_[c] == bits) {
-                const std::size_t from = reference->start(c), length = reference->ends_[c] - from;
-                std::memcpy(at, reference->text_.data() + from, length);
-                at += length;
+                const std::size_t from = reference->start(c);
+                at = copyPiece(at, reference->text_.data() + from, reference->ends_[c] - from);
             } else {
                 at = precision == PositionPrecision::Float32 ? std::to_chars(at, at + 24, f).ptr
                                                              : std::to_chars(at, at + 24, x).ptr;
@@ -177,18 +195,31 @@ void PositionText::appendLines(std::string& out, std::string_view prefix, std::s
     const std::size_t vertices = vertexCount();
     if (vertices == 0) return;
     const std::size_t from = out.size();
-    out.resize(from + ends_.back() + vertices * (prefix.size() + separator.size()) - separator.size() +
-               last.size());
+    const std::size_t size =
+        ends_.back() + vertices * (prefix.size() + separator.size()) - separator.size() + last.size();
+    out.resize(from + size + kCopySlack);
     char* at = out.data() + from;
-    const auto put = [&at](std::string_view text) {
-        std::memcpy(at, text.data(), text.size());
-        at += text.size();
-    };
-    for (std::size_t i = 0; i < vertices; ++i) {
-        put(prefix);
-        put(vertex(i));
-        put(i + 1 < vertices ? separator : last);
+    // Between two vertices: the separator, then the next line's prefix, as one padded piece.
+    char joint[kCopySlack] = {};
+    const bool smallJoint = separator.size() + prefix.size() <= kCopySlack;
+    if (smallJoint) {
+        std::memcpy(joint, separator.data(), separator.size());
+        std::memcpy(joint + separator.size(), prefix.data(), prefix.size());
     }
+    at = std::copy(prefix.begin(), prefix.end(), at);
+    for (std::size_t i = 0; i < vertices; ++i) {
+        const std::size_t begin = start(3 * i);
+        at = copyPiece(at, text_.data() + begin, ends_[3 * i + 2] - begin);
+        if (i + 1 == vertices) break;
+        if (smallJoint) {
+            at = copyPiece(at, joint, separator.size() + prefix.size());
+        } else {
+            at = std::copy(separator.begin(), separator.end(), at);
+            at = std::copy(prefix.begin(), prefix.end(), at);
+        }
+    }
+    at = std::copy(last.begin(), last.end(), at);
+    out.resize(from + size);
 }
 
 std::string_view PositionText::vertex(std::size_t i) const {
@@ -213,12 +244,15 @@ std::vector<Vec3> PositionText::values() const {
 
 MeshTextFormatter::MeshTextFormatter(const std::filesystem::path& path, const MeshData& topology,
                                      PositionPrecision precision)
-    : format_(meshFormatFromPath(path)), precision_(precision), topology_(topology) {
-    meshio::requireWritable(topology_);     // (u,v) and triangles; format() checks the positions it gets
-    if (format_ == MeshFormat::Ply) return; // binary, and as fast as copying
+    : format_(meshFormatFromPath(path)), precision_(precision), vertexCount_(topology.positions.size()) {
+    meshio::requireWritable(topology); // (u,v) and triangles; format() checks the positions it gets
+    if (format_ == MeshFormat::Ply) {  // binary, and as fast as copying: keeps the topology
+        plyTopology_ = {{}, topology.uvs, topology.triangles};
+        return;
+    }
     meshio::TextAroundPositions parts = format_ == MeshFormat::Obj
-                                            ? meshio::objTextAroundPositions(topology_)
-                                            : meshio::vrmlTextAroundPositions(topology_);
+                                            ? meshio::objTextAroundPositions(topology)
+                                            : meshio::vrmlTextAroundPositions(topology);
     head_ = std::move(parts.head);
     tail_ = std::move(parts.tail);
 }
@@ -230,17 +264,16 @@ std::string MeshTextFormatter::format(std::span<const Vec3> positions) const {
 }
 
 void MeshTextFormatter::format(std::span<const Vec3> positions, std::string& out) const {
-    if (positions.size() != topology_.positions.size())
+    if (positions.size() != vertexCount_)
         throw std::invalid_argument("MeshTextFormatter: " + std::to_string(positions.size()) +
-                                    " positions for a topology of " +
-                                    std::to_string(topology_.positions.size()));
+                                    " positions for a topology of " + std::to_string(vertexCount_));
     format(PositionText(positions, precision_), out);
 }
 
 void MeshTextFormatter::format(const PositionText& positions, std::string& out) const {
     requireFormatOf(positions);
     if (format_ == MeshFormat::Ply) { // binary: the values the text stands for
-        out = formatPly({positions.values(), topology_.uvs, topology_.triangles});
+        out = formatPly({positions.values(), plyTopology_.uvs, plyTopology_.triangles});
         return;
     }
     out.clear();
@@ -269,10 +302,10 @@ void MeshTextFormatter::appendPositions(std::string& out, const PositionText& po
 }
 
 void MeshTextFormatter::requireFormatOf(const PositionText& positions) const {
-    if (positions.vertexCount() != topology_.positions.size() || positions.precision() != precision_)
+    if (positions.vertexCount() != vertexCount_ || positions.precision() != precision_)
         throw std::invalid_argument("MeshTextFormatter: " + std::to_string(positions.vertexCount()) +
                                     " positions of another precision or for a topology of " +
-                                    std::to_string(topology_.positions.size()));
+                                    std::to_string(vertexCount_));
 }
 
 void writeMesh(const std::filesystem::path& path, const MeshData& mesh) {

@@ -159,7 +159,8 @@ class MeshTextFormatter {
     void appendPositions(std::string& out, const PositionText& positions) const;
     MeshFormat format_;
     PositionPrecision precision_;
-    MeshData topology_;
+    std::size_t vertexCount_;
+    MeshData plyTopology_;    // PLY only: its (u,v) and triangles (the text formats keep only text)
     std::string head_, tail_; // OBJ and VRML: the file around the positions
 };
 

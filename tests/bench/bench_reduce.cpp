@@ -2,10 +2,12 @@
 // 2 cores; the paper took 318 s in Java), plus the scaling in n. The CPU column counts every thread.
 #include "core/deform/BundledFace.h"
 #include "core/deform/FaceDomain.h"
+#include "core/export/ReductionOutputs.h"
 #include "core/export/VisemeFile.h"
 #include "core/face/HeadParts.h"
 #include "core/reduce/Frequencies.h"
 #include "core/reduce/GramMatrix.h"
+#include "core/reduce/ReduceRun.h"
 #include "core/reduce/Reduction.h"
 #include "core/reduce/VisemeSet.h"
 #include "core/reduce/Weights.h"
@@ -146,32 +148,80 @@ BENCHMARK_CAPTURE(BM_ReduceArpabet, branch_and_bound, vl::ReductionMethod::Branc
     ->Iterations(3)
     ->Repetitions(3);
 
-// The floor of `visemelab reduce` on the bundled sample (scripts/bench.sh runs the process beside it):
-// read the 16 OBJ files, the phoneme table and the map, compute the area weights and build the
-// weighted Gram matrix: what any reduction of these inputs must do before solving. CPU time counts
-// every thread (the Gram matrix is built in parallel), as the process figure does.
-void BM_SampleReduceFloor(benchmark::State& state) {
+// The inputs of `visemelab reduce` on the bundled sample: the 16 OBJ files, the phoneme table and
+// the map, read as the CLI reads them.
+struct SampleInputs {
+    vl::VisemeSet set;
+    vl::FrequencySource source;
+};
+SampleInputs loadSample() {
     const std::filesystem::path sample = std::filesystem::path(VISEMELAB_ASSETS_DIR) / "sample";
     const std::filesystem::path phonemes = std::filesystem::path(VISEMELAB_ASSETS_DIR) / "phonemes";
+    SampleInputs in{
+        vl::loadVisemeSet(sample / "neutral.obj", vl::listVisemeFolder(sample, sample / "neutral.obj")),
+        vl::loadFrequencyFile(phonemes / "en-us_frequencies.csv")};
+    in.source.phonemes = std::move(in.source.visemeFrequencies);
+    in.source.visemeFrequencies = {};
+    in.source.map = vl::loadPhonemeMapFile(phonemes / "map_sample_face.csv");
+    return in;
+}
+vl::ReduceSettings sampleSettings() {
+    vl::ReduceSettings settings;
+    settings.weightMode = vl::WeightMode::Area;
+    settings.target = 10;
+    return settings;
+}
+
+// The floor of `visemelab reduce` on the bundled sample (scripts/bench.sh runs the process beside it):
+// read the inputs, compute the area weights and build the weighted Gram matrix: what any reduction
+// of these inputs must do before solving. CPU time counts every thread (the Gram matrix is built in
+// parallel), as the process figure does.
+void BM_SampleReduceFloor(benchmark::State& state) {
     for (auto _ : state) {
-        const vl::VisemeSet set =
-            vl::loadVisemeSet(sample / "neutral.obj", vl::listVisemeFolder(sample, sample / "neutral.obj"));
-        vl::FrequencySource source = vl::loadFrequencyFile(phonemes / "en-us_frequencies.csv");
-        source.phonemes = std::move(source.visemeFrequencies);
-        source.visemeFrequencies = {};
-        source.map = vl::loadPhonemeMapFile(phonemes / "map_sample_face.csv");
+        const SampleInputs in = loadSample();
         std::vector<std::string> names;
         std::vector<std::span<const vl::Vec3>> rows;
-        for (const auto& v : set.visemes) {
+        for (const auto& v : in.set.visemes) {
             names.push_back(v.name);
             rows.emplace_back(v.positions);
         }
-        const auto f = vl::visemeFrequencies(source, names);
-        const auto w = vl::computeWeights(vl::WeightMode::Area, set.neutral, {}, "weights");
+        const auto f = vl::visemeFrequencies(in.source, names);
+        const auto w = vl::computeWeights(vl::WeightMode::Area, in.set.neutral, {}, "weights");
         auto gram = vl::centredGram(vl::ShapeView(std::span<const std::span<const vl::Vec3>>(rows)), f, w);
         benchmark::DoNotOptimize(gram);
     }
 }
+
+// The reduction step of the same CLI run (inputs loaded outside the loop): its share of the process.
+void BM_SampleReduction(benchmark::State& state) {
+    const SampleInputs in = loadSample();
+    for (auto _ : state) {
+        auto outcome = vl::runReduction(in.set, in.source, sampleSettings());
+        benchmark::DoNotOptimize(outcome);
+    }
+}
+BENCHMARK(BM_SampleReduction)->Unit(benchmark::kMillisecond)->UseRealTime()->MeasureProcessCPUTime();
+
+// The writing step of the same CLI run: 20 key meshes, mapping.json and the manifest through one
+// OutputSet (temporaries, one durability barrier, renames over the last iteration's files).
+void BM_SampleWriteOutputs(benchmark::State& state) {
+    const SampleInputs in = loadSample();
+    const vl::ReduceOutcome outcome = vl::runReduction(in.set, in.source, sampleSettings());
+    const std::filesystem::path out =
+        std::filesystem::temp_directory_path() / "visemelab_bench_write_outputs";
+    for (auto _ : state) {
+        vl::OutputSet files(out, "reduce");
+        benchmark::DoNotOptimize(vl::writeReductionOutputs(files, outcome));
+        files.commit();
+    }
+    std::filesystem::remove_all(out);
+}
+BENCHMARK(BM_SampleWriteOutputs)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MeasureProcessCPUTime()
+    ->Iterations(20); // each replaces 23 files: a few hundred, like the CLI runs around it
+
 BENCHMARK(BM_SampleReduceFloor)->Unit(benchmark::kMillisecond)->UseRealTime()->MeasureProcessCPUTime();
 
 } // namespace

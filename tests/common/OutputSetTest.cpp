@@ -37,6 +37,28 @@ TEST(OutputSet, NothingChangesUntilCommit) {
               (std::vector<std::string>{".visemelab-export-obj.manifest", "a.obj", "b.obj"}));
 }
 
+TEST(OutputSet, ManyPartsOfAnySizeAreWrittenInOrder) {
+    // More parts than one writev takes, empty ones and ones larger than a pipe or a page.
+    TempFolder dir;
+    std::vector<std::string> texts;
+    for (int i = 0; i < 40; ++i)
+        texts.push_back(i % 7 == 3 ? std::string()
+                                   : std::string(static_cast<std::size_t>(1 + i * i * 97), 'a' + i % 26));
+    texts.push_back(std::string(3u << 20, 'z'));
+    std::string expected;
+    for (const auto& t : texts) expected += t;
+    OutputSet set(dir.path, "parts");
+    const std::initializer_list<std::string_view> parts{
+        texts[0],  texts[1],  texts[2],  texts[3],  texts[4],  texts[5],  texts[6],  texts[7],  texts[8],
+        texts[9],  texts[10], texts[11], texts[12], texts[13], texts[14], texts[15], texts[16], texts[17],
+        texts[18], texts[19], texts[20], texts[21], texts[22], texts[23], texts[24], texts[25], texts[26],
+        texts[27], texts[28], texts[29], texts[30], texts[31], texts[32], texts[33], texts[34], texts[35],
+        texts[36], texts[37], texts[38], texts[39], texts[40]};
+    set.add("many.txt", parts);
+    set.commit();
+    EXPECT_EQ(readText(dir / "many.txt"), expected);
+}
+
 TEST(OutputSet, AnAbandonedSetLeavesTheOldOutputsAndNoTemporaries) {
     TempFolder dir;
     writeSet(dir.path, "reduce", {{"a.obj", "run 1"}, {"b.obj", "run 1"}});

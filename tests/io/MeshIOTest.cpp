@@ -3,6 +3,7 @@
 #include "core/io/MeshIO.h"
 #include "MeshIOTestUtil.h"
 
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -278,6 +279,30 @@ TEST(PositionText, ReusingTheReferenceGivesTheTextOfFormattingEveryCoordinate) {
                                       PositionPrecision::Float32);
     std::string text;
     EXPECT_THROW(formatter.format(exact, text), std::invalid_argument);
+}
+
+// appendLines against the lines built one by one: short and long separators and prefixes (the
+// padded copies have a limit), text already in the output, and a PositionText reused for a smaller
+// mesh after a larger one.
+TEST(PositionText, AppendLinesJoinsEveryVertexWithItsPrefixAndSeparator) {
+    PositionText text;
+    for (const std::size_t count : {std::size_t{300}, std::size_t{1}, std::size_t{57}}) {
+        const std::vector<Vec3> positions =
+            withinFloat32Range(test::randomMesh(7 + count, count, 0, false).positions);
+        for (const PositionPrecision precision : {PositionPrecision::Exact, PositionPrecision::Float32}) {
+            text.assign(positions, precision);
+            const std::string longText(40, '#');
+            for (const auto& [prefix, separator, last] : std::vector<std::array<std::string, 3>>{
+                     {"v ", "\n", "\n"}, {"", ",\n", "\n"}, {longText, "\n", ""}, {"<", longText, ">"}}) {
+                std::string expected = "head:";
+                for (std::size_t i = 0; i < count; ++i)
+                    expected += prefix + std::string(text.vertex(i)) + (i + 1 < count ? separator : last);
+                std::string out = "head:";
+                text.appendLines(out, prefix, separator, last);
+                ASSERT_EQ(out, expected) << count << " vertices, prefix '" << prefix << "'";
+            }
+        }
+    }
 }
 
 TEST(MeshTextFormatter, RejectsNonFinitePositionsAndOtherVertexCounts) {
