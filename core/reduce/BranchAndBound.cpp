@@ -209,30 +209,36 @@ class SuffixSearch {
     std::atomic<bool> stopped_{false};
 };
 
-// The order units are placed in. Units of weight 0 go last (they cost nothing, see
-// completeFeasibly). The others are interleaved across the groups of the starting partition, one
-// member of each group in turn, heaviest groups first: every suffix then holds a share of every
-// group, so its optimum is a large share of the whole optimum and the bounds are tight.
-std::vector<int> placementOrder(const GroupCostModel& model, std::span<const UnitMask> start) {
+// The order units are placed in. Units of weight 0 go last (they cost nothing, see completeFeasibly).
+// The others farthest first: the heaviest unit, then again and again the unit whose cheapest pair with
+// the units already ordered costs most (a pair {a, b} costs F_a F_b / (F_a + F_b) |x_a - x_b|^2). Every
+// suffix is then a spread-out sample of the set, units no few groups hold cheaply, so its optimum is a
+// large share of the whole optimum and the bounds prune early; and the units placed first are those
+// whose groups decide the most. On the 40 ARPAbet meshes (area weights) this proves p = 9 in 1.1 s
+// where interleaving the groups of the heuristics' partition (the order before) took 53 s.
+std::vector<int> placementOrder(const GroupCostModel& model) {
     const int n = model.size();
-    std::vector<std::vector<int>> queues;
-    UnitMask covered = 0;
-    for (const UnitMask g : start) {
-        queues.emplace_back();
-        for (UnitMask bits = g; bits; bits &= bits - 1) queues.back().push_back(std::countr_zero(bits));
-        covered |= g;
-    }
-    for (int a = 0; a < n; ++a)
-        if (!(covered >> a & 1)) queues.push_back({a});
-    for (auto& q : queues) // heaviest member first within a group
-        std::stable_sort(q.begin(), q.end(), [&](int a, int b) {
-            return model.weight[static_cast<std::size_t>(a)] > model.weight[static_cast<std::size_t>(b)];
-        });
     std::vector<int> order, zero;
-    for (std::size_t round = 0; order.size() + zero.size() < static_cast<std::size_t>(n); ++round)
-        for (const auto& q : queues)
-            if (round < q.size())
-                (model.weight[static_cast<std::size_t>(q[round])] > 0 ? order : zero).push_back(q[round]);
+    for (int a = 0; a < n; ++a) (model.weight[static_cast<std::size_t>(a)] > 0 ? order : zero).push_back(a);
+    if (!order.empty()) {
+        std::swap(order.front(), *std::max_element(order.begin(), order.end(), [&](int a, int b) {
+                      return model.weight[static_cast<std::size_t>(a)] <
+                             model.weight[static_cast<std::size_t>(b)];
+                  }));
+        // nearest[a]: the cost of a's cheapest pair with an ordered unit; order[0..k) is ordered.
+        std::vector<double> nearest(static_cast<std::size_t>(n), std::numeric_limits<double>::infinity());
+        for (std::size_t k = 1; k < order.size(); ++k) {
+            const int last = order[k - 1];
+            std::size_t farthest = k;
+            for (std::size_t i = k; i < order.size(); ++i) {
+                const int a = order[i];
+                double& d = nearest[static_cast<std::size_t>(a)];
+                d = std::min(d, model.cost(UnitMask{1} << a | UnitMask{1} << last));
+                if (d > nearest[static_cast<std::size_t>(order[farthest])]) farthest = i;
+            }
+            std::swap(order[k], order[farthest]);
+        }
+    }
     order.insert(order.end(), zero.begin(), zero.end());
     return order;
 }
@@ -265,15 +271,15 @@ double blockBound(const GroupCostModel& model, std::span<const int> units, int p
 
 } // namespace
 
-double blockLowerBound(const GroupCostModel& model, int p, std::span<const UnitMask> start) {
-    return blockBound(model, placementOrder(model, start), p);
+double blockLowerBound(const GroupCostModel& model, int p) {
+    return blockBound(model, placementOrder(model), p);
 }
 
 UnitPartition branchAndBound(const GroupCostModel& model, int p, std::span<const UnitMask> start,
                              const SearchLimits& limits, std::atomic<double>* done,
                              std::atomic<double>* provenBound) {
     const int n = model.size();
-    const std::vector<int> order = placementOrder(model, start);
+    const std::vector<int> order = placementOrder(model);
     int zeroFrom = n;
     while (zeroFrom > 0 &&
            !(model.weight[static_cast<std::size_t>(order[static_cast<std::size_t>(zeroFrom - 1)])] > 0))

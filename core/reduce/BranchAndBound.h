@@ -52,6 +52,6 @@ UnitPartition branchAndBound(const GroupCostModel& model, int p, std::span<const
 
 // The lower bound branchAndBound starts from, known before any search: the units in its placement
 // order cut into small blocks, each solved exactly into p groups with the conflicts dropped.
-double blockLowerBound(const GroupCostModel& model, int p, std::span<const UnitMask> start);
+double blockLowerBound(const GroupCostModel& model, int p);
 
 } // namespace vl

@@ -131,7 +131,7 @@ UnitCurve solveByBranchAndBound(const GroupCostModel& model, const ConstraintUni
         // Known before the searches start (the watched one may wait for a thread for seconds).
         const auto& start = starts[static_cast<std::size_t>(watch->groups - 1)];
         watch->bestFound = partitionCost(model, start);
-        watch->lowerBound = std::min(blockLowerBound(model, watch->groups, start), watch->bestFound.load());
+        watch->lowerBound = std::min(blockLowerBound(model, watch->groups), watch->bestFound.load());
     }
     auto solve = [&] {
         tbb::parallel_for(1, m + 1, [&](int p) {
