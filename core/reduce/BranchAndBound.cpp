@@ -275,9 +275,82 @@ double blockLowerBound(const GroupCostModel& model, int p) {
     return blockBound(model, placementOrder(model), p);
 }
 
+namespace {
+
+// Units in conflict with every other unit (pinned visemes) are groups of their own in any feasible
+// partition, and a group of one costs nothing.
+UnitMask isolatedUnits(const GroupCostModel& model) {
+    const int n = model.size();
+    const UnitMask all = n == kMaxSearchUnits ? ~UnitMask{0} : (UnitMask{1} << n) - 1;
+    UnitMask isolated = 0;
+    for (int a = 0; a < n; ++a)
+        if ((model.conflicts[static_cast<std::size_t>(a)] | UnitMask{1} << a) == all)
+            isolated |= UnitMask{1} << a;
+    return isolated;
+}
+
+UnitPartition searchPartition(const GroupCostModel& model, int p, std::span<const UnitMask> start,
+                              const SearchLimits& limits, std::atomic<double>* done,
+                              std::atomic<double>* provenBound);
+
+} // namespace
+
 UnitPartition branchAndBound(const GroupCostModel& model, int p, std::span<const UnitMask> start,
                              const SearchLimits& limits, std::atomic<double>* done,
                              std::atomic<double>* provenBound) {
+    // Isolated units leave the search: the others are placed into p - k groups, and the k groups of one
+    // are added back. Exact (they are singletons in every feasible partition, at cost 0), and the
+    // search no longer spends a group's worth of branching and weaker suffix bounds on them.
+    const int n = model.size();
+    const UnitMask isolated = isolatedUnits(model);
+    const int k = std::popcount(isolated);
+    if (k == 0 || k == n || k > p || n - k < p - k || p - k < 1)
+        return searchPartition(model, p, start, limits, done, provenBound);
+    std::vector<int> rest; // original unit of each unit of the smaller problem
+    for (int a = 0; a < n; ++a)
+        if (!(isolated >> a & 1)) rest.push_back(a);
+    const auto restMask = [&](UnitMask original) {
+        UnitMask mask = 0;
+        for (std::size_t i = 0; i < rest.size(); ++i)
+            if (original >> rest[i] & 1) mask |= UnitMask{1} << i;
+        return mask;
+    };
+    GroupCostModel sub;
+    sub.scale = model.scale; // the same tolerances as the whole problem
+    for (const int a : rest) {
+        sub.weight.push_back(model.weight[static_cast<std::size_t>(a)]);
+        sub.self.push_back(model.self[static_cast<std::size_t>(a)]);
+        sub.conflicts.push_back(restMask(model.conflicts[static_cast<std::size_t>(a)]));
+        for (const int b : rest) sub.cross.push_back(model.h(a, b));
+    }
+    std::vector<UnitMask> subStart;
+    for (const UnitMask g : start)
+        if (!(g & isolated)) subStart.push_back(restMask(g));
+    if (static_cast<int>(subStart.size()) != p - k) subStart.clear(); // not of that shape: no start
+    UnitPartition result = searchPartition(sub, p - k, subStart, limits, done, provenBound);
+    if (result.groups.empty()) return result;
+    std::vector<UnitMask> groups;
+    for (const UnitMask g : result.groups) {
+        UnitMask original = 0;
+        for (UnitMask bits = g; bits; bits &= bits - 1)
+            original |= UnitMask{1} << rest[static_cast<std::size_t>(std::countr_zero(bits))];
+        groups.push_back(original);
+    }
+    for (UnitMask bits = isolated; bits; bits &= bits - 1) groups.push_back(bits & -bits);
+    std::sort(groups.begin(), groups.end(),
+              [](UnitMask a, UnitMask b) { return std::countr_zero(a) < std::countr_zero(b); });
+    result.groups = std::move(groups);
+    result.cost = partitionCost(model, result.groups);
+    if (result.optimal) result.lowerBound = result.cost;
+    result.lowerBound = std::min(result.lowerBound, result.cost);
+    return result;
+}
+
+namespace {
+
+UnitPartition searchPartition(const GroupCostModel& model, int p, std::span<const UnitMask> start,
+                              const SearchLimits& limits, std::atomic<double>* done,
+                              std::atomic<double>* provenBound) {
     const int n = model.size();
     const std::vector<int> order = placementOrder(model);
     int zeroFrom = n;
@@ -382,5 +455,7 @@ UnitPartition branchAndBound(const GroupCostModel& model, int p, std::span<const
     }
     return result;
 }
+
+} // namespace
 
 } // namespace vl

@@ -9,6 +9,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <numeric>
+#include <random>
+
 using namespace vl;
 using vl::test::errorOf;
 
@@ -27,6 +31,27 @@ ReductionConstraints randomConstraints(std::mt19937& rng, int n) {
     for (int k = count(rng); k > 0; --k) c.apart.push_back(pair());
     for (int k = count(rng); k > 0; --k) c.together.push_back(pair());
     return c;
+}
+
+// Every p of `result` proved and equal to brute force's optimum (reference[p - 1], none when no grouping
+// into p groups exists), with a valid grouping and certificate; returns how many p had an optimum.
+int expectBruteForceOptima(const ReductionResult& result, const std::vector<std::optional<double>>& reference,
+                           int n, const ReductionConstraints& c) {
+    int checked = 0;
+    for (int m = 1; m <= static_cast<int>(result.curve.size()); ++m) {
+        const Grouping& g = result.curve[static_cast<std::size_t>(m - 1)];
+        const auto& expected = reference[static_cast<std::size_t>(m - 1)];
+        EXPECT_TRUE(g.optimal) << "m=" << m;
+        if (!expected) {
+            EXPECT_FALSE(g.feasible()) << "m=" << m;
+            continue;
+        }
+        ++checked;
+        EXPECT_TRUE(test::isValidGrouping(g.groups, n, m, c)) << "m=" << m;
+        EXPECT_NEAR(g.cost, *expected, 1e-9 * std::max(1.0, *expected)) << "m=" << m;
+        EXPECT_LE(g.lowerBound, g.cost) << "m=" << m;
+    }
+    return checked;
 }
 
 } // namespace
@@ -65,18 +90,7 @@ TEST(ReductionConstraints, BothSolversMatchBruteForceOnRandomConstraintSets) {
                 const auto result =
                     reduceVisemes({inst.shapes, inst.frequencies, inst.weights, largest, c}, options);
                 ASSERT_EQ(result.curve.size(), static_cast<std::size_t>(largest));
-                for (int m = 1; m <= largest; ++m) {
-                    const Grouping& g = result.curve[static_cast<std::size_t>(m - 1)];
-                    const auto& expected = reference[static_cast<std::size_t>(m - 1)];
-                    EXPECT_TRUE(g.optimal) << "m=" << m;
-                    if (!expected) {
-                        EXPECT_FALSE(g.feasible()) << "m=" << m;
-                        continue;
-                    }
-                    ++checked;
-                    EXPECT_TRUE(test::isValidGrouping(g.groups, n, m, c)) << "m=" << m;
-                    EXPECT_NEAR(g.cost, *expected, 1e-9 * std::max(1.0, *expected)) << "m=" << m;
-                }
+                checked += expectBruteForceOptima(result, reference, n, c);
             }
         }
     }
@@ -84,6 +98,42 @@ TEST(ReductionConstraints, BothSolversMatchBruteForceOnRandomConstraintSets) {
     EXPECT_GT(checked, 100);
     EXPECT_GT(infeasibleTargets, 20);
     EXPECT_GT(contradictions, 0);
+}
+
+// Branch and bound searches only the visemes that are not alone by force (pinned, or apart from
+// every other one) and adds those back as groups of one: against brute force with two or three pins,
+// and with a viseme kept apart from all others.
+TEST(ReductionConstraints, SeveralPinnedVisemesMatchBruteForce) {
+    std::mt19937 rng(2718);
+    int checked = 0;
+    for (int n = 4; n <= 10; ++n) {
+        for (int trial = 0; trial < 3; ++trial) {
+            const auto inst = test::randomInstance(rng, n, 8, trial == 2);
+            ReductionConstraints c;
+            std::vector<int> visemes(static_cast<std::size_t>(n));
+            std::iota(visemes.begin(), visemes.end(), 0);
+            std::shuffle(visemes.begin(), visemes.end(), rng);
+            c.pinned.assign(visemes.begin(), visemes.begin() + (trial == 0 ? 3 : 2));
+            if (trial == 1) // one more viseme alone by 'apart' pairs with every other one
+                for (int other = 0; other < n; ++other)
+                    if (other != visemes[2]) c.apart.emplace_back(visemes[2], other);
+            if (trial == 2) c.apart.emplace_back(visemes[n - 1], visemes[n - 2]);
+            SCOPED_TRACE("n=" + std::to_string(n) + " trial=" + std::to_string(trial));
+            int largest = 0;
+            std::vector<std::optional<double>> reference;
+            for (int m = 1; m <= n; ++m) {
+                reference.push_back(test::bruteForceBest(inst, m, c));
+                if (reference.back()) largest = m;
+            }
+            ASSERT_GT(largest, 0);
+            ReductionOptions options;
+            options.method = ReductionMethod::BranchAndBound;
+            const auto result =
+                reduceVisemes({inst.shapes, inst.frequencies, inst.weights, largest, c}, options);
+            checked += expectBruteForceOptima(result, reference, n, c);
+        }
+    }
+    EXPECT_GT(checked, 40);
 }
 
 TEST(ReductionConstraints, PinnedVisemeIsAlwaysAloneAndTogetherIsKept) {
