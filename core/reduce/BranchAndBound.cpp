@@ -243,6 +243,23 @@ std::vector<int> placementOrder(const GroupCostModel& model) {
     return order;
 }
 
+// The model of `units` alone: unit i of the result is units[i], with its conflicts among them.
+GroupCostModel restrictedModel(const GroupCostModel& model, std::span<const int> units) {
+    GroupCostModel sub;
+    sub.scale = model.scale;
+    for (const int a : units) {
+        sub.weight.push_back(model.weight[static_cast<std::size_t>(a)]);
+        sub.self.push_back(model.self[static_cast<std::size_t>(a)]);
+        UnitMask conflicts = 0;
+        for (std::size_t i = 0; i < units.size(); ++i) {
+            sub.cross.push_back(model.h(a, units[i]));
+            if (model.conflicts[static_cast<std::size_t>(a)] >> units[i] & 1) conflicts |= UnitMask{1} << i;
+        }
+        sub.conflicts.push_back(conflicts);
+    }
+    return sub;
+}
+
 // A lower bound for placing `units` in at most p groups: they are cut into blocks of at most
 // kBlockUnits consecutive units, each block solved exactly by the subset DP into min(p, |block|) groups
 // with the conflicts dropped (a relaxation), and the optima summed. Valid because the cost of a group
@@ -255,12 +272,7 @@ double blockBound(const GroupCostModel& model, std::span<const int> units, int p
         const auto block = units.subspan(from, std::min<std::size_t>(kBlockUnits, units.size() - from));
         const int size = static_cast<int>(block.size());
         if (size <= p) continue; // every unit alone costs 0
-        GroupCostModel sub;
-        for (const int a : block) {
-            sub.weight.push_back(model.weight[static_cast<std::size_t>(a)]);
-            sub.self.push_back(model.self[static_cast<std::size_t>(a)]);
-            for (const int b : block) sub.cross.push_back(model.h(a, b));
-        }
+        GroupCostModel sub = restrictedModel(model, block);
         sub.conflicts.assign(block.size(), 0);
         sub.scale = sub.cost((UnitMask{1} << size) - 1);
         const UnitCurve curve = solveSubsetDp(sub, p);
@@ -268,14 +280,6 @@ double blockBound(const GroupCostModel& model, std::span<const int> units, int p
     }
     return total;
 }
-
-} // namespace
-
-double blockLowerBound(const GroupCostModel& model, int p) {
-    return blockBound(model, placementOrder(model), p);
-}
-
-namespace {
 
 // Units in conflict with every other unit (pinned visemes) are groups of their own in any feasible
 // partition, and a group of one costs nothing.
@@ -289,64 +293,20 @@ UnitMask isolatedUnits(const GroupCostModel& model) {
     return isolated;
 }
 
-UnitPartition searchPartition(const GroupCostModel& model, int p, std::span<const UnitMask> start,
-                              const SearchLimits& limits, std::atomic<double>* done,
-                              std::atomic<double>* provenBound);
-
-} // namespace
-
-UnitPartition branchAndBound(const GroupCostModel& model, int p, std::span<const UnitMask> start,
-                             const SearchLimits& limits, std::atomic<double>* done,
-                             std::atomic<double>* provenBound) {
-    // Isolated units leave the search: the others are placed into p - k groups, and the k groups of one
-    // are added back. Exact (they are singletons in every feasible partition, at cost 0), and the
-    // search no longer spends a group's worth of branching and weaker suffix bounds on them.
-    const int n = model.size();
-    const UnitMask isolated = isolatedUnits(model);
-    const int k = std::popcount(isolated);
-    if (k == 0 || k == n || k > p || n - k < p - k || p - k < 1)
-        return searchPartition(model, p, start, limits, done, provenBound);
-    std::vector<int> rest; // original unit of each unit of the smaller problem
-    for (int a = 0; a < n; ++a)
-        if (!(isolated >> a & 1)) rest.push_back(a);
-    const auto restMask = [&](UnitMask original) {
-        UnitMask mask = 0;
-        for (std::size_t i = 0; i < rest.size(); ++i)
-            if (original >> rest[i] & 1) mask |= UnitMask{1} << i;
-        return mask;
-    };
-    GroupCostModel sub;
-    sub.scale = model.scale; // the same tolerances as the whole problem
-    for (const int a : rest) {
-        sub.weight.push_back(model.weight[static_cast<std::size_t>(a)]);
-        sub.self.push_back(model.self[static_cast<std::size_t>(a)]);
-        sub.conflicts.push_back(restMask(model.conflicts[static_cast<std::size_t>(a)]));
-        for (const int b : rest) sub.cross.push_back(model.h(a, b));
+// Groups in canonical order (by lowest unit), the cost recomputed the one shared way, and the bound
+// kept at or below it.
+void canonicalise(UnitPartition& result, const GroupCostModel& model) {
+    if (!result.groups.empty()) {
+        std::sort(result.groups.begin(), result.groups.end(),
+                  [](UnitMask a, UnitMask b) { return std::countr_zero(a) < std::countr_zero(b); });
+        result.cost = partitionCost(model, result.groups);
+        if (result.optimal) result.lowerBound = result.cost;
+        result.lowerBound = std::min(result.lowerBound, result.cost);
+    } else {
+        result.cost = kNoBound;
+        if (result.optimal) result.lowerBound = kNoBound; // proven: no partition into p groups exists
     }
-    std::vector<UnitMask> subStart;
-    for (const UnitMask g : start)
-        if (!(g & isolated)) subStart.push_back(restMask(g));
-    if (static_cast<int>(subStart.size()) != p - k) subStart.clear(); // not of that shape: no start
-    UnitPartition result = searchPartition(sub, p - k, subStart, limits, done, provenBound);
-    if (result.groups.empty()) return result;
-    std::vector<UnitMask> groups;
-    for (const UnitMask g : result.groups) {
-        UnitMask original = 0;
-        for (UnitMask bits = g; bits; bits &= bits - 1)
-            original |= UnitMask{1} << rest[static_cast<std::size_t>(std::countr_zero(bits))];
-        groups.push_back(original);
-    }
-    for (UnitMask bits = isolated; bits; bits &= bits - 1) groups.push_back(bits & -bits);
-    std::sort(groups.begin(), groups.end(),
-              [](UnitMask a, UnitMask b) { return std::countr_zero(a) < std::countr_zero(b); });
-    result.groups = std::move(groups);
-    result.cost = partitionCost(model, result.groups);
-    if (result.optimal) result.lowerBound = result.cost;
-    result.lowerBound = std::min(result.lowerBound, result.cost);
-    return result;
 }
-
-namespace {
 
 UnitPartition searchPartition(const GroupCostModel& model, int p, std::span<const UnitMask> start,
                               const SearchLimits& limits, std::atomic<double>* done,
@@ -442,20 +402,54 @@ UnitPartition searchPartition(const GroupCostModel& model, int p, std::span<cons
             break;
         }
     }
-    if (!result.groups.empty()) {
-        // Canonical order (by lowest unit) and the cost recomputed the one shared way.
-        std::sort(result.groups.begin(), result.groups.end(),
-                  [](UnitMask a, UnitMask b) { return std::countr_zero(a) < std::countr_zero(b); });
-        result.cost = partitionCost(model, result.groups);
-        if (result.optimal) result.lowerBound = result.cost;
-        result.lowerBound = std::min(result.lowerBound, result.cost);
-    } else {
-        result.cost = kNoBound;
-        if (result.optimal) result.lowerBound = kNoBound; // proven: no partition into p groups exists
-    }
+    canonicalise(result, model);
     return result;
 }
 
 } // namespace
+
+double blockLowerBound(const GroupCostModel& model, int p) {
+    return blockBound(model, placementOrder(model), p);
+}
+
+UnitPartition branchAndBound(const GroupCostModel& model, int p, std::span<const UnitMask> start,
+                             const SearchLimits& limits, std::atomic<double>* done,
+                             std::atomic<double>* provenBound) {
+    // Isolated units leave the search: the others are placed into p - k groups, and the k groups of one
+    // are added back. Exact (they are singletons in every feasible partition, at cost 0), and the
+    // search no longer spends a group's worth of branching and weaker suffix bounds on them.
+    const int n = model.size();
+    const UnitMask isolated = isolatedUnits(model);
+    const int k = std::popcount(isolated);
+    if (k == 0 || k == n || k >= p) // nothing to take out, or no group left for the others
+        return searchPartition(model, p, start, limits, done, provenBound);
+    std::vector<int> rest; // original unit of each unit of the smaller problem
+    for (int a = 0; a < n; ++a)
+        if (!(isolated >> a & 1)) rest.push_back(a);
+    const auto restMask = [&](UnitMask original) {
+        UnitMask mask = 0;
+        for (std::size_t i = 0; i < rest.size(); ++i)
+            if (original >> rest[i] & 1) mask |= UnitMask{1} << i;
+        return mask;
+    };
+    const GroupCostModel sub = restrictedModel(model, rest); // the whole problem's scale and tolerances
+    std::vector<UnitMask> subStart;
+    for (const UnitMask g : start)
+        if (!(g & isolated)) subStart.push_back(restMask(g));
+    if (static_cast<int>(subStart.size()) != p - k) subStart.clear(); // not of that shape: no start
+    UnitPartition result = searchPartition(sub, p - k, subStart, limits, done, provenBound);
+    if (result.groups.empty()) return result;
+    std::vector<UnitMask> groups;
+    for (const UnitMask g : result.groups) {
+        UnitMask original = 0;
+        for (UnitMask bits = g; bits; bits &= bits - 1)
+            original |= UnitMask{1} << rest[static_cast<std::size_t>(std::countr_zero(bits))];
+        groups.push_back(original);
+    }
+    for (UnitMask bits = isolated; bits; bits &= bits - 1) groups.push_back(bits & -bits);
+    result.groups = std::move(groups);
+    canonicalise(result, model);
+    return result;
+}
 
 } // namespace vl
