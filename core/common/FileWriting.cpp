@@ -146,6 +146,41 @@ bool writeAll(int fd, std::span<const std::string_view> parts) {
     return true;
 }
 
+bool holdsExactly(const std::filesystem::path& target, std::span<const std::string_view> parts) {
+    const int fd = ::open(target.c_str(), O_RDONLY | O_CLOEXEC | O_NOFOLLOW);
+    if (fd < 0) return false;
+    struct stat info {};
+    std::size_t expected = 0;
+    for (const std::string_view part : parts) expected += part.size();
+    bool same = ::fstat(fd, &info) == 0 && S_ISREG(info.st_mode) &&
+                static_cast<std::uint64_t>(info.st_size) == expected;
+    // Compares chunk by chunk: memory stays small for any file, and a difference stops the read.
+    char chunk[1 << 15];
+    std::size_t part = 0, offsetInPart = 0, compared = 0;
+    while (same && compared < expected) {
+        const ssize_t n = ::read(fd, chunk, std::min(sizeof chunk, expected - compared));
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) {
+            same = false;
+            break;
+        }
+        for (std::size_t at = 0; same && at < static_cast<std::size_t>(n);) {
+            while (offsetInPart == parts[part].size()) ++part, offsetInPart = 0;
+            const std::size_t length =
+                std::min(parts[part].size() - offsetInPart, static_cast<std::size_t>(n) - at);
+            same = std::memcmp(chunk + at, parts[part].data() + offsetInPart, length) == 0;
+            at += length;
+            offsetInPart += length;
+        }
+        compared += static_cast<std::size_t>(n);
+    }
+    // The file may still be in the page cache only (written by another program): durable now, like a
+    // new copy. A clean file costs no writing.
+    same = same && ::fsync(fd) == 0;
+    ::close(fd);
+    return same;
+}
+
 void syncFolder(const std::filesystem::path& folder) {
     const int fd = ::open(folder.empty() ? "." : folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
     if (fd < 0) return;

@@ -28,6 +28,11 @@ bool writeAll(int fd, std::string_view data);
 // cache then sees one long write (large folios) instead of a few short ones.
 bool writeAll(int fd, std::span<const std::string_view> parts);
 
+// True when `target` is a regular file whose bytes are exactly the concatenation of `parts`; it is
+// then also made durable (fsync), as a newly written copy would be. False for a missing, different,
+// unreadable or non-regular file. Reads the file in small chunks, stopping at the first difference.
+bool holdsExactly(const std::filesystem::path& target, std::span<const std::string_view> parts);
+
 // fsync of a folder, so that the renames into it survive a power cut. Errors are ignored: some
 // file systems cannot sync a folder, and the data itself is already durable.
 void syncFolder(const std::filesystem::path& folder);

@@ -53,7 +53,8 @@ OutputSet::~OutputSet() {
 
 void OutputSet::discardTemporaries() {
     std::error_code ec;
-    for (const Staged& s : staged_) std::filesystem::remove(s.temporary, ec);
+    for (const Staged& s : staged_)
+        if (!s.unchanged()) std::filesystem::remove(s.temporary, ec);
 }
 
 void OutputSet::add(const std::string& fileName, std::string_view contents) {
@@ -74,10 +75,18 @@ void OutputSet::stage(const std::string& fileName, std::initializer_list<std::st
     const std::filesystem::path destination = folder_ / fileName;
     refuseOverwritingInput(destination);
     Staged staged{fileName, fileio::writeTarget(destination), {}};
+    const std::span<const std::string_view> contents(parts.begin(), parts.size());
+    // A destination that already holds these bytes stays as it is (same inode, same time stamp):
+    // comparing costs a read from the page cache, replacing costs a new inode, the writing, the
+    // writeback and the old file's removal; and tools that watch the folder see only real changes.
+    if (fileio::holdsExactly(staged.target, contents)) {
+        staged_.push_back(std::move(staged));
+        return;
+    }
     const fileio::TemporaryFile temp = fileio::createTemporaryFor(staged.target, destination.string());
     staged.temporary = temp.path;
     staged_.push_back(staged); // from here the destructor removes the temporary on failure
-    const bool ok = fileio::writeAll(temp.fd, std::span<const std::string_view>(parts.begin(), parts.size()));
+    const bool ok = fileio::writeAll(temp.fd, contents);
     const std::string problem = ok ? std::string() : fileio::lastSystemError();
     // Start writing the data out now, without waiting: the device works on this file while the next
     // ones are formatted, and the barrier's fsync then mostly waits. Advisory, so errors are ignored
@@ -101,6 +110,7 @@ std::vector<std::filesystem::path> OutputSet::commit() {
     stage(manifest.filename().string(), {text});
     // The barrier: every new file is on disk before the first one replaces an old one.
     for (const Staged& s : staged_) {
+        if (s.unchanged()) continue; // made durable when compared
         const int fd = ::open(s.temporary.c_str(), O_RDONLY | O_CLOEXEC);
         const bool ok = fd >= 0 && ::fsync(fd) == 0;
         const std::string problem = ok ? std::string() : fileio::lastSystemError();
@@ -114,11 +124,11 @@ std::vector<std::filesystem::path> OutputSet::commit() {
     for (std::size_t i = 0; i < staged_.size(); ++i) {
         const Staged& s = staged_[i];
         std::error_code ec;
-        std::filesystem::rename(s.temporary, s.target, ec);
+        if (!s.unchanged()) std::filesystem::rename(s.temporary, s.target, ec);
         if (ec) {
             committed_ = true; // the temporaries left are removed here, the renamed ones are outputs now
             for (std::size_t j = i; j < staged_.size(); ++j)
-                std::filesystem::remove(staged_[j].temporary, ec);
+                if (!staged_[j].unchanged()) std::filesystem::remove(staged_[j].temporary, ec);
             throwInputError((folder_ / s.name).string(),
                             "cannot replace the file: " + ec.message() + " (" + std::to_string(i) + " of " +
                                 std::to_string(outputs) + " outputs were written)");

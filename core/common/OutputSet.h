@@ -1,6 +1,7 @@
 #pragma once
 // Several files written into one folder as a set (reduce --out, export obj/vrml, visemes --out):
-//   1. add() writes each file to a temporary beside its destination (nothing visible changes);
+//   1. add() writes each file to a temporary beside its destination (nothing visible changes), unless
+//      the destination already holds exactly these bytes: that file is left as it is (made durable);
 //   2. commit() stages the folder's manifest of the set (.visemelab-<set>.manifest: the files this
 //      run writes), makes every temporary durable (fsync: one barrier before the first rename),
 //      renames them over their destinations (the manifest last), fsyncs the folder once, then removes
@@ -52,8 +53,9 @@ class OutputSet {
   private:
     struct Staged {
         std::string name;
-        std::filesystem::path target; // the file replaced (a symlink's target)
-        std::filesystem::path temporary;
+        std::filesystem::path target;    // the file replaced (a symlink's target)
+        std::filesystem::path temporary; // empty when the destination already holds the contents
+        bool unchanged() const { return temporary.empty(); }
     };
     void stage(const std::string& fileName, std::initializer_list<std::string_view> parts);
     void discardTemporaries();

@@ -203,24 +203,44 @@ void BM_SampleReduction(benchmark::State& state) {
 BENCHMARK(BM_SampleReduction)->Unit(benchmark::kMillisecond)->UseRealTime()->MeasureProcessCPUTime();
 
 // The writing step of the same CLI run: 20 key meshes, mapping.json and the manifest through one
-// OutputSet (temporaries, one durability barrier, renames over the last iteration's files).
+// OutputSet, in the three cases a designer meets (Arg):
+//   0: into an empty folder (a first export; the folder is removed between iterations, untimed);
+//   1: over the same outputs (a re-run whose result did not change: each file is compared, left);
+//   2: over other outputs (the frequencies alternate, so every mesh differs: temporaries, one
+//      durability barrier, renames over the last iteration's files).
 void BM_SampleWriteOutputs(benchmark::State& state) {
     const SampleInputs in = loadSample();
-    const vl::ReduceOutcome outcome = vl::runReduction(in.set, in.source, sampleSettings());
+    SampleInputs other = loadSample();
+    for (std::size_t i = 0; i < other.source.phonemes.entries.size(); i += 2)
+        other.source.phonemes.entries[i].second *= 1.5;
+    const vl::ReduceOutcome outcomes[2] = {vl::runReduction(in.set, in.source, sampleSettings()),
+                                           vl::runReduction(other.set, other.source, sampleSettings())};
     const std::filesystem::path out =
         std::filesystem::temp_directory_path() / "visemelab_bench_write_outputs";
+    std::filesystem::remove_all(out);
+    const int mode = static_cast<int>(state.range(0));
+    int iteration = 0;
     for (auto _ : state) {
+        if (mode == 0) {
+            state.PauseTiming();
+            std::filesystem::remove_all(out);
+            state.ResumeTiming();
+        }
         vl::OutputSet files(out, "reduce");
-        benchmark::DoNotOptimize(vl::writeReductionOutputs(files, outcome));
+        benchmark::DoNotOptimize(vl::writeReductionOutputs(files, outcomes[mode == 2 ? iteration++ % 2 : 0]));
         files.commit();
     }
     std::filesystem::remove_all(out);
 }
 BENCHMARK(BM_SampleWriteOutputs)
+    ->ArgName("case")
+    ->Arg(0)
+    ->Arg(1)
+    ->Arg(2)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->MeasureProcessCPUTime()
-    ->Iterations(20); // each replaces 23 files: a few hundred, like the CLI runs around it
+    ->Iterations(20); // each writes 23 files: a few hundred, like the CLI runs around it
 
 BENCHMARK(BM_SampleReduceFloor)->Unit(benchmark::kMillisecond)->UseRealTime()->MeasureProcessCPUTime();
 

@@ -6,6 +6,8 @@
 #include "core/common/InputRegistry.h"
 #include "core/common/OutputSet.h"
 
+#include <sys/stat.h>
+
 namespace vl {
 namespace {
 
@@ -132,6 +134,39 @@ TEST(OutputSet, NamesAndInputsAreChecked) {
     noteInputFolder(dir / "in");
     EXPECT_THROW(OutputSet(dir / "in", "s"), OutputOverwritesInputError);
     EXPECT_EQ(readText(dir / "input.obj"), "input");
+}
+
+TEST(OutputSet, UnchangedOutputsStayAndChangedOnesAreReplaced) {
+    TempFolder dir;
+    writeSet(dir.path, "reduce",
+             {{"same.obj", "v 1 2 3\n"}, {"edited.obj", "v 1 2 3\n"}, {"grown.obj", "v"}});
+    auto inode = [&](const std::string& name) {
+        struct stat info {};
+        EXPECT_EQ(::stat((dir / name).c_str(), &info), 0) << name;
+        return info.st_ino;
+    };
+    const auto same = inode("same.obj"), edited = inode("edited.obj"), grown = inode("grown.obj");
+    const auto manifest = inode(".visemelab-reduce.manifest");
+    const auto stamp = std::filesystem::last_write_time(dir / "same.obj");
+    OutputSet set(dir.path, "reduce");
+    set.add("same.obj", {"v 1 ", "", "2 3\n"}); // the same bytes in other parts
+    set.add("edited.obj", "v 1 2 4\n");         // the same size, the last digit differs
+    set.add("grown.obj", "v 1");
+    EXPECT_EQ(set.commit(),
+              (std::vector<std::filesystem::path>{dir / "same.obj", dir / "edited.obj", dir / "grown.obj"}));
+    EXPECT_EQ(inode("same.obj"), same);
+    EXPECT_EQ(std::filesystem::last_write_time(dir / "same.obj"), stamp);
+    EXPECT_EQ(inode(".visemelab-reduce.manifest"), manifest); // it lists the same files
+    EXPECT_NE(inode("edited.obj"), edited);
+    EXPECT_NE(inode("grown.obj"), grown);
+    EXPECT_EQ(readText(dir / "same.obj"), "v 1 2 3\n");
+    EXPECT_EQ(readText(dir / "edited.obj"), "v 1 2 4\n");
+    EXPECT_EQ(readText(dir / "grown.obj"), "v 1");
+    EXPECT_EQ(listFolder(dir.path), (std::vector<std::string>{".visemelab-reduce.manifest", "edited.obj",
+                                                              "grown.obj", "same.obj"}));
+    writeSet(dir.path, "reduce", {{"same.obj", "v 1 2 3\n"}}); // the others are stale now
+    EXPECT_EQ(inode("same.obj"), same);
+    EXPECT_EQ(listFolder(dir.path), (std::vector<std::string>{".visemelab-reduce.manifest", "same.obj"}));
 }
 
 TEST(OutputSet, DestinationsKeepModeAndSymlinks) {
