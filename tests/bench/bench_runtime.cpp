@@ -146,7 +146,8 @@ void benchLoadPackage(benchmark::State& state, Variant v) {
 
 void benchLoadVrml(benchmark::State& state, Variant v) {
     std::vector<fs::path> files;
-    for (const auto& entry : fs::directory_iterator(v.vrmlDir)) files.push_back(entry.path());
+    for (const auto& entry : fs::directory_iterator(v.vrmlDir))
+        if (isMeshFile(entry.path())) files.push_back(entry.path()); // not the export's manifest
     for (auto _ : state)
         for (const fs::path& f : files) benchmark::DoNotOptimize(readMesh(f).positions.data());
     state.counters["files"] = static_cast<double>(files.size());
