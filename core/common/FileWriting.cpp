@@ -147,13 +147,18 @@ bool writeAll(int fd, std::span<const std::string_view> parts) {
 }
 
 bool holdsExactly(const std::filesystem::path& target, std::span<const std::string_view> parts) {
-    const int fd = ::open(target.c_str(), O_RDONLY | O_CLOEXEC | O_NOFOLLOW);
-    if (fd < 0) return false;
-    struct stat info {};
     std::size_t expected = 0;
     for (const std::string_view part : parts) expected += part.size();
-    bool same = ::fstat(fd, &info) == 0 && S_ISREG(info.st_mode) &&
-                static_cast<std::uint64_t>(info.st_size) == expected;
+    auto sameSizeFile = [expected](const struct stat& info) {
+        return S_ISREG(info.st_mode) && static_cast<std::uint64_t>(info.st_size) == expected;
+    };
+    // Only a regular file is opened: opening a FIFO would block and a device may act on open.
+    // O_NONBLOCK too, should the path change into one between the lstat and the open.
+    struct stat info {};
+    if (::lstat(target.c_str(), &info) != 0 || !sameSizeFile(info)) return false;
+    const int fd = ::open(target.c_str(), O_RDONLY | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK);
+    if (fd < 0) return false;
+    bool same = ::fstat(fd, &info) == 0 && sameSizeFile(info);
     // Compares chunk by chunk: memory stays small for any file, and a difference stops the read.
     char chunk[1 << 15];
     std::size_t part = 0, offsetInPart = 0, compared = 0;

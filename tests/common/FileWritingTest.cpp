@@ -5,6 +5,7 @@
 #include "core/common/FileWriting.h"
 
 #include <random>
+#include <sys/stat.h>
 
 namespace vl {
 namespace {
@@ -66,6 +67,10 @@ TEST(FileWriting, HoldsExactlyIsFalseForWhatIsNotARegularFile) {
     std::filesystem::create_symlink("real.txt", dir / "link.txt");
     EXPECT_TRUE(holds(dir / "real.txt", {"te", "", "xt"}));
     EXPECT_FALSE(holds(dir / "link.txt", {"text"})); // the caller resolves links (writeTarget)
+    // A named pipe is not opened (that would wait for a writer forever); an empty one "holds" "".
+    ASSERT_EQ(::mkfifo((dir / "pipe").c_str(), 0600), 0);
+    EXPECT_FALSE(holds(dir / "pipe", {""}));
+    EXPECT_FALSE(holds("/dev/null", {""}));
 }
 
 } // namespace
