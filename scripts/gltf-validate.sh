@@ -10,21 +10,7 @@ shift
 [ $# -gt 0 ] || { echo "usage: gltf-validate.sh TOOLDIR FILE..." >&2; exit 2; }
 version=2.0.0-dev.3.10
 
-for tool in node npm; do
-  if ! command -v "$tool" >/dev/null 2>&1; then
-    echo "SKIPPED: $tool not found; install nodejs and npm (scripts/install-deps.sh) to run the glTF validator"
-    exit 77
-  fi
-done
-if [ ! -f "$tooldir/node_modules/gltf-validator/package.json" ]; then
-  mkdir -p "$tooldir"
-  echo "installing gltf-validator@$version into $tooldir"
-  if ! npm install --prefix "$tooldir" --no-audit --no-fund --loglevel=error "gltf-validator@$version" >"$tooldir/npm.log" 2>&1; then
-    tail -n 5 "$tooldir/npm.log"
-    echo "SKIPPED: could not install gltf-validator from the npm registry (see $tooldir/npm.log)"
-    exit 77
-  fi
-fi
+"$(dirname "$0")/npm-tool.sh" "$tooldir" "gltf-validator@$version"
 
 cat >"$tooldir/validate.js" <<'JS'
 // Runs the Khronos validator on each file; exit code 1 when any report has errors.

@@ -2,7 +2,9 @@
 // text -> speech (espeak-ng) -> timed phonemes -> the full and the reduced viseme tracks, the
 // utterance error between them, and (for a corpus) the error curve over m = 1..n.
 #include "app/cli/Command.h"
+#include "app/cli/PlayerModule.h"
 #include "app/cli/Progress.h"
+#include "core/common/AtomicFile.h"
 #include "core/common/Error.h"
 #include "core/export/Gltf.h"
 #include "core/phonetics/CorpusText.h"
@@ -10,7 +12,10 @@
 #include "core/project/Project.h"
 #include "core/project/ProjectSpeech.h"
 #include "core/speech/SpeechGltf.h"
+#include "core/speech/SpeechPage.h"
+#include "core/speech/TrackFormats.h"
 #include "core/speech/TrackJson.h"
+#include "core/speech/TrackPlayback.h"
 #include "core/speech/WavFile.h"
 
 #include <cstdio>
@@ -28,11 +33,14 @@ struct SayOptions {
     std::string out;
     std::string wav;
     std::string glb;
+    std::string html;
+    std::string three = "node_modules/three";
     std::string map;
     std::string voice = "en-us";
     int rate = 175;
     double fps = 60;
     std::string blend = "cubic";
+    std::string format = "oculus";
     bool curve = false;
     bool quiet = false;
 };
@@ -48,7 +56,7 @@ void checkOutputs(const SayOptions& o) {
         return std::filesystem::weakly_canonical(a, ec) == std::filesystem::weakly_canonical(b, ec);
     };
     const std::pair<const char*, const std::string*> outputs[] = {
-        {"--out", &o.out}, {"--wav", &o.wav}, {"--glb", &o.glb}};
+        {"--out", &o.out}, {"--wav", &o.wav}, {"--glb", &o.glb}, {"--html", &o.html}};
     const std::pair<const char*, const std::string*> inputs[] = {{"--project", &o.project},
                                                                  {"--text-file", &o.textFile}};
     for (std::size_t i = 0; i < std::size(outputs); ++i) {
@@ -120,6 +128,8 @@ int runSay(const SayOptions& o) {
     if (!(o.fps > 0 && o.fps <= kMaxFps)) throwUsage("--fps must be in (0, 1000]");
     const auto interpolation = interpolationFromString(o.blend);
     if (!interpolation) throwUsage("--blend must be linear, cubic or dominance, not '" + o.blend + "'");
+    const auto format = trackFormatFromString(o.format);
+    if (!format) throwUsage("--format must be oculus, rhubarb or talkinghead, not '" + o.format + "'");
     checkOutputs(o);
 
     const Project project = loadProject(o.project);
@@ -150,15 +160,29 @@ int runSay(const SayOptions& o) {
     track.reducedCues = reduced.cues();
     track.phonemes = utterance.phonemes;
     track.error = TrackError{error.mean, error.max, error.maxTime, error.relative, error.frames};
+    track.playback = TrackPlayback{toString(*interpolation), settings.dominanceRate, playbackOf(full),
+                                   playbackOf(reduced)};
     if (o.curve || !o.textFile.empty())
         track.errorCurve = errorCurve(o, project, utterance, settings, map ? &*map : nullptr);
 
+    // Formatted before anything is written: a face whose names have no shape in the format is
+    // refused without leaving other outputs behind.
+    const std::string trackText = formatTrack(track, *format, o.out);
     if (wav) wav->finish();
-    if (!o.glb.empty()) {
+    std::string glb;
+    if (!o.glb.empty() || !o.html.empty()) {
         const GltfMorphAnimation animation = gltfAnimationOf(reduced, o.fps);
-        writeGlb(o.glb, faces.reduced, &animation);
+        glb = formatGlb(faces.reduced, &animation);
     }
-    saveTrackJson(o.out, track);
+    if (!o.glb.empty()) writeFileAtomically(o.glb, glb);
+    if (!o.html.empty()) {
+        // The page always carries VisemeLab's own track (the player needs its playback section).
+        const std::string ownTrack = *format == TrackFormat::Oculus ? trackText : formatTrackJson(track);
+        const std::string audio = o.wav.empty() ? std::string() : readFileToString(o.wav);
+        writeFileAtomically(o.html, speechPageHtml({o.text.empty() ? o.textFile : o.text, glb, ownTrack,
+                                                    audio, playerModuleSource(), o.three}));
+    }
+    writeFileAtomically(o.out, trackText);
     if (!o.quiet) printSummary(track, project, faces.full.keys.size());
     for (const auto& [symbol, count] : synthesizer->skippedSymbols())
         std::fprintf(stderr,
@@ -168,6 +192,7 @@ int runSay(const SayOptions& o) {
     std::printf("Wrote %s", o.out.c_str());
     if (!o.wav.empty()) std::printf(", %s", o.wav.c_str());
     if (!o.glb.empty()) std::printf(", %s", o.glb.c_str());
+    if (!o.html.empty()) std::printf(", %s", o.html.c_str());
     std::printf("\n");
     return kExitOk;
 }
@@ -191,6 +216,12 @@ void addSayCommand(CLI::App& app, CommandRunner& run) {
     cmd->add_option("--wav", o->wav, "Write the speech audio (16-bit mono WAV)");
     cmd->add_option("--glb", o->glb,
                     "Write the reduced face with the speech as a glTF morph weight animation");
+    cmd->add_option("--html", o->html,
+                    "Write a web page that plays the face with the audio in three.js (everything embedded "
+                    "but three: see --three)");
+    cmd->add_option("--three", o->three,
+                    "URL of three.js's package folder for --html (default node_modules/three, beside the "
+                    "page: npm install three)");
     cmd->add_option("--voice", o->voice,
                     "English espeak-ng voice: en-us (default), en-gb, en-gb-scotland, ...");
     cmd->add_option("--rate", o->rate, "Speaking rate in words per minute, 80..450 (default 175)");
@@ -198,6 +229,10 @@ void addSayCommand(CLI::App& app, CommandRunner& run) {
                     "Frames per second of the error curve and sampled animation (default 60)");
     cmd->add_option("--blend", o->blend,
                     "Playback blending: cubic (Catmull-Rom, default), linear, dominance");
+    cmd->add_option("--format", o->format,
+                    "Track layout: oculus (VisemeLab's track JSON, the face's viseme names; default), "
+                    "rhubarb (Rhubarb Lip Sync's JSON, shapes A-H and X), talkinghead (TalkingHead's "
+                    "visemes/vtimes/vdurations in ms)");
     cmd->add_flag("--curve", o->curve, "Also compute the error curve over m = 1..n for inline text");
     cmd->add_flag("--quiet", o->quiet, "Print only the written files");
     cmd->callback([&run, o] { run = [o] { return runSay(*o); }; });

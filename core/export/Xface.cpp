@@ -2,6 +2,7 @@
 
 #include "core/common/AtomicFile.h"
 #include "core/common/Error.h"
+#include "core/common/MarkupEscape.h"
 #include "core/common/TextParsing.h"
 #include "core/export/KeyMeshFiles.h"
 #include "core/io/MeshIO.h"
@@ -18,29 +19,6 @@ namespace {
 
 constexpr const char* kRestAlias = "Rest";
 constexpr const char* kPausePhonemes[] = {"#", "_"};
-
-std::string xmlEscape(std::string_view text) {
-    std::string out;
-    for (char c : text) {
-        switch (c) {
-        case '&':
-            out += "&amp;";
-            break;
-        case '<':
-            out += "&lt;";
-            break;
-        case '>':
-            out += "&gt;";
-            break;
-        case '"':
-            out += "&quot;";
-            break;
-        default:
-            out += c;
-        }
-    }
-    return out;
-}
 
 std::string attribute(const tinyxml2::XMLElement* e, const char* name) {
     const char* value = e->Attribute(name);
@@ -162,8 +140,8 @@ std::string formatFdp(const ReducedModel& model) {
     out +=
         "    <rotation axis_angle=\"0\" axis_x=\"0\" axis_y=\"1\" axis_z=\"0\"/>\n  </head>\n\n  <source>\n";
     auto entity = [&](const std::string& alias, const char* category, const std::string& file) {
-        out += "    <entity alias=\"" + xmlEscape(alias) + "\" category=\"" + category +
-               "\">\n      <mesh file=\"" + xmlEscape(file) + "\" format=\"wrl\"/>\n    </entity>\n";
+        out += "    <entity alias=\"" + escapeMarkup(alias) + "\" category=\"" + category +
+               "\">\n      <mesh file=\"" + escapeMarkup(file) + "\" format=\"wrl\"/>\n    </entity>\n";
     };
     entity(kRestAlias, "Expression", neutralFileName(".wrl"));
     for (std::size_t k = 0; k < model.keys.size(); ++k)

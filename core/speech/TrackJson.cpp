@@ -3,18 +3,11 @@
 #include "core/common/AtomicFile.h"
 #include "core/common/Error.h"
 #include "core/io/JsonRead.h"
+#include "core/speech/JsonText.h"
 
 namespace vl {
 
 namespace {
-
-std::string number(double value) {
-    return Json(value).dump();
-}
-
-std::string jsonString(std::string_view text) {
-    return Json(std::string(text)).dump();
-}
 
 // [{"start": s, "end": e, "value": v}, ...], one element per line.
 template <typename Timed, typename ValueOf>
@@ -22,14 +15,16 @@ std::string timedArray(const std::vector<Timed>& items, ValueOf valueOf) {
     if (items.empty()) return "[]";
     std::string text = "[";
     for (std::size_t i = 0; i < items.size(); ++i)
-        text += std::string(i == 0 ? "\n" : ",\n") + "    {\"start\": " + number(items[i].start) +
-                ", \"end\": " + number(items[i].end) + ", \"value\": " + jsonString(valueOf(items[i])) + "}";
+        text += std::string(i == 0 ? "\n" : ",\n") + "    {\"start\": " + json_text::number(items[i].start) +
+                ", \"end\": " + json_text::number(items[i].end) +
+                ", \"value\": " + json_text::string(valueOf(items[i])) + "}";
     return text + "\n  ]";
 }
 
 std::string numberArray(const std::vector<double>& values) {
     std::string text = "[";
-    for (std::size_t i = 0; i < values.size(); ++i) text += (i == 0 ? "" : ", ") + number(values[i]);
+    for (std::size_t i = 0; i < values.size(); ++i)
+        text += (i == 0 ? "" : ", ") + json_text::number(values[i]);
     return text + "]";
 }
 
@@ -64,18 +59,81 @@ double optionalNumber(const JsonNode& object, std::string_view key) {
     return object.has(key) ? object[key].nonNegativeNumber() : 0.0;
 }
 
+std::string facePlaybackJson(const FacePlayback& face) {
+    std::string text = "{\"keys\": [";
+    for (std::size_t k = 0; k < face.keys.size(); ++k) {
+        text += std::string(k == 0 ? "\n      " : ",\n      ") +
+                "{\"name\": " + json_text::string(face.keys[k].name) + ", \"members\": [";
+        for (std::size_t j = 0; j < face.keys[k].members.size(); ++j)
+            text += (j == 0 ? "" : ", ") + json_text::string(face.keys[k].members[j]);
+        text += "]}";
+    }
+    text += "],\n    \"keyframes\": [";
+    for (std::size_t i = 0; i < face.keyframes.size(); ++i) {
+        const PlaybackKeyframe& k = face.keyframes[i];
+        text += std::string(i == 0 ? "" : (i % 4 == 0 ? ",\n      " : ", ")) + "[" +
+                json_text::number(k.time) + ", " + std::to_string(k.key) + ", " +
+                json_text::number(k.dominance) + "]";
+    }
+    return text + "]}";
+}
+
+std::string playbackJson(const TrackPlayback& playback) {
+    return "{\"interpolation\": " + json_text::string(playback.interpolation) +
+           ", \"dominanceRate\": " + json_text::number(playback.dominanceRate) +
+           ",\n    \"full\": " + facePlaybackJson(playback.full) +
+           ",\n    \"reduced\": " + facePlaybackJson(playback.reduced) + "}";
+}
+
+FacePlayback readFacePlayback(const JsonNode& node) {
+    node.expectObject();
+    node.allowOnly({"keys", "keyframes"});
+    FacePlayback face;
+    for (const JsonNode& key : node["keys"].elements()) {
+        key.expectObject();
+        key.allowOnly({"name", "members"});
+        PlaybackKey k{key["name"].nonEmptyString(), {}};
+        for (const JsonNode& member : key["members"].elements()) k.members.push_back(member.nonEmptyString());
+        face.keys.push_back(std::move(k));
+    }
+    const auto keyCount = static_cast<std::int64_t>(face.keys.size());
+    for (const JsonNode& keyframe : node["keyframes"].elements()) {
+        keyframe.expectSize(3); // [time, key, dominance]
+        face.keyframes.push_back({keyframe[std::size_t{0}].number(),
+                                  static_cast<int>(keyframe[std::size_t{1}].integerInRange(-1, keyCount - 1)),
+                                  keyframe[std::size_t{2}].number()});
+    }
+    return face;
+}
+
+TrackPlayback readPlayback(const JsonNode& node) {
+    node.expectObject();
+    node.allowOnly({"interpolation", "dominanceRate", "full", "reduced"});
+    TrackPlayback playback;
+    playback.interpolation = node["interpolation"].nonEmptyString();
+    playback.dominanceRate = node["dominanceRate"].nonNegativeNumber();
+    playback.full = readFacePlayback(node["full"]);
+    playback.reduced = readFacePlayback(node["reduced"]);
+    // The curves must be valid for the runtime: a player can rely on every index and time.
+    curveOf(playback.full, playback, node["full"].path());
+    curveOf(playback.reduced, playback, node["reduced"].path());
+    return playback;
+}
+
 } // namespace
 
 std::string formatTrackJson(const SpeechTrackFile& track) {
     const TrackMetadata& m = track.metadata;
-    std::string text =
-        "{\n  \"metadata\": {\n    \"soundFile\": " + jsonString(m.soundFile) +
-        ",\n    \"duration\": " + number(m.duration) + ",\n    \"text\": " + jsonString(m.text) +
-        ",\n    \"source\": " + jsonString(m.source) + ",\n    \"voice\": " + jsonString(m.voice) +
-        ",\n    \"wordsPerMinute\": " + std::to_string(m.wordsPerMinute) +
-        ",\n    \"project\": " + jsonString(m.project) +
-        ",\n    \"interpolation\": " + jsonString(m.interpolation) + ",\n    \"fps\": " + number(m.fps) +
-        ",\n    \"generator\": \"VisemeLab\"\n  },\n";
+    std::string text = "{\n  \"metadata\": {\n    \"soundFile\": " + json_text::string(m.soundFile) +
+                       ",\n    \"duration\": " + json_text::number(m.duration) +
+                       ",\n    \"text\": " + json_text::string(m.text) +
+                       ",\n    \"source\": " + json_text::string(m.source) +
+                       ",\n    \"voice\": " + json_text::string(m.voice) +
+                       ",\n    \"wordsPerMinute\": " + std::to_string(m.wordsPerMinute) +
+                       ",\n    \"project\": " + json_text::string(m.project) +
+                       ",\n    \"interpolation\": " + json_text::string(m.interpolation) +
+                       ",\n    \"fps\": " + json_text::number(m.fps) +
+                       ",\n    \"generator\": \"VisemeLab\"\n  },\n";
     const auto cueValue = [](const Cue& c) -> const std::string& { return c.value; };
     text += "  \"mouthCues\": " + timedArray(track.mouthCues, cueValue) + ",\n";
     text += "  \"reducedCues\": " + timedArray(track.reducedCues, cueValue) + ",\n";
@@ -83,8 +141,9 @@ std::string formatTrackJson(const SpeechTrackFile& track) {
             timedArray(track.phonemes, [](const TimedPhoneme& p) -> const std::string& { return p.phoneme; });
     if (track.error) {
         const TrackError& e = *track.error;
-        text += ",\n  \"error\": {\"mean\": " + number(e.mean) + ", \"max\": " + number(e.max) +
-                ", \"maxTime\": " + number(e.maxTime) + ", \"relative\": " + number(e.relative) +
+        text += ",\n  \"error\": {\"mean\": " + json_text::number(e.mean) +
+                ", \"max\": " + json_text::number(e.max) + ", \"maxTime\": " + json_text::number(e.maxTime) +
+                ", \"relative\": " + json_text::number(e.relative) +
                 ",\n    \"frames\": " + numberArray(e.frames) + "}";
     }
     if (!track.errorCurve.empty()) {
@@ -92,11 +151,13 @@ std::string formatTrackJson(const SpeechTrackFile& track) {
         for (std::size_t i = 0; i < track.errorCurve.size(); ++i) {
             const auto& p = track.errorCurve[i];
             text += std::string(i == 0 ? "\n" : ",\n") + "    {\"m\": " + std::to_string(p.m) +
-                    ", \"cost\": " + number(p.cost) + ", \"mean\": " + number(p.mean) +
-                    ", \"max\": " + number(p.max) + ", \"relative\": " + number(p.relative) + "}";
+                    ", \"cost\": " + json_text::number(p.cost) + ", \"mean\": " + json_text::number(p.mean) +
+                    ", \"max\": " + json_text::number(p.max) +
+                    ", \"relative\": " + json_text::number(p.relative) + "}";
         }
         text += "\n  ]";
     }
+    if (track.playback) text += ",\n  \"playback\": " + playbackJson(*track.playback);
     return text + "\n}\n";
 }
 
@@ -154,6 +215,7 @@ SpeechTrackFile parseTrackJson(std::string_view text, std::string_view source) {
                                         point["max"].nonNegativeNumber(), optionalNumber(point, "relative")});
         }
     }
+    if (root.has("playback")) track.playback = readPlayback(root["playback"]);
     return track;
 }
 

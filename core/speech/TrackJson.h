@@ -2,8 +2,10 @@
 // Speech tracks on disk: JSON in Rhubarb Lip Sync's layout ({"metadata": {"soundFile", "duration"},
 // "mouthCues": [{"start", "end", "value"}]}) for the full viseme set, plus VisemeLab's
 // "reducedCues" (the reduction's keys), "phonemes" (timed ARPAbet, same element layout),
-// "error" (the utterance error) and "errorCurve" (m = 1..n). docs/speech.md describes every field.
-// Rhubarb's own output files read as tracks with cues only.
+// "error" (the utterance error), "errorCurve" (m = 1..n) and "playback" (both faces' keys and
+// runtime keyframes: what a player needs to play the track as VisemeLab does). docs/speech.md describes every
+// field. Rhubarb's own output files read as tracks with cues only.
+#include "core/speech/TrackPlayback.h"
 #include "core/speech/Utterance.h"
 #include "core/speech/VisemeTrack.h"
 
@@ -47,6 +49,7 @@ struct SpeechTrackFile {
     std::vector<TimedPhoneme> phonemes; // empty in a Rhubarb file
     std::optional<TrackError> error;
     std::vector<TrackErrorCurvePoint> errorCurve;
+    std::optional<TrackPlayback> playback; // keys and keyframes of both faces, for players
     bool operator==(const SpeechTrackFile&) const = default;
 };
 
