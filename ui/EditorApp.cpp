@@ -1,4 +1,5 @@
 #include "ui/EditorApp.h"
+#include "ui/WindowTitle.h"
 
 #include "core/common/Error.h"
 #include "core/reduce/Weights.h"
@@ -216,9 +217,15 @@ int runEditor(const EditorOptions& options) {
                 if (screenshotMode) throw e;
                 session.error(std::string("Start options: ") + e.what());
             });
+            std::string shownTitle;
             for (int frame = 0; !glfwWindowShouldClose(window) || !ui.quitConfirmed(); ++frame) {
                 const double frameStart = glfwGetTime();
                 glfwPollEvents();
+                if (const std::string title = windowTitle(session.path(), session.modified());
+                    title != shownTitle) {
+                    glfwSetWindowTitle(window, title.c_str());
+                    shownTitle = title;
+                }
                 if (screenshotMode) session.finishBackgroundWork(); // deterministic pictures
                 ImGui_ImplOpenGL3_NewFrame();
                 ImGui_ImplGlfw_NewFrame();

@@ -176,6 +176,17 @@ std::string GuiDriver::exitStatus() const {
     return "exit code " + std::to_string(WEXITSTATUS(editorStatus_));
 }
 
+std::string GuiDriver::windowTitle() const {
+    std::FILE* p =
+        popen(("DISPLAY=" + display_ + " xdotool getwindowname " + window_ + " 2>/dev/null").c_str(), "r");
+    std::string title;
+    char buffer[512];
+    while (p && std::fgets(buffer, sizeof buffer, p)) title += buffer;
+    if (p) pclose(p);
+    while (!title.empty() && title.back() == '\n') title.pop_back();
+    return title;
+}
+
 std::string GuiDriver::log() const {
     return readAll(logFile_);
 }

@@ -64,6 +64,8 @@ class GuiDriver {
     // In the open file dialog: types `file` into its name field, presses `button` ("Open" or
     // "Save") and waits until the editor is idle. Fails the test when no dialog is open.
     void chooseFile(const std::filesystem::path& file, const std::string& button = "Open");
+    // The window's title as the X server has it (what a window manager shows).
+    std::string windowTitle() const;
 
   private:
     void xdotool(const std::string& arguments);

@@ -17,6 +17,7 @@ void FileDialog::open(std::string title, Mode mode, std::vector<std::string> ext
     extensions_ = std::move(extensions);
     accept_ = std::move(accept);
     name_ = std::move(defaultName);
+    replacing_.clear();
     folderText_ = folder.string();
     visible_ = true;
     openPending_ = true;
@@ -30,6 +31,21 @@ bool FileDialog::matches(const fs::path& file) const {
     return std::find(extensions_.begin(), extensions_.end(), ext) != extensions_.end();
 }
 
+void FileDialog::finish(fs::path chosen) { // a copy: replacing_ is cleared below
+    visible_ = false;
+    replacing_.clear();
+    ImGui::CloseCurrentPopup();
+    accept_(chosen);
+}
+
+void FileDialog::drawReplaceQuestion() {
+    ImGui::TextWrapped("%s already exists. Replace it?", replacing_.filename().string().c_str());
+    ImGui::TextDisabled("%s", replacing_.parent_path().string().c_str());
+    if (ctl::Button("Replace", ImVec2(100, 0))) finish(replacing_);
+    ImGui::SameLine();
+    if (ctl::Button("Cancel", ImVec2(100, 0))) replacing_.clear(); // back to choosing a name
+}
+
 void FileDialog::draw() {
     if (!visible_) return;
     const std::string id = title_ + "###file-dialog";
@@ -39,6 +55,11 @@ void FileDialog::draw() {
     }
     ImGui::SetNextWindowSize(ImVec2(640, 460), ImGuiCond_Appearing);
     if (!ImGui::BeginPopupModal(id.c_str(), &visible_)) return;
+    if (!replacing_.empty()) {
+        drawReplaceQuestion();
+        ImGui::EndPopup();
+        return;
+    }
 
     ImGui::SetNextItemWidth(-70);
     if (ctl::InputText("##folder", &folderText_, ImGuiInputTextFlags_EnterReturnsTrue)) {
@@ -75,11 +96,7 @@ void FileDialog::draw() {
                 }
             } else {
                 name_ = entry.path().filename().string();
-                if (ImGui::IsMouseDoubleClicked(0) && mode_ == Mode::OpenFile) {
-                    visible_ = false;
-                    ImGui::CloseCurrentPopup();
-                    accept_(folder / name_);
-                }
+                if (ImGui::IsMouseDoubleClicked(0) && mode_ == Mode::OpenFile) finish(folder / name_);
             }
         }
     }
@@ -94,9 +111,11 @@ void FileDialog::draw() {
     const bool ready = mode_ == Mode::OpenFolder || !name_.empty();
     if (!ready) ImGui::BeginDisabled();
     if (ctl::Button(mode_ == Mode::SaveFile ? "Save" : "Open", ImVec2(100, 0)) && visible_) {
-        visible_ = false;
-        ImGui::CloseCurrentPopup();
-        accept_(mode_ == Mode::OpenFolder ? folder : folder / name_);
+        const fs::path chosen = mode_ == Mode::OpenFolder ? folder : folder / name_;
+        if (mode_ == Mode::SaveFile && fs::exists(fs::symlink_status(chosen, ec)))
+            replacing_ = chosen; // asked on the next frame
+        else
+            finish(chosen);
     }
     if (!ready) ImGui::EndDisabled();
     ImGui::SameLine();

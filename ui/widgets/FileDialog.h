@@ -1,6 +1,7 @@
 #pragma once
 // A small modal file chooser (ImGui has none): a folder listing filtered by extension, a name field
-// and OK/Cancel. Used for every open, save and import in the editor.
+// and OK/Cancel. Used for every open, save and import in the editor. Saving onto a file that exists
+// asks first ("Replace" or "Cancel"): nothing a designer made is replaced by a slip.
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -23,6 +24,8 @@ class FileDialog {
 
   private:
     bool matches(const std::filesystem::path& file) const;
+    void finish(std::filesystem::path chosen);
+    void drawReplaceQuestion();
 
     std::string title_;
     Mode mode_ = Mode::OpenFile;
@@ -32,6 +35,7 @@ class FileDialog {
     std::string folderText_;
     bool visible_ = false;
     bool openPending_ = false;
+    std::filesystem::path replacing_; // a Save onto this existing file waits for the answer
 };
 
 } // namespace vl::ui
