@@ -64,6 +64,17 @@ double optionalNumber(const JsonNode& object, std::string_view key) {
     return object.has(key) ? object[key].nonNegativeNumber() : 0.0;
 }
 
+TrackDisplacementError readDisplacement(const JsonNode& error) {
+    TrackDisplacementError d;
+    d.unit = error["displacementUnit"].nonEmptyString();
+    d.rms = error["displacementRms"].nonNegativeNumber();
+    d.max = error["displacementMax"].nonNegativeNumber();
+    d.maxTime = optionalNumber(error, "displacementMaxTime");
+    if (error.has("displacementRmsFrames")) d.rmsFrames = error["displacementRmsFrames"].nonNegativeNumbers();
+    if (error.has("displacementMaxFrames")) d.maxFrames = error["displacementMaxFrames"].nonNegativeNumbers();
+    return d;
+}
+
 } // namespace
 
 std::string formatTrackJson(const SpeechTrackFile& track) {
@@ -85,7 +96,14 @@ std::string formatTrackJson(const SpeechTrackFile& track) {
         const TrackError& e = *track.error;
         text += ",\n  \"error\": {\"mean\": " + number(e.mean) + ", \"max\": " + number(e.max) +
                 ", \"maxTime\": " + number(e.maxTime) + ", \"relative\": " + number(e.relative) +
-                ",\n    \"frames\": " + numberArray(e.frames) + "}";
+                ",\n    \"frames\": " + numberArray(e.frames);
+        if (const auto& d = e.displacement)
+            text += ",\n    \"displacementUnit\": " + jsonString(d->unit) +
+                    ", \"displacementRms\": " + number(d->rms) + ", \"displacementMax\": " + number(d->max) +
+                    ", \"displacementMaxTime\": " + number(d->maxTime) +
+                    ",\n    \"displacementRmsFrames\": " + numberArray(d->rmsFrames) +
+                    ",\n    \"displacementMaxFrames\": " + numberArray(d->maxFrames);
+        text += "}";
     }
     if (!track.errorCurve.empty()) {
         text += ",\n  \"errorCurve\": [";
@@ -136,13 +154,16 @@ SpeechTrackFile parseTrackJson(std::string_view text, std::string_view source) {
     if (root.has("error")) {
         const JsonNode error = root["error"];
         error.expectObject();
-        error.allowOnly({"mean", "max", "maxTime", "relative", "frames"});
+        error.allowOnly({"mean", "max", "maxTime", "relative", "frames", "displacementUnit",
+                         "displacementRms", "displacementMax", "displacementMaxTime", "displacementRmsFrames",
+                         "displacementMaxFrames"});
         TrackError e;
         e.mean = error["mean"].nonNegativeNumber();
         e.max = error["max"].nonNegativeNumber();
         e.maxTime = optionalNumber(error, "maxTime");
         e.relative = optionalNumber(error, "relative");
         if (error.has("frames")) e.frames = error["frames"].nonNegativeNumbers();
+        if (error.has("displacementUnit")) e.displacement = readDisplacement(error);
         track.error = std::move(e);
     }
     if (root.has("errorCurve")) {
