@@ -176,7 +176,8 @@ int runSay(const SayOptions& o) {
     const std::string where = avatar ? o.avatar : o.project;
     const SpeechFaces faces = avatar ? avatar->faces : projectSpeechFaces(project, map ? &*map : nullptr);
     // glTF lengths are metres; a project of mesh files has no unit.
-    const LengthUnit unit = avatar || project.avatar.isSet() ? millimetresFromMetres() : LengthUnit{};
+    const DisplacementUnit unit =
+        avatar || project.avatar.isSet() ? millimetresFromMetres() : DisplacementUnit{};
     auto synthesizer = makeEspeakSynthesizer({o.voice, o.rate});
     std::optional<WavStreamWriter> wav;
     if (!o.wav.empty()) wav.emplace(o.wav, synthesizer->sampleRate());

@@ -51,7 +51,7 @@ void blendCoefficients(const FaceTrack& face, const std::vector<std::size_t>& in
 
 DisplacementError measureDisplacementError(const FaceTrack& full, const FaceTrack& reduced,
                                            std::span<const double> vertexWeights, double fps,
-                                           const LengthUnit& unit) {
+                                           const DisplacementUnit& unit) {
     if (!(fps > 0) || !std::isfinite(fps))
         throwInputError("displacement error", "frames per second must be > 0");
     const std::size_t vertices = full.model().neutral.positions.size();

@@ -15,17 +15,17 @@
 namespace vl {
 
 // How positions read as lengths: glTF is in metres (shown as mm); a mesh file has no unit.
-struct LengthUnit {
+struct DisplacementUnit {
     std::string name = "model units"; // what a reader sees after the figures
     double scale = 1.0;               // displayed length per model length
-    bool operator==(const LengthUnit&) const = default;
+    bool operator==(const DisplacementUnit&) const = default;
 };
-inline LengthUnit millimetresFromMetres() {
+inline DisplacementUnit millimetresFromMetres() {
     return {"mm", 1000.0};
 }
 
 struct DisplacementError {
-    std::string unit;              // LengthUnit::name of every figure below
+    std::string unit;              // DisplacementUnit::name of every figure below
     double fps = 0;                // of the frames, the utterance error's frames
     std::vector<double> rmsFrames; // RMS(t) at t = f / fps (last at the end)
     std::vector<double> maxFrames; // max(t)
@@ -38,6 +38,6 @@ struct DisplacementError {
 // vertex. Throws InputError for mismatched sizes, fps <= 0 or weights that are all 0.
 DisplacementError measureDisplacementError(const FaceTrack& full, const FaceTrack& reduced,
                                            std::span<const double> vertexWeights, double fps,
-                                           const LengthUnit& unit);
+                                           const DisplacementUnit& unit);
 
 } // namespace vl

@@ -84,7 +84,8 @@ TEST(DisplacementError, IsTheSquareRootOfTheUtteranceErrorPerWeight) {
     const auto phonemes = test::timed({{"P1", 0.2}, {"P4", 0.15}, {"P7", 0.25}});
     const std::vector<double> weights(m.set.vertexCount(), 2.0);
     const FaceTrack full(m.full, phonemes, {}, "full"), reduced(m.reduced, phonemes, {}, "reduced");
-    const DisplacementError error = measureDisplacementError(full, reduced, weights, 30.0, LengthUnit{});
+    const DisplacementError error =
+        measureDisplacementError(full, reduced, weights, 30.0, DisplacementUnit{});
     const UtteranceError rho = measureUtteranceError(full, reduced, weights, 30.0);
     EXPECT_EQ(error.unit, "model units");
     const double total = 2.0 * double(weights.size());
