@@ -243,8 +243,8 @@ int runSay(const SayOptions& o) {
 void addSayCommand(CLI::App& app, CommandRunner& run) {
     auto o = std::make_shared<SayOptions>();
     auto* cmd = app.add_subcommand(
-        "say", "Speak text (espeak-ng) and lip-sync it with the project's full and reduced "
-               "visemes: Rhubarb-style track JSON, utterance error, WAV, animated glTF");
+        "say", "Speak text (espeak-ng) and lip-sync it with the full and reduced visemes of a "
+               "project or an avatar: Rhubarb-style track JSON, utterance error, WAV, animated glTF");
     cmd->add_option("text", o->text, "The text to say (or --text-file)");
     cmd->add_option("--text-file", o->textFile,
                     "UTF-8 text file of any length: also prints the error curve over m = 1..n");
