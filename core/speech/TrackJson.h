@@ -38,9 +38,11 @@ struct TrackDisplacementError {
 };
 
 struct TrackError {
-    double mean = 0, max = 0, maxTime = 0, relative = 0; // weighted squared distance (no unit)
-    std::vector<double> frames;                          // per frame at metadata.fps
-    std::optional<TrackDisplacementError> displacement;  // "displacement*" fields, when written
+    double mean = 0, max = 0, maxTime = 0, relative = 0;
+    std::vector<double> frames; // per frame at metadata.fps
+
+    // The "displacement*" fields, when written (optional when reading).
+    std::optional<TrackDisplacementError> displacement;
     bool operator==(const TrackError&) const = default;
 };
 
