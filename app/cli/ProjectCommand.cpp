@@ -3,6 +3,10 @@
 #include "app/cli/Command.h"
 #include "core/common/Error.h"
 #include "core/deform/BundledFace.h"
+#include "core/document/AvatarDocument.h"
+#include "core/gltf/TargetNames.h"
+#include "core/gltf/VisemeMapNames.h"
+#include "core/phonetics/PhonemeMaps.h"
 #include "core/project/ProjectRun.h"
 
 #include <algorithm>
@@ -15,6 +19,8 @@ namespace {
 struct NewProjectOptions {
     std::string out;
     std::string visemeDir;
+    std::string avatar;
+    std::string targets;
     std::string neutral;
     std::string freqFile;
     std::string phonemeFile;
@@ -58,10 +64,38 @@ std::vector<ProjectViseme> reordered(std::vector<ProjectViseme> visemes, const s
     return result;
 }
 
-int runNew(const NewProjectOptions& o) {
+// An avatar project: the avatar's visemes by name, frequencies as the editor's Import avatar...
+// chooses them unless tables are given (their viseme names matched to the avatar's by meaning).
+Project avatarProject(const NewProjectOptions& o, bool targetGiven) {
+    if (!o.neutral.empty() || !o.order.empty() || !o.face.empty())
+        throwUsage(
+            "--avatar takes its meshes and their order from the avatar: drop --neutral, --order, --face");
+    if (!o.targets.empty()) checkGlobPattern(o.targets, "--targets");
+    Project project =
+        newAvatarProject(o.avatar, o.targets, bundledPhonemeFrequencies(VISEMELAB_ASSETS_DIR, "oculus"));
+    if (!o.freqFile.empty() || !o.phonemeFile.empty()) {
+        std::vector<std::string> names;
+        for (const ProjectViseme& viseme : project.visemes) names.push_back(viseme.name);
+        project.frequencies = frequenciesOntoVisemes(frequenciesOf(o), names);
+    }
+    if (targetGiven) project.reduction.target = o.target;
+    return project;
+}
+
+int runNew(const NewProjectOptions& o, bool targetGiven) {
     if (!o.freqFile.empty() && !o.phonemeFile.empty()) throwUsage("give --freq-file or --phonemes, not both");
     if (o.phonemeFile.empty() != o.mapFile.empty()) throwUsage("--phonemes and --map go together");
+    if (o.visemeDir.empty() == o.avatar.empty()) throwUsage("give --visemes FOLDER or --avatar FILE");
     const std::filesystem::path out = o.out;
+    if (!o.avatar.empty()) {
+        Project project = avatarProject(o, targetGiven);
+        project.path = out;
+        if (o.reduce) storeReductionResult(project, reduceProject(project, loadProjectVisemeSet(project)));
+        saveProject(out, project);
+        std::printf("wrote %s: avatar %s, %zu visemes, target %d%s\n", out.string().c_str(), o.avatar.c_str(),
+                    project.visemes.size(), project.reduction.target, o.reduce ? ", reduced" : "");
+        return kExitOk;
+    }
     Project project;
     project.path = out;
 
@@ -119,23 +153,30 @@ void addProjectCommand(CLI::App& app, CommandRunner& run) {
     cmd->require_subcommand(1, 1);
 
     auto o = std::make_shared<NewProjectOptions>();
-    auto* create = cmd->add_subcommand("new", "Create a project from a folder of viseme meshes");
+    auto* create =
+        cmd->add_subcommand("new", "Create a project from a folder of viseme meshes or from an avatar");
     create->add_option("--out", o->out, "Project file to write")->required();
-    create
-        ->add_option("--visemes", o->visemeDir,
-                     "Folder of viseme meshes (sorted by name; neutral.* excluded)")
-        ->required();
+    create->add_option("--visemes", o->visemeDir,
+                       "Folder of viseme meshes (sorted by name; neutral.* excluded)");
+    create->add_option(
+        "--avatar", o->avatar,
+        "Avatar (.glb, .gltf, .vrm) whose morph targets are the visemes (instead of --visemes)");
+    create->add_option("--targets", o->targets,
+                       "With --avatar: glob selecting the viseme targets (default: the Oculus visemes)");
     create->add_option("--neutral", o->neutral,
                        "Neutral mesh (default: neutral.obj/.ply/.wrl in the folder)");
     create->add_option("--freq-file", o->freqFile, "Viseme frequencies (CSV or JSON)");
     create->add_option("--phonemes", o->phonemeFile, "Phoneme frequency table (CSV or JSON), with --map");
     create->add_option("--map", o->mapFile, "Phoneme -> viseme map (CSV or JSON)");
     create->add_option("--weights", o->weights, "uniform | area")->capture_default_str();
-    create->add_option("--target", o->target, "Reduction target m")->capture_default_str();
+    auto* target = create->add_option("--target", o->target, "Reduction target m (default 1; avatars n / 2)");
     create->add_option("--face", o->face, "Include a deformable face: bundled | retarget");
     create->add_option("--order", o->order, "Viseme order, comma-separated (default: sorted by file name)");
     create->add_flag("--reduce", o->reduce, "Run the reduction and store its result in the project");
-    create->callback([&run, o] { run = [o] { return runNew(*o); }; });
+    create->callback([&run, o, target] {
+        const bool targetGiven = target->count() > 0;
+        run = [o, targetGiven] { return runNew(*o, targetGiven); };
+    });
 
     auto file = std::make_shared<std::string>();
     auto* check = cmd->add_subcommand("check", "Validate a project file and read the meshes it references");

@@ -1,16 +1,22 @@
 // `visemelab say "TEXT" | --text-file F --project P --out track.json [--wav audio.wav] [--glb anim.glb]`:
 // text -> speech (espeak-ng) -> timed phonemes -> the full and the reduced viseme tracks, the
 // utterance error between them, and (for a corpus) the error curve over m = 1..n.
+// `--avatar IN.glb [-m M | --reduced R.glb]` instead of a project: the avatar speaks, and --glb
+// writes the avatar itself with the speech animation (core/project/AvatarSpeech.h).
 #include "app/cli/Command.h"
 #include "app/cli/PlayerModule.h"
 #include "app/cli/Progress.h"
 #include "core/common/AtomicFile.h"
 #include "core/common/Error.h"
 #include "core/export/Gltf.h"
+#include "core/gltf/TargetNames.h"
 #include "core/phonetics/CorpusText.h"
 #include "core/phonetics/EspeakSynthesizer.h"
+#include "core/phonetics/PhonemeMaps.h"
+#include "core/project/AvatarSpeechGlb.h"
 #include "core/project/Project.h"
 #include "core/project/ProjectSpeech.h"
+#include "core/speech/DisplacementError.h"
 #include "core/speech/SpeechGltf.h"
 #include "core/speech/SpeechPage.h"
 #include "core/speech/TrackFormats.h"
@@ -30,6 +36,10 @@ struct SayOptions {
     std::string text;
     std::string textFile;
     std::string project;
+    std::string avatar;  // instead of a project
+    std::string reduced; // with --avatar: that avatar reduced by `avatar reduce`
+    std::string targets; // with --avatar: glob over target names
+    int target = 0;      // with --avatar: reduce to m keys in memory
     std::string out;
     std::string wav;
     std::string glb;
@@ -58,7 +68,9 @@ void checkOutputs(const SayOptions& o) {
     const std::pair<const char*, const std::string*> outputs[] = {
         {"--out", &o.out}, {"--wav", &o.wav}, {"--glb", &o.glb}, {"--html", &o.html}};
     const std::pair<const char*, const std::string*> inputs[] = {{"--project", &o.project},
-                                                                 {"--text-file", &o.textFile}};
+                                                                 {"--text-file", &o.textFile},
+                                                                 {"--avatar", &o.avatar},
+                                                                 {"--reduced", &o.reduced}};
     for (std::size_t i = 0; i < std::size(outputs); ++i) {
         for (std::size_t j = i + 1; j < std::size(outputs); ++j)
             if (same(*outputs[i].second, *outputs[j].second))
@@ -106,17 +118,44 @@ std::vector<TrackErrorCurvePoint> errorCurve(const SayOptions& o, const Project&
     return points;
 }
 
-void printSummary(const SpeechTrackFile& track, const Project& project, std::size_t fullKeys) {
+// The avatar's faces (AvatarSpeech), checking the avatar options.
+AvatarSpeech avatarFaces(const SayOptions& o, const std::optional<PhonemeVisemeMap>& map) {
+    if (!o.project.empty()) throwUsage("give --project or --avatar, not both");
+    if (o.target > 0 && !o.reduced.empty()) throwUsage("give -m or --reduced, not both");
+    if (o.curve) throwUsage("--curve needs --project (the error curve reduces a project to every m)");
+    if (!o.glb.empty() && std::filesystem::path(o.glb).extension() == ".gltf")
+        throwUsage("--glb " + o.glb +
+                   ": the speaking avatar is written as binary glTF; name it .glb (or .vrm)");
+    if (!o.targets.empty()) checkGlobPattern(o.targets, "--targets");
+    AvatarSpeechOptions options;
+    options.targets = o.targets;
+    options.reduceTo = o.target;
+    options.reduced = o.reduced;
+    options.phonemeTable = bundledPhonemeFrequencies(VISEMELAB_ASSETS_DIR, "oculus");
+    options.map = map;
+    return avatarSpeech(o.avatar, options);
+}
+
+void printDisplacement(const TrackError& e, std::size_t keys) {
+    if (!e.displacement) return;
+    const TrackDisplacementError& d = *e.displacement;
+    std::printf(
+        "speech error (m = %zu): RMS %.3g %s, max %.3g %s at %.2f s (vertex displacement over the mouth)\n",
+        keys, d.rms, d.unit.c_str(), d.max, d.unit.c_str(), d.maxTime);
+}
+
+void printSummary(const SpeechTrackFile& track, std::size_t reducedKeys, std::size_t fullKeys) {
     const auto& e = *track.error;
     std::size_t pauses = 0;
     for (const auto& p : track.phonemes) pauses += p.phoneme == kSilencePhoneme;
     std::printf("%.2f s of speech: %zu phonemes (%zu pauses), %zu cues on %zu visemes, %zu cues on %d keys\n",
                 track.metadata.duration, track.phonemes.size() - pauses, pauses, track.mouthCues.size(),
-                fullKeys, track.reducedCues.size(), project.reduction.target);
+                fullKeys, track.reducedCues.size(), static_cast<int>(reducedKeys));
     std::printf("utterance error (m = %d, %s, %g fps): mean %.6g, max %.6g at %.2f s, %.2f %% of the mouth's "
                 "motion\n",
-                project.reduction.target, track.metadata.interpolation.c_str(), track.metadata.fps, e.mean,
-                e.max, e.maxTime, 100 * e.relative);
+                static_cast<int>(reducedKeys), track.metadata.interpolation.c_str(), track.metadata.fps,
+                e.mean, e.max, e.maxTime, 100 * e.relative);
+    printDisplacement(e, reducedKeys);
     if (track.errorCurve.empty()) return;
     std::printf("   m   reduction cost     error mean      error max   of motion\n");
     for (const auto& p : track.errorCurve)
@@ -130,21 +169,35 @@ int runSay(const SayOptions& o) {
     if (!interpolation) throwUsage("--blend must be linear, cubic or dominance, not '" + o.blend + "'");
     const auto format = trackFormatFromString(o.format);
     if (!format) throwUsage("--format must be oculus, rhubarb or talkinghead, not '" + o.format + "'");
+    if (o.project.empty() == o.avatar.empty()) throwUsage("give --project or --avatar");
+    if (o.avatar.empty() && (o.target > 0 || !o.reduced.empty() || !o.targets.empty()))
+        throwUsage("-m, --reduced and --targets go with --avatar");
     checkOutputs(o);
 
-    const Project project = loadProject(o.project);
     std::optional<PhonemeVisemeMap> map;
     if (!o.map.empty()) map = loadPhonemeMapFile(o.map);
-    const SpeechFaces faces = projectSpeechFaces(project, map ? &*map : nullptr);
+    std::optional<AvatarSpeech> avatar;
+    Project project;
+    if (!o.avatar.empty())
+        avatar = avatarFaces(o, map);
+    else
+        project = loadProject(o.project);
+    const std::string where = avatar ? o.avatar : o.project;
+    const SpeechFaces faces = avatar ? avatar->faces : projectSpeechFaces(project, map ? &*map : nullptr);
+    // glTF lengths are metres; a project of mesh files has no unit.
+    const DisplacementUnit unit =
+        avatar || project.avatar.isSet() ? millimetresFromMetres() : DisplacementUnit{};
     auto synthesizer = makeEspeakSynthesizer({o.voice, o.rate});
     std::optional<WavStreamWriter> wav;
     if (!o.wav.empty()) wav.emplace(o.wav, synthesizer->sampleRate());
     const Utterance utterance = speak(o, *synthesizer, wav ? &*wav : nullptr);
 
     const PlaybackSettings settings{*interpolation};
-    const FaceTrack full(faces.full, utterance.phonemes, settings, o.project);
-    const FaceTrack reduced(faces.reduced, utterance.phonemes, settings, o.project);
+    const FaceTrack full(faces.full, utterance.phonemes, settings, where);
+    const FaceTrack reduced(faces.reduced, utterance.phonemes, settings, where);
     const UtteranceError error = measureUtteranceError(full, reduced, faces.weights, o.fps);
+    const DisplacementError displacement =
+        measureDisplacementError(full, reduced, faces.weights, o.fps, unit);
 
     SpeechTrackFile track;
     track.metadata = {o.wav.empty() ? std::string() : projectRelativePath(o.out, o.wav).generic_string(),
@@ -159,18 +212,28 @@ int runSay(const SayOptions& o) {
     track.mouthCues = full.cues();
     track.reducedCues = reduced.cues();
     track.phonemes = utterance.phonemes;
-    track.error = TrackError{error.mean, error.max, error.maxTime, error.relative, error.frames};
+    track.error = TrackError{error.mean,
+                             error.max,
+                             error.maxTime,
+                             error.relative,
+                             error.frames,
+                             TrackDisplacementError{displacement.unit, displacement.rms, displacement.max,
+                                                    displacement.maxTime, displacement.rmsFrames,
+                                                    displacement.maxFrames}};
     track.playback = TrackPlayback{toString(*interpolation), settings.dominanceRate, playbackOf(full),
                                    playbackOf(reduced)};
-    if (o.curve || !o.textFile.empty())
+    if (!avatar && (o.curve || !o.textFile.empty()))
         track.errorCurve = errorCurve(o, project, utterance, settings, map ? &*map : nullptr);
 
     // Formatted before anything is written: a face whose names have no shape in the format is
     // refused without leaving other outputs behind.
     const std::string trackText = formatTrack(track, *format, o.out);
     if (wav) wav->finish();
+    // The face the --glb file and the --html page show: the avatar itself (animated), or the reduced face.
     std::string glb;
-    if (!o.glb.empty() || !o.html.empty()) {
+    if (avatar && (!o.glb.empty() || !o.html.empty())) {
+        glb = speakingAvatarGlb(*avatar, avatar->reducedFace ? reduced : full, o.fps);
+    } else if (!o.glb.empty() || !o.html.empty()) {
         const GltfMorphAnimation animation = gltfAnimationOf(reduced, o.fps);
         glb = formatGlb(faces.reduced, &animation);
     }
@@ -183,7 +246,10 @@ int runSay(const SayOptions& o) {
                                                     audio, playerModuleSource(), o.three}));
     }
     writeFileAtomically(o.out, trackText);
-    if (!o.quiet) printSummary(track, project, faces.full.keys.size());
+    if (!o.quiet) {
+        if (avatar) std::printf("%s: frequencies %s\n", o.avatar.c_str(), avatar->frequencies.c_str());
+        printSummary(track, faces.reduced.keys.size(), faces.full.keys.size());
+    }
     for (const auto& [symbol, count] : synthesizer->skippedSymbols())
         std::fprintf(stderr,
                      "visemelab: note: espeak symbol '%s' (%zu) has no ARPAbet equivalent; its time went to "
@@ -202,12 +268,22 @@ int runSay(const SayOptions& o) {
 void addSayCommand(CLI::App& app, CommandRunner& run) {
     auto o = std::make_shared<SayOptions>();
     auto* cmd = app.add_subcommand(
-        "say", "Speak text (espeak-ng) and lip-sync it with the project's full and reduced "
-               "visemes: Rhubarb-style track JSON, utterance error, WAV, animated glTF");
+        "say", "Speak text (espeak-ng) and lip-sync it with the full and reduced visemes of a "
+               "project or an avatar: Rhubarb-style track JSON, utterance error, WAV, animated glTF");
     cmd->add_option("text", o->text, "The text to say (or --text-file)");
     cmd->add_option("--text-file", o->textFile,
                     "UTF-8 text file of any length: also prints the error curve over m = 1..n");
-    cmd->add_option("--project", o->project, "Project (.vlproj) with a phoneme -> viseme map")->required();
+    cmd->add_option("--project", o->project, "Project (.vlproj) with a phoneme -> viseme map");
+    cmd->add_option("--avatar", o->avatar,
+                    "Avatar (.glb, .gltf, .vrm) to speak with instead of a project: its visemes are the full "
+                    "face");
+    cmd->add_option("--target,-m", o->target,
+                    "With --avatar: reduce its visemes to m keys in memory (as `avatar reduce`)")
+        ->check(CLI::PositiveNumber);
+    cmd->add_option("--reduced", o->reduced,
+                    "With --avatar: the avatar `avatar reduce` wrote from it, as the reduced face");
+    cmd->add_option("--targets", o->targets,
+                    "With --avatar: glob selecting the viseme targets (default: the Oculus visemes)");
     cmd->add_option("--out", o->out, "Track JSON to write (Rhubarb layout + reducedCues, phonemes, error)")
         ->required();
     cmd->add_option("--map", o->map,
@@ -215,10 +291,12 @@ void addSayCommand(CLI::App& app, CommandRunner& run) {
                     "with frequencies per viseme");
     cmd->add_option("--wav", o->wav, "Write the speech audio (16-bit mono WAV)");
     cmd->add_option("--glb", o->glb,
-                    "Write the reduced face with the speech as a glTF morph weight animation");
-    cmd->add_option("--html", o->html,
-                    "Write a web page that plays the face with the audio in three.js (everything embedded "
-                    "but three: see --three)");
+                    "Write the reduced face with the speech as a glTF morph weight animation (with --avatar: "
+                    "the avatar itself, reduced with -m / --reduced, plus the animation)");
+    cmd->add_option(
+        "--html", o->html,
+        "Write a web page that plays the face (with --avatar: the avatar) with the audio in three.js "
+        "(everything embedded but three: see --three)");
     cmd->add_option("--three", o->three,
                     "URL of three.js's package folder for --html (default node_modules/three, beside the "
                     "page: npm install three)");

@@ -41,6 +41,11 @@ Document documentFromAvatar(DocumentAvatar avatar, const FrequencySource& oculus
     return document;
 }
 
+Project newAvatarProject(const std::filesystem::path& file, const std::string& pattern,
+                         const FrequencySource& oculusTable) {
+    return projectFromDocument(documentFromAvatar(loadDocumentAvatar(file, pattern), oculusTable));
+}
+
 std::string reducedAvatarGlb(const Document& document, const std::vector<int>& groupOf,
                              const AvatarWriteOptions& options, AvatarWriteSummary* summary) {
     if (!document.avatar.isSet() || !document.visemes)

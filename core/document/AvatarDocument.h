@@ -25,6 +25,12 @@ DocumentAvatar loadDocumentAvatar(const std::filesystem::path& file, const std::
 // patterns of known conventions that match some of its targets).
 Document documentFromAvatar(DocumentAvatar avatar, const FrequencySource& oculusTable);
 
+// The project of a new avatar document (`visemelab project new --avatar`): the avatar file and target
+// pattern, the visemes by name, the frequencies, weights and target documentFromAvatar chooses.
+// Throws what loadDocumentAvatar and documentFromAvatar throw.
+Project newAvatarProject(const std::filesystem::path& file, const std::string& pattern,
+                         const FrequencySource& oculusTable);
+
 // The document's avatar with its visemes grouped by `groupOf` (viseme i -> key, 0..m-1): keys are
 // the frequency-weighted means of their members on every mesh (core/gltf/AvatarWriter.h), written
 // as a GLB. Throws InputError when the document has no avatar or writing is refused.

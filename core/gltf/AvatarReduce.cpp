@@ -2,26 +2,13 @@
 
 #include "core/common/Error.h"
 #include "core/gltf/GltfDocument.h"
+#include "core/gltf/VisemeMapNames.h"
 
 #include <algorithm>
 
 namespace vl {
-namespace {
-
-// The avatar's name for a viseme named `name` anywhere else, or `name` itself.
-std::string avatarName(const std::string& name, const AvatarScan& scan) {
-    const std::string key = visemeJoinKey(name);
-    for (std::size_t i = 0; i < scan.visemeKeys.size(); ++i)
-        if (scan.visemeKeys[i] == key) return scan.visemes[i];
-    return name;
-}
-
-} // namespace
-
 FrequencySource matchVisemeNames(FrequencySource source, const AvatarScan& scan) {
-    for (auto& [name, value] : source.visemeFrequencies.entries) name = avatarName(name, scan);
-    for (auto& [phoneme, viseme] : source.map.entries) viseme = avatarName(viseme, scan);
-    return source;
+    return frequenciesOntoVisemes(std::move(source), scan.visemes);
 }
 
 bool mapFitsAvatar(const PhonemeVisemeMap& map, const AvatarScan& scan) {

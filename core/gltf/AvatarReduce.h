@@ -15,8 +15,9 @@ namespace vl {
 
 class GltfDocument;
 
-// `source` with every viseme name that stands for one of the avatar's visemes (same join key)
-// replaced by the avatar's name for it; other names stay (and are reported as unknown later).
+// `source` with every viseme name that stands for one of the avatar's visemes (same join key, or a
+// Rhubarb / MPEG-4 map read by meaning: core/gltf/VisemeMapNames.h) replaced by the avatar's name for
+// it; other names stay (and are reported as unknown later).
 FrequencySource matchVisemeNames(FrequencySource source, const AvatarScan& scan);
 
 // True when every viseme the map names is one of the avatar's visemes.

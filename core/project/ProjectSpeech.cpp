@@ -1,6 +1,7 @@
 #include "core/project/ProjectSpeech.h"
 
 #include "core/common/Error.h"
+#include "core/gltf/VisemeMapNames.h"
 #include "core/project/ProjectRun.h"
 
 #include <algorithm>
@@ -48,8 +49,12 @@ SpeechFaces projectSpeechFaces(const Project& project, const PhonemeVisemeMap* m
     faces.full = projectReducedModel(project, set, true);
     faces.reduced = projectReducedModel(project, set, false);
     if (map) {
-        setPhonemeMap(faces.full, *map, "phoneme map");
-        setPhonemeMap(faces.reduced, *map, "phoneme map");
+        // A map of another naming (Rhubarb shapes on Oculus visemes, "viseme_aa" for "aa") by meaning.
+        std::vector<std::string> names;
+        for (const Viseme& viseme : set.visemes) names.push_back(viseme.name);
+        const PhonemeVisemeMap matched = mapOntoVisemes(*map, names);
+        setPhonemeMap(faces.full, matched, "phoneme map");
+        setPhonemeMap(faces.reduced, matched, "phoneme map");
     }
     faces.weights = computeWeights(project.weights.mode, set.neutral, project.weights.painted,
                                    project.path.string() + ": /weights");

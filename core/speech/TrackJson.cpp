@@ -120,6 +120,17 @@ TrackPlayback readPlayback(const JsonNode& node) {
     return playback;
 }
 
+TrackDisplacementError readDisplacement(const JsonNode& error) {
+    TrackDisplacementError d;
+    d.unit = error["displacementUnit"].nonEmptyString();
+    d.rms = error["displacementRms"].nonNegativeNumber();
+    d.max = error["displacementMax"].nonNegativeNumber();
+    d.maxTime = optionalNumber(error, "displacementMaxTime");
+    if (error.has("displacementRmsFrames")) d.rmsFrames = error["displacementRmsFrames"].nonNegativeNumbers();
+    if (error.has("displacementMaxFrames")) d.maxFrames = error["displacementMaxFrames"].nonNegativeNumbers();
+    return d;
+}
+
 } // namespace
 
 std::string formatTrackJson(const SpeechTrackFile& track) {
@@ -144,7 +155,15 @@ std::string formatTrackJson(const SpeechTrackFile& track) {
         text += ",\n  \"error\": {\"mean\": " + json_text::number(e.mean) +
                 ", \"max\": " + json_text::number(e.max) + ", \"maxTime\": " + json_text::number(e.maxTime) +
                 ", \"relative\": " + json_text::number(e.relative) +
-                ",\n    \"frames\": " + numberArray(e.frames) + "}";
+                ",\n    \"frames\": " + numberArray(e.frames);
+        if (const auto& d = e.displacement)
+            text += ",\n    \"displacementUnit\": " + json_text::string(d->unit) +
+                    ", \"displacementRms\": " + json_text::number(d->rms) +
+                    ", \"displacementMax\": " + json_text::number(d->max) +
+                    ", \"displacementMaxTime\": " + json_text::number(d->maxTime) +
+                    ",\n    \"displacementRmsFrames\": " + numberArray(d->rmsFrames) +
+                    ",\n    \"displacementMaxFrames\": " + numberArray(d->maxFrames);
+        text += "}";
     }
     if (!track.errorCurve.empty()) {
         text += ",\n  \"errorCurve\": [";
@@ -197,13 +216,16 @@ SpeechTrackFile parseTrackJson(std::string_view text, std::string_view source) {
     if (root.has("error")) {
         const JsonNode error = root["error"];
         error.expectObject();
-        error.allowOnly({"mean", "max", "maxTime", "relative", "frames"});
+        error.allowOnly({"mean", "max", "maxTime", "relative", "frames", "displacementUnit",
+                         "displacementRms", "displacementMax", "displacementMaxTime", "displacementRmsFrames",
+                         "displacementMaxFrames"});
         TrackError e;
         e.mean = error["mean"].nonNegativeNumber();
         e.max = error["max"].nonNegativeNumber();
         e.maxTime = optionalNumber(error, "maxTime");
         e.relative = optionalNumber(error, "relative");
         if (error.has("frames")) e.frames = error["frames"].nonNegativeNumbers();
+        if (error.has("displacementUnit")) e.displacement = readDisplacement(error);
         track.error = std::move(e);
     }
     if (root.has("errorCurve")) {

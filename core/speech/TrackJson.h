@@ -30,9 +30,21 @@ struct TrackMetadata {
     bool operator==(const TrackMetadata&) const = default;
 };
 
+// The error as vertex displacement (core/speech/DisplacementError.h): RMS and max over the mouth
+// in `unit` ("mm" for avatars, "model units" for mesh files).
+struct TrackDisplacementError {
+    std::string unit;
+    double rms = 0, max = 0, maxTime = 0;
+    std::vector<double> rmsFrames, maxFrames; // per frame at metadata.fps
+    bool operator==(const TrackDisplacementError&) const = default;
+};
+
 struct TrackError {
     double mean = 0, max = 0, maxTime = 0, relative = 0;
     std::vector<double> frames; // per frame at metadata.fps
+
+    // The "displacement*" fields, when written (optional when reading).
+    std::optional<TrackDisplacementError> displacement;
     bool operator==(const TrackError&) const = default;
 };
 

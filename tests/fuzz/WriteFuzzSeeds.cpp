@@ -50,7 +50,7 @@ vl::SpeechTrackFile sampleTrack() {
     t.mouthCues = {{0.0, 0.1 / 3, "sil"}, {0.1 / 3, 0.5, "aa"}, {0.5, 0.7321, "sil"}};
     t.reducedCues = {{0.0, 0.1 / 3, "sil+PP"}, {0.1 / 3, 0.7321, "aa"}};
     t.phonemes = {{"sil", 0.0, 0.1 / 3}, {"HH", 0.1 / 3, 0.2}, {"AY", 0.2, 0.5}, {"sil", 0.5, 0.7321}};
-    t.error = vl::TrackError{1.25e-3, 0.017, 0.4, 0.031, {0.0, 1e-17, 0.017, 2.0 / 3}};
+    t.error = vl::TrackError{1.25e-3, 0.017, 0.4, 0.031, {0.0, 1e-17, 0.017, 2.0 / 3}, {}};
     t.errorCurve = {{1, 102.5, 0.2, 1.5, 0.9}, {2, 20.1, 0.05, 0.9, 0.3}};
     return t;
 }

@@ -7,6 +7,7 @@
 #include "core/gltf/GltfDocument.h"
 #include "core/project/ProjectRun.h"
 #include "tests/gltf/AvatarFixtures.h"
+#include "tests/gltf/AvatarSpeechFixture.h"
 
 #include <cstdio>
 #include <cstring>
@@ -75,6 +76,17 @@ int main(int argc, char** argv) {
         }
         writeEditorExport(dir, "rpm_plain", "", 5, vl::AvatarNames::Original);
         writeEditorExport(dir, "vroid_vrm0", "Fcl_MTH_[AIUEO]", 3, vl::AvatarNames::Merged);
+        // What `say --avatar ... --glb` writes: the avatar itself speaking (full track, and reduced in
+        // memory, compressed inputs included; cubic keyframes and sampled dominance).
+        using vl::runtime::Interpolation;
+        vl::writeFileAtomically(dir / "rpm_plain_speech.glb",
+                                vl::test::speakingFixtureGlb(dir / "rpm_plain.glb", 0, Interpolation::Cubic));
+        vl::writeFileAtomically(
+            dir / "rpm_meshopt_speech_m4.glb",
+            vl::test::speakingFixtureGlb(dir / "rpm_meshopt.glb", 4, Interpolation::Linear));
+        vl::writeFileAtomically(
+            dir / "rpm_draco_speech_m4.glb",
+            vl::test::speakingFixtureGlb(dir / "rpm_draco.glb", 4, Interpolation::Dominance));
         if (argc > 2 && std::strcmp(argv[2], "--bench") == 0) {
             // About 30,000 vertices on the 4 meshes that carry the 15 visemes.
             vl::test::AvatarFixtureOptions options;

@@ -88,11 +88,19 @@ TEST(ProjectSpeech, PerVisemeFrequenciesAreRefusedWithAReason) {
     EXPECT_NE(
         std::find_if(full.cues().begin(), full.cues().end(), [](const Cue& c) { return c.value == "PP"; }),
         full.cues().end());
+    // Rhubarb's shapes are read by meaning on these Oculus names (A: closed lips -> PP).
     const PhonemeVisemeMap rhubarb = loadPhonemeMapFile(assets / "map_rhubarb.csv");
+    const SpeechFaces rhubarbFaces = projectSpeechFaces(project, &rhubarb);
+    const FaceTrack spoken(rhubarbFaces.full, u.phonemes, {}, "rhubarb");
+    EXPECT_NE(std::find_if(spoken.cues().begin(), spoken.cues().end(),
+                           [](const Cue& c) { return c.value == "PP"; }),
+              spoken.cues().end());
+    PhonemeVisemeMap unknown;
+    unknown.entries = {{"sil", "X"}, {"AA", "jawOpen"}, {"M", "sil"}};
     try {
-        projectSpeechFaces(project, &rhubarb);
+        projectSpeechFaces(project, &unknown);
         FAIL() << "expected InputError";
     } catch (const InputError& e) {
-        EXPECT_NE(std::string(e.what()).find("does not have: 'X', 'D'"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("does not have: 'X', 'jawOpen'"), std::string::npos) << e.what();
     }
 }

@@ -13,7 +13,7 @@ SpeechTrackFile sampleTrack() {
     t.mouthCues = {{0.0, 0.1 / 3, "sil"}, {0.1 / 3, 0.5, "aa"}, {0.5, 0.7321, "sil"}};
     t.reducedCues = {{0.0, 0.1 / 3, "sil+PP"}, {0.1 / 3, 0.7321, "aa"}};
     t.phonemes = {{"sil", 0.0, 0.1 / 3}, {"HH", 0.1 / 3, 0.2}, {"AY", 0.2, 0.5}, {"sil", 0.5, 0.7321}};
-    t.error = TrackError{1.25e-3, 0.017, 0.4, 0.031, {0.0, 1e-17, 0.017, 2.0 / 3}};
+    t.error = TrackError{1.25e-3, 0.017, 0.4, 0.031, {0.0, 1e-17, 0.017, 2.0 / 3}, {}};
     t.errorCurve = {{1, 102.5, 0.2, 1.5, 0.9}, {2, 20.1, 0.05, 0.9, 0.3}};
     return t;
 }
@@ -34,6 +34,21 @@ TEST(TrackJson, RoundTripIsExact) {
     const std::string text = formatTrackJson(track);
     EXPECT_EQ(parseTrackJson(text, "t.json"), track);
     EXPECT_EQ(formatTrackJson(parseTrackJson(text, "t.json")), text);
+}
+
+TEST(TrackJson, DisplacementErrorRoundTripsAndOlderFilesHaveNone) {
+    SpeechTrackFile track = sampleTrack();
+    const std::string older = formatTrackJson(track);
+    EXPECT_EQ(older.find("displacement"), std::string::npos);
+    EXPECT_FALSE(parseTrackJson(older, "t.json").error->displacement);
+    track.error->displacement =
+        TrackDisplacementError{"mm", 0.42, 1.9, 0.4, {0.0, 0.1 / 3, 0.42, 0.0}, {0.0, 0.2, 1.9, 0.0}};
+    const std::string text = formatTrackJson(track);
+    EXPECT_NE(text.find("\"displacementUnit\": \"mm\""), std::string::npos) << text;
+    EXPECT_EQ(parseTrackJson(text, "t.json"), track);
+    expectError(R"({"mouthCues": [{"start": 0, "end": 1, "value": "A"}], "error": {"mean": 0, "max": 0,
+                  "displacementUnit": "mm", "displacementRms": -1, "displacementMax": 0}})",
+                "/error/displacementRms");
 }
 
 TEST(TrackJson, ReadsRhubarbOutput) {

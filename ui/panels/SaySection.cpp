@@ -124,6 +124,15 @@ void EditorUi::saySection() {
                 "set, frame by frame (60 fps) while the clip plays; mean over time and worst frame. "
                 "Plotted under the timeline. No frequencies: the speech itself weights the visemes.");
             ImGui::Text("%.2f %% of the mouth's motion is lost on this clip", 100.0 * e.relative);
+            if (const auto& d = playback->displacement) {
+                ImGui::Text("Speech error: RMS %.3g %s, max %.3g %s at %.2f s", d->rms, d->unit.c_str(),
+                            d->max, d->unit.c_str(), d->maxTime);
+                ImGui::SameLine();
+                helpMarker(
+                    "How far the reduced mouth's vertices are from the full mouth's (the vertices of "
+                    "nonzero weight), root mean square over vertices and time, and the largest distance "
+                    "of any vertex in any frame. Avatars are in metres (glTF): shown in mm.");
+            }
         } else {
             ImGui::TextDisabled("Utterance error: waiting for the reduction");
         }

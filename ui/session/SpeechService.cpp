@@ -131,8 +131,13 @@ const SpeechPlayback* SpeechService::playback(const Document& document, std::uin
                 trackOf(buildReducedModel(*set, frequencies, grouping->groupOf(), document.frequencies),
                         *clip_, "reduced set"));
             playback_.groups = static_cast<int>(grouping->groups.size());
-            playback_.error = measureUtteranceError(*playback_.full, *playback_.reduced,
-                                                    documentWeights(document), kSpeechErrorFps);
+            const std::vector<double> weights = documentWeights(document);
+            playback_.error =
+                measureUtteranceError(*playback_.full, *playback_.reduced, weights, kSpeechErrorFps);
+            // glTF lengths are metres; mesh files carry no unit.
+            playback_.displacement = measureDisplacementError(
+                *playback_.full, *playback_.reduced, weights, kSpeechErrorFps,
+                document.avatar.isSet() ? millimetresFromMetres() : DisplacementUnit{});
         }
     } catch (const InputError& e) {
         playback_ = SpeechPlayback();

@@ -5,6 +5,7 @@
 // runtime's keyframe evaluator (core/speech/FaceTrack.h) and the utterance error between them. The
 // tracks are rebuilt when the clip, the reduction inputs or the grouping change.
 #include "core/document/Document.h"
+#include "core/speech/DisplacementError.h"
 #include "core/speech/FaceTrack.h"
 #include "core/speech/SpeechSettings.h"
 #include "core/speech/UtteranceError.h"
@@ -38,7 +39,8 @@ struct SpeechPlayback {
     std::optional<FaceTrack> full;    // every viseme a key (the viseme mesh's morph targets)
     std::optional<FaceTrack> reduced; // the grouping's keys (the merged mesh's targets), when reduced
     std::optional<UtteranceError> error;
-    int groups = 0;      // m of `reduced`
+    std::optional<DisplacementError> displacement; // the same error in mm (avatars) or model units
+    int groups = 0;                                // m of `reduced`
     std::string problem; // why there are no tracks (e.g. a phoneme the map lacks), or ""
 };
 

@@ -1,0 +1,52 @@
+#pragma once
+// An avatar speaking, without a project (`visemelab say --avatar`): the avatar's visemes as the full
+// face, its reduction as the reduced face (reduced in memory to m keys as `avatar reduce` does, or
+// read from an avatar `avatar reduce` wrote), and the document the speech animation goes on.
+#include "core/gltf/AvatarScan.h"
+#include "core/gltf/GltfDocument.h"
+#include "core/project/ProjectSpeech.h"
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace vl {
+
+struct AvatarSpeechOptions {
+    std::string targets;           // glob over target names; empty = the Oculus visemes
+    int reduceTo = 0;              // > 0: reduce to this many keys in memory (uniform weights)
+    std::filesystem::path reduced; // else, when set: the avatar `avatar reduce` wrote from this one
+    // The bundled en-us phoneme table with the Oculus map: the frequencies `avatar reduce` uses by
+    // default (core/gltf/AvatarReduce.h defaultAvatarFrequencies).
+    FrequencySource phonemeTable;
+    std::optional<PhonemeVisemeMap> map; // instead of the table's, matched by meaning (VisemeMapNames)
+};
+
+// How a mesh's morph targets follow a face track: per target the key whose weight drives it,
+// kDefaultWeight (not a viseme: keeps the mesh's default weight) or kZeroWeight (a viseme target
+// another target of its key carries on this mesh).
+struct MeshDrive {
+    static constexpr int kDefaultWeight = -1;
+    static constexpr int kZeroWeight = -2;
+    int mesh = 0;
+    std::vector<int> keyOfTarget;
+};
+
+struct AvatarSpeech {
+    SpeechFaces faces;        // full: every viseme; reduced: the reduction (the full face without one)
+    bool reducedFace = false; // -m or a reduced avatar given
+    std::string frequencies;  // which frequencies and map, for messages
+    // The document the animation is added to: the reduced avatar when there is one (its keys are
+    // driven by the reduced face), else the avatar (driven by the full face).
+    std::shared_ptr<const GltfDocument> animated;
+    std::vector<MeshDrive> drives; // every mesh of `animated` carrying visemes
+};
+
+// Throws InputError naming the file and element: fewer than 2 visemes, no phoneme -> viseme map
+// (the avatar's names are not Oculus visemes and no map is given), a map naming visemes the avatar
+// lacks, a reduced avatar that is not VisemeLab's reduction of this avatar with names "original".
+AvatarSpeech avatarSpeech(const std::filesystem::path& avatar, const AvatarSpeechOptions& options);
+
+} // namespace vl

@@ -1,0 +1,127 @@
+// `visemelab project new --avatar` and `visemelab say --avatar`: an avatar speaks without a
+// hand-written project; the animated GLB is the avatar itself.
+#include "core/common/AtomicFile.h"
+#include "core/gltf/GltfDocument.h"
+#include "core/project/Project.h"
+#include "core/speech/TrackJson.h"
+#include "tests/cli/CliRunner.h"
+#include "tests/gltf/AvatarFolderTest.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+namespace vl {
+namespace {
+
+class SayAvatarCli : public test::AvatarFolderTest {
+  protected:
+    // Runs `say`; skips (loudly) when espeak-ng cannot speak here (no voice data).
+    test::CliResult say(const std::string& arguments) {
+        auto r = test::runCli("say 'Hello, world. How are you?' " + arguments);
+        if (r.exitCode != 0 && r.output.find("espeak") != std::string::npos &&
+            r.output.find("voice") != std::string::npos)
+            skipped = "espeak-ng cannot speak here: " + r.output;
+        return r;
+    }
+    std::string skipped;
+};
+
+std::string bundled(const char* file) {
+    return (std::filesystem::path(VISEMELAB_ASSETS_DIR) / "phonemes" / file).string();
+}
+
+} // namespace
+
+TEST_F(SayAvatarCli, ProjectNewFromAnAvatarRoundTrips) {
+    const auto r = test::runCli("project new --avatar " + path("rpm.glb") + " --out " + path("p.vlproj"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const Project project = loadProject(dir / "p.vlproj");
+    EXPECT_EQ(project.avatar.file, std::filesystem::path("rpm.glb")); // relative to the project
+    EXPECT_TRUE(project.avatar.targets.empty());
+    ASSERT_EQ(project.visemes.size(), 15u);
+    EXPECT_EQ(project.visemes.front().name, "viseme_sil");
+    EXPECT_EQ(project.reduction.target, 7); // n / 2, as File > Import avatar...
+    EXPECT_TRUE(project.frequencies.isPhonemeBased());
+    const auto check = test::runCli("project check " + path("p.vlproj"));
+    ASSERT_EQ(check.exitCode, 0) << check.output;
+    EXPECT_NE(check.output.find("15 visemes"), std::string::npos) << check.output;
+    // Saved again it is the same file.
+    saveProject(dir / "again.vlproj", project);
+    EXPECT_EQ(loadProject(dir / "again.vlproj").visemes, project.visemes);
+
+    const auto target = test::runCli("project new --avatar " + path("rpm.glb") +
+                                     " --target 4 --reduce --out " + path("q.vlproj"));
+    ASSERT_EQ(target.exitCode, 0) << target.output;
+    EXPECT_EQ(loadProject(dir / "q.vlproj").reduction.target, 4);
+    EXPECT_TRUE(loadProject(dir / "q.vlproj").reduction.result);
+    EXPECT_EQ(test::runCli("project new --out " + path("r.vlproj")).exitCode, 2);
+    EXPECT_EQ(test::runCli("project new --avatar " + path("rpm.glb") + " --visemes " + dir.string() +
+                           " --out " + path("r.vlproj"))
+                  .exitCode,
+              2);
+
+    // An Oculus-named project speaks with the Rhubarb map, its error in mm (glTF is in metres).
+    const auto rhubarb = say("--project " + path("p.vlproj") + " --map " + bundled("map_rhubarb.csv") +
+                             " --out " + path("t.json"));
+    if (!skipped.empty()) GTEST_SKIP() << skipped;
+    ASSERT_EQ(rhubarb.exitCode, 0) << rhubarb.output;
+    EXPECT_NE(rhubarb.output.find("speech error (m = 7): RMS "), std::string::npos) << rhubarb.output;
+    EXPECT_NE(rhubarb.output.find(" mm"), std::string::npos) << rhubarb.output;
+}
+
+TEST_F(SayAvatarCli, SaysWithAnAvatarReducedInMemoryAndWritesTheAvatarSpeaking) {
+    const auto r = say("--avatar " + path("rpm.glb") + " -m 4 --out " + path("t.json") + " --glb " +
+                       path("anim.glb") + " --blend linear");
+    if (!skipped.empty()) GTEST_SKIP() << skipped;
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("speech error (m = 4): RMS "), std::string::npos) << r.output;
+    const SpeechTrackFile track = loadTrackJson(dir / "t.json");
+    ASSERT_TRUE(track.error && track.error->displacement);
+    const TrackDisplacementError& d = *track.error->displacement;
+    EXPECT_EQ(d.unit, "mm");
+    EXPECT_GT(d.max, 0.0);
+    EXPECT_LE(d.rms, d.max);
+    EXPECT_EQ(d.rmsFrames.size(), track.error->frames.size());
+    EXPECT_EQ(track.mouthCues.front().value, "viseme_sil"); // the avatar's names
+
+    const GltfDocument input = loadGltfDocument(dir / "rpm.glb"), anim = loadGltfDocument(dir / "anim.glb");
+    EXPECT_EQ(anim.model.meshes.size(), input.model.meshes.size());
+    EXPECT_EQ(anim.model.skins.size(), input.model.skins.size());
+    EXPECT_EQ(anim.model.materials.size(), input.model.materials.size());
+    ASSERT_EQ(anim.model.animations.size(), input.model.animations.size() + 1);
+    EXPECT_EQ(anim.model.animations.back().channels.size(), 4u); // head, teeth, eyes
+    EXPECT_TRUE(anim.json["extras"].contains("visemelab"));      // the reduced avatar
+
+    // The same reduction from a file `avatar reduce` wrote: the same reduced track.
+    const auto reduce =
+        test::runCli("avatar reduce " + path("rpm.glb") + " -m 4 --out " + path("reduced.glb"));
+    ASSERT_EQ(reduce.exitCode, 0) << reduce.output;
+    const auto fromFile =
+        say("--avatar " + path("rpm.glb") + " --reduced " + path("reduced.glb") + " --out " +
+            path("t2.json") + " --glb " + path("anim2.glb") + " --blend linear");
+    ASSERT_EQ(fromFile.exitCode, 0) << fromFile.output;
+    const SpeechTrackFile second = loadTrackJson(dir / "t2.json");
+    EXPECT_EQ(second.reducedCues, track.reducedCues);
+    EXPECT_EQ(second.mouthCues, track.mouthCues);
+    EXPECT_NEAR(second.error->displacement->rms, d.rms, 1e-6 * (1 + d.rms));
+    EXPECT_EQ(loadGltfDocument(dir / "anim2.glb").model.animations.size(), input.model.animations.size() + 1);
+
+    // Without a reduction the avatar speaks its full track; the Rhubarb map is read by meaning.
+    const auto full = say("--avatar " + path("rpm.glb") + " --map " + bundled("map_rhubarb.csv") + " --out " +
+                          path("t3.json") + " --glb " + path("anim3.glb"));
+    ASSERT_EQ(full.exitCode, 0) << full.output;
+    EXPECT_EQ(loadTrackJson(dir / "t3.json").error->displacement->max, 0.0);
+
+    // Usage: -m and --reduced together, avatar options without --avatar, --glb over the input.
+    EXPECT_EQ(say("--avatar " + path("rpm.glb") + " -m 4 --reduced " + path("reduced.glb") + " --out " +
+                  path("x.json"))
+                  .exitCode,
+              2);
+    EXPECT_EQ(say("--project p.vlproj -m 4 --out " + path("x.json")).exitCode, 2);
+    EXPECT_EQ(say("--avatar " + path("rpm.glb") + " --out " + path("x.json") + " --glb " + path("rpm.glb"))
+                  .exitCode,
+              2);
+}
+
+} // namespace vl

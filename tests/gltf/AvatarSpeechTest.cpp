@@ -1,0 +1,193 @@
+// An avatar speaking without a project (core/project/AvatarSpeech.h, AvatarSpeechGlb.h) and maps of
+// other namings used on its names (core/gltf/VisemeMapNames.h).
+#include "core/common/AtomicFile.h"
+#include "core/common/Error.h"
+#include "core/gltf/Accessors.h"
+#include "core/gltf/AvatarReduce.h"
+#include "core/gltf/BufferViews.h"
+#include "core/gltf/VisemeMapNames.h"
+#include "tests/gltf/AvatarFixtures.h"
+#include "tests/gltf/AvatarFolderTest.h"
+#include "tests/gltf/AvatarSpeechFixture.h"
+#include "tests/gltf/GltfTestSupport.h"
+
+#include <gtest/gtest.h>
+
+#include <set>
+
+namespace vl {
+namespace {
+
+using AvatarSpeechTest = test::AvatarFolderTest;
+
+std::set<int> nodesOfVisemeMeshes(const GltfDocument& doc) {
+    const AvatarScan scan = scanAvatar(doc, {});
+    std::set<int> nodes;
+    for (const AvatarMesh& mesh : scan.meshes)
+        for (std::size_t n = 0; n < doc.model.nodes.size(); ++n)
+            if (mesh.carriesVisemes && doc.model.nodes[n].mesh == mesh.index)
+                nodes.insert(static_cast<int>(n));
+    return nodes;
+}
+
+} // namespace
+
+TEST_F(AvatarSpeechTest, ReducedAvatarSpeaksWithEveryMeshSkinAndMaterialKept) {
+    const GltfDocument input = loadGltfDocument(dir / "rpm.glb");
+    const GltfDocument out = parseGltfDocument(
+        test::speakingFixtureGlb(dir / "rpm.glb", 4, runtime::Interpolation::Linear), "anim", {});
+    EXPECT_EQ(out.model.meshes.size(), input.model.meshes.size());
+    EXPECT_EQ(out.model.skins.size(), input.model.skins.size());
+    EXPECT_EQ(out.model.materials.size(), input.model.materials.size());
+    EXPECT_EQ(out.model.nodes.size(), input.model.nodes.size());
+    ASSERT_EQ(out.model.animations.size(), input.model.animations.size() + 1);
+    const tinygltf::Animation& speech = out.model.animations.back();
+    EXPECT_EQ(speech.name, "speech");
+    std::set<int> animated;
+    for (const auto& channel : speech.channels) {
+        EXPECT_EQ(channel.target_path, "weights");
+        animated.insert(channel.target_node);
+    }
+    EXPECT_EQ(animated, nodesOfVisemeMeshes(out));
+    EXPECT_EQ(animated.size(), 4u); // head, teeth, two eyes
+
+    // The head at a keyframe inside AA (0.2 .. 0.5 s): the target AA drives holds all the weight.
+    const int headNode = *std::find_if(animated.begin(), animated.end(), [&](int n) {
+        return out.model.meshes[static_cast<std::size_t>(out.model.nodes[static_cast<std::size_t>(n)].mesh)]
+                   .name == "Wolf3D_Head";
+    });
+    const auto channel = std::find_if(speech.channels.begin(), speech.channels.end(),
+                                      [&](const auto& c) { return c.target_node == headNode; });
+    const tinygltf::AnimationSampler& sampler = speech.samplers[static_cast<std::size_t>(channel->sampler)];
+    EXPECT_EQ(sampler.interpolation, "LINEAR");
+    BufferViews views(out);
+    AccessorReader reader(out, views);
+    const std::vector<float> times = reader.floats(sampler.input, TINYGLTF_TYPE_SCALAR, "input");
+    const std::vector<float> weights = reader.floats(sampler.output, TINYGLTF_TYPE_SCALAR, "output");
+    const auto& headMesh =
+        out.json["meshes"]
+                [static_cast<std::size_t>(out.model.nodes[static_cast<std::size_t>(headNode)].mesh)];
+    const std::size_t targets = headMesh["extras"]["targetNames"].size();
+    ASSERT_EQ(weights.size(), times.size() * targets);
+    const int aaTarget = headMesh["extras"]["phonemeToTarget"]["AA"].get<int>();
+    std::set<int> visemeTargets;
+    for (const auto& key : headMesh["extras"]["visemeKeys"])
+        for (const auto& t : key["targets"]) visemeTargets.insert(t.get<int>());
+    bool sawAa = false;
+    for (std::size_t i = 0; i < times.size(); ++i) {
+        if (!(times[i] > 0.2f && times[i] < 0.5f)) continue;
+        sawAa = true;
+        EXPECT_FLOAT_EQ(weights[i * targets + static_cast<std::size_t>(aaTarget)], 1.0f) << times[i];
+        double sum = 0;
+        for (int t : visemeTargets) sum += weights[i * targets + static_cast<std::size_t>(t)];
+        EXPECT_NEAR(sum, 1.0, 1e-6);
+    }
+    EXPECT_TRUE(sawAa);
+    // Non-viseme targets (ARKit blinks) keep the mesh's default weight, 0 here, throughout.
+    for (std::size_t t = 0; t < targets; ++t)
+        if (!visemeTargets.count(static_cast<int>(t))) {
+            for (std::size_t i = 0; i < times.size(); ++i) ASSERT_EQ(weights[i * targets + t], 0.0f);
+        }
+}
+
+TEST_F(AvatarSpeechTest, ReducedFileGivesTheSameFaceAsReducingInMemory) {
+    AvatarSpeechOptions options;
+    options.phonemeTable = test::fixturePhonemeTable();
+    options.reduceTo = 4;
+    const AvatarSpeech inMemory = avatarSpeech(dir / "rpm.glb", options);
+    // What `avatar reduce rpm.glb -m 4` writes (uniform weights, names original).
+    const GltfDocument doc = loadGltfDocument(dir / "rpm.glb");
+    const AvatarScan scan = scanAvatar(doc, {});
+    ReduceSettings settings;
+    settings.target = 4;
+    writeFileAtomically(
+        dir / "reduced.glb",
+        reduceAvatar(doc, scan, defaultAvatarFrequencies(scan, options.phonemeTable), settings, {}).glb);
+    options.reduceTo = 0;
+    options.reduced = dir / "reduced.glb";
+    const AvatarSpeech fromFile = avatarSpeech(dir / "rpm.glb", options);
+    ASSERT_TRUE(fromFile.reducedFace);
+    ASSERT_EQ(fromFile.faces.reduced.keys.size(), 4u);
+    for (std::size_t k = 0; k < 4; ++k) {
+        const KeyMesh &a = inMemory.faces.reduced.keys[k], &b = fromFile.faces.reduced.keys[k];
+        EXPECT_EQ(a.members, b.members);
+        for (std::size_t v = 0; v < a.positions.size(); ++v)
+            ASSERT_NEAR((a.positions[v] - b.positions[v]).norm(), 0.0, 1e-5) << k << " " << v;
+    }
+    EXPECT_EQ(fromFile.faces.reduced.phonemeToKey, inMemory.faces.reduced.phonemeToKey);
+    ASSERT_EQ(fromFile.drives.size(), inMemory.drives.size());
+    for (std::size_t d = 0; d < fromFile.drives.size(); ++d)
+        EXPECT_EQ(fromFile.drives[d].keyOfTarget, inMemory.drives[d].keyOfTarget);
+    // The avatar itself is not a reduction.
+    options.reduced = dir / "rpm.glb";
+    test::expectInputError([&] { avatarSpeech(dir / "rpm.glb", options); }, {"rpm.glb", "extras/visemelab"});
+}
+
+TEST_F(AvatarSpeechTest, RhubarbMapSpeaksOnOculusNames) {
+    AvatarSpeechOptions options;
+    options.phonemeTable = test::fixturePhonemeTable();
+    options.map =
+        loadPhonemeMapFile(std::filesystem::path(VISEMELAB_ASSETS_DIR) / "phonemes" / "map_rhubarb.csv");
+    const AvatarSpeech speech = avatarSpeech(dir / "rpm.glb", options);
+    const ReducedModel& full = speech.faces.full;
+    const auto keyOf = [&](const std::string& phoneme) {
+        for (const auto& [p, key] : full.phonemeToKey)
+            if (p == phoneme) return full.keys[static_cast<std::size_t>(key)].name;
+        return std::string("none");
+    };
+    EXPECT_EQ(keyOf("M"), "viseme_PP");  // Rhubarb A: closed lips
+    EXPECT_EQ(keyOf("AA"), "viseme_aa"); // D: wide open
+    EXPECT_EQ(keyOf("F"), "viseme_FF");  // G: teeth on lip
+    EXPECT_EQ(keyOf("UW"), "viseme_U");  // F: puckered, RPM's spelling of ou
+    EXPECT_EQ(keyOf("sil"), "viseme_sil");
+    const FaceTrack track(full, test::fixtureUtterance(), {}, "rpm");
+    EXPECT_EQ(track.keyCount(), 15u);
+}
+
+TEST_F(AvatarSpeechTest, NamesOtherThanOculusNeedAMap) {
+    writeFileAtomically(dir / "vroid.vrm", test::vroidLikeAvatar());
+    AvatarSpeechOptions options;
+    options.phonemeTable = test::fixturePhonemeTable();
+    options.targets = "Fcl_MTH_[AIUEO]";
+    test::expectInputError([&] { avatarSpeech(dir / "vroid.vrm", options); }, {"vroid.vrm", "--map"});
+}
+
+TEST(VisemeMapNames, BundledMapsMatchAnyOculusSpellingAndRhubarbOrMpeg4ByMeaning) {
+    const std::vector<std::string> rpm = test::rpmVisemeNames();
+    PhonemeVisemeMap oculus;
+    oculus.entries = {{"AA", "aa"}, {"IY", "ih"}, {"OW", "oh"}, {"UW", "ou"}, {"M", "PP"}};
+    EXPECT_EQ(mapOntoVisemes(oculus, rpm).entries,
+              (std::vector<std::pair<std::string, std::string>>{{"AA", "viseme_aa"},
+                                                                {"IY", "viseme_I"},
+                                                                {"OW", "viseme_O"},
+                                                                {"UW", "viseme_U"},
+                                                                {"M", "viseme_PP"}}));
+    PhonemeVisemeMap rhubarb;
+    rhubarb.entries = {{"M", "A"},  {"S", "B"}, {"EH", "C"}, {"AA", "D"}, {"AO", "E"},
+                       {"UW", "F"}, {"F", "G"}, {"L", "H"},  {"sil", "X"}};
+    const std::vector<std::string> plain = oculusVisemeNames();
+    EXPECT_EQ(mapOntoVisemes(rhubarb, plain).entries,
+              (std::vector<std::pair<std::string, std::string>>{{"M", "PP"},
+                                                                {"S", "SS"},
+                                                                {"EH", "E"},
+                                                                {"AA", "aa"},
+                                                                {"AO", "oh"},
+                                                                {"UW", "ou"},
+                                                                {"F", "FF"},
+                                                                {"L", "nn"},
+                                                                {"sil", "sil"}}));
+    // On a set named by Rhubarb's shapes the map stays as it is (its "E" is not Oculus's E).
+    EXPECT_EQ(mapOntoVisemes(rhubarb, {"A", "B", "C", "D", "E", "F", "G", "H", "X"}).entries,
+              rhubarb.entries);
+    PhonemeVisemeMap mpeg4;
+    mpeg4.entries = {{"P", "p_b_m"}, {"AA", "A"}, {"IY", "I"}, {"sil", "none"}};
+    EXPECT_EQ(mapOntoVisemes(mpeg4, rpm).entries,
+              (std::vector<std::pair<std::string, std::string>>{
+                  {"P", "viseme_PP"}, {"AA", "viseme_aa"}, {"IY", "viseme_I"}, {"sil", "viseme_sil"}}));
+    // Names of no convention stay, for the usual "visemes the set lacks" error.
+    PhonemeVisemeMap other;
+    other.entries = {{"AA", "jawOpen"}};
+    EXPECT_EQ(mapOntoVisemes(other, rpm).entries, other.entries);
+}
+
+} // namespace vl
