@@ -99,23 +99,26 @@ void removeStagingFolder(const std::filesystem::path& staging, const std::filesy
             if (name.starts_with(".visemelab-") && name.ends_with(".manifest"))
                 for (auto& file : OutputSet::readManifest(it->path())) listed.insert(std::move(file));
         }
+    // Visible files first, the manifests after them: a run killed half-way through leaves the
+    // manifests that tell the next sweep which of the remaining files were outputs.
     bool marker = false;
-    for (std::filesystem::directory_iterator it(staging, ec), end; !ec && it != end; it.increment(ec)) {
-        const std::filesystem::path file = it->path();
-        const std::string name = file.filename().string();
-        std::error_code ignored;
-        if (it->is_directory(ignored) && !it->is_symlink(ignored)) continue; // never ours: stays
-        if (name == kStageMarker) {
-            marker = true; // removed last: until then the folder is recognisably ours
-            continue;
+    for (const bool hidden : {false, true})
+        for (std::filesystem::directory_iterator it(staging, ec), end; !ec && it != end; it.increment(ec)) {
+            const std::filesystem::path file = it->path();
+            const std::string name = file.filename().string();
+            std::error_code ignored;
+            if (name.starts_with('.') != hidden) continue;
+            if (it->is_directory(ignored) && !it->is_symlink(ignored)) continue; // never ours: stays
+            if (name == kStageMarker) {
+                marker = true; // removed last: until then the folder is recognisably ours
+                continue;
+            }
+            const bool ours = !replaced || hidden || listed.count(name) || sameInode(file, place / name);
+            if (!ours &&
+                ::renameat2(AT_FDCWD, file.c_str(), AT_FDCWD, (place / name).c_str(), RENAME_NOREPLACE) == 0)
+                continue; // someone's new file: moved into the folder it was meant for
+            std::filesystem::remove(file, ignored);
         }
-        const bool ours =
-            !replaced || name.starts_with('.') || listed.count(name) || sameInode(file, place / name);
-        if (!ours &&
-            ::renameat2(AT_FDCWD, file.c_str(), AT_FDCWD, (place / name).c_str(), RENAME_NOREPLACE) == 0)
-            continue; // someone's new file: moved into the folder it was meant for
-        std::filesystem::remove(file, ignored);
-    }
     if (marker) std::filesystem::remove(staging / kStageMarker, ec);
     std::filesystem::remove(staging, ec); // fails, harmlessly, when something not ours stayed
 }

@@ -106,6 +106,12 @@ OutputSet::OutputSet(std::filesystem::path folder, std::string setName)
     if (ec) throwInputError(folder_.string(), "cannot create the output folder: " + ec.message());
     if (!std::filesystem::is_directory(std::filesystem::symlink_status(place_, ec)))
         throwInputError(folder_.string(), "is not a folder; outputs go into a folder here");
+    struct stat folderInfo {
+    }, parentInfo{};
+    if (::stat(place_.c_str(), &folderInfo) == 0 && ::stat(place_.parent_path().c_str(), &parentInfo) == 0 &&
+        folderInfo.st_dev != parentInfo.st_dev)
+        throwInputError(folder_.string(), "is a mount point; the outputs are staged beside their folder and "
+                                          "swapped in, so write them into a folder inside it");
     lock_ = std::make_unique<fileio::FolderLock>(place_, folder_);
     fileio::sweepStagingDebris(place_);
     fileio::sweepStaleTemporaries(place_);

@@ -13,13 +13,13 @@
 //      It makes the staging folder durable (fsync), exchanges it with the folder in one
 //      renameat2(RENAME_EXCHANGE) and removes the replaced folder. A planted or stale manifest thus
 //      removes nothing: a file goes only when its bytes are the ones the manifest recorded.
-//      Where the file system cannot exchange (or the folder is a mount point) the files are renamed
-//      in one by one (the manifest last): not all-or-nothing, as before issue 30.
+//      Where the file system cannot exchange the files are renamed in one by one (the manifest
+//      last): not all-or-nothing, as before issue 30.
 //   4. Destroyed without commit() (an error, an exception), the staging folder is removed.
 // Refused before anything is written: a folder that is or holds an input or a file an input refers
 // to (InputRegistry.h), a folder that is a symbolic link (unless OutputPolicy follows links), a
 // folder holding subfolders (the folder is replaced as a whole; a subfolder cannot be carried over
-// atomically), a member that is a symbolic link.
+// atomically), a mount point or the root folder, a member that is a symbolic link.
 //
 //     OutputSet out(folder, "export-obj");
 //     out.add("neutral.obj", text);
