@@ -86,8 +86,7 @@ FolderLock::FolderLock(const std::filesystem::path& folder, const std::filesyste
             }
         }
         // The holder may have swapped a new folder in: the lock must be on the one at the path.
-        struct stat locked {
-        }, current{};
+        struct stat locked = {}, current = {};
         if (::fstat(fd, &locked) == 0 && ::stat(folder.c_str(), &current) == 0 && sameFile(locked, current)) {
             fds_.push_back(fd);
             return;

@@ -46,8 +46,7 @@ std::string readSmallFile(const std::filesystem::path& file) {
 }
 
 bool sameInode(const std::filesystem::path& a, const std::filesystem::path& b) {
-    struct stat x {
-    }, y{};
+    struct stat x = {}, y = {};
     return ::lstat(a.c_str(), &x) == 0 && ::lstat(b.c_str(), &y) == 0 && x.st_dev == y.st_dev &&
            x.st_ino == y.st_ino;
 }

@@ -87,6 +87,14 @@ std::filesystem::path placeOf(const std::filesystem::path& resolved) {
     return place;
 }
 
+// A folder on another file system than its parent: the staging folder beside it could not be
+// swapped with it, nor hold hard links of its files.
+bool isMountPoint(const std::filesystem::path& folder) {
+    struct stat inside = {}, parent = {};
+    return ::stat(folder.c_str(), &inside) == 0 && ::stat(folder.parent_path().c_str(), &parent) == 0 &&
+           inside.st_dev != parent.st_dev;
+}
+
 bool isHiddenOurs(std::string_view name) {
     return name == fileio::kStageMarker || name.find(".vltmp-") != std::string_view::npos;
 }
@@ -106,10 +114,7 @@ OutputSet::OutputSet(std::filesystem::path folder, std::string setName)
     if (ec) throwInputError(folder_.string(), "cannot create the output folder: " + ec.message());
     if (!std::filesystem::is_directory(std::filesystem::symlink_status(place_, ec)))
         throwInputError(folder_.string(), "is not a folder; outputs go into a folder here");
-    struct stat folderInfo {
-    }, parentInfo{};
-    if (::stat(place_.c_str(), &folderInfo) == 0 && ::stat(place_.parent_path().c_str(), &parentInfo) == 0 &&
-        folderInfo.st_dev != parentInfo.st_dev)
+    if (isMountPoint(place_))
         throwInputError(folder_.string(), "is a mount point; the outputs are staged beside their folder and "
                                           "swapped in, so write them into a folder inside it");
     lock_ = std::make_unique<fileio::FolderLock>(place_, folder_);
@@ -272,8 +277,7 @@ std::vector<std::filesystem::path> OutputSet::commit() {
     makeStagingDurable(); // the barrier: the new folder is on disk before it replaces the old one
     fileio::markAsReplaced(place_);
     lock_->alsoLock(staging_); // a waiter that wakes after the swap finds the new folder locked too
-    struct stat here {
-    }, folder{};
+    struct stat here = {}, folder = {};
     const bool inside = ::stat(".", &here) == 0 && ::stat(place_.c_str(), &folder) == 0 &&
                         here.st_dev == folder.st_dev && here.st_ino == folder.st_ino;
     if (fileio::exchangeFolders(staging_, place_, folder_)) {
