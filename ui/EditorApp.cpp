@@ -3,7 +3,6 @@
 #include "core/common/Error.h"
 #include "core/reduce/Weights.h"
 #include "ui/EditorUi.h"
-#include "ui/WindowTitle.h"
 #include "ui/session/EditorSession.h"
 #include "ui/widgets/GuiProbe.h"
 
@@ -217,13 +216,9 @@ int runEditor(const EditorOptions& options) {
                 if (screenshotMode) throw e;
                 session.error(std::string("Start options: ") + e.what());
             });
-            std::string shownTitle;
             for (int frame = 0; !glfwWindowShouldClose(window) || !ui.quitConfirmed(); ++frame) {
                 const double frameStart = glfwGetTime();
                 glfwPollEvents();
-                if (const std::string title = windowTitle(session.path(), session.modified());
-                    title != shownTitle)
-                    glfwSetWindowTitle(window, (shownTitle = title).c_str());
                 if (screenshotMode) session.finishBackgroundWork(); // deterministic pictures
                 ImGui_ImplOpenGL3_NewFrame();
                 ImGui_ImplGlfw_NewFrame();
