@@ -2,6 +2,7 @@
 #include "app/cli/Command.h"
 #include "core/common/Error.h"
 #include "core/common/InputRegistry.h"
+#include "core/common/OutputPolicy.h"
 
 #include <cstdio>
 #include <exception>
@@ -10,6 +11,13 @@
 int main(int argc, char** argv) {
     CLI::App app{"VisemeLab: optimal viseme reduction and adaptive deformable faces"};
     app.require_subcommand(1, 1);
+    app.fallthrough(); // the output flags below may follow the subcommand (inherited by every subcommand)
+    bool followSymlinks = false, noWait = false;
+    app.add_flag(
+        "--follow-symlinks", followSymlinks,
+        "Write outputs through symbolic links (by default an output path that is a link is refused)");
+    app.add_flag("--no-wait", noWait,
+                 "Refuse (exit code 3) instead of waiting when another run is writing the output folder");
     vl::cli::CommandRunner run;
     vl::cli::addReduceCommand(app, run);
     vl::cli::addFreqCommand(app, run);
@@ -28,6 +36,7 @@ int main(int argc, char** argv) {
         const int code = app.exit(e);
         return code == 0 ? vl::cli::kExitOk : vl::cli::kExitUsage;
     }
+    vl::setOutputPolicy({.followSymlinks = followSymlinks, .waitForBusyFolder = !noWait});
     try {
         const vl::InputRecording inputs; // every file read is an input no output may overwrite
         return run ? run() : vl::cli::kExitUsage;

@@ -13,10 +13,12 @@ std::string readFileToString(const std::filesystem::path& path);
 
 // Writes `contents` to a temporary file beside `path`, fsyncs it, renames it over `path` and fsyncs
 // the folder, so a crash, kill -9 or a full disk never leaves a half-written file where the old one
-// was. Keeps the permission bits of the file it replaces; a symlink `path` is written through (its
-// target is replaced, the link kept). Temporaries of earlier saves of `path` whose process died are
-// removed first; a failed save removes its own. Refuses (OutputOverwritesInputError) to overwrite
-// an input of the run. Creates missing parent folders.
+// was. Keeps the permission bits of the file it replaces; a symlink `path` is refused or written
+// through (its target replaced, the link kept) as the output policy says (core/common/OutputPolicy.h).
+// Temporaries (hidden, ".<name>.vltmp-<pid>-<n>") that killed writers left in the folder are removed
+// first; a failed save removes its own. Refuses to overwrite an input of the run
+// (OutputOverwritesInputError) or a file an input refers to (OutputRefusedError). Creates missing
+// parent folders, never through a link.
 void writeFileAtomically(const std::filesystem::path& path, std::string_view contents);
 
 } // namespace vl

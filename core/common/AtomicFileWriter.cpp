@@ -3,6 +3,7 @@
 #include "core/common/Error.h"
 #include "core/common/FileWriting.h"
 #include "core/common/InputRegistry.h"
+#include "core/common/OutputPolicy.h"
 
 #include <system_error>
 #include <unistd.h>
@@ -11,11 +12,12 @@ namespace vl {
 
 AtomicFileWriter::AtomicFileWriter(const std::filesystem::path& path) : path_(path) {
     refuseOverwritingInput(path);
-    target_ = fileio::writeTarget(path);
+    target_ = resolveOutputPath(path, false); // a link's target folder exists: it is not created
     const auto folder = target_.has_parent_path() ? target_.parent_path() : std::filesystem::path(".");
     std::error_code ec;
     std::filesystem::create_directories(folder, ec);
-    fileio::sweepStaleTemporaries(folder, target_.filename().string());
+    // Every temporary a killed writer left in this folder (say --wav leaves megabytes), whatever its name.
+    fileio::sweepStaleTemporaries(folder);
     const fileio::TemporaryFile temp = fileio::createTemporaryFor(target_, path.string());
     temp_ = temp.path;
     file_ = ::fdopen(temp.fd, "wb");

@@ -3,7 +3,8 @@
 // commit() succeeds: data goes to a temporary file beside it, which is flushed, synced and renamed
 // over the path. Destroyed without commit(), the temporary file is removed and the path untouched.
 // The same protocol as writeFileAtomically (core/common/AtomicFile.h): inputs of the run refused,
-// mode kept, symlinks written through, the folder synced after the rename, stale temporaries swept.
+// mode kept, symlinks as the output policy says (core/common/OutputPolicy.h), the folder synced after
+// the rename, the temporaries of killed writers in the folder swept.
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>

@@ -6,6 +6,7 @@
 #include <atomic>
 #include <cerrno>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <fcntl.h>
 #include <random>
@@ -32,11 +33,16 @@ long ownerOfTemporary(std::string_view fileName) {
     if (!fileName.starts_with('.')) return -1;
     const auto marker = fileName.rfind(kTempMarker);
     if (marker == std::string_view::npos) return -1;
-    const std::string_view rest = fileName.substr(marker + kTempMarker.size());
-    const auto dash = rest.find('-');
+    return pidBeforeDash(fileName.substr(marker + kTempMarker.size()));
+}
+
+} // namespace
+
+long pidBeforeDash(std::string_view text) {
+    const auto dash = text.find('-');
     if (dash == 0 || dash == std::string_view::npos) return -1;
     long pid = 0;
-    for (const char c : rest.substr(0, dash)) {
+    for (const char c : text.substr(0, dash)) {
         if (c < '0' || c > '9' || pid > 100'000'000) return -1;
         pid = pid * 10 + (c - '0');
     }
@@ -62,7 +68,66 @@ bool processExists(long pid) {
     return ::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM;
 }
 
-} // namespace
+void ContentHash::update(std::string_view bytes) {
+    // 64-bit multiply-rotate over 8-byte words (the tail buffered): fast enough to hash every output,
+    // and any change of the bytes changes it with overwhelming probability. Not a cryptographic hash.
+    size_ += bytes.size();
+    auto mix = [this](std::uint64_t word) {
+        state_ ^= word * 0x87C37B91114253D5ull;
+        state_ = ((state_ << 31) | (state_ >> 33)) * 0x4CF5AD432745937Full;
+    };
+    while (!bytes.empty()) {
+        const std::size_t take = std::min(bytes.size(), sizeof tail_ - tailSize_);
+        std::memcpy(tail_ + tailSize_, bytes.data(), take);
+        tailSize_ += take;
+        bytes.remove_prefix(take);
+        if (tailSize_ == sizeof tail_) {
+            std::uint64_t word;
+            std::memcpy(&word, tail_, sizeof word);
+            mix(word);
+            tailSize_ = 0;
+        }
+        // Whole words straight from the input.
+        while (tailSize_ == 0 && bytes.size() >= sizeof tail_) {
+            std::uint64_t word;
+            std::memcpy(&word, bytes.data(), sizeof word);
+            mix(word);
+            bytes.remove_prefix(sizeof word);
+        }
+    }
+}
+
+std::string ContentHash::hex() const {
+    std::uint64_t h = state_ ^ size_;
+    for (std::size_t i = 0; i < tailSize_; ++i)
+        h = (h ^ static_cast<unsigned char>(tail_[i])) * 0x100000001B3ull;
+    h ^= h >> 33;
+    h *= 0xFF51AFD7ED558CCDull;
+    h ^= h >> 33;
+    char text[17];
+    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(h));
+    return text;
+}
+
+std::string hashOfFile(const std::filesystem::path& file) {
+    const int fd = ::open(file.c_str(), O_RDONLY | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK);
+    if (fd < 0) return {};
+    struct stat info {};
+    ContentHash hash;
+    bool ok = ::fstat(fd, &info) == 0 && S_ISREG(info.st_mode);
+    char chunk[1 << 15];
+    while (ok) {
+        const ssize_t n = ::read(fd, chunk, sizeof chunk);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) {
+            ok = n == 0;
+            break;
+        }
+        hash.update(std::string_view(chunk, static_cast<std::size_t>(n)));
+    }
+    ::close(fd);
+    return ok ? hash.hex() : std::string();
+}
 
 std::string lastSystemError() {
     return std::strerror(errno);

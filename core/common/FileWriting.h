@@ -2,8 +2,10 @@
 // The steps of a safe write shared by writeFileAtomically and OutputSet (internal to core/common):
 // symlinks followed to the file they name, temporaries beside the destination that keep its mode,
 // fsync of the folder after a rename, and the sweep of temporaries left by a killed process.
+#include <cstdint>
 #include <filesystem>
 #include <span>
+#include <string>
 #include <string_view>
 
 namespace vl::fileio {
@@ -40,6 +42,27 @@ void syncFolder(const std::filesystem::path& folder);
 // Removes the temporaries in `folder` whose writing process no longer exists (killed mid-save);
 // only those for the file `name` when it is given. Temporaries of live processes are left alone.
 void sweepStaleTemporaries(const std::filesystem::path& folder, std::string_view name = {});
+
+// A number unique within the process and hard to guess, for names of temporaries.
+std::uint64_t nextTemporarySuffix();
+// The pid in "<pid>-<n>" (the end of a temporary's or staging folder's name), or -1.
+long pidBeforeDash(std::string_view text);
+// True while process `pid` exists (a temporary's writer may still be running).
+bool processExists(long pid);
+
+// A 64-bit hash of bytes given in pieces, with their count: the manifest of a folder output records
+// it per file, so a later run removes a file only while it still holds what the run wrote.
+class ContentHash {
+  public:
+    void update(std::string_view bytes);
+    std::string hex() const; // 16 hex digits
+  private:
+    std::uint64_t state_ = 0x9E3779B97F4A7C15ull, size_ = 0;
+    char tail_[8] = {};
+    std::size_t tailSize_ = 0;
+};
+// ContentHash::hex of a regular file's bytes (not following a link); empty when it cannot be read.
+std::string hashOfFile(const std::filesystem::path& file);
 
 // "No space left on device" etc. for the current errno.
 std::string lastSystemError();

@@ -1,33 +1,50 @@
 #pragma once
-// Several files written into one folder as a set (reduce --out, export obj/vrml, visemes --out):
-//   1. add() writes each file to a temporary beside its destination (nothing visible changes), unless
-//      the destination already holds exactly these bytes: that file is left as it is (made durable);
-//   2. commit() stages the folder's manifest of the set (.visemelab-<set>.manifest: the files this
-//      run writes), makes every temporary durable (fsync: one barrier before the first rename),
-//      renames them over their destinations (the manifest last), fsyncs the folder once, then removes
-//      the files the previous run of the same set wrote that this run did not: no stale outputs, and
-//      files the set never wrote are never touched;
-//   3. an OutputSet destroyed without commit() (an error, an exception) removes its temporaries,
-//      and a new OutputSet sweeps the temporaries of runs that were killed.
-// Every destination is checked against the run's inputs (InputRegistry.h) before anything is
-// written. Destinations keep their permission bits; symlinked ones are written through.
+// Several files written into one folder as a set (reduce --out, export obj/vrml, visemes --out), all
+// or nothing: a reader of the folder sees the complete old or the complete new set at every instant,
+// whenever the run is killed.
+//   1. The constructor locks the folder (one writer at a time; core/common/FolderLock.h), sweeps what
+//      killed runs left, and creates an empty staging folder beside it (core/common/FolderSwap.h).
+//   2. add() writes each file into the staging folder; a destination that already holds exactly
+//      these bytes is hard-linked instead (same inode, same time stamp).
+//   3. commit() writes the set's manifest (.visemelab-<set>.manifest: each file with its size and
+//      content hash), hard-links every other file of the folder into the staging folder (the user's
+//      files, other sets' outputs), except the files the previous run of this set wrote that this run
+//      does not and that still hold what that run wrote (manifest hash): those are the stale outputs.
+//      It makes the staging folder durable (fsync), exchanges it with the folder in one
+//      renameat2(RENAME_EXCHANGE) and removes the replaced folder. A planted or stale manifest thus
+//      removes nothing: a file goes only when its bytes are the ones the manifest recorded.
+//      Where the file system cannot exchange the files are renamed in one by one (the manifest
+//      last): not all-or-nothing, as before issue 30.
+//   4. Destroyed without commit() (an error, an exception), the staging folder is removed.
+// Refused before anything is written: a folder that is or holds an input or a file an input refers
+// to (InputRegistry.h), a folder that is a symbolic link (unless OutputPolicy follows links), a
+// folder holding subfolders (the folder is replaced as a whole; a subfolder cannot be carried over
+// atomically), a mount point or the root folder, a member that is a symbolic link.
 //
 //     OutputSet out(folder, "export-obj");
 //     out.add("neutral.obj", text);
 //     out.commit();
+#include <cstdint>
 #include <filesystem>
 #include <initializer_list>
+#include <map>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace vl {
 
+namespace fileio {
+class FolderLock;
+}
+
 class OutputSet {
   public:
     // `setName` (letters, digits, '-', '_') names the manifest: sets of different names share a
-    // folder without removing each other's files. Creates `folder` when missing; throws InputError
-    // when it cannot, and OutputOverwritesInputError when it is an input folder of the run.
+    // folder without removing each other's files. Creates `folder` when missing; waits while another
+    // run writes it (or refuses, core/common/OutputPolicy.h). Throws InputError when it cannot,
+    // OutputOverwritesInputError or OutputRefusedError for the refusals above.
     OutputSet(std::filesystem::path folder, std::string setName);
     ~OutputSet();
     OutputSet(const OutputSet&) = delete;
@@ -42,7 +59,7 @@ class OutputSet {
     // need not be copied into one string first).
     void add(const std::string& fileName, std::initializer_list<std::string_view> parts);
 
-    // The durability barrier, the renames, the manifest and the removal of stale outputs, as above.
+    // The manifest, the carried-over files, the barrier and the swap, as above; releases the lock.
     // Returns the destinations in the order they were added.
     std::vector<std::filesystem::path> commit();
 
@@ -53,16 +70,25 @@ class OutputSet {
   private:
     struct Staged {
         std::string name;
-        std::filesystem::path target;    // the file replaced (a symlink's target)
-        std::filesystem::path temporary; // empty when the destination already holds the contents
-        bool unchanged() const { return temporary.empty(); }
+        std::uint64_t size = 0;
+        std::string hash;
+        bool linked = false; // the destination already held these bytes: hard-linked, not written
     };
     void stage(const std::string& fileName, std::initializer_list<std::string_view> parts);
-    void discardTemporaries();
-    void removeStaleOutputs(const std::vector<std::string>& previous);
+    // The files the last run of this set wrote and this one does not, that no other set of the
+    // folder claims: name -> the content hash that run recorded.
+    std::map<std::string, std::string> staleOutputs() const;
+    void writeManifest();
+    void carryOverOtherFiles(const std::map<std::string, std::string>& stale);
+    void makeStagingDurable() const;
+    void renameFileByFile(const std::map<std::string, std::string>& stale);
+    void discardStaging();
 
-    std::filesystem::path folder_;
+    std::filesystem::path folder_; // as given: messages and the paths commit() returns
+    std::filesystem::path place_;  // absolute, links resolved: the folder that is replaced
     std::string setName_;
+    std::unique_ptr<fileio::FolderLock> lock_;
+    std::filesystem::path staging_;
     std::vector<Staged> staged_;
     bool committed_ = false;
 };

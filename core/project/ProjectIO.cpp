@@ -1,6 +1,7 @@
 // Loading and saving project files: version dispatch, validation, atomic write, path rebasing.
 #include "core/common/AtomicFile.h"
 #include "core/common/Error.h"
+#include "core/common/InputRegistry.h"
 #include "core/io/JsonWrite.h"
 #include "core/project/ProjectJson.h"
 
@@ -67,8 +68,19 @@ Project projectFromJsonText(std::string_view text, const std::filesystem::path& 
     }
 }
 
+// Every file the project names is off limits to the run's outputs, read or not (core/common/InputRegistry.h).
+static void noteProjectReferences(const Project& project) {
+    if (!project.neutral.file.empty()) noteReferencedFile(resolveProjectFile(project, project.neutral.file));
+    for (const ProjectViseme& viseme : project.visemes)
+        if (!viseme.file.empty()) noteReferencedFile(resolveProjectFile(project, viseme.file));
+    if (project.avatar.isSet()) noteReferencedFile(resolveProjectFile(project, project.avatar.file));
+}
+
 Project loadProject(const std::filesystem::path& file) {
-    return projectFromJsonText(readFileToString(file), file, true); // read errors name the file too
+    Project project =
+        projectFromJsonText(readFileToString(file), file, true); // read errors name the file too
+    noteProjectReferences(project);
+    return project;
 }
 
 std::string projectToJsonText(const Project& project) {

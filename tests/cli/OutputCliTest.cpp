@@ -1,5 +1,6 @@
-// Outputs never clobber inputs (exit code 2, inputs byte for byte unchanged), and folder outputs
-// replace the previous run's as a set: stale files of earlier runs go, unrelated files stay.
+// Outputs never clobber inputs (exit code 2, or 3 for a folder output that holds them; inputs byte
+// for byte unchanged), and folder outputs replace the previous run's as a set: stale files of earlier
+// runs go, unrelated files stay.
 #include "CliRunner.h"
 
 #include "core/common/AtomicFile.h"
@@ -63,11 +64,11 @@ class CliOutput : public ::testing::Test {
 };
 
 TEST_F(CliOutput, ExportOntoTheProjectsOwnMeshesIsRefused) {
-    // The export writes neutral.obj: into the meshes folder that would overwrite the project's neutral.
+    // The export writes neutral.obj: into the meshes folder that would overwrite the project's neutral,
+    // and the folder output replaces the folder's contents: a folder holding inputs is refused.
     auto r = run("export " + project() + " --format obj --out " + (dir / "meshes").string());
-    EXPECT_EQ(r.exitCode, 2) << r.output;
-    EXPECT_NE(r.output.find("neutral.obj: output would overwrite an input of this run"), std::string::npos)
-        << r.output;
+    EXPECT_EQ(r.exitCode, 3) << r.output;
+    EXPECT_NE(r.output.find("meshes: output folder holds"), std::string::npos) << r.output;
     expectInputsUnchanged();
     r = run("export " + project() + " --format glb --out " + (dir / "meshes" / "v1.obj").string());
     EXPECT_EQ(r.exitCode, 2) << r.output;

@@ -4,6 +4,7 @@
 
 #include "core/common/AtomicFile.h"
 #include "core/common/InputRegistry.h"
+#include "core/common/OutputPolicy.h"
 
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -77,10 +78,32 @@ TEST(AtomicFile, TemporariesOfKilledSavesAreSweptOnTheNextSave) {
     const std::string dead = std::to_string(test::deadProcessId());
     writeText(dir / (".a.txt.vltmp-" + dead + "-1234"), std::string(4096, 'x')); // a save killed mid-way
     writeText(dir / ".a.txt.vltmp-1-99", "live");                                // pid 1 is alive
-    writeText(dir / (".b.txt.vltmp-" + dead + "-5"), "another file's");          // not this file's
+    writeText(dir / (".b.txt.vltmp-" + dead + "-5"), "another file's");          // killed too (say --wav)
     writeFileAtomically(dir / "a.txt", "saved");
-    EXPECT_EQ(listFolder(dir.path),
-              (std::vector<std::string>{".a.txt.vltmp-1-99", ".b.txt.vltmp-" + dead + "-5", "a.txt"}));
+    EXPECT_EQ(listFolder(dir.path), (std::vector<std::string>{".a.txt.vltmp-1-99", "a.txt"}));
+}
+
+TEST(AtomicFile, ASymlinkIsRefusedUnlessFollowedAndADanglingOneCreatesNoFolder) {
+    TempFolder dir;
+    writeText(dir / "real.txt", "old");
+    std::filesystem::create_symlink(dir / "real.txt", dir / "link.txt");
+    std::filesystem::create_symlink(dir / "missing" / "deeper" / "x.txt", dir / "dangling.txt");
+    const OutputPolicy saved = outputPolicy();
+    setOutputPolicy({.followSymlinks = false, .waitForBusyFolder = true});
+    try {
+        writeFileAtomically(dir / "link.txt", "new");
+        ADD_FAILURE() << "a symlinked output was written through";
+    } catch (const OutputRefusedError& e) {
+        EXPECT_NE(std::string(e.what()).find((dir / "link.txt").string()), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(readText(dir / "real.txt"), "old");
+    EXPECT_THROW(writeFileAtomically(dir / "dangling.txt", "new"), OutputRefusedError);
+    setOutputPolicy({.followSymlinks = true, .waitForBusyFolder = true});
+    writeFileAtomically(dir / "link.txt", "new");
+    EXPECT_EQ(readText(dir / "real.txt"), "new");
+    EXPECT_THROW(writeFileAtomically(dir / "dangling.txt", "new"), OutputRefusedError);
+    EXPECT_FALSE(std::filesystem::exists(dir / "missing"));
+    setOutputPolicy(saved);
 }
 
 TEST(AtomicFile, AFailedSaveLeavesTheOldFileAndNoTemporary) {
