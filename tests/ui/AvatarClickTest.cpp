@@ -211,9 +211,11 @@ TEST(AvatarClicks, ReducedAvatarIsExportedAndTheProjectRefersToTheAvatar) {
         EXPECT_EQ(written.json["extras"]["visemelab"]["names"], "merged");
         EXPECT_EQ(written.json["extras"]["visemelab"]["keys"].size(), static_cast<std::size_t>(m));
 
-        // The export button refuses the input itself; the input is untouched.
+        // The export button refuses the input itself, even after "Replace"; the input is untouched.
         gui.click(gui.control("Export avatar...", "button"));
         chooseFile(gui, folder.avatar, "Save");
+        gui.click(dialogControl(gui, "Replace", "button"));
+        gui.waitIdle();
         EXPECT_TRUE(hasError(gui));
         EXPECT_NE(lastMessage(gui).find("is the avatar the document was read from"), std::string::npos)
             << lastMessage(gui);
