@@ -61,6 +61,15 @@ std::string quoteInput(std::string_view text, std::size_t maxBytes) {
     return out;
 }
 
+bool isValidUtf8(std::string_view text) {
+    for (std::size_t i = 0; i < text.size();) {
+        const std::size_t length = utf8SequenceLength(text, i);
+        if (length == 0) return false;
+        i += length;
+    }
+    return true;
+}
+
 std::string fileLine(std::string_view file, std::size_t line) {
     return std::string(file) + ":" + std::to_string(line);
 }

@@ -22,6 +22,10 @@ class InputError : public std::runtime_error {
 inline constexpr std::size_t kMaxQuotedInput = 200;
 std::string quoteInput(std::string_view text, std::size_t maxBytes = kMaxQuotedInput);
 
+// True when `text` is valid UTF-8 (names read from argv, file names and CSV must be: reports and
+// JSON outputs cannot hold anything else).
+bool isValidUtf8(std::string_view text);
+
 // "<file>:<line>" for messages about a line of a text file.
 std::string fileLine(std::string_view file, std::size_t line);
 

@@ -89,6 +89,10 @@ Json parseJsonStrict(std::string_view text, std::string_view source) {
     return builder.take();
 }
 
+std::string quoteJson(const Json& value) {
+    return quoteInput(value.dump(-1, ' ', false, Json::error_handler_t::replace));
+}
+
 std::string jsonTypeName(const Json& value) {
     switch (value.type()) {
     case Json::value_t::null:
