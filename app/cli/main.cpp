@@ -6,7 +6,37 @@
 
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <new>
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace {
+
+// The command-line arguments that name existing files (also the FILE of NAME=FILE), quoted, for a
+// message that cannot know which input it was reading (out of memory).
+std::string inputsOf(int argc, char** argv) {
+    std::string names;
+    for (int i = 2; i < argc; ++i) {
+        std::string_view arg = argv[i];
+        if (const auto eq = arg.find('='); eq != std::string_view::npos && !arg.starts_with("-"))
+            arg.remove_prefix(eq + 1);
+        std::error_code ec;
+        if (arg.starts_with("-") || !std::filesystem::exists(std::filesystem::path(arg), ec)) continue;
+        names += (names.empty() ? "" : ", ") + vl::quoteInput(arg);
+        if (names.size() > vl::kMaxQuotedInput) break;
+    }
+    return names.empty() ? "the input" : names;
+}
+
+// The first argument that is not valid UTF-8, quoted (escaped), or empty.
+std::string invalidUtf8Argument(int argc, char** argv) {
+    for (int i = 1; i < argc; ++i)
+        if (!vl::isValidUtf8(argv[i])) return vl::quoteInput(argv[i]);
+    return {};
+}
+
+} // namespace
 
 int main(int argc, char** argv) {
     CLI::App app{"VisemeLab: optimal viseme reduction and adaptive deformable faces"};
@@ -51,7 +81,24 @@ int main(int argc, char** argv) {
         return vl::cli::kExitInvalidInput;
     } catch (const std::bad_alloc&) {
         // Readers bound memory by their input's size; this is a machine short of memory for it.
-        std::fprintf(stderr, "visemelab: error: out of memory (the input is too large for this machine)\n");
+        std::fprintf(stderr,
+                     "visemelab: error: %s: out of memory (the input is too large for this machine)\n",
+                     inputsOf(argc, argv).c_str());
+        return vl::cli::kExitInvalidInput;
+    } catch (const std::filesystem::filesystem_error& e) {
+        // A symlink loop, a file vanishing or unreadable while listed: the path is the culprit.
+        std::fprintf(stderr, "visemelab: error: %s: %s\n", vl::quoteInput(e.path1().string()).c_str(),
+                     e.code().message().c_str());
+        return vl::cli::kExitInvalidInput;
+    } catch (const nlohmann::json::type_error& e) {
+        // 316: a name from argv, a file name or a table that is not UTF-8 reached a JSON output.
+        if (e.id != 316) {
+            std::fprintf(stderr, "visemelab: internal error: %s\n", e.what());
+            return 1;
+        }
+        const std::string argument = invalidUtf8Argument(argc, argv);
+        std::fprintf(stderr, "visemelab: error: %s: a name is not valid UTF-8 (%s)\n",
+                     argument.empty() ? inputsOf(argc, argv).c_str() : argument.c_str(), e.what());
         return vl::cli::kExitInvalidInput;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "visemelab: internal error: %s\n", e.what());

@@ -1,72 +1,14 @@
 #include "core/common/JsonParse.h"
 
 #include "core/common/Error.h"
+#include "core/common/JsonDomBuilder.h"
 #include "core/common/Limits.h"
 
-#include <set>
 #include <vector>
 
 namespace vl {
 
 namespace {
-
-// The parser callback sees events, not paths: this rebuilds the path of the current element so a
-// duplicate key, or a number the parser cannot hold, can be reported where it is.
-class PathTracker {
-  public:
-    explicit PathTracker(std::string_view source) : source_(source) {}
-
-    bool onEvent(Json::parse_event_t event, const Json& parsed) {
-        switch (event) {
-        case Json::parse_event_t::object_start:
-            frames_.push_back({true, {}, {}, 0});
-            break;
-        case Json::parse_event_t::array_start:
-            frames_.push_back({false, {}, {}, 0});
-            break;
-        case Json::parse_event_t::key: {
-            Frame& top = frames_.back();
-            top.currentKey = parsed.get<std::string>();
-            if (!top.keys.insert(top.currentKey).second)
-                throwInputError(std::string(source_) + ": " + currentPath(),
-                                "duplicate key \"" + top.currentKey + "\"");
-            break;
-        }
-        case Json::parse_event_t::object_end:
-        case Json::parse_event_t::array_end:
-            frames_.pop_back();
-            elementDone();
-            break;
-        case Json::parse_event_t::value:
-            elementDone();
-            break;
-        }
-        return true;
-    }
-
-    // Path of the element being parsed (after its key, for object members).
-    std::string currentPath() const {
-        std::string path;
-        for (const Frame& f : frames_)
-            path = f.isObject ? jsonPathAppend(path, f.currentKey) : jsonPathAppend(path, f.index);
-        return path.empty() ? "/" : path;
-    }
-
-  private:
-    struct Frame {
-        bool isObject;
-        std::set<std::string> keys;
-        std::string currentKey;
-        std::size_t index;
-    };
-
-    void elementDone() {
-        if (!frames_.empty() && !frames_.back().isObject) ++frames_.back().index;
-    }
-
-    std::string_view source_;
-    std::vector<Frame> frames_;
-};
 
 // Keys in a too-deep path are shown shortened: the path is there to find the place, not to quote it.
 std::string_view shortKey(std::string_view key) {
@@ -137,32 +79,18 @@ Json parseJsonStrict(std::string_view text, std::string_view source) {
         throwInputError(source, "JSON document too large (" + std::to_string(text.size()) +
                                     " bytes; the limit is " + std::to_string(limits::kMaxJsonBytes) + ")");
     checkJsonNesting(text, source, limits::kMaxJsonDepth);
-    PathTracker tracker(source);
-    const Json::parser_callback_t callback = [&tracker](int, Json::parse_event_t event, Json& parsed) {
-        return tracker.onEvent(event, parsed);
-    };
+    JsonDomBuilder builder(source);
     try {
-        return Json::parse(text.begin(), text.end(), callback);
-    } catch (const Json::parse_error& e) {
-        // Drop nlohmann's "[json.exception.parse_error.101] " prefix; keep "parse error at line L, column C:
-        // ...".
-        std::string message = e.what();
-        if (const auto close = message.find("] ");
-            message.starts_with("[json.exception") && close != std::string::npos)
-            message.erase(0, close + 2);
-        throwInputError(source, "invalid JSON: " + message);
-    } catch (const Json::out_of_range& e) {
-        // A literal such as 1e999 overflows a double; nlohmann reports it without a position.
-        std::string message = e.what();
-        const auto quote = message.find('\'');
-        const std::string literal =
-            quote == std::string::npos ? "" : message.substr(quote + 1, message.rfind('\'') - quote - 1);
-        throwInputError(std::string(source) + ": " + tracker.currentPath(),
-                        "number out of range: " + literal);
+        Json::sax_parse(text.begin(), text.end(), &builder);
     } catch (const std::bad_alloc&) {
         throwInputError(source, "not enough memory to read this JSON document (" +
                                     std::to_string(text.size()) + " bytes)");
     }
+    return builder.take();
+}
+
+std::string quoteJson(const Json& value) {
+    return quoteInput(value.dump(-1, ' ', false, Json::error_handler_t::replace));
 }
 
 std::string jsonTypeName(const Json& value) {
@@ -192,7 +120,8 @@ std::string jsonTypeName(const Json& value) {
 std::string jsonPathAppend(std::string_view path, std::string_view key) {
     std::string result(path);
     result += '/';
-    for (const char c : key) {
+    const std::string capped = key.size() > kMaxQuotedInput ? quoteInput(key) : std::string();
+    for (const char c : capped.empty() ? key : std::string_view(capped)) {
         if (c == '~')
             result += "~0";
         else if (c == '/')

@@ -24,6 +24,10 @@ Json parseJsonStrict(std::string_view text, std::string_view source);
 // Malformed text is left to the parser to report.
 void checkJsonNesting(std::string_view text, std::string_view source, std::size_t maxDepth);
 
+// A JSON value quoted in a message: compact text, capped by quoteInput (a 1 MB array once went to
+// stderr whole); strings that are not valid UTF-8 are shown with U+FFFD instead of throwing.
+std::string quoteJson(const Json& value);
+
 // "number", "string", "object", ... for messages.
 std::string jsonTypeName(const Json& value);
 

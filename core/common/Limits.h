@@ -11,7 +11,11 @@ inline constexpr std::size_t kMaxInputFileBytes = std::size_t{1} << 30;
 
 // A JSON document of this many bytes builds a DOM of several GiB; none of ours comes close (a project
 // embedding a 26 k-vertex head and 16 visemes is about 16 MB).
-inline constexpr std::size_t kMaxJsonBytes = std::size_t{256} << 20;
+inline constexpr std::size_t kMaxJsonBytes = std::size_t{128} << 20;
+
+// The tree a JSON document builds (16 bytes a value, more for objects, arrays and long strings) may
+// take at most this much: `[{},{},...]` would otherwise grow 16 times its text.
+inline constexpr std::size_t kMaxJsonDomBytes = std::size_t{512} << 20;
 
 // Objects and arrays nested deeper than this are refused before any JSON document is built
 // (a project nests about 8 levels; nlohmann's copy and dump recurse once per level).

@@ -8,7 +8,9 @@
 #include "core/gltf/TargetNames.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
+#include <tuple>
 
 namespace vl {
 namespace {
@@ -108,6 +110,46 @@ std::vector<glm::dmat4> skinnedMatrices(const GltfDocument& doc, AccessorReader&
     return blended;
 }
 
+// Accessors decoded once however many primitives use them: memory follows the file's unique data
+// (300 primitives sharing one 100 k-vertex accessor decoded it 300 times).
+class DecodedAccessors {
+  public:
+    explicit DecodedAccessors(AccessorReader& reader) : reader_(reader) {}
+
+    const std::vector<float>& floats(int index, int type, const std::string& where,
+                                     std::size_t expectedCount = kAnyCount) {
+        const auto key = std::make_tuple(index, type, expectedCount);
+        auto it = cache_.find(key);
+        if (it == cache_.end())
+            it = cache_.emplace(key, reader_.floats(index, type, where, expectedCount)).first;
+        return it->second;
+    }
+
+    const std::vector<std::uint32_t>& indices(int index, const std::string& where, std::size_t vertexCount) {
+        const auto key = std::make_pair(index, vertexCount);
+        auto it = indices_.find(key);
+        if (it == indices_.end())
+            it = indices_.emplace(key, reader_.indices(index, where, vertexCount)).first;
+        return it->second;
+    }
+
+  private:
+    AccessorReader& reader_;
+    std::map<std::tuple<int, int, std::size_t>, std::vector<float>> cache_;
+    std::map<std::pair<int, std::size_t>, std::vector<std::uint32_t>> indices_;
+};
+
+// A world-space value overflowing a double (a node scale of 1e160 squared) would make every cost
+// infinite or zero: a data error naming the node and the accessor.
+void requireFiniteWorld(const GltfDocument& doc, const glm::dvec4& w, int node, const std::string& where,
+                        std::size_t vertex) {
+    if (std::abs(w.x) <= kMaxWorldCoordinate && std::abs(w.y) <= kMaxWorldCoordinate &&
+        std::abs(w.z) <= kMaxWorldCoordinate)
+        return;
+    doc.fail(where, "vertex " + std::to_string(vertex) + " placed by node " + std::to_string(node) +
+                        " lies beyond +-1e30 in world space (squared distances would overflow)");
+}
+
 } // namespace
 
 std::string visemeJoinKey(std::string_view targetName) {
@@ -119,6 +161,41 @@ std::string visemeJoinKey(std::string_view targetName) {
 
 namespace {
 
+// What the world-space geometry will take, summed over every primitive that will be read (a shared
+// accessor counts once per use: each use becomes vertices of its own), checked before any of it is
+// allocated: positions of the neutral and of each viseme (24 bytes each) and triangles (12 bytes per
+// index at most, for strips). Counts are those of the decoded (so checked) accessors; Draco
+// primitives count as declared (their decoder checks them).
+void checkWorldSpaceBudget(const GltfDocument& doc, DecodedAccessors& decoded, const AvatarScan& scan,
+                           std::size_t visemes, bool context) {
+    std::size_t bytes = 0;
+    for (const AvatarMesh& mesh : scan.meshes) {
+        if (!mesh.carriesVisemes && !context) continue;
+        const std::size_t perVertex = 24 * (mesh.carriesVisemes ? visemes + 1 : 1);
+        const auto& primitives = doc.model.meshes[static_cast<std::size_t>(mesh.index)].primitives;
+        for (std::size_t p = 0; p < primitives.size(); ++p) {
+            const std::string where = primitiveWhere(mesh.index, p);
+            const int position = attribute(primitives[p].attributes, "POSITION");
+            if (position < 0) continue;
+            std::size_t vertices = mesh.primitives[p].vertices, indexCount = vertices;
+            if (!hasDraco(doc, mesh.index, static_cast<int>(p))) {
+                vertices = decoded.floats(position, TINYGLTF_TYPE_VEC3, where + "/POSITION").size() / 3;
+                indexCount =
+                    primitives[p].indices < 0
+                        ? vertices
+                        : decoded.indices(primitives[p].indices, where + "/indices", vertices).size();
+            }
+            bytes += vertices * perVertex + 12 * indexCount; // each term < 2^32 x 1560: no overflow
+            if (bytes > kMaxAvatarVisemeBytes)
+                doc.fail(where, "the world-space geometry would exceed " +
+                                    std::to_string(kMaxAvatarVisemeBytes >> 20) + " MiB (" +
+                                    std::to_string(visemes) +
+                                    " visemes; an accessor shared by several primitives counts once per "
+                                    "primitive)");
+        }
+    }
+}
+
 AvatarScan scan(const GltfDocument& doc, const AvatarSelection& selection) {
     AvatarScan scan;
     scan.source = doc.source;
@@ -129,6 +206,7 @@ AvatarScan scan(const GltfDocument& doc, const AvatarSelection& selection) {
     const SceneInstances scene = sceneInstances(doc);
     BufferViews views(doc);
     AccessorReader reader(doc, views);
+    DecodedAccessors decoded(reader);
 
     // Targets and their selection, mesh by mesh; visemes joined by key.
     std::vector<std::vector<std::string>> keysOfMesh;
@@ -216,6 +294,7 @@ AvatarScan scan(const GltfDocument& doc, const AvatarSelection& selection) {
     if (n > kMaxAvatarVisemes)
         doc.fail("", std::to_string(n) + " distinct targets selected as visemes (" + scan.selection +
                          "); at most " + std::to_string(kMaxAvatarVisemes) + " are supported");
+    checkWorldSpaceBudget(doc, decoded, scan, n, selection.context);
     // Geometry of the meshes carrying visemes, primitive by primitive, and (when asked) of the others,
     // for showing them. Everything allocated grows with data already read and checked, never with a
     // declared count.
@@ -245,18 +324,18 @@ AvatarScan scan(const GltfDocument& doc, const AvatarSelection& selection) {
             std::vector<std::uint32_t> indices;
             const bool draco = hasDraco(doc, mesh.index, static_cast<int>(p));
             if (draco) indices = decodeDracoPrimitive(doc, views, reader, mesh.index, static_cast<int>(p));
-            const std::vector<float> local = reader.floats(position, TINYGLTF_TYPE_VEC3, where + "/POSITION");
+            std::vector<float> dracoPositions;
+            if (draco) dracoPositions = reader.floats(position, TINYGLTF_TYPE_VEC3, where + "/POSITION");
+            const std::vector<float>& local =
+                draco ? dracoPositions : decoded.floats(position, TINYGLTF_TYPE_VEC3, where + "/POSITION");
             info.vertices = local.size() / 3;
             const std::size_t first = out.positions.size();
             if (mesh.carriesVisemes) info.firstVertex = first;
             if (first + info.vertices > 0xFFFFFFFFu)
                 doc.fail(where, "more than 2^32 vertices in the meshes carrying visemes");
-            if (n > 0 && (first + info.vertices) > kMaxAvatarVisemeBytes / (24 * n))
-                doc.fail(where, "the viseme set would exceed " + std::to_string(kMaxAvatarVisemeBytes >> 20) +
-                                    " MiB");
             if (!draco) {
                 if (prim.indices >= 0) {
-                    indices = reader.indices(prim.indices, where + "/indices", info.vertices);
+                    indices = decoded.indices(prim.indices, where + "/indices", info.vertices);
                 } else {
                     indices.resize(info.vertices);
                     for (std::size_t i = 0; i < indices.size(); ++i)
@@ -279,6 +358,7 @@ AvatarScan scan(const GltfDocument& doc, const AvatarSelection& selection) {
             for (std::size_t v = 0; v < info.vertices; ++v) {
                 const glm::dvec4 w =
                     matrixOf(v) * glm::dvec4(local[3 * v], local[3 * v + 1], local[3 * v + 2], 1.0);
+                requireFiniteWorld(doc, w, mesh.node, where + "/POSITION", v);
                 out.positions.emplace_back(w.x, w.y, w.z);
             }
             if (!mesh.carriesVisemes) continue;
@@ -287,12 +367,13 @@ AvatarScan scan(const GltfDocument& doc, const AvatarSelection& selection) {
                 const int viseme = mesh.targets[k].viseme;
                 const int delta = viseme < 0 ? -1 : attribute(prim.targets[k], "POSITION");
                 if (delta < 0) continue; // not a viseme, or no displacement on this primitive
-                const std::vector<float> d =
-                    reader.floats(delta, TINYGLTF_TYPE_VEC3,
-                                  where + "/targets/" + std::to_string(k) + "/POSITION", info.vertices);
+                const std::string targetWhere = where + "/targets/" + std::to_string(k) + "/POSITION";
+                const std::vector<float>& d =
+                    decoded.floats(delta, TINYGLTF_TYPE_VEC3, targetWhere, info.vertices);
                 auto& target = deltas[static_cast<std::size_t>(viseme)];
                 for (std::size_t v = 0; v < info.vertices; ++v) {
                     const glm::dvec4 w = matrixOf(v) * glm::dvec4(d[3 * v], d[3 * v + 1], d[3 * v + 2], 0.0);
+                    requireFiniteWorld(doc, w, mesh.node, targetWhere, v);
                     target[first + v] += Vec3(w.x, w.y, w.z);
                 }
             }

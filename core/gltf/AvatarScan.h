@@ -19,9 +19,15 @@ namespace vl {
 class GltfDocument;
 
 // Bounds that keep memory proportional to what a file really holds: distinct visemes, and the bytes
-// of the world-space viseme set (visemes x vertices x 24).
+// of the world-space geometry ((visemes + 1) x vertices x 24 + triangles, summed over every primitive
+// read, checked before it is allocated). 512 MiB keeps `avatar inspect` and `face build` of any file
+// under 1 GiB of memory (docs/robustness.md); a 1 M-vertex head with 15 visemes takes 384 MiB.
 inline constexpr std::size_t kMaxAvatarVisemes = 64;
-inline constexpr std::size_t kMaxAvatarVisemeBytes = std::size_t{3} << 30;
+inline constexpr std::size_t kMaxAvatarVisemeBytes = std::size_t{512} << 20;
+
+// World-space coordinates beyond this are refused: their squared distances (and the float32 a key is
+// written as) would overflow.
+inline constexpr double kMaxWorldCoordinate = 1e30;
 
 struct AvatarSelection {
     std::string pattern;  // glob over target names (core/gltf/TargetNames.h); empty: the Oculus visemes

@@ -10,9 +10,9 @@ namespace vl {
 namespace {
 
 std::string describe(const Json& value) {
-    if (value.is_number() || value.is_boolean() || value.is_null()) return value.dump();
+    if (value.is_number() || value.is_boolean() || value.is_null()) return quoteJson(value);
     if (value.is_string()) {
-        auto text = value.dump();
+        auto text = quoteJson(value);
         if (text.size() > 40) text = text.substr(0, 37) + "...";
         return "string " + text;
     }
@@ -105,21 +105,21 @@ double JsonNode::number() const {
     if (!value_->is_number()) fail("expected a number, found " + describe(*value_));
     const double v = value_->get<double>();
     // JSON has no NaN/Inf literals, but an overflowing literal such as 1e999 parses to infinity.
-    if (!std::isfinite(v)) fail("expected a finite number, found " + value_->dump());
+    if (!std::isfinite(v)) fail("expected a finite number, found " + quoteJson(*value_));
     return v;
 }
 
 double JsonNode::nonNegativeNumber() const {
     if (!value_->is_number()) fail("expected a non-negative number, found " + describe(*value_));
     const double v = number();
-    if (v < 0.0) fail("expected a non-negative number, found " + value_->dump());
+    if (v < 0.0) fail("expected a non-negative number, found " + quoteJson(*value_));
     return v;
 }
 
 std::int64_t JsonNode::integer() const {
     if (value_->is_number_unsigned()) {
         const auto u = value_->get<std::uint64_t>();
-        if (u > static_cast<std::uint64_t>(INT64_MAX)) fail("integer out of range: " + value_->dump());
+        if (u > static_cast<std::uint64_t>(INT64_MAX)) fail("integer out of range: " + quoteJson(*value_));
         return static_cast<std::int64_t>(u);
     }
     if (!value_->is_number_integer()) fail("expected an integer, found " + describe(*value_));

@@ -92,6 +92,7 @@ VisemeSet loadProjectVisemeSet(const Project& project) {
         }
         set.visemes.push_back(std::move(loaded));
     }
+    checkVisemeSetValues(set, projectWhere(project, "/visemes"));
     return set;
 }
 

@@ -67,7 +67,7 @@ void forEachCsvRow(std::string_view text, std::string_view source, bool secondCo
         const auto fields = csvFields(line);
         const std::string where = fileLine(source, lineNumber);
         if (fields.size() < 2)
-            throwInputError(where, "expected two comma-separated columns, found '" + std::string(line) + "'");
+            throwInputError(where, "expected two comma-separated columns, found '" + quoteInput(line) + "'");
         const bool header =
             first && (secondColumnNumeric ? !looksNumeric(fields[1]) : fields[0] == "phoneme");
         first = false;
@@ -87,7 +87,7 @@ class TableBuilder {
     void add(std::string name, double value, const std::string& where) {
         checkFrequency(value, where);
         if (name.empty()) throwInputError(where, "empty name");
-        if (!seen_.insert(name).second) throwInputError(where, "'" + name + "' is listed twice");
+        if (!seen_.insert(name).second) throwInputError(where, "'" + quoteInput(name) + "' is listed twice");
         table_.entries.emplace_back(std::move(name), value);
     }
     FrequencyTable take() { return std::move(table_); }
@@ -108,7 +108,7 @@ FrequencyTable tableFromJson(const Json& node, const std::string& source, const 
         for (const auto& [key, value] : node.items()) {
             const std::string where = jsonWhere(source, jsonPathAppend(path, key));
             if (!value.is_number())
-                throwInputError(where, "expected a non-negative number, found " + value.dump());
+                throwInputError(where, "expected a non-negative number, found " + quoteJson(value));
             table.add(key, value.get<double>(), where);
         }
     } else if (node.is_array()) { // [[name, f], ...] keeps the file's order
@@ -195,8 +195,9 @@ PhonemeVisemeMap loadPhonemeMapFile(const std::filesystem::path& path) {
     std::unordered_set<std::string> mapped;
     forEachCsvRow(text, source, false, [&](const std::vector<std::string>& fields, const std::string& where) {
         if (!mapped.insert(fields[0]).second)
-            throwInputError(where, "phoneme '" + fields[0] + "' is mapped twice");
-        if (fields[1].empty()) throwInputError(where, "phoneme '" + fields[0] + "' has an empty viseme name");
+            throwInputError(where, "phoneme '" + quoteInput(fields[0]) + "' is mapped twice");
+        if (fields[1].empty())
+            throwInputError(where, "phoneme '" + quoteInput(fields[0]) + "' has an empty viseme name");
         map.entries.emplace_back(fields[0], fields[1]);
     });
     if (map.entries.empty()) throwInputError(source, "no phoneme -> viseme entries in file");
@@ -221,7 +222,7 @@ std::vector<double> visemeFrequencies(const FrequencySource& source,
             placeOr(source.map.origin.text.empty() ? source.origin.text : source.map.origin.text);
         std::string unmapped;
         for (const auto& [phoneme, value] : source.phonemes.entries) {
-            checkFrequency(value, place + ": phoneme '" + phoneme + "'");
+            checkFrequency(value, place + ": phoneme '" + quoteInput(phoneme) + "'");
             const auto mapped = visemeOfPhoneme.find(phoneme);
             if (mapped == visemeOfPhoneme.end()) {
                 unmapped += (unmapped.empty() ? "" : ", ") + phoneme;
@@ -229,23 +230,24 @@ std::vector<double> visemeFrequencies(const FrequencySource& source,
             }
             const auto index = indexOf.find(*mapped->second);
             if (index == indexOf.end())
-                throwInputError(mapPlace, "phoneme '" + phoneme + "' maps to viseme '" + *mapped->second +
-                                              "', which is not in the viseme set");
+                throwInputError(mapPlace, "phoneme '" + quoteInput(phoneme) + "' maps to viseme '" +
+                                              *mapped->second + "', which is not in the viseme set");
             freq[index->second] += value;
         }
         if (!unmapped.empty()) throwInputError(mapPlace, "phonemes not mapped to any viseme: " + unmapped);
     } else {
         std::vector<bool> given(visemeNames.size(), false);
         for (const auto& [name, value] : source.visemeFrequencies.entries) {
-            checkFrequency(value, place + ": viseme '" + name + "'");
+            checkFrequency(value, place + ": viseme '" + quoteInput(name) + "'");
             const auto index = indexOf.find(name);
             if (index == indexOf.end())
-                throwInputError(place, "frequency given for unknown viseme '" + name + "'");
+                throwInputError(place, "frequency given for unknown viseme '" + quoteInput(name) + "'");
             freq[index->second] = value;
             given[index->second] = true;
         }
         for (std::size_t i = 0; i < visemeNames.size(); ++i)
-            if (!given[i]) throwInputError(place, "no frequency given for viseme '" + visemeNames[i] + "'");
+            if (!given[i])
+                throwInputError(place, "no frequency given for viseme '" + quoteInput(visemeNames[i]) + "'");
     }
     double total = 0;
     for (const double f : freq) total += f;

@@ -1,5 +1,7 @@
 #include "core/reduce/GramMatrix.h"
 
+#include "core/common/Error.h"
+
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -69,6 +71,13 @@ std::vector<double> centredGram(const ShapeView& shapes, std::span<const double>
             for (std::size_t j = i; j < n; ++j) gram[i * n + j] += p[i * n + j];
     for (std::size_t i = 0; i < n; ++i)
         for (std::size_t j = 0; j < i; ++j) gram[i * n + j] = gram[j * n + i];
+    // Readers bound coordinates; huge weights or frequencies can still overflow: never a silent 0.
+    for (std::size_t k = 0; k < n * n; ++k)
+        if (!std::isfinite(gram[k]))
+            throwInputError("viseme set", "the weighted squared distances between shapes " +
+                                              std::to_string(k / n + 1) + " and " +
+                                              std::to_string(k % n + 1) +
+                                              " overflow (coordinates, weights or frequencies too large)");
     return gram;
 }
 

@@ -3,9 +3,11 @@
 #include "core/common/Error.h"
 #include "core/common/InputRegistry.h"
 #include "core/common/Limits.h"
+#include "core/common/TextParsing.h"
 #include "core/io/MeshIO.h"
 
 #include <algorithm>
+#include <cmath>
 #include <unordered_set>
 
 namespace vl {
@@ -60,6 +62,34 @@ void checkVisemeSetSize(std::size_t visemeCount, std::size_t vertexCount, std::s
                                    std::to_string(limit) + " vertex positions in one viseme set");
 }
 
+namespace {
+
+void checkCoordinates(std::span<const Vec3> positions, const std::string& source) {
+    for (std::size_t v = 0; v < positions.size(); ++v)
+        for (const double c : {positions[v][0], positions[v][1], positions[v][2]})
+            if (!(std::abs(c) <= kMaxVisemeCoordinate))
+                throwInputError(quoteInput(source), "vertex " + std::to_string(v + 1) + ": coordinate " +
+                                                        formatDouble(c) +
+                                                        " beyond +-1e30 (squared distances would overflow)");
+}
+
+std::string sourceOr(const std::filesystem::path& file, std::string_view where, std::string_view shape) {
+    return file.empty() ? std::string(where) + ": " + std::string(shape) : file.string();
+}
+
+} // namespace
+
+void checkVisemeSetValues(const VisemeSet& set, std::string_view where) {
+    checkCoordinates(set.neutral.positions, sourceOr(set.neutralSource, where, "neutral"));
+    for (const Viseme& viseme : set.visemes) {
+        const std::string source = sourceOr(viseme.source, where, "viseme " + quoteInput(viseme.name));
+        if (!isValidUtf8(viseme.name))
+            throwInputError(quoteInput(source),
+                            "viseme name \"" + quoteInput(viseme.name) + "\" is not valid UTF-8");
+        checkCoordinates(viseme.positions, source);
+    }
+}
+
 VisemeSet loadVisemeSet(const std::filesystem::path& neutral,
                         const std::vector<std::pair<std::string, std::filesystem::path>>& visemes) {
     if (visemes.size() < 2)
@@ -81,6 +111,7 @@ VisemeSet loadVisemeSet(const std::filesystem::path& neutral,
         if (!read.sameTopology) checkInterpolable(set.neutral, neutral.string(), read.mesh, file.string());
         set.visemes.push_back({name, file, std::move(read.mesh.positions)});
     }
+    checkVisemeSetValues(set, "viseme set of " + neutral.string());
     return set;
 }
 
@@ -90,8 +121,10 @@ listVisemeFolder(const std::filesystem::path& folder, const std::filesystem::pat
     if (!std::filesystem::is_directory(folder, ec)) throwInputError(folder.string(), "not a folder");
     noteInputFolder(folder); // its files are inputs, and outputs must not go into it
     std::vector<std::filesystem::path> files;
+    // A symlink loop or a dangling link in the folder is not a mesh (is_regular_file would throw).
     for (const auto& entry : std::filesystem::directory_iterator(folder, ec))
-        if (entry.is_regular_file() && isMeshFile(entry.path())) files.push_back(entry.path());
+        if (std::error_code fileError; entry.is_regular_file(fileError) && isMeshFile(entry.path()))
+            files.push_back(entry.path());
     std::sort(files.begin(), files.end());
     std::vector<std::pair<std::string, std::filesystem::path>> result;
     for (const auto& file : files) {

@@ -39,6 +39,15 @@ void checkInterpolable(const MeshData& reference, std::string_view referenceSour
 // reading the visemes, so a file naming one mesh many times cannot exhaust memory.
 void checkVisemeSetSize(std::size_t visemeCount, std::size_t vertexCount, std::string_view where);
 
+// Coordinates beyond +-1e30 are refused: squared distances between them would overflow to infinity
+// (a scale of 1e160 once gave "optimal cost 0 (proved)"), and keys are written as float32.
+inline constexpr double kMaxVisemeCoordinate = 1e30;
+
+// Throws InputError naming the mesh file (or `where` for embedded shapes) and the vertex when a
+// coordinate of the set is beyond kMaxVisemeCoordinate or not finite, or naming the viseme when
+// its name is not valid UTF-8 (shown escaped).
+void checkVisemeSetValues(const VisemeSet& set, std::string_view where);
+
 // Loads the neutral mesh and each (name, file) viseme, checking interpolability, unique non-empty
 // names and n >= 2.
 VisemeSet loadVisemeSet(const std::filesystem::path& neutral,
