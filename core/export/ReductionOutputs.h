@@ -21,10 +21,15 @@ struct ReduceTimings {
 // names (relative to the folder).
 std::vector<std::string> writeReductionOutputs(OutputSet& outputs, const ReduceOutcome& outcome);
 
-// The JSON report: n, m, weights, method, optimal, cost, lower_bound, gap, groups, cost_curve (null where
-// the constraints allow no grouping), lower_bound_curve, optimal_curve, groups_curve (every p's groups by
-// name, null as cost_curve), constraints, frequencies, timing_ms, outputs, and compared_maps when maps
-// were compared (each map's groups, cost, and the optimum for as many groups when p <= m).
+// One line on the reduction model that ran: "Rest: free (...); resting: sil, ..." or "Rest: key (...)".
+std::string restSummary(const ReduceOutcome& outcome);
+
+// The JSON report: n, m, weights, method, optimal, cost, lower_bound, gap, groups, rest (model "free" or
+// "key", viseme: the rest viseme or null, resting: the resting visemes of the best grouping), cost_curve
+// (null where the constraints allow no grouping), lower_bound_curve, optimal_curve, groups_curve (every p's
+// groups by name, null as cost_curve), rest_curve (every p's resting visemes, with a free rest), constraints,
+// frequencies, timing_ms, outputs, and compared_maps when maps were compared (each map's groups, cost, and
+// the optimum for as many groups when p <= m).
 std::string reductionReportJson(const ReduceOutcome& outcome, WeightMode mode, const ReduceTimings& timings,
                                 const std::vector<std::string>& outputs);
 

@@ -474,12 +474,15 @@ double dissimilarity(std::span<const Vec3> a, std::span<const Vec3> b, std::span
 
 std::vector<double> evaluateGroupings(const ShapeView& shapes, std::span<const double> frequencies,
                                       std::span<const double> weights,
-                                      std::span<const std::vector<std::vector<int>>> groupings) {
-    validate({shapes, frequencies, weights, 1});
+                                      std::span<const std::vector<std::vector<int>>> groupings,
+                                      const RestPose& rest) {
+    const ReductionProblem problem{shapes, frequencies, weights, 1, {}, rest};
+    validate(problem);
     const int n = static_cast<int>(shapes.size());
     const ConstraintUnits units = constraintUnits({}, n); // every viseme its own unit
-    const GroupCostModel model =
-        makeGroupCostModel(centredGram(shapes, frequencies, weights), frequencies, units);
+    GroupCostModel model = makeGroupCostModel(centredGram(shapes, frequencies, weights), frequencies, units);
+    // Only a rest viseme marks a group as resting here: a virtual unit would be in no given group.
+    if (rest.free && rest.viseme >= 0) makeRestFree(model, visemeRestCosts(problem), units, rest.viseme);
     std::vector<double> costs;
     for (std::size_t k = 0; k < groupings.size(); ++k) {
         const std::string where = "grouping " + std::to_string(k + 1);

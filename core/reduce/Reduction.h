@@ -86,7 +86,7 @@ struct Grouping {
     double lowerBound = 0.0; // proven: no grouping into p groups satisfying the constraints costs less
     bool optimal = false;    // proven minimal (then lowerBound == cost)
     std::vector<std::vector<int>> groups; // member indices, each ascending; groups ordered by first member
-    std::vector<int> rest;                // the resting visemes, ascending (rest-free model only)
+    std::vector<int> rest{};              // the resting visemes, ascending (rest-free model only)
 
     bool feasible() const { return !groups.empty(); }
     // groupOf[i]: the group viseme i is in, kRestGroup when it rests (groups and rest partition the n
@@ -135,10 +135,11 @@ double dissimilarity(std::span<const Vec3> a, std::span<const Vec3> b, std::span
 // pass, then O(n^2) per grouping): the numbers the solvers report for the same groups, so a given
 // grouping (e.g. a standard phoneme -> viseme map) compares exactly with the optimum. Each grouping must
 // partition 0..n-1 into non-empty groups; throws InputError otherwise and for invalid inputs (as
-// reduceVisemes).
+// reduceVisemes). With a free rest, the group holding the rest viseme (if any) rests.
 std::vector<double> evaluateGroupings(const ShapeView& shapes, std::span<const double> frequencies,
                                       std::span<const double> weights,
-                                      std::span<const std::vector<std::vector<int>>> groupings);
+                                      std::span<const std::vector<std::vector<int>>> groupings,
+                                      const RestPose& rest = {});
 
 // rho_f of a grouping evaluated directly from the meshes (O(n|V|)): the slow, obvious reference.
 double groupingCost(const ShapeView& shapes, std::span<const double> frequencies,
