@@ -7,6 +7,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <cstdio>
+#include <span>
+
 namespace vl {
 
 std::vector<std::string> writeReductionOutputs(OutputSet& outputs, const ReduceOutcome& outcome) {
@@ -44,6 +48,43 @@ std::vector<std::string> namesOf(const ReduceOutcome& outcome, const std::vector
 }
 
 } // namespace
+
+namespace {
+
+double largestDisplacementMm(std::span<const Vec3> shape, std::span<const Vec3> neutral) {
+    double largest = 0;
+    for (std::size_t v = 0; v < shape.size(); ++v)
+        largest = std::max(largest, (shape[v] - neutral[v]).norm());
+    return 1000 * largest;
+}
+
+} // namespace
+
+std::vector<VisemeMotion> visemeMotions(const VisemeSet& set, const ReduceOutcome& outcome) {
+    const std::vector<int> groupOf = outcome.result.groupOf();
+    std::vector<VisemeMotion> motions;
+    for (std::size_t i = 0; i < set.visemes.size(); ++i) {
+        VisemeMotion motion{set.visemes[i].name, "",
+                            largestDisplacementMm(set.visemes[i].positions, set.neutral.positions), 0.0};
+        if (groupOf[i] != kRestGroup) {
+            const KeyMesh& key = outcome.model.keys[static_cast<std::size_t>(groupOf[i])];
+            motion.key = key.name;
+            motion.afterMm = largestDisplacementMm(key.positions, set.neutral.positions);
+        }
+        motions.push_back(std::move(motion));
+    }
+    return motions;
+}
+
+std::string formatVisemeMotion(const VisemeMotion& motion) {
+    char text[256];
+    if (motion.key.empty())
+        std::snprintf(text, sizeof text, "moves 0 mm (rests; %.3g mm before)", motion.beforeMm);
+    else
+        std::snprintf(text, sizeof text, "moves %.3g of %.3g mm (key %s)", motion.afterMm, motion.beforeMm,
+                      motion.key.c_str());
+    return motion.viseme + " " + text;
+}
 
 std::string restSummary(const ReduceOutcome& outcome) {
     const std::string viseme =
@@ -170,6 +211,13 @@ std::string avatarReductionReport(const AvatarReduction& reduction, const Avatar
                           {"viseme_targets", m.visemeTargets},
                           {"keys", m.keys}});
     report["meshes"] = meshes;
+    nlohmann::ordered_json motions = nlohmann::ordered_json::array();
+    for (const VisemeMotion& m : visemeMotions(scan.set, reduction.outcome))
+        motions.push_back({{"viseme", m.viseme},
+                           {"key", m.key.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(m.key)},
+                           {"before_mm", m.beforeMm},
+                           {"after_mm", m.afterMm}});
+    report["viseme_motion"] = motions;
     nlohmann::ordered_json phonemes = nlohmann::ordered_json::object();
     for (const auto& [phoneme, key] : reduction.outcome.model.phonemeToKey) phonemes[phoneme] = key;
     report["phoneme_to_key"] = phonemes;
