@@ -48,6 +48,8 @@ struct AvatarReduceOptions {
     bool noTargetNormals = false;
     int maxTargets = 0;
     bool gltfpack = false;
+    std::string rest = "free"; // free or key (ReduceRun.h RestChoice)
+    std::string restViseme;
 };
 
 double avatarMillisecondsSince(std::chrono::steady_clock::time_point start) {
@@ -95,9 +97,13 @@ int runAvatarReduce(const AvatarReduceOptions& o) {
     if (o.names != "original" && o.names != "merged") throwUsage("--names must be original or merged");
     if (o.maxTargets < 0) throwUsage("--max-targets must be >= 1");
     if (!o.targets.empty()) checkGlobPattern(o.targets, "--targets");
+    if (o.rest != "free" && o.rest != "key") throwUsage("--rest must be free or key, got '" + o.rest + "'");
     ReduceSettings settings;
     settings.target = o.target;
     applyWeightsOption(o.weights, settings);
+    // A morph-target avatar's rest pose (all weights 0) is free: always the rest-free model unless asked.
+    settings.rest = o.rest == "key" ? RestChoice::Key : RestChoice::Free;
+    settings.restViseme = o.restViseme;
     AvatarWriteOptions write;
     write.names = o.names == "merged" ? AvatarNames::Merged : AvatarNames::Original;
     write.targetNormals = !o.noTargetNormals;
@@ -140,6 +146,9 @@ int runAvatarReduce(const AvatarReduceOptions& o) {
                 chosen.c_str(), r.outcome.result.best().cost);
     for (std::size_t g = 0; g < r.outcome.model.keys.size(); ++g)
         std::printf("  %2zu: %s\n", g, r.outcome.model.keys[g].name.c_str());
+    std::printf("%s\n", restSummary(r.outcome).c_str());
+    for (const VisemeMotion& motion : visemeMotions(scan.set, r.outcome))
+        std::printf("  %s\n", formatVisemeMotion(motion).c_str());
     for (const AvatarMeshChange& m : r.summary.meshes)
         std::printf("mesh %d \"%s\": %zu morph targets -> %zu (%zu viseme targets, %zu keys, names %s)\n",
                     m.mesh, m.name.c_str(), m.targetsBefore, m.targetsAfter, m.visemeTargets, m.keys,
@@ -186,6 +195,12 @@ void addAvatarCommand(CLI::App& app, CommandRunner& run) {
         ->required()
         ->check(CLI::PositiveNumber);
     r->add_option("--out", reduce->out, "The reduced avatar (.glb or .vrm; never the input)")->required();
+    r->add_option("--rest", reduce->rest,
+                  "The rest pose: free (default: the neutral is an extra key that costs nothing; a viseme "
+                  "joins a key or rests, moving nothing) or key (the rest is a key like any other)")
+        ->capture_default_str();
+    r->add_option("--rest-viseme", reduce->restViseme,
+                  "The avatar's rest viseme (default: viseme_sil or sil when present); it always rests");
     r->add_option("--targets", reduce->targets,
                   "Glob selecting the viseme targets by name (*, ?, [AIUEO]); default: the Oculus visemes");
     r->add_option(

@@ -42,6 +42,8 @@ struct ReduceOptions {
     std::string method = "auto";
     double timeLimit = 60;
     std::vector<std::string> compareMaps; // phoneme -> viseme maps costed as groupings
+    std::string rest = "auto";            // auto, free or key (ReduceRun.h RestChoice)
+    std::string restViseme;
 };
 
 std::pair<std::string, std::string> splitPair(const std::string& text, const std::string& option) {
@@ -158,6 +160,12 @@ struct ReduceInputs {
     ReduceSettings settings;
 };
 
+RestChoice restChoiceFlag(const std::string& text) {
+    for (const RestChoice choice : {RestChoice::Auto, RestChoice::Free, RestChoice::Key})
+        if (text == toString(choice)) return choice;
+    throwUsage("--rest must be free or key (or auto), got '" + text + "'");
+}
+
 // Flag combinations are checked before any file is read, so they always give exit code 2.
 void checkFlagCombinations(const ReduceOptions& o) {
     if (!o.visemeDir.empty() && !o.visemes.empty())
@@ -176,6 +184,7 @@ void checkFlagCombinations(const ReduceOptions& o) {
     if (o.method != "auto" && o.method != "dp" && o.method != "bnb" && o.method != "lp")
         throwUsage("--method must be auto, dp, bnb or lp, got '" + o.method + "'");
     if (!(o.timeLimit >= 0)) throwUsage("--time-limit must be >= 0 seconds (0: no limit)");
+    restChoiceFlag(o.rest);
     constraintFlags(o); // A,B syntax
 }
 
@@ -190,6 +199,8 @@ void applySolverFlags(const ReduceOptions& o, ReduceSettings& settings) {
     }
     settings.options.method = reductionMethodFromString(o.method, "--method");
     settings.options.timeLimitSeconds = o.timeLimit;
+    settings.rest = restChoiceFlag(o.rest);
+    settings.restViseme = o.restViseme;
     for (const auto& file : o.compareMaps) settings.compareMaps.push_back(loadPhonemeMapFile(file));
 }
 
@@ -255,6 +266,7 @@ int runReduce(const ReduceOptions& o, bool weightsGiven) {
                     best.lowerBound, 100 * best.gap());
     for (std::size_t g = 0; g < outcome.model.keys.size(); ++g)
         std::printf("  %2zu: %s\n", g, outcome.model.keys[g].name.c_str());
+    std::printf("%s\n", restSummary(outcome).c_str());
     std::printf("Cost for p = 1..%d:", settings.target);
     for (const auto& grouping : outcome.result.curve) {
         if (!grouping.feasible())
@@ -322,6 +334,12 @@ void addReduceCommand(CLI::App& app, CommandRunner& run) {
         "--compare-map", options->compareMaps,
         "A phoneme -> viseme map (CSV or JSON) whose grouping of the visemes (named by phoneme) is "
         "costed under the same objective and compared with the optimum (repeatable)");
+    cmd->add_option("--rest", options->rest,
+                    "The rest pose: free (the neutral is an extra key that costs nothing; a viseme joins a "
+                    "key or rests) or key (the rest is a key like any other). Default: free when the set "
+                    "has a rest viseme (sil, viseme_sil or --rest-viseme), else key");
+    cmd->add_option("--rest-viseme", options->restViseme,
+                    "The set's rest viseme (default: sil or viseme_sil); it always rests with --rest free");
     cmd->callback([&run, options, weights] {
         const bool weightsGiven = weights->count() > 0;
         run = [options, weightsGiven] { return runReduce(*options, weightsGiven); };

@@ -57,7 +57,8 @@ void readExtras(const tinygltf::Value& extras, ReducedModel& model, std::string_
         for (const std::string& phoneme : map.Keys()) {
             const tinygltf::Value& v = map.Get(phoneme);
             const double k = v.IsNumber() ? v.GetNumberAsDouble() : -1.0;
-            if (!(k >= 0 && k < static_cast<double>(keyCount)) || k != std::floor(k))
+            // -1: the phoneme rests (kRestingKey, the rest-free model): the neutral face.
+            if (!(k >= kRestingKey && k < static_cast<double>(keyCount)) || k != std::floor(k))
                 throwInputError(where + ".phonemeToTarget/" + phoneme, "not a morph target index");
             model.phonemeToKey.emplace_back(phoneme, static_cast<int>(k));
         }

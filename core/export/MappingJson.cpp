@@ -18,6 +18,7 @@ std::string formatMappingJson(const ReducedModel& model, const std::vector<KeyFi
         for (const KeyFileField& file : keyFiles) entry[file.field] = keyFileName(model, k, file.extension);
         reduced.push_back(entry);
     }
+    for (const std::string& viseme : model.resting) visemes[viseme] = kRestingKey; // the neutral face
     nlohmann::ordered_json phonemes = nlohmann::ordered_json::object();
     for (const auto& [phoneme, key] : model.phonemeToKey) phonemes[phoneme] = key;
     nlohmann::ordered_json mapping{{"format", "visemelab-mapping"},

@@ -7,6 +7,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <cstdio>
+#include <span>
+
 namespace vl {
 
 std::vector<std::string> writeReductionOutputs(OutputSet& outputs, const ReduceOutcome& outcome) {
@@ -35,6 +39,64 @@ std::vector<std::string> writeReductionOutputs(OutputSet& outputs, const ReduceO
     return written;
 }
 
+namespace {
+
+std::vector<std::string> namesOf(const ReduceOutcome& outcome, const std::vector<int>& indices) {
+    std::vector<std::string> names;
+    for (const int i : indices) names.push_back(outcome.visemeNames[static_cast<std::size_t>(i)]);
+    return names;
+}
+
+} // namespace
+
+namespace {
+
+double largestDisplacementMm(std::span<const Vec3> shape, std::span<const Vec3> neutral) {
+    double largest = 0;
+    for (std::size_t v = 0; v < shape.size(); ++v)
+        largest = std::max(largest, (shape[v] - neutral[v]).norm());
+    return 1000 * largest;
+}
+
+} // namespace
+
+std::vector<VisemeMotion> visemeMotions(const VisemeSet& set, const ReduceOutcome& outcome) {
+    const std::vector<int> groupOf = outcome.result.groupOf();
+    std::vector<VisemeMotion> motions;
+    for (std::size_t i = 0; i < set.visemes.size(); ++i) {
+        VisemeMotion motion{set.visemes[i].name, "",
+                            largestDisplacementMm(set.visemes[i].positions, set.neutral.positions), 0.0};
+        if (groupOf[i] != kRestGroup) {
+            const KeyMesh& key = outcome.model.keys[static_cast<std::size_t>(groupOf[i])];
+            motion.key = key.name;
+            motion.afterMm = largestDisplacementMm(key.positions, set.neutral.positions);
+        }
+        motions.push_back(std::move(motion));
+    }
+    return motions;
+}
+
+std::string formatVisemeMotion(const VisemeMotion& motion) {
+    char text[256];
+    if (motion.key.empty())
+        std::snprintf(text, sizeof text, "moves 0 mm (rests; %.3g mm before)", motion.beforeMm);
+    else
+        std::snprintf(text, sizeof text, "moves %.3g of %.3g mm (key %s)", motion.afterMm, motion.beforeMm,
+                      motion.key.c_str());
+    return motion.viseme + " " + text;
+}
+
+std::string restSummary(const ReduceOutcome& outcome) {
+    const std::string viseme =
+        outcome.restViseme.empty() ? "no rest viseme" : "rest viseme " + outcome.restViseme;
+    if (!outcome.result.restFree) return "Rest: key (the rest is a key like any other; " + viseme + ")";
+    std::string line = "Rest: free (the neutral is a free key; " + viseme + "); resting:";
+    const auto& resting = outcome.model.resting;
+    if (resting.empty()) line += " none";
+    for (std::size_t i = 0; i < resting.size(); ++i) line += (i ? ", " : " ") + resting[i];
+    return line;
+}
+
 std::string reductionReportJson(const ReduceOutcome& outcome, WeightMode mode, const ReduceTimings& timings,
                                 const std::vector<std::string>& outputs) {
     nlohmann::ordered_json report;
@@ -50,6 +112,10 @@ std::string reductionReportJson(const ReduceOutcome& outcome, WeightMode mode, c
     nlohmann::ordered_json groups = nlohmann::ordered_json::array();
     for (const KeyMesh& key : outcome.model.keys) groups.push_back(key.members);
     report["groups"] = groups;
+    report["rest"] = {{"model", outcome.result.restFree ? "free" : "key"},
+                      {"viseme", outcome.restViseme.empty() ? nlohmann::ordered_json()
+                                                            : nlohmann::ordered_json(outcome.restViseme)},
+                      {"resting", outcome.model.resting}};
     // Entries p the constraints rule out are null.
     nlohmann::ordered_json curve = nlohmann::ordered_json::array(), bounds = nlohmann::ordered_json::array(),
                            optimal = nlohmann::ordered_json::array();
@@ -68,17 +134,20 @@ std::string reductionReportJson(const ReduceOutcome& outcome, WeightMode mode, c
             continue;
         }
         nlohmann::ordered_json entry = nlohmann::ordered_json::array();
-        for (const auto& group : grouping.groups) {
-            std::vector<std::string> names;
-            for (const int i : group) names.push_back(outcome.visemeNames[static_cast<std::size_t>(i)]);
-            entry.push_back(names);
-        }
+        for (const auto& group : grouping.groups) entry.push_back(namesOf(outcome, group));
         groupsCurve.push_back(entry);
     }
     report["cost_curve"] = curve;
     report["lower_bound_curve"] = bounds;
     report["optimal_curve"] = optimal;
     report["groups_curve"] = groupsCurve;
+    if (outcome.result.restFree) {
+        nlohmann::ordered_json restCurve = nlohmann::ordered_json::array();
+        for (const auto& grouping : outcome.result.curve)
+            restCurve.push_back(grouping.feasible() ? nlohmann::ordered_json(namesOf(outcome, grouping.rest))
+                                                    : nlohmann::ordered_json());
+        report["rest_curve"] = restCurve;
+    }
     nlohmann::ordered_json pairs = nlohmann::ordered_json::object();
     pairs["pin"] = outcome.constraints.pinned;
     auto pairList = [](const std::vector<std::pair<std::string, std::string>>& list) {
@@ -142,6 +211,13 @@ std::string avatarReductionReport(const AvatarReduction& reduction, const Avatar
                           {"viseme_targets", m.visemeTargets},
                           {"keys", m.keys}});
     report["meshes"] = meshes;
+    nlohmann::ordered_json motions = nlohmann::ordered_json::array();
+    for (const VisemeMotion& m : visemeMotions(scan.set, reduction.outcome))
+        motions.push_back({{"viseme", m.viseme},
+                           {"key", m.key.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(m.key)},
+                           {"before_mm", m.beforeMm},
+                           {"after_mm", m.afterMm}});
+    report["viseme_motion"] = motions;
     nlohmann::ordered_json phonemes = nlohmann::ordered_json::object();
     for (const auto& [phoneme, key] : reduction.outcome.model.phonemeToKey) phonemes[phoneme] = key;
     report["phoneme_to_key"] = phonemes;

@@ -21,17 +21,34 @@ struct ReduceTimings {
 // names (relative to the folder).
 std::vector<std::string> writeReductionOutputs(OutputSet& outputs, const ReduceOutcome& outcome);
 
-// The JSON report: n, m, weights, method, optimal, cost, lower_bound, gap, groups, cost_curve (null where
-// the constraints allow no grouping), lower_bound_curve, optimal_curve, groups_curve (every p's groups by
-// name, null as cost_curve), constraints, frequencies, timing_ms, outputs, and compared_maps when maps
-// were compared (each map's groups, cost, and the optimum for as many groups when p <= m).
+// How far one viseme moves after the reduction (the largest vertex displacement from the neutral,
+// in mm for a glTF avatar in metres), against before: its key's shape, or nothing when it rests.
+struct VisemeMotion {
+    std::string viseme;
+    std::string key; // "" when it rests
+    double beforeMm = 0, afterMm = 0;
+};
+std::vector<VisemeMotion> visemeMotions(const VisemeSet& set, const ReduceOutcome& outcome);
+// "viseme_sil moves 0 mm (rests)", "viseme_PP moves 4.8 of 6.5 mm (key viseme_PP+viseme_sil)".
+std::string formatVisemeMotion(const VisemeMotion& motion);
+
+// One line on the reduction model that ran: "Rest: free (...); resting: sil, ..." or "Rest: key (...)".
+std::string restSummary(const ReduceOutcome& outcome);
+
+// The JSON report: n, m, weights, method, optimal, cost, lower_bound, gap, groups, rest (model "free" or
+// "key", viseme: the rest viseme or null, resting: the resting visemes of the best grouping), cost_curve
+// (null where the constraints allow no grouping), lower_bound_curve, optimal_curve, groups_curve (every p's
+// groups by name, null as cost_curve), rest_curve (every p's resting visemes, with a free rest), constraints,
+// frequencies, timing_ms, outputs, and compared_maps when maps were compared (each map's groups, cost, and
+// the optimum for as many groups when p <= m).
 std::string reductionReportJson(const ReduceOutcome& outcome, WeightMode mode, const ReduceTimings& timings,
                                 const std::vector<std::string>& outputs);
 
 // The report of `visemelab avatar reduce`: the keys of `visemelab reduce` (n, m, weights, cost, groups,
 // cost_curve, frequencies, timing_ms, outputs, and whatever the reduction adds) plus "avatar" (input, output,
 // names, target_normals, notes, sizes), "meshes" (the meshes touched: targets before/after, keys) and "scan"
-// (core/gltf/AvatarReport).
+// (core/gltf/AvatarReport), and "viseme_motion" (visemeMotions: viseme, key or null when it rests, before_mm,
+// after_mm).
 std::string avatarReductionReport(const AvatarReduction& reduction, const AvatarScan& scan,
                                   const ReduceSettings& settings, const AvatarWriteOptions& write,
                                   const ReduceTimings& timings, const std::string& input,

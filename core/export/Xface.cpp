@@ -191,8 +191,11 @@ std::string formatXfaceDictionary(const ReducedModel& model, std::string_view la
         for (char c : phoneme)
             if (std::isspace(static_cast<unsigned char>(c)))
                 throwInputError("Xface export", "phoneme '" + phoneme + "' contains white space");
-        out += phoneme + " " + aliases[static_cast<std::size_t>(key)] + "\n";
-        if (phoneme == "sil") silence = aliases[static_cast<std::size_t>(key)];
+        // A resting phoneme (rest-free model) shows the neutral face.
+        const std::string alias =
+            key == kRestingKey ? std::string(kRestAlias) : aliases[static_cast<std::size_t>(key)];
+        out += phoneme + " " + alias + "\n";
+        if (phoneme == "sil") silence = alias;
     }
     // Pauses need a line, or XfacePlayer finds no viseme for them: '#' as in Xface's own dictionaries
     // (italian.dic: "# Rest"), '_' as in the MBROLA phoneme timings it plays. Silence shows the key

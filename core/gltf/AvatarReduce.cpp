@@ -52,7 +52,7 @@ AvatarReduction reduceAvatar(const GltfDocument& doc, const AvatarScan& scan,
     const std::vector<int> groupOf = r.outcome.result.groupOf();
     r.glb = writeReducedAvatar(doc, scan, r.outcome.model, groupOf, r.outcome.frequencies, write, &r.summary);
     for (std::size_t i = 0; i < scan.visemes.size(); ++i)
-        if (r.outcome.frequencies[i] == 0.0)
+        if (r.outcome.frequencies[i] == 0.0 && groupOf[i] != kRestGroup)
             r.summary.notes.push_back(scan.visemes[i] +
                                       " has frequency 0 (no phoneme maps to it): it costs nothing " +
                                       "wherever it goes and takes the shape of key '" +

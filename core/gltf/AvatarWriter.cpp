@@ -8,6 +8,7 @@
 #include "core/gltf/GltfDocument.h"
 #include "core/gltf/GltfReferences.h"
 #include "core/gltf/MorphRemap.h"
+#include "core/reduce/Reduction.h"
 
 #include <cstring>
 #include <limits>
@@ -76,10 +77,12 @@ struct KeyGrouping {
         : groupOf(groups), weightInGroup(groups.size()), size(keys, 0) {
         std::vector<double> total(keys, 0.0);
         for (std::size_t i = 0; i < groups.size(); ++i) {
+            if (groups[i] == kRestGroup) continue; // rests: in no key
             ++size[static_cast<std::size_t>(groups[i])];
             total[static_cast<std::size_t>(groups[i])] += frequencies[i];
         }
         for (std::size_t i = 0; i < groups.size(); ++i) {
+            if (groups[i] == kRestGroup) continue;
             const auto g = static_cast<std::size_t>(groups[i]);
             weightInGroup[i] = total[g] > 0 ? frequencies[i] / total[g] : 1.0 / static_cast<double>(size[g]);
         }
@@ -155,6 +158,11 @@ Json keyTarget(GlbRepack& out, AccessorReader& reader, const Json& originalTarge
     return target;
 }
 
+// The morph target of a resting viseme: zero displacement.
+Json restingTarget(GlbRepack& out, std::size_t vertices) {
+    return Json{{"POSITION", addVec3Accessor(out, std::vector<float>(3 * vertices, 0.0f), true)}};
+}
+
 Json* extrasObject(Json& object) {
     if (!object.contains("extras")) object["extras"] = Json::object();
     return object["extras"].is_object() ? &object["extras"] : nullptr;
@@ -172,7 +180,7 @@ void writeMeshExtras(Json& meshJson, const MeshPlan& plan, const ReducedModel& m
         (*extras)["targetNames"] = plan.names;
     Json phonemeToTarget = Json::object();
     for (const auto& [phoneme, key] : model.phonemeToKey)
-        if (plan.keyTarget[static_cast<std::size_t>(key)] >= 0)
+        if (key != kRestingKey && plan.keyTarget[static_cast<std::size_t>(key)] >= 0)
             phonemeToTarget[phoneme] = plan.keyTarget[static_cast<std::size_t>(key)];
     Json keys = Json::array();
     for (std::size_t g = 0; g < model.keys.size(); ++g) {
@@ -300,6 +308,12 @@ std::string write(const GltfDocument& doc, const AvatarScan& scan, const Reduced
                 }
                 for (const auto& [name, accessor] : originalTargets[k].items())
                     if (accessor.is_number_integer()) out.mayDrop(accessor.get<int>());
+                if (grouping.groupOf[static_cast<std::size_t>(viseme)] == kRestGroup) {
+                    // A resting viseme keeps its target (every name still resolves in a player) but
+                    // moves nothing: the rest pose is the neutral.
+                    targets.push_back(restingTarget(out, mesh.primitives[p].vertices));
+                    continue;
+                }
                 const auto g = static_cast<std::size_t>(grouping.groupOf[static_cast<std::size_t>(viseme)]);
                 if (options.names == AvatarNames::Original ||
                     plan.remap[k] == static_cast<int>(targets.size()))

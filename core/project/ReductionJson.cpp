@@ -44,7 +44,7 @@ Grouping groupingFromJson(const JsonNode& node, std::size_t p, const std::vector
         node.allowOnly({"infeasible"});
         if (!node["infeasible"].boolean()) node["infeasible"].fail("expected true (or leave the key out)");
         const double inf = std::numeric_limits<double>::infinity();
-        return {inf, inf, true, {}};
+        return {inf, inf, true, {}, {}};
     }
     node.allowOnly({"cost", "groups", "optimal", "lowerBound"});
     Grouping grouping;

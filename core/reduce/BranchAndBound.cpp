@@ -103,7 +103,10 @@ class SuffixSearch {
                 out[static_cast<std::size_t>(count++)] = {s.partial + delta + rest, delta, crossSum, g};
             }
         }
-        if (s.k < q_) out[static_cast<std::size_t>(count++)] = {s.partial + rest, 0.0, 0.0, s.k};
+        if (s.k < q_) { // a group of one: c({u}), not 0 for a unit of several visemes or the rest unit
+            const double delta = model_.singletonCost(u);
+            out[static_cast<std::size_t>(count++)] = {s.partial + delta + rest, delta, 0.0, s.k};
+        }
         std::sort(out.begin(), out.begin() + count,
                   [](const Child& a, const Child& b) { return a.bound < b.bound; });
         return count;
@@ -209,22 +212,30 @@ class SuffixSearch {
     std::atomic<bool> stopped_{false};
 };
 
-// The order units are placed in. Units of weight 0 go last (they cost nothing, see completeFeasibly).
-// The others farthest first: the heaviest unit, then again and again the unit whose cheapest pair with
-// the units already ordered costs most (a pair {a, b} costs F_a F_b / (F_a + F_b) |x_a - x_b|^2). Every
-// suffix is then a spread-out sample of the set, units no few groups hold cheaply, so its optimum is a
-// large share of the whole optimum and the bounds prune early; and the units placed first are those
-// whose groups decide the most. On the 40 ARPAbet meshes (area weights) this proves p = 9 in 1.1 s
+// The order units are placed in. Units of weight 0 go last (they cost nothing, see completeFeasibly),
+// but for the rest unit, which decides what its group costs: it goes first, so the rest group's cost
+// is exact from the root on. The others farthest first: the heaviest unit, then again and again the unit
+// whose cheapest pair with the units already ordered costs most (a pair {a, b} costs F_a F_b / (F_a + F_b)
+// |x_a - x_b|^2). Every suffix is then a spread-out sample of the set, units no few groups hold cheaply, so
+// its optimum is a large share of the whole optimum and the bounds prune early; and the units placed first
+// are those whose groups decide the most. On the 40 ARPAbet meshes (area weights) this proves p = 9 in 1.1 s
 // where interleaving the groups of the heuristics' partition (the order before) took 53 s.
+// Units of weight 0 cost nothing in any group, except the rest unit.
+bool placedBySearch(const GroupCostModel& model, int a) {
+    return model.weight[static_cast<std::size_t>(a)] > 0 || a == model.restUnit;
+}
+
 std::vector<int> placementOrder(const GroupCostModel& model) {
     const int n = model.size();
     std::vector<int> order, zero;
-    for (int a = 0; a < n; ++a) (model.weight[static_cast<std::size_t>(a)] > 0 ? order : zero).push_back(a);
+    for (int a = 0; a < n; ++a) (placedBySearch(model, a) ? order : zero).push_back(a);
     if (!order.empty()) {
-        std::swap(order.front(), *std::max_element(order.begin(), order.end(), [&](int a, int b) {
-                      return model.weight[static_cast<std::size_t>(a)] <
-                             model.weight[static_cast<std::size_t>(b)];
-                  }));
+        std::swap(order.front(), model.restUnit >= 0
+                                     ? *std::find(order.begin(), order.end(), model.restUnit)
+                                     : *std::max_element(order.begin(), order.end(), [&](int a, int b) {
+                                           return model.weight[static_cast<std::size_t>(a)] <
+                                                  model.weight[static_cast<std::size_t>(b)];
+                                       }));
         // nearest[a]: the cost of a's cheapest pair with an ordered unit; order[0..k) is ordered.
         std::vector<double> nearest(static_cast<std::size_t>(n), std::numeric_limits<double>::infinity());
         for (std::size_t k = 1; k < order.size(); ++k) {
@@ -248,8 +259,10 @@ GroupCostModel restrictedModel(const GroupCostModel& model, std::span<const int>
     GroupCostModel sub;
     sub.scale = model.scale;
     for (const int a : units) {
+        if (a == model.restUnit) sub.restUnit = static_cast<int>(sub.weight.size());
         sub.weight.push_back(model.weight[static_cast<std::size_t>(a)]);
         sub.self.push_back(model.self[static_cast<std::size_t>(a)]);
+        sub.rest.push_back(model.rest[static_cast<std::size_t>(a)]);
         UnitMask conflicts = 0;
         for (std::size_t i = 0; i < units.size(); ++i) {
             sub.cross.push_back(model.h(a, units[i]));
@@ -264,14 +277,15 @@ GroupCostModel restrictedModel(const GroupCostModel& model, std::span<const int>
 // kBlockUnits consecutive units, each block solved exactly by the subset DP into min(p, |block|) groups
 // with the conflicts dropped (a relaxation), and the optima summed. Valid because the cost of a group
 // is at least the sum of the costs of its parts, each part about its own mean (the mean minimises a
-// part's weighted sum of squares), and more groups never cost more.
+// part's weighted sum of squares), and more groups never cost more. Also in the rest-free model: the
+// rest group's parts cost their rest costs, or less as keyed parts (GroupCostModel.h).
 constexpr int kBlockUnits = 14;
 double blockBound(const GroupCostModel& model, std::span<const int> units, int p) {
     double total = 0;
     for (std::size_t from = 0; from < units.size(); from += kBlockUnits) {
         const auto block = units.subspan(from, std::min<std::size_t>(kBlockUnits, units.size() - from));
         const int size = static_cast<int>(block.size());
-        if (size <= p) continue; // every unit alone costs 0
+        if (size <= p) continue; // every unit alone: 0 is a bound (the rest unit alone costs rest_a >= 0)
         GroupCostModel sub = restrictedModel(model, block);
         sub.conflicts.assign(block.size(), 0);
         sub.scale = sub.cost((UnitMask{1} << size) - 1);
@@ -282,7 +296,8 @@ double blockBound(const GroupCostModel& model, std::span<const int> units, int p
 }
 
 // Units in conflict with every other unit (pinned visemes) are groups of their own in any feasible
-// partition, and a group of one costs nothing.
+// partition, and a group of one costs nothing (the rest unit alone costs its fixed rest_a: the
+// search without it is the keyed problem of the others, and canonicalise adds rest_a back).
 UnitMask isolatedUnits(const GroupCostModel& model) {
     const int n = model.size();
     const UnitMask all = n == kMaxSearchUnits ? ~UnitMask{0} : (UnitMask{1} << n) - 1;
@@ -314,9 +329,7 @@ UnitPartition searchPartition(const GroupCostModel& model, int p, std::span<cons
     const int n = model.size();
     const std::vector<int> order = placementOrder(model);
     int zeroFrom = n;
-    while (zeroFrom > 0 &&
-           !(model.weight[static_cast<std::size_t>(order[static_cast<std::size_t>(zeroFrom - 1)])] > 0))
-        --zeroFrom;
+    while (zeroFrom > 0 && !placedBySearch(model, order[static_cast<std::size_t>(zeroFrom - 1)])) --zeroFrom;
 
     // suffixBound[t]: lower bound (the optimum once proven) of units order[t..n-1] in min(p, n - t) groups.
     std::vector<double> suffixBound(static_cast<std::size_t>(n + 1), 0.0);
@@ -331,6 +344,8 @@ UnitPartition searchPartition(const GroupCostModel& model, int p, std::span<cons
         std::vector<std::int8_t> startLabels;
         if (groups == size) { // every unit alone
             startCost = 0;
+            for (int t = first; t < n; ++t)
+                startCost += model.singletonCost(order[static_cast<std::size_t>(t)]);
             startLabels.resize(static_cast<std::size_t>(size));
             std::iota(startLabels.begin(), startLabels.end(), std::int8_t{0});
         } else if (!labels.empty()) {

@@ -29,6 +29,36 @@ MapGrouping groupingFromMap(const std::vector<std::string>& visemeNames, const P
     return out;
 }
 
+const char* toString(RestChoice choice) {
+    switch (choice) {
+    case RestChoice::Auto:
+        return "auto";
+    case RestChoice::Free:
+        return "free";
+    case RestChoice::Key:
+        return "key";
+    }
+    return "auto";
+}
+
+namespace {
+
+// The index of the set's rest viseme: the one named in the settings (InputError when the set lacks
+// it), else the first of kRestVisemeNames the set has, else -1.
+int restVisemeOf(const VisemeSet& set, const ReduceSettings& settings) {
+    if (!settings.restViseme.empty()) {
+        const int index = set.find(settings.restViseme);
+        if (index < 0)
+            throwInputError("--rest-viseme", "the set has no viseme '" + settings.restViseme + "'");
+        return index;
+    }
+    for (const char* name : kRestVisemeNames)
+        if (const int index = set.find(name); index >= 0) return index;
+    return -1;
+}
+
+} // namespace
+
 ReduceOutcome runReduction(const VisemeSet& set, const FrequencySource& frequencies,
                            const ReduceSettings& settings, const ProgressCallback& progress) {
     ReduceOutcome out;
@@ -49,7 +79,13 @@ ReduceOutcome runReduction(const VisemeSet& set, const FrequencySource& frequenc
     if (settings.target >= 1 && static_cast<std::size_t>(settings.target) <= set.size() &&
         !units.feasible(settings.target))
         throwInfeasibleTarget(units, settings.target, settings.constraintsSource);
-    out.result = reduceVisemes({shapes, out.frequencies, out.weights, settings.target, constraints},
+    // The rest pose of a morph-target runtime is the neutral mesh: the rest-free model's free key.
+    const int restViseme = restVisemeOf(set, settings);
+    const bool restFree =
+        settings.rest == RestChoice::Free || (settings.rest == RestChoice::Auto && restViseme >= 0);
+    const RestPose rest{restFree, restViseme, set.neutral.positions};
+    if (restViseme >= 0) out.restViseme = set.visemes[static_cast<std::size_t>(restViseme)].name;
+    out.result = reduceVisemes({shapes, out.frequencies, out.weights, settings.target, constraints, rest},
                                settings.options, progress);
     out.constraints = settings.constraints;
     if (!settings.compareMaps.empty()) {
@@ -58,7 +94,7 @@ ReduceOutcome runReduction(const VisemeSet& set, const FrequencySource& frequenc
             out.comparedMaps.push_back(groupingFromMap(out.visemeNames, map));
             groupings.push_back(out.comparedMaps.back().groups);
         }
-        const auto costs = evaluateGroupings(shapes, out.frequencies, out.weights, groupings);
+        const auto costs = evaluateGroupings(shapes, out.frequencies, out.weights, groupings, rest);
         for (std::size_t k = 0; k < costs.size(); ++k) out.comparedMaps[k].cost = costs[k];
     }
 

@@ -13,6 +13,15 @@
 
 namespace vl {
 
+// Which reduction model runs (Reduction.h RestPose): Free, the rest pose is a free extra key;
+// Key, the rest is a key like any other (the model before issue 29); Auto, Free when the set has a
+// rest viseme, else Key.
+enum class RestChoice { Auto, Free, Key };
+const char* toString(RestChoice choice); // "auto", "free", "key"
+
+// The rest viseme names a set may use, in order of preference (the sample's and the Oculus one).
+inline constexpr const char* kRestVisemeNames[] = {"sil", "viseme_sil"};
+
 struct ReduceSettings {
     WeightMode weightMode = WeightMode::Uniform;
     std::vector<double> paintedWeights; // used when weightMode == Painted
@@ -24,6 +33,10 @@ struct ReduceSettings {
     // Phoneme -> viseme maps whose grouping of the set's visemes (named by phoneme) is costed under
     // the same objective, to compare with the optimum (e.g. the standard Oculus, MPEG-4, Rhubarb maps).
     std::vector<PhonemeVisemeMap> compareMaps{};
+    // Key keeps projects and the editor on the model they were saved with (their files store no rest
+    // groups); the CLI passes Auto.
+    RestChoice rest = RestChoice::Key;
+    std::string restViseme{}; // the rest viseme's name; empty: the first of kRestVisemeNames in the set
 };
 
 // A map used as a grouping: the set's visemes the map sends to the same viseme share a group.
@@ -31,7 +44,8 @@ struct MapGrouping {
     std::string source;                   // the map's origin (file)
     std::vector<std::string> labels;      // the map's viseme of each group
     std::vector<std::vector<int>> groups; // member indices, each ascending, ordered by first member
-    double cost = 0;                      // rho_f under the run's frequencies and weights
+    double cost = 0; // rho_f under the run's model, frequencies and weights (rest-free: the group
+                     // holding the rest viseme rests)
 };
 
 // The grouping of `visemeNames` by `map`. Every viseme must be a phoneme of the map (InputError at the
@@ -47,6 +61,7 @@ struct ReduceOutcome {
     // (buildReducedModel: map entries naming a viseme the set lacks are an error).
     ReducedModel model;
     ConstraintNames constraints;             // the constraints the run honoured
+    std::string restViseme;                  // the set's rest viseme ("" without one)
     std::vector<MapGrouping> comparedMaps{}; // settings.compareMaps, costed
 };
 

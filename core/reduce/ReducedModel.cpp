@@ -50,13 +50,15 @@ ReducedModel buildReducedModel(const VisemeSet& set, const std::vector<double>& 
         throwInputError("reduced model", "frequencies and grouping must have one entry per viseme");
     int groupCount = 0;
     for (int g : groupOf) {
-        if (g < 0 || g >= static_cast<int>(n)) throwInputError("reduced model", "group index out of range");
+        if (g != kRestGroup && (g < 0 || g >= static_cast<int>(n)))
+            throwInputError("reduced model", "group index out of range");
         groupCount = std::max(groupCount, g + 1);
     }
     requireKnownVisemes(set, source);
     std::vector<std::vector<int>> members(static_cast<std::size_t>(groupCount));
     for (std::size_t i = 0; i < n; ++i)
-        members[static_cast<std::size_t>(groupOf[i])].push_back(static_cast<int>(i));
+        if (groupOf[i] != kRestGroup)
+            members[static_cast<std::size_t>(groupOf[i])].push_back(static_cast<int>(i));
 
     std::vector<std::span<const Vec3>> rows; // a view of the set's positions: no copy of the shapes
     rows.reserve(n);
@@ -65,6 +67,8 @@ ReducedModel buildReducedModel(const VisemeSet& set, const std::vector<double>& 
 
     ReducedModel model;
     model.neutral = set.neutral;
+    for (std::size_t i = 0; i < n; ++i)
+        if (groupOf[i] == kRestGroup) model.resting.push_back(set.visemes[i].name);
     for (std::size_t g = 0; g < members.size(); ++g) {
         if (members[g].empty())
             throwInputError("reduced model", "group " + std::to_string(g) + " has no member");
@@ -120,7 +124,7 @@ void validateReducedModel(const ReducedModel& model, std::string_view where) {
         if (phoneme.empty()) throwInputError(where, "empty phoneme name");
         if (!phonemes.insert(phoneme).second)
             throwInputError(where, "phoneme '" + phoneme + "' is listed twice");
-        if (key < 0 || key >= static_cast<int>(model.keys.size()))
+        if (key != kRestingKey && (key < 0 || key >= static_cast<int>(model.keys.size())))
             throwInputError(where, "phoneme '" + phoneme + "' maps to key " + std::to_string(key) + " of " +
                                        std::to_string(model.keys.size()));
     }

@@ -23,10 +23,16 @@ struct KeyMesh {
     std::vector<Vec3> positions;      // one per neutral vertex
 };
 
+// A phoneme or viseme of the rest-free model's rest (Reduction.h RestPose): no key, all weights 0,
+// the neutral face. The same value as the speech tracks' kNeutralKey and, as unsigned, the runtime's
+// kRestingKey.
+inline constexpr int kRestingKey = -1;
+
 struct ReducedModel {
     MeshData neutral;
     std::vector<KeyMesh> keys;
-    std::vector<std::pair<std::string, int>> phonemeToKey;          // every phoneme -> index into keys
+    std::vector<std::string> resting{}; // original visemes that rest (no key), in viseme order
+    std::vector<std::pair<std::string, int>> phonemeToKey; // every phoneme -> index into keys or kRestingKey
     std::vector<std::pair<std::string, double>> phonemeFrequencies; // empty unless phoneme-based
 
     int findKey(std::string_view name) const;
@@ -36,11 +42,12 @@ struct ReducedModel {
 std::string mergedKeyName(const std::vector<std::string>& members);
 
 // Key k merges the visemes i with groupOf[i] == k (groups numbered 0..m-1, each non-empty, members
-// in viseme order); its positions are the frequency-weighted mean (mergeGroup), a single member's
-// are its own. Phonemes come from the source's phoneme -> viseme map when it is phoneme-based;
-// otherwise every viseme name stands for itself. One policy for names: a map entry naming a viseme
-// the set lacks is an InputError (at the map's origin) that lists every such viseme and its
-// phonemes; nothing is dropped silently. Malformed frequencies or groupings throw InputError too.
+// in viseme order; groupOf[i] == kRestGroup: viseme i rests, its phonemes map to kRestingKey); its positions
+// are the frequency-weighted mean (mergeGroup), a single member's are its own. Phonemes come from the
+// source's phoneme -> viseme map when it is phoneme-based; otherwise every viseme name stands for itself. One
+// policy for names: a map entry naming a viseme the set lacks is an InputError (at the map's origin) that
+// lists every such viseme and its phonemes; nothing is dropped silently. Malformed frequencies or groupings
+// throw InputError too.
 ReducedModel buildReducedModel(const VisemeSet& set, const std::vector<double>& frequencies,
                                const std::vector<int>& groupOf, const FrequencySource& source);
 

@@ -81,9 +81,62 @@ void validate(const ReductionProblem& problem) {
         if (!std::isfinite(problem.weights[k]) || problem.weights[k] < 0)
             throwInputError("reduction",
                             "weight of vertex " + std::to_string(k) + " must be finite and >= 0");
+    const RestPose& rest = problem.rest;
+    if (rest.viseme < -1 || rest.viseme >= static_cast<int>(n))
+        throwInputError("reduction", "rest viseme " + std::to_string(rest.viseme) + " is outside 0.." +
+                                         std::to_string(n - 1));
+    if (!rest.neutral.empty() && rest.neutral.size() != vertices)
+        throwInputError("reduction", "the neutral shape has " + std::to_string(rest.neutral.size()) +
+                                         " vertices, expected " + std::to_string(vertices));
+    if (rest.free && rest.neutral.empty() && rest.viseme < 0)
+        throwInputError("reduction", "the rest-free model needs a neutral shape or a rest viseme");
 }
 
-Grouping toGrouping(const UnitPartition& entry, const ConstraintUnits& units) {
+// The rest-free model's units: the rest viseme's unit marks the rest group; without one, a virtual
+// unit with no visemes does. A pinned viseme is a key of its own, so it conflicts with the virtual
+// unit as with every other (it rests only when it is the rest viseme: then alone).
+struct RestUnits {
+    ConstraintUnits units;
+    int restUnit = -1;
+};
+RestUnits restUnitsOf(const ConstraintUnits& units, const RestPose& rest, std::span<const int> pinned) {
+    RestUnits out{units, -1};
+    if (rest.viseme >= 0) {
+        out.restUnit = units.unitOf[static_cast<std::size_t>(rest.viseme)];
+        return out;
+    }
+    if (units.size() >= static_cast<std::size_t>(kMaxReductionVisemes))
+        throwInputError("reduction", "the rest-free model without a rest viseme takes at most " +
+                                         std::to_string(kMaxReductionVisemes - 1) + " units");
+    out.restUnit = static_cast<int>(units.size());
+    const UnitMask virtualBit = UnitMask{1} << out.restUnit;
+    UnitMask pinnedUnits = 0;
+    for (const int i : pinned) {
+        const int unit = units.unitOf[static_cast<std::size_t>(i)];
+        pinnedUnits |= UnitMask{1} << unit;
+        out.units.conflicts[static_cast<std::size_t>(unit)] |= virtualBit;
+    }
+    out.units.members.emplace_back();
+    out.units.conflicts.push_back(pinnedUnits);
+    ++out.units.maxGroups;
+    // The virtual unit shares a colour with any unpinned unit; with every unit pinned it needs its own.
+    if (std::popcount(pinnedUnits) == static_cast<int>(units.size())) ++out.units.minGroups;
+    return out;
+}
+
+// f_i rho(A_i, neutral) per viseme (in double, from the meshes, not the centred Gram).
+std::vector<double> visemeRestCosts(const ReductionProblem& problem) {
+    const RestPose& rest = problem.rest;
+    const std::span<const Vec3> neutral =
+        rest.neutral.empty() ? problem.shapes[static_cast<std::size_t>(rest.viseme)] : rest.neutral;
+    std::vector<double> costs;
+    for (std::size_t i = 0; i < problem.shapes.size(); ++i)
+        costs.push_back(problem.frequencies[i] * dissimilarity(problem.shapes[i], neutral, problem.weights));
+    return costs;
+}
+
+// The group holding restUnit (if any) becomes the resting visemes.
+Grouping toGrouping(const UnitPartition& entry, const ConstraintUnits& units, int restUnit) {
     Grouping g;
     g.cost = entry.cost;
     g.optimal = entry.optimal;
@@ -95,7 +148,10 @@ Grouping toGrouping(const UnitPartition& entry, const ConstraintUnits& units) {
             members.insert(members.end(), unit.begin(), unit.end());
         }
         std::sort(members.begin(), members.end());
-        g.groups.push_back(std::move(members));
+        if (restUnit >= 0 && (mask >> restUnit & 1))
+            g.rest = std::move(members);
+        else
+            g.groups.push_back(std::move(members));
     }
     std::sort(g.groups.begin(), g.groups.end());
     return g;
@@ -103,9 +159,12 @@ Grouping toGrouping(const UnitPartition& entry, const ConstraintUnits& units) {
 
 // Branch and bound for every feasible p = 1..m, in parallel, from the heuristics' partitions. Runs
 // on its own thread so the calling thread can report progress.
+// `restGroups` (1 in the rest-free model, else 0): groups beyond the keys, for the watch (which counts keys).
 UnitCurve solveByBranchAndBound(const GroupCostModel& model, const ConstraintUnits& units, int m,
                                 const ReductionOptions& options, const ProgressCallback& progress,
-                                std::uint64_t nodeBudget = 0, bool tightenStoppedBound = true) {
+                                std::uint64_t nodeBudget = 0, bool tightenStoppedBound = true,
+                                int restGroups = 0) {
+    const int watched = options.watch ? options.watch->groups + restGroups : 0;
     const auto starts = heuristicPartitions(model, m, heuristicOptionsFor(model.size()));
     SearchLimits limits;
     std::atomic<std::uint64_t> nodes{0};
@@ -125,13 +184,13 @@ UnitCurve solveByBranchAndBound(const GroupCostModel& model, const ConstraintUni
     limits.cancelled = progress ? &stopped : options.cancelled;
     std::vector<std::atomic<double>> done(static_cast<std::size_t>(m));
     UnitCurve curve(static_cast<std::size_t>(m));
-    if (BoundWatch* watch = options.watch; watch && watch->groups >= 1 && watch->groups <= m &&
-                                           starts[static_cast<std::size_t>(watch->groups - 1)].size() ==
-                                               static_cast<std::size_t>(watch->groups)) {
+    if (BoundWatch* watch = options.watch;
+        watch && watched >= 1 && watched <= m &&
+        starts[static_cast<std::size_t>(watched - 1)].size() == static_cast<std::size_t>(watched)) {
         // Known before the searches start (the watched one may wait for a thread for seconds).
-        const auto& start = starts[static_cast<std::size_t>(watch->groups - 1)];
+        const auto& start = starts[static_cast<std::size_t>(watched - 1)];
         watch->bestFound = partitionCost(model, start);
-        watch->lowerBound = std::min(blockLowerBound(model, watch->groups), watch->bestFound.load());
+        watch->lowerBound = std::min(blockLowerBound(model, watched), watch->bestFound.load());
     }
     auto solve = [&] {
         tbb::parallel_for(1, m + 1, [&](int p) {
@@ -140,7 +199,7 @@ UnitCurve solveByBranchAndBound(const GroupCostModel& model, const ConstraintUni
                 entry.optimal = true; // proven: the constraints rule p out
             } else {
                 const auto& start = starts[static_cast<std::size_t>(p - 1)];
-                BoundWatch* watch = options.watch && options.watch->groups == p ? options.watch : nullptr;
+                BoundWatch* watch = options.watch && watched == p ? options.watch : nullptr;
                 entry = branchAndBound(model, p, start, limits, &done[static_cast<std::size_t>(p - 1)],
                                        watch ? &watch->lowerBound : nullptr);
                 if (watch) {
@@ -265,9 +324,9 @@ double Grouping::gap() const {
 }
 
 std::vector<int> Grouping::groupOf() const {
-    std::size_t n = 0;
+    std::size_t n = rest.size();
     for (const auto& g : groups) n += g.size();
-    std::vector<int> result(n, -1);
+    std::vector<int> result(n, kRestGroup);
     for (std::size_t g = 0; g < groups.size(); ++g)
         for (const int member : groups[g]) result[static_cast<std::size_t>(member)] = static_cast<int>(g);
     return result;
@@ -286,15 +345,30 @@ ReductionResult reduceVisemes(const ReductionProblem& problem, const ReductionOp
     validate(problem);
     const int n = static_cast<int>(problem.shapes.size());
     const int m = problem.target;
-    const ConstraintUnits units = constraintUnits(problem.constraints, n, {}, "reduction constraints");
-    if (!units.feasible(m)) throwInfeasibleTarget(units, m, "reduction constraints");
-    const GroupCostModel model = makeGroupCostModel(
-        centredGram(problem.shapes, problem.frequencies, problem.weights), problem.frequencies, units);
+    const ConstraintUnits keyedUnits = constraintUnits(problem.constraints, n, {}, "reduction constraints");
+    // The rest-free model partitions the units into m + 1 groups, one of them marked by the rest unit.
+    const bool restFree = problem.rest.free;
+    const int restGroups = restFree ? 1 : 0;
+    const RestUnits restUnits = restFree ? restUnitsOf(keyedUnits, problem.rest, problem.constraints.pinned)
+                                         : RestUnits{keyedUnits, -1};
+    const ConstraintUnits& units = restUnits.units;
+    const int groupsWanted = m + restGroups;
+    auto throwInfeasible = [&] {
+        ConstraintUnits keys = units; // the limits in keys, as the user gives m
+        keys.minGroups -= restGroups;
+        keys.maxGroups -= restGroups;
+        throwInfeasibleTarget(keys, m, "reduction constraints");
+    };
+    if (!units.feasible(groupsWanted)) throwInfeasible();
+    GroupCostModel model = makeGroupCostModel(
+        centredGram(problem.shapes, problem.frequencies, problem.weights), problem.frequencies, keyedUnits);
+    if (restFree) makeRestFree(model, visemeRestCosts(problem), units, restUnits.restUnit);
     const int count = model.size();
-    const int solvable = std::min(m, count);
+    const int solvable = std::min(groupsWanted, count);
 
     ReductionResult result;
     result.method = options.method;
+    result.restFree = restFree;
     if (result.method == ReductionMethod::ColumnGeneration && count > kMaxColumnGenerationUnits)
         throwInputError("reduction", "the LP solver takes at most " +
                                          std::to_string(kMaxColumnGenerationUnits) +
@@ -317,7 +391,7 @@ ReductionResult reduceVisemes(const ReductionProblem& problem, const ReductionOp
         const bool dpFits =
             options.timeLimitSeconds <= 0 || options.timeLimitSeconds >= shareSeconds + dpSeconds;
         // When the DP follows an unproven search, that search's bounds are discarded: skip them.
-        curve = solveByBranchAndBound(model, units, solvable, options, progress, budget, !dpFits);
+        curve = solveByBranchAndBound(model, units, solvable, options, progress, budget, !dpFits, restGroups);
         result.method = ReductionMethod::BranchAndBound;
         const bool proven =
             std::all_of(curve.begin(), curve.end(), [](const UnitPartition& e) { return e.optimal; });
@@ -339,7 +413,7 @@ ReductionResult reduceVisemes(const ReductionProblem& problem, const ReductionOp
         };
         if (automatic) {
             curve = solveByBranchAndBound(model, units, solvable, options, progress,
-                                          branchAndBoundShareNodes(count, solvable), false);
+                                          branchAndBoundShareNodes(count, solvable), false, restGroups);
             result.method = ReductionMethod::BranchAndBound;
         }
         if (!automatic || !allProven(curve)) {
@@ -353,8 +427,8 @@ ReductionResult reduceVisemes(const ReductionProblem& problem, const ReductionOp
                 !(options.cancelled && options.cancelled->load())) {
                 ReductionOptions rest = options;
                 if (rest.timeLimitSeconds > 0) rest.timeLimitSeconds -= spent;
-                curve =
-                    betterOf(std::move(curve), solveByBranchAndBound(model, units, solvable, rest, progress));
+                curve = betterOf(std::move(curve), solveByBranchAndBound(model, units, solvable, rest,
+                                                                         progress, 0, true, restGroups));
                 result.method = ReductionMethod::BranchAndBound;
             }
         }
@@ -364,12 +438,14 @@ ReductionResult reduceVisemes(const ReductionProblem& problem, const ReductionOp
                 count <= kAutoDpUnits ? ReductionMethod::SubsetDp : ReductionMethod::BranchAndBound;
         curve = result.method == ReductionMethod::SubsetDp
                     ? solveSubsetDp(model, solvable, progress)
-                    : solveByBranchAndBound(model, units, solvable, options, progress);
+                    : solveByBranchAndBound(model, units, solvable, options, progress, 0, true, restGroups);
     }
-    for (const auto& entry : curve) result.curve.push_back(toGrouping(entry, units));
+    // Rest-free: entry 0 (everything rests, no key) is not on the curve of p = 1..m keys.
+    for (std::size_t e = static_cast<std::size_t>(restGroups); e < curve.size(); ++e)
+        result.curve.push_back(toGrouping(curve[e], units, restUnits.restUnit));
     // More groups than units: nothing can be split further (the target check above excludes m).
-    result.curve.resize(static_cast<std::size_t>(m), Grouping{kInfiniteCost, kInfiniteCost, true, {}});
-    if (!result.best().feasible()) throwInfeasibleTarget(units, m, "reduction constraints");
+    result.curve.resize(static_cast<std::size_t>(m), Grouping{kInfiniteCost, kInfiniteCost, true, {}, {}});
+    if (!result.best().feasible()) throwInfeasible();
     if (progress) progress(1.0);
     return result;
 }
@@ -398,12 +474,15 @@ double dissimilarity(std::span<const Vec3> a, std::span<const Vec3> b, std::span
 
 std::vector<double> evaluateGroupings(const ShapeView& shapes, std::span<const double> frequencies,
                                       std::span<const double> weights,
-                                      std::span<const std::vector<std::vector<int>>> groupings) {
-    validate({shapes, frequencies, weights, 1});
+                                      std::span<const std::vector<std::vector<int>>> groupings,
+                                      const RestPose& rest) {
+    const ReductionProblem problem{shapes, frequencies, weights, 1, {}, rest};
+    validate(problem);
     const int n = static_cast<int>(shapes.size());
     const ConstraintUnits units = constraintUnits({}, n); // every viseme its own unit
-    const GroupCostModel model =
-        makeGroupCostModel(centredGram(shapes, frequencies, weights), frequencies, units);
+    GroupCostModel model = makeGroupCostModel(centredGram(shapes, frequencies, weights), frequencies, units);
+    // Only a rest viseme marks a group as resting here: a virtual unit would be in no given group.
+    if (rest.free && rest.viseme >= 0) makeRestFree(model, visemeRestCosts(problem), units, rest.viseme);
     std::vector<double> costs;
     for (std::size_t k = 0; k < groupings.size(); ++k) {
         const std::string where = "grouping " + std::to_string(k + 1);
@@ -440,6 +519,16 @@ double groupingCost(const ShapeView& shapes, std::span<const double> frequencies
             total += frequencies[static_cast<std::size_t>(i)] *
                      dissimilarity(shapes[static_cast<std::size_t>(i)], merged, weights);
     }
+    return total;
+}
+
+double restFreeGroupingCost(const ShapeView& shapes, std::span<const double> frequencies,
+                            std::span<const double> weights, const std::vector<std::vector<int>>& groups,
+                            std::span<const int> resting, std::span<const Vec3> neutral) {
+    double total = groupingCost(shapes, frequencies, weights, groups);
+    for (const int i : resting)
+        total += frequencies[static_cast<std::size_t>(i)] *
+                 dissimilarity(shapes[static_cast<std::size_t>(i)], neutral, weights);
     return total;
 }
 

@@ -40,12 +40,23 @@ const char* toString(ReductionMethod method); // "auto", "dp", "bnb", "lp"
 // Throws InputError at `where` for anything else.
 ReductionMethod reductionMethodFromString(std::string_view text, std::string_view where);
 
+// The rest-free model (issue 29): in a morph-target runtime the rest pose (all weights 0) is free, so
+// the neutral is an extra key at zero displacement that costs nothing. Each viseme joins one of the m
+// keys (the frequency-weighted mean, eq. 19) or rests, at cost f_i rho(A_i, neutral); the rest viseme
+// of a set (sil) rests by definition. Off: today's keyed model, where the rest is a key like any other.
+struct RestPose {
+    bool free = false;
+    int viseme = -1;                 // the set's rest viseme, -1: none
+    std::span<const Vec3> neutral{}; // the neutral shape; empty: the rest viseme's shape
+};
+
 struct ReductionProblem {
     ShapeView shapes;                    // n shapes, same vertex count
     std::span<const double> frequencies; // n values >= 0, not all zero
     std::span<const double> weights;     // one per vertex, >= 0
-    int target = 1;                      // m in 1..n
+    int target = 1; // m in 1..n (keys: the rest-free model needs a non-resting viseme per key)
     ReductionConstraints constraints{};
+    RestPose rest{};
 };
 
 // What a running branch and bound has proven so far about one number of groups: a lower bound that
@@ -67,14 +78,19 @@ struct ReductionOptions {
     BoundWatch* watch = nullptr; // optional: kept up to date by branch and bound
 };
 
+// groupOf() of a resting viseme (rest-free model): it has no key, all its weights stay 0.
+constexpr int kRestGroup = -1;
+
 struct Grouping {
-    double cost = 0.0;       // rho_f of `groups` (+inf when no grouping into p groups exists)
+    double cost = 0.0;       // rho_f of `groups` and `rest` (+inf when no grouping into p groups exists)
     double lowerBound = 0.0; // proven: no grouping into p groups satisfying the constraints costs less
     bool optimal = false;    // proven minimal (then lowerBound == cost)
     std::vector<std::vector<int>> groups; // member indices, each ascending; groups ordered by first member
+    std::vector<int> rest{};              // the resting visemes, ascending (rest-free model only)
 
     bool feasible() const { return !groups.empty(); }
-    // groupOf[i]: the group viseme i is in (the groups partition the n visemes).
+    // groupOf[i]: the group viseme i is in, kRestGroup when it rests (groups and rest partition the n
+    // visemes).
     std::vector<int> groupOf() const;
     // (cost - lowerBound) / cost: 0 when optimal, 1 when nothing is known.
     double gap() const;
@@ -84,6 +100,7 @@ struct Grouping {
 struct ReductionResult {
     std::vector<Grouping> curve;                        // curve[p-1]: grouping into p groups, p = 1..m
     ReductionMethod method = ReductionMethod::SubsetDp; // the solver that ran
+    bool restFree = false;                              // the rest-free model ran (RestPose)
     const Grouping& best() const { return curve.back(); }
     // groupOf[i]: index of the group viseme i belongs to in best().
     std::vector<int> groupOf() const;
@@ -105,6 +122,12 @@ ReductionResult reduceVisemes(const ReductionProblem& problem, const ProgressCal
 std::vector<Vec3> mergeGroup(const ShapeView& shapes, std::span<const double> frequencies,
                              std::span<const int> members);
 
+// rho_f of a grouping with resting visemes, directly from the meshes: groupingCost of the keys plus
+// f_i rho(A_i, neutral) per resting viseme. The slow reference of the rest-free model.
+double restFreeGroupingCost(const ShapeView& shapes, std::span<const double> frequencies,
+                            std::span<const double> weights, const std::vector<std::vector<int>>& groups,
+                            std::span<const int> resting, std::span<const Vec3> neutral);
+
 // rho(A,B) with per-vertex weights.
 double dissimilarity(std::span<const Vec3> a, std::span<const Vec3> b, std::span<const double> weights);
 
@@ -112,10 +135,11 @@ double dissimilarity(std::span<const Vec3> a, std::span<const Vec3> b, std::span
 // pass, then O(n^2) per grouping): the numbers the solvers report for the same groups, so a given
 // grouping (e.g. a standard phoneme -> viseme map) compares exactly with the optimum. Each grouping must
 // partition 0..n-1 into non-empty groups; throws InputError otherwise and for invalid inputs (as
-// reduceVisemes).
+// reduceVisemes). With a free rest, the group holding the rest viseme (if any) rests.
 std::vector<double> evaluateGroupings(const ShapeView& shapes, std::span<const double> frequencies,
                                       std::span<const double> weights,
-                                      std::span<const std::vector<std::vector<int>>> groupings);
+                                      std::span<const std::vector<std::vector<int>>> groupings,
+                                      const RestPose& rest = {});
 
 // rho_f of a grouping evaluated directly from the meshes (O(n|V|)): the slow, obvious reference.
 double groupingCost(const ShapeView& shapes, std::span<const double> frequencies,

@@ -72,8 +72,7 @@ void wardHierarchy(const GroupCostModel& model, int m, std::vector<std::vector<U
                 if (!alive[static_cast<std::size_t>(j)] || (ci & mask[static_cast<std::size_t>(j)])) continue;
                 const GroupSums& a = sums[static_cast<std::size_t>(i)];
                 const GroupSums& b = sums[static_cast<std::size_t>(j)];
-                const GroupSums u{a.F + b.F, a.D + b.D,
-                                  a.Q + b.Q + 2 * between[static_cast<std::size_t>(i * n + j)]};
+                const GroupSums u = a.merged(b, between[static_cast<std::size_t>(i * n + j)]);
                 const double delta = u.cost() - a.cost() - b.cost();
                 if (delta < bestDelta) bestDelta = delta, bi = i, bj = j;
             }
@@ -81,7 +80,7 @@ void wardHierarchy(const GroupCostModel& model, int m, std::vector<std::vector<U
         if (bi < 0) return; // every remaining pair conflicts
         auto& a = sums[static_cast<std::size_t>(bi)];
         const auto& b = sums[static_cast<std::size_t>(bj)];
-        a = {a.F + b.F, a.D + b.D, a.Q + b.Q + 2 * between[static_cast<std::size_t>(bi * n + bj)]};
+        a = a.merged(b, between[static_cast<std::size_t>(bi * n + bj)]);
         mask[static_cast<std::size_t>(bi)] |= mask[static_cast<std::size_t>(bj)];
         alive[static_cast<std::size_t>(bj)] = false;
         for (int k = 0; k < n; ++k) {
@@ -96,10 +95,13 @@ void wardHierarchy(const GroupCostModel& model, int m, std::vector<std::vector<U
 // group it does not conflict with. Empty result when some unit fits nowhere.
 std::vector<UnitMask> seededPartition(const GroupCostModel& model, int p, std::mt19937& rng) {
     const int n = model.size();
-    // Squared distance between the centroids of two units; units of weight 0 are anywhere (0).
+    // Squared distance between the centroids of two units; units of weight 0 are anywhere (0). The
+    // rest unit stands for the neutral: a unit's distance to it is its rest cost per frequency.
     auto distance = [&](int a, int b) {
+        if (a == model.restUnit) std::swap(a, b);
         const double fa = model.weight[static_cast<std::size_t>(a)],
                      fb = model.weight[static_cast<std::size_t>(b)];
+        if (b == model.restUnit) return fa > 0 ? model.rest[static_cast<std::size_t>(a)] / fa : 0.0;
         if (!(fa > 0) || !(fb > 0)) return 0.0;
         return std::max(0.0, model.h(a, a) / (fa * fa) + model.h(b, b) / (fb * fb) -
                                  2 * model.h(a, b) / (fa * fb));
@@ -114,8 +116,8 @@ std::vector<UnitMask> seededPartition(const GroupCostModel& model, int p, std::m
             if (!(seeded >> a & 1))
                 total += model.weight[static_cast<std::size_t>(a)] *
                          std::min(nearest[static_cast<std::size_t>(a)], 1e300);
-        int pick = -1;
-        if (total > 0 && std::isfinite(total)) {
+        int pick = s == 0 ? model.restUnit : -1; // the rest group is in every partition: seed it
+        if (pick < 0 && total > 0 && std::isfinite(total)) {
             double r = uniform(rng) * total;
             for (int a = 0; a < n && pick < 0; ++a) {
                 if (seeded >> a & 1) continue;
@@ -172,16 +174,11 @@ double improveByMoves(const GroupCostModel& model, std::vector<UnitMask>& groups
     }
     const double tolerance = model.tolerance();
     auto without = [&](int g, int a) {
-        const GroupSums& s = sums[static_cast<std::size_t>(g)];
-        return GroupSums{s.F - model.weight[static_cast<std::size_t>(a)],
-                         s.D - model.self[static_cast<std::size_t>(a)],
-                         s.Q - 2 * crossTo[static_cast<std::size_t>(g * n + a)] + model.h(a, a)};
+        return sums[static_cast<std::size_t>(g)].minus(model, a,
+                                                       crossTo[static_cast<std::size_t>(g * n + a)]);
     };
     auto with = [&](int g, int a) {
-        const GroupSums& s = sums[static_cast<std::size_t>(g)];
-        return GroupSums{s.F + model.weight[static_cast<std::size_t>(a)],
-                         s.D + model.self[static_cast<std::size_t>(a)],
-                         s.Q + 2 * crossTo[static_cast<std::size_t>(g * n + a)] + model.h(a, a)};
+        return sums[static_cast<std::size_t>(g)].plus(model, a, crossTo[static_cast<std::size_t>(g * n + a)]);
     };
     auto move = [&](int a, int to) {
         const int from = groupOf[static_cast<std::size_t>(a)];
@@ -229,14 +226,8 @@ double improveByMoves(const GroupCostModel& model, std::vector<UnitMask>& groups
                     continue;
                 const double hab = model.h(a, b);
                 const GroupSums sa = without(ga, a), sb = without(gb, b);
-                const GroupSums na{sa.F + model.weight[static_cast<std::size_t>(b)],
-                                   sa.D + model.self[static_cast<std::size_t>(b)],
-                                   sa.Q + 2 * (crossTo[static_cast<std::size_t>(ga * n + b)] - hab) +
-                                       model.h(b, b)};
-                const GroupSums nb{sb.F + model.weight[static_cast<std::size_t>(a)],
-                                   sb.D + model.self[static_cast<std::size_t>(a)],
-                                   sb.Q + 2 * (crossTo[static_cast<std::size_t>(gb * n + a)] - hab) +
-                                       model.h(a, a)};
+                const GroupSums na = sa.plus(model, b, crossTo[static_cast<std::size_t>(ga * n + b)] - hab);
+                const GroupSums nb = sb.plus(model, a, crossTo[static_cast<std::size_t>(gb * n + a)] - hab);
                 const double delta = na.cost() + nb.cost() - sums[static_cast<std::size_t>(ga)].cost() -
                                      sums[static_cast<std::size_t>(gb)].cost();
                 if (delta < -tolerance) {

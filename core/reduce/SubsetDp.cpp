@@ -1,6 +1,9 @@
 // Cost of every group: c(S) for all 2^n sets of units, each from S minus its highest unit j in
 // O(n): Q(S) = Q(S\j) + 2 sum_{i in S\j} H_ij + H_jj, with F and D summed over the same bits. A set
-// holding a conflicting pair costs +inf, so no solver step ever picks it.
+// holding a conflicting pair costs +inf, so no solver step ever picks it. In the rest-free model a set
+// holding the rest unit costs the sum of its rest costs instead (GroupCostModel.h); the DP below is a
+// minimum over partitions of any set function, so it needs nothing else: into p + 1 groups it gives
+// the rest group and p keys.
 //
 // Partition DP (the paper's eq. 23): best[q][T] = min over V subset of T of c(V) + best[q-1][T\V].
 // Fixing the lowest unit of T inside V enumerates every partition exactly once (halving the work);
@@ -239,12 +242,21 @@ void fillRows(int bits, const std::vector<double>& c1, Rows& rows,
     }
 }
 
+// c(S) of a set holding the rest unit: the sum of its members' rest costs (GroupCostModel.h).
+double restCost(const GroupCostModel& model, std::size_t set) {
+    double sum = 0;
+    for (std::size_t bits = set; bits; bits &= bits - 1)
+        sum += model.rest[static_cast<std::size_t>(std::countr_zero(bits))];
+    return sum;
+}
+
 } // namespace
 
 std::vector<double> allSubsetCosts(const GroupCostModel& model) {
     const int n = model.size();
     const std::size_t count = std::size_t{1} << n;
     std::vector<double> cost(count, 0.0), Q(count, 0.0);
+    const std::size_t restBit = model.restUnit >= 0 ? std::size_t{1} << model.restUnit : 0;
     // Parallel over blocks of the high bits: each block only reads sets with a smaller highest unit,
     // which earlier blocks (sequential in the outer loop over j) have finished.
     for (int j = 0; j < n; ++j) {
@@ -267,6 +279,7 @@ std::vector<double> allSubsetCosts(const GroupCostModel& model) {
                 const bool conflict = std::isinf(cost[rest]) || (rest & conflictsJ) != 0;
                 // Rounding may push D - Q/F slightly below 0.
                 cost[s] = conflict ? kUnreached : (F > 0 ? std::max(0.0, D - Q[s] / F) : 0.0);
+                if (!conflict && (s & restBit)) cost[s] = restCost(model, s);
             }
         });
     }

@@ -249,7 +249,7 @@ struct PackageParser {
         out.phonemeKeys_.resize(phonemeCount);
         for (std::uint32_t i = 0; i < phonemeCount; ++i) {
             out.phonemeKeys_[i] = u32At(p + 4 * i);
-            if (out.phonemeKeys_[i] >= keyCount)
+            if (out.phonemeKeys_[i] >= keyCount && out.phonemeKeys_[i] != kRestKey) // kRestKey: rests
                 return fail("phoneme map: phoneme '" + out.phonemeNames_[i] + "' maps to key " +
                             std::to_string(out.phonemeKeys_[i]) + " of " + std::to_string(keyCount));
         }

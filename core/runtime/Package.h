@@ -42,6 +42,7 @@ class Package {
 
     const std::string& keyName(std::uint32_t key) const { return keyNames_[key]; }
     const std::string& phonemeName(std::uint32_t phoneme) const { return phonemeNames_[phoneme]; }
+    // kRestKey for a phoneme that rests (the neutral face).
     std::uint32_t keyOfPhoneme(std::uint32_t phoneme) const { return phonemeKeys_[phoneme]; }
     std::uint32_t findPhoneme(std::string_view name) const; // kNotFound when absent
     // The key that plays `name`: a key's own name ("FF+TH"), else an original viseme merged into a

@@ -14,6 +14,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <map>
 #include <random>
 
@@ -22,6 +23,7 @@ namespace {
 struct Instance {
     std::vector<std::vector<vl::Vec3>> shapes;
     std::vector<double> frequencies, weights;
+    std::vector<vl::Vec3> neutral; // the rest pose (ARPAbet sets; sil is their viseme 0)
 };
 
 Instance makeInstance(int n, int vertices) {
@@ -113,6 +115,7 @@ const Instance& arpabetInstance(int n) {
         inst.frequencies.push_back(*table.visemeFrequencies.find(v.name));
     }
     inst.weights.assign(set.neutral.positions.size(), 1.0);
+    inst.neutral = set.neutral.positions;
     return inst;
 }
 
@@ -147,6 +150,35 @@ BENCHMARK_CAPTURE(BM_ReduceArpabet, branch_and_bound, vl::ReductionMethod::Branc
     ->MeasureProcessCPUTime()
     ->Iterations(3)
     ->Repetitions(3);
+
+// The rest-free model (issue 29: sil rests, the neutral a free key) against the keyed one on the same
+// ARPAbet sets with Auto, in one run: the goal is a ratio <= 1.2 at n = 16..40 (compare the medians
+// of the repetitions; min and max show the spread).
+void BM_ReduceArpabetRest(benchmark::State& state, bool restFree) {
+    const int n = static_cast<int>(state.range(0));
+    const Instance& inst = arpabetInstance(n);
+    vl::ReductionOptions options;
+    options.timeLimitSeconds = 60;
+    const vl::RestPose rest{restFree, 0, inst.neutral}; // viseme 0 is sil
+    bool proved = true;
+    for (auto _ : state) {
+        auto result = vl::reduceVisemes({inst.shapes, inst.frequencies, inst.weights, 10, {}, rest}, options);
+        proved = proved && result.best().optimal;
+        benchmark::DoNotOptimize(result);
+    }
+    state.SetLabel("arpabet n=" + std::to_string(n) + " m=10 " + (restFree ? "rest free" : "rest keyed") +
+                   (proved ? " proved" : " NOT proved"));
+}
+void restModelCases(benchmark::internal::Benchmark* b) {
+    b->Arg(16)->Arg(20)->Arg(24)->Arg(32)->Arg(40);
+    b->Unit(benchmark::kMillisecond)->UseRealTime()->MeasureProcessCPUTime()->Iterations(1)->Repetitions(5);
+    b->ComputeStatistics("min",
+                         [](const std::vector<double>& v) { return *std::min_element(v.begin(), v.end()); });
+    b->ComputeStatistics("max",
+                         [](const std::vector<double>& v) { return *std::max_element(v.begin(), v.end()); });
+}
+BENCHMARK_CAPTURE(BM_ReduceArpabetRest, keyed, false)->Apply(restModelCases);
+BENCHMARK_CAPTURE(BM_ReduceArpabetRest, rest_free, true)->Apply(restModelCases);
 
 // The inputs of `visemelab reduce` on the bundled sample: the 16 OBJ files, the phoneme table and
 // the map, read as the CLI reads them.

@@ -83,9 +83,10 @@ TEST_F(AvatarCli, ReduceWritesTheAvatarAndAReportWithTheKeysOfReduce) {
     const AvatarScan out = scanAvatar(loadGltfDocument(dir / "out.glb"), {});
     EXPECT_EQ(out.visemes.size(), 15u); // --names original: every viseme name is still there
 
-    // Merged names with a cap that fits; a cap that does not fit is refused with exit 3.
+    // Merged names with a cap that fits; a cap that does not fit is refused with exit 3. The resting
+    // visemes (the rest is free) keep their targets, moving nothing: 6 kept + 4 resting + 4 keys.
     const auto merged = test::runCli("avatar reduce " + path("rpm.glb") +
-                                     " -m 4 --names merged --max-targets 10 --out " + path("merged.glb"));
+                                     " -m 4 --names merged --max-targets 14 --out " + path("merged.glb"));
     ASSERT_EQ(merged.exitCode, 0) << merged.output;
     const auto capped =
         test::runCli("avatar reduce " + path("rpm.glb") + " -m 4 --max-targets 8 --out " + path("x.glb"));
@@ -101,6 +102,44 @@ TEST_F(AvatarCli, ReduceWritesTheAvatarAndAReportWithTheKeysOfReduce) {
     const auto none = test::runCli("avatar reduce " + path("vroid.vrm") + " -m 3 --out " + path("v.vrm"));
     EXPECT_EQ(none.exitCode, 3) << none.output;
     EXPECT_NE(none.output.find("needs at least 2 visemes"), std::string::npos) << none.output;
+}
+
+TEST_F(AvatarCli, TheRestIsFreeSoSilenceMovesNothingAndKeepsItsTarget) {
+    const auto r = test::runCli("avatar reduce " + path("rpm.glb") + " -m 6 --out " + path("out.glb") +
+                                " --report " + path("report.json"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("viseme_sil moves 0 mm (rests"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("viseme_PP moves"), std::string::npos) << r.output;
+    const auto report = nlohmann::json::parse(readFileToString(dir / "report.json"));
+    EXPECT_EQ(report["rest"]["model"], "free");
+    EXPECT_EQ(report["rest"]["viseme"], "viseme_sil");
+    EXPECT_EQ(report["groups"].size(), 6u); // six keys besides the free rest
+    bool silReported = false;
+    for (const auto& motion : report["viseme_motion"])
+        if (motion["viseme"] == "viseme_sil") {
+            silReported = true;
+            EXPECT_TRUE(motion["key"].is_null());
+            EXPECT_EQ(motion["after_mm"], 0.0);
+        }
+    EXPECT_TRUE(silReported) << report["viseme_motion"].dump();
+    // --names original: viseme_sil's target is still there by name, and it moves no vertex.
+    const AvatarScan out = scanAvatar(loadGltfDocument(dir / "out.glb"), {});
+    const int sil = out.set.find("viseme_sil");
+    ASSERT_GE(sil, 0);
+    const auto& shape = out.set.visemes[static_cast<std::size_t>(sil)].positions;
+    ASSERT_EQ(shape.size(), out.set.neutral.positions.size());
+    for (std::size_t v = 0; v < shape.size(); ++v) EXPECT_EQ(shape[v], out.set.neutral.positions[v]) << v;
+
+    // --rest key: the model before issue 29, silence in a key.
+    const auto keyed = test::runCli("avatar reduce " + path("rpm.glb") + " -m 6 --rest key --out " +
+                                    path("keyed.glb") + " --report " + path("keyed.json"));
+    ASSERT_EQ(keyed.exitCode, 0) << keyed.output;
+    const auto keyedReport = nlohmann::json::parse(readFileToString(dir / "keyed.json"));
+    EXPECT_EQ(keyedReport["rest"]["model"], "key");
+    EXPECT_TRUE(keyedReport["rest"]["resting"].empty());
+    EXPECT_EQ(test::runCli("avatar reduce " + path("rpm.glb") + " -m 6 --rest none --out " + path("n.glb"))
+                  .exitCode,
+              2);
 }
 
 TEST_F(AvatarCli, ReduceRefusesToOverwriteItsInputAndChecksItsFlags) {

@@ -267,6 +267,7 @@ inline Project randomProject(std::mt19937_64& rng, const std::filesystem::path& 
                 grouping = {std::numeric_limits<double>::infinity(),
                             std::numeric_limits<double>::infinity(),
                             true,
+                            {},
                             {}};
                 break;
             case 1: // best found with a bound, no proof

@@ -12,6 +12,7 @@
 #include <functional>
 #include <limits>
 #include <optional>
+#include <span>
 
 namespace vl::test {
 
@@ -44,6 +45,46 @@ inline std::optional<double> bruteForceBest(const RandomInstance& inst, int m,
         }
         for (int b = 0; b <= used && b < m; ++b) {
             block[static_cast<std::size_t>(i)] = b;
+            recurse(i + 1, std::max(used, b + 1));
+        }
+    };
+    recurse(0, 0);
+    if (best == std::numeric_limits<double>::infinity()) return std::nullopt;
+    return best;
+}
+
+// The rest-free model's reference (Reduction.h, RestPose): every assignment of each viseme to one of
+// p keys (restricted growth, all p used) or to the rest, the rest viseme always resting, evaluated
+// from the meshes by restFreeGroupingCost. Constraints: the rest is one more group (apart visemes do
+// not both rest, together ones rest together), and a pinned viseme is a key of its own (or the rest
+// alone when it is the rest viseme). Returns the optimal cost, or nullopt when nothing is feasible.
+inline std::optional<double> bruteForceRestFree(const RandomInstance& inst, int p, int restViseme,
+                                                std::span<const Vec3> neutral,
+                                                const ReductionConstraints& c = {}) {
+    const int n = static_cast<int>(inst.shapes.size());
+    const int restLabel = p; // labels 0..p-1: keys
+    std::vector<int> label(static_cast<std::size_t>(n), 0);
+    double best = std::numeric_limits<double>::infinity();
+    std::function<void(int, int)> recurse = [&](int i, int used) {
+        if (i == n) {
+            if (used != p || !satisfies(label, c)) return;
+            for (const int pinned : c.pinned)
+                if (pinned != restViseme && label[static_cast<std::size_t>(pinned)] == restLabel) return;
+            std::vector<std::vector<int>> groups(static_cast<std::size_t>(p));
+            std::vector<int> resting;
+            for (int k = 0; k < n; ++k) {
+                const int l = label[static_cast<std::size_t>(k)];
+                (l == restLabel ? resting : groups[static_cast<std::size_t>(l)]).push_back(k);
+            }
+            best = std::min(best, restFreeGroupingCost(inst.shapes, inst.frequencies, inst.weights, groups,
+                                                       resting, neutral));
+            return;
+        }
+        label[static_cast<std::size_t>(i)] = restLabel;
+        recurse(i + 1, used);
+        if (i == restViseme) return;
+        for (int b = 0; b <= used && b < p; ++b) {
+            label[static_cast<std::size_t>(i)] = b;
             recurse(i + 1, std::max(used, b + 1));
         }
     };

@@ -22,7 +22,9 @@ int loadAndAnimate(const std::uint8_t* data, std::size_t size) {
     for (std::uint32_t corner = 0; corner < 3 * package.triangleCount(); ++corner)
         if (package.index(corner) >= package.vertexCount()) std::abort();
     for (std::uint32_t p = 0; p < package.phonemeCount(); ++p)
-        if (package.keyOfPhoneme(p) >= package.keyCount()) std::abort();
+        // A phoneme maps to a key or rests (kRestKey: the neutral face).
+        if (package.keyOfPhoneme(p) >= package.keyCount() && package.keyOfPhoneme(p) != runtime::kRestKey)
+            std::abort();
     std::vector<runtime::Keyframe> keyframes{{0.0, runtime::kRestKey}};
     for (std::uint32_t k = 0; k < package.keyCount() && k < 8; ++k) keyframes.push_back({0.1 * (k + 1), k});
     for (auto interpolation :
