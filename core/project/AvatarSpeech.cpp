@@ -167,6 +167,7 @@ AvatarSpeech avatarSpeech(const std::filesystem::path& avatar, const AvatarSpeec
     if (options.reduceTo > 0) {
         ReduceSettings settings;
         settings.target = options.reduceTo;
+        settings.rest = RestChoice::Free; // as `avatar reduce`: the rest pose of a morph-target avatar is free
         AvatarReduction r = reduceAvatar(*doc, scan, source, settings, {});
         speech.faces.reduced = std::move(r.outcome.model);
         speech.animated = std::make_shared<const GltfDocument>(
