@@ -128,11 +128,8 @@ double EditorUi::millimetresPerModelUnit() const {
     static const LengthUnit kChosen[] = {LengthUnit::Metre, LengthUnit::Centimetre, LengthUnit::Millimetre,
                                          LengthUnit::Inch};
     if (costView_.unit >= 1 && costView_.unit <= 4) return millimetresPer(kChosen[costView_.unit - 1]);
-    Vec3 lo, hi;
     const VisemeSet* set = session.visemes();
-    if (!set || !bounds(set->neutral.positions, lo, hi)) return millimetresPer(LengthUnit::Metre);
-    const double extent = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
-    return millimetresPer(guessLengthUnit(extent));
+    return set ? guessMillimetresPerUnit(set->neutral.positions) : millimetresPer(LengthUnit::Metre);
 }
 
 namespace {

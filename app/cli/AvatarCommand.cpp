@@ -1,5 +1,6 @@
 // `visemelab avatar inspect|reduce`: real avatars (glTF / GLB / VRM) in, the same avatar out.
 #include "app/cli/Command.h"
+#include "app/cli/ConstraintOptions.h"
 #include "app/cli/Progress.h"
 #include "app/cli/WeightsOption.h"
 #include "core/common/AtomicFile.h"
@@ -50,6 +51,7 @@ struct AvatarReduceOptions {
     bool gltfpack = false;
     std::string rest = "free"; // free or key (ReduceRun.h RestChoice)
     std::string restViseme;
+    ConstraintOptions constraints;
 };
 
 double avatarMillisecondsSince(std::chrono::steady_clock::time_point start) {
@@ -104,6 +106,12 @@ int runAvatarReduce(const AvatarReduceOptions& o) {
     // A morph-target avatar's rest pose (all weights 0) is free: always the rest-free model unless asked.
     settings.rest = o.rest == "key" ? RestChoice::Key : RestChoice::Free;
     settings.restViseme = o.restViseme;
+    settings.constraints = o.constraints.names();
+    settings.constraintsSource = "--pin/--apart/--together";
+    settings.maxErrorMm = o.constraints.maxErrorMm;
+    settings.millimetresPerUnit = 1000; // glTF lengths are metres
+    if ((o.target > 0) == (o.constraints.maxErrorMm > 0))
+        throwUsage("give the number of keys -m M, or --max-error-mm X (which chooses it)");
     AvatarWriteOptions write;
     write.names = o.names == "merged" ? AvatarNames::Merged : AvatarNames::Original;
     write.targetNormals = !o.noTargetNormals;
@@ -141,12 +149,15 @@ int runAvatarReduce(const AvatarReduceOptions& o) {
         writeFileAtomically(o.report,
                             avatarReductionReport(r, scan, settings, write, timings, o.input, o.out));
 
-    std::printf("Reduced %zu visemes to %zu (weights: %s; frequencies: %s), optimal cost %.6g\n",
-                scan.visemes.size(), r.outcome.model.keys.size(), toString(settings.weightMode),
-                chosen.c_str(), r.outcome.result.best().cost);
+    const Grouping& best = r.outcome.result.best();
+    std::printf("Reduced %zu visemes to %zu (weights: %s; frequencies: %s), %s %.6g\n", scan.visemes.size(),
+                r.outcome.model.keys.size(), toString(settings.weightMode), chosen.c_str(),
+                best.optimal ? "optimal cost" : "best cost found (not proved optimal)", best.cost);
     for (std::size_t g = 0; g < r.outcome.model.keys.size(); ++g)
         std::printf("  %2zu: %s\n", g, r.outcome.model.keys[g].name.c_str());
     std::printf("%s\n", restSummary(r.outcome).c_str());
+    if (r.outcome.maxError) std::printf("%s\n", maxErrorSummary(*r.outcome.maxError).c_str());
+    std::printf("%s", visemeErrorTable(r.outcome).c_str());
     for (const VisemeMotion& motion : visemeMotions(scan.set, r.outcome))
         std::printf("  %s\n", formatVisemeMotion(motion).c_str());
     for (const AvatarMeshChange& m : r.summary.meshes)
@@ -191,9 +202,9 @@ void addAvatarCommand(CLI::App& app, CommandRunner& run) {
     auto* r = avatar->add_subcommand("reduce",
                                      "Reduce an avatar's visemes to m keys and write the same avatar back");
     r->add_option("input", reduce->input, "Avatar file (.glb, .gltf, .vrm)")->required();
-    r->add_option("--target,-m", reduce->target, "Number of keys m (1..n)")
-        ->required()
+    r->add_option("--target,-m", reduce->target, "Number of keys m (1..n), or --max-error-mm")
         ->check(CLI::PositiveNumber);
+    addConstraintOptions(*r, reduce->constraints);
     r->add_option("--out", reduce->out, "The reduced avatar (.glb or .vrm; never the input)")->required();
     r->add_option("--rest", reduce->rest,
                   "The rest pose: free (default: the neutral is an extra key that costs nothing; a viseme "

@@ -1,5 +1,6 @@
 // `visemelab reduce`: load a viseme set, reduce it to m merged meshes, write meshes, mapping and report.
 #include "app/cli/Command.h"
+#include "app/cli/ConstraintOptions.h"
 #include "app/cli/Progress.h"
 #include "app/cli/WeightsOption.h"
 #include "core/common/AtomicFile.h"
@@ -9,6 +10,7 @@
 #include "core/common/TextParsing.h"
 #include "core/export/ReductionOutputs.h"
 #include "core/export/Xface.h"
+#include "core/inspect/DistanceUnits.h"
 #include "core/project/ProjectRun.h"
 #include "core/reduce/ReduceRun.h"
 
@@ -36,31 +38,13 @@ struct ReduceOptions {
     int target = kTargetNotGiven;
     std::string outDir = "reduced";
     std::string report;
-    std::vector<std::string> pin;      // viseme names
-    std::vector<std::string> apart;    // "a,b"
-    std::vector<std::string> together; // "a,b"
+    ConstraintOptions constraints;
     std::string method = "auto";
     double timeLimit = 60;
     std::vector<std::string> compareMaps; // phoneme -> viseme maps costed as groupings
     std::string rest = "auto";            // auto, free or key (ReduceRun.h RestChoice)
     std::string restViseme;
 };
-
-std::pair<std::string, std::string> splitPair(const std::string& text, const std::string& option) {
-    const auto comma = text.find(',');
-    if (comma == std::string::npos || comma == 0 || comma + 1 == text.size() ||
-        text.find(',', comma + 1) != std::string::npos)
-        throwUsage(option + " expects two viseme names as A,B, got '" + text + "'");
-    return {text.substr(0, comma), text.substr(comma + 1)};
-}
-
-ConstraintNames constraintFlags(const ReduceOptions& o) {
-    ConstraintNames c;
-    c.pinned = o.pin;
-    for (const auto& text : o.apart) c.apart.push_back(splitPair(text, "--apart"));
-    for (const auto& text : o.together) c.together.push_back(splitPair(text, "--together"));
-    return c;
-}
 
 std::pair<std::string, std::string> splitAssignment(const std::string& text, const std::string& option) {
     const auto eq = text.find('=');
@@ -172,8 +156,10 @@ void checkFlagCombinations(const ReduceOptions& o) {
         throwUsage("use either --visemes DIR or --viseme NAME=FILE, not both");
     if (!o.freqFile.empty() && !o.freqs.empty())
         throwUsage("use either --freq NAME=F or --freq-file FILE, not both");
-    if (o.project.empty() && o.target == kTargetNotGiven)
-        throwUsage("--target M is required (or --project FILE)");
+    if (o.project.empty() && o.target == kTargetNotGiven && !(o.constraints.maxErrorMm > 0))
+        throwUsage("--target M is required (or --project FILE, or --max-error-mm X)");
+    if (o.target != kTargetNotGiven && o.constraints.maxErrorMm > 0)
+        throwUsage("--max-error-mm chooses the number of keys: drop --target");
     if (o.project.empty() && o.neutral.empty() && o.visemeDir.empty() && o.fdp.empty())
         throwUsage("a neutral mesh is required: --neutral FILE (or --visemes DIR, or --fdp FACE.fdp)");
     if (!o.project.empty() && (!o.neutral.empty() || !o.visemes.empty() || !o.visemeDir.empty()))
@@ -185,12 +171,12 @@ void checkFlagCombinations(const ReduceOptions& o) {
         throwUsage("--method must be auto, dp, bnb or lp, got '" + o.method + "'");
     if (!(o.timeLimit >= 0)) throwUsage("--time-limit must be >= 0 seconds (0: no limit)");
     restChoiceFlag(o.rest);
-    constraintFlags(o); // A,B syntax
+    o.constraints.names(); // A,B syntax
 }
 
 // Constraint flags add to the project's constraints; errors name the flags.
 void applySolverFlags(const ReduceOptions& o, ReduceSettings& settings) {
-    const ConstraintNames flags = constraintFlags(o);
+    const ConstraintNames flags = o.constraints.names();
     if (!flags.empty()) {
         settings.constraintsSource = settings.constraints.empty()
                                          ? "--pin/--apart/--together"
@@ -201,6 +187,7 @@ void applySolverFlags(const ReduceOptions& o, ReduceSettings& settings) {
     settings.options.timeLimitSeconds = o.timeLimit;
     settings.rest = restChoiceFlag(o.rest);
     settings.restViseme = o.restViseme;
+    settings.maxErrorMm = o.constraints.maxErrorMm;
     for (const auto& file : o.compareMaps) settings.compareMaps.push_back(loadPhonemeMapFile(file));
 }
 
@@ -213,6 +200,7 @@ ReduceInputs loadInputs(const ReduceOptions& o, bool weightsGiven) {
         in.frequencies = loadFrequencies(o, in.set, xface);
         in.settings = loadSettings(o);
         applySolverFlags(o, in.settings);
+        in.settings.millimetresPerUnit = guessMillimetresPerUnit(in.set.neutral.positions);
         return in;
     }
     const Project project = loadProject(o.project);
@@ -227,6 +215,7 @@ ReduceInputs loadInputs(const ReduceOptions& o, bool weightsGiven) {
         in.settings.constraintsSource = fromProject.constraintsSource;
     }
     applySolverFlags(o, in.settings);
+    in.settings.millimetresPerUnit = guessMillimetresPerUnit(in.set.neutral.positions);
     return in;
 }
 
@@ -257,7 +246,8 @@ int runReduce(const ReduceOptions& o, bool weightsGiven) {
     if (!o.report.empty()) writeFileAtomically(reportPath, report);
 
     const Grouping& best = outcome.result.best();
-    std::printf("Reduced %zu visemes to %d (weights: %s, %s): ", set.size(), settings.target,
+    const int keys = static_cast<int>(outcome.result.curve.size());
+    std::printf("Reduced %zu visemes to %d (weights: %s, %s): ", set.size(), keys,
                 toString(settings.weightMode), toString(outcome.result.method));
     if (best.optimal)
         std::printf("optimal cost %.6g (proved)\n", best.cost);
@@ -267,7 +257,9 @@ int runReduce(const ReduceOptions& o, bool weightsGiven) {
     for (std::size_t g = 0; g < outcome.model.keys.size(); ++g)
         std::printf("  %2zu: %s\n", g, outcome.model.keys[g].name.c_str());
     std::printf("%s\n", restSummary(outcome).c_str());
-    std::printf("Cost for p = 1..%d:", settings.target);
+    if (outcome.maxError) std::printf("%s\n", maxErrorSummary(*outcome.maxError).c_str());
+    std::printf("%s", visemeErrorTable(outcome).c_str());
+    std::printf("Cost for p = 1..%d:", keys);
     for (const auto& grouping : outcome.result.curve) {
         if (!grouping.feasible())
             std::printf(" -");
@@ -319,9 +311,7 @@ void addReduceCommand(CLI::App& app, CommandRunner& run) {
                     "Number of merged meshes m (1..n); required without --project");
     cmd->add_option("--out", options->outDir, "Output folder")->capture_default_str();
     cmd->add_option("--report", options->report, "JSON report path (default OUT/report.json)");
-    cmd->add_option("--pin", options->pin, "Keep this viseme as its own key, a group of one (repeatable)");
-    cmd->add_option("--apart", options->apart, "Never merge these two visemes: A,B (repeatable)");
-    cmd->add_option("--together", options->together, "Always merge these two visemes: A,B (repeatable)");
+    addConstraintOptions(*cmd, options->constraints);
     cmd->add_option("--method", options->method,
                     "Solver: auto, dp (subset DP, n <= 22), lp (set-partitioning LP, n <= 26) or bnb (branch "
                     "and bound, n <= 64)")

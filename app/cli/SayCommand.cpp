@@ -4,6 +4,7 @@
 // `--avatar IN.glb [-m M | --reduced R.glb]` instead of a project: the avatar speaks, and --glb
 // writes the avatar itself with the speech animation (core/project/AvatarSpeech.h).
 #include "app/cli/Command.h"
+#include "app/cli/ConstraintOptions.h"
 #include "app/cli/PlayerModule.h"
 #include "app/cli/Progress.h"
 #include "core/common/AtomicFile.h"
@@ -51,6 +52,7 @@ struct SayOptions {
     double fps = 60;
     std::string blend = "cubic";
     std::string format = "oculus";
+    ConstraintOptions constraints; // with --avatar -m
     bool curve = false;
     bool quiet = false;
 };
@@ -130,6 +132,8 @@ AvatarSpeech avatarFaces(const SayOptions& o, const std::optional<PhonemeVisemeM
     AvatarSpeechOptions options;
     options.targets = o.targets;
     options.reduceTo = o.target;
+    options.constraints = o.constraints.names();
+    options.maxErrorMm = o.constraints.maxErrorMm;
     options.reduced = o.reduced;
     options.phonemeTable = bundledPhonemeFrequencies(VISEMELAB_ASSETS_DIR, "oculus");
     options.map = map;
@@ -170,8 +174,13 @@ int runSay(const SayOptions& o) {
     const auto format = trackFormatFromString(o.format);
     if (!format) throwUsage("--format must be oculus, rhubarb or talkinghead, not '" + o.format + "'");
     if (o.project.empty() == o.avatar.empty()) throwUsage("give --project or --avatar");
-    if (o.avatar.empty() && (o.target > 0 || !o.reduced.empty() || !o.targets.empty()))
-        throwUsage("-m, --reduced and --targets go with --avatar");
+    const bool constrained = !o.constraints.names().empty() || o.constraints.maxErrorMm > 0;
+    if (o.avatar.empty() && (o.target > 0 || !o.reduced.empty() || !o.targets.empty() || constrained))
+        throwUsage("-m, --reduced, --targets and the constraints go with --avatar");
+    if (o.target > 0 && o.constraints.maxErrorMm > 0)
+        throwUsage("--max-error-mm chooses the number of keys: drop -m");
+    if (constrained && !o.reduced.empty())
+        throwUsage("constraints apply to a reduction in memory (-m or --max-error-mm), not to --reduced");
     checkOutputs(o);
 
     std::optional<PhonemeVisemeMap> map;
@@ -280,6 +289,7 @@ void addSayCommand(CLI::App& app, CommandRunner& run) {
     cmd->add_option("--target,-m", o->target,
                     "With --avatar: reduce its visemes to m keys in memory (as `avatar reduce`)")
         ->check(CLI::PositiveNumber);
+    addConstraintOptions(*cmd, o->constraints);
     cmd->add_option("--reduced", o->reduced,
                     "With --avatar: the avatar `avatar reduce` wrote from it, as the reduced face");
     cmd->add_option("--targets", o->targets,

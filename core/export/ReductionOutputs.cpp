@@ -86,6 +86,50 @@ std::string formatVisemeMotion(const VisemeMotion& motion) {
     return motion.viseme + " " + text;
 }
 
+std::string maxErrorSummary(const MaxErrorFinding& finding) {
+    char text[320];
+    std::snprintf(
+        text, sizeof text,
+        "Max error %g mm: %d keys is the fewest that keep every viseme within it (%s); the grouping "
+        "is %s",
+        finding.limitMm, finding.keys, finding.certified ? "proved" : "not proved: search stopped",
+        finding.optimalWithin ? "the optimum among those (proved)"
+                              : "one that meets it (not proved optimal)");
+    return text;
+}
+
+namespace {
+
+struct ErrorScale {
+    double factor;    // model units -> shown unit
+    const char* unit; // "mm" or "model units"
+};
+
+ErrorScale errorScale(const ReduceOutcome& outcome) {
+    return outcome.millimetresPerUnit > 0 ? ErrorScale{outcome.millimetresPerUnit, "mm"}
+                                          : ErrorScale{1.0, "model units"};
+}
+
+double percentOf(const VisemeError& e) {
+    return e.largestDisplacement > 0 ? 100 * e.max / e.largestDisplacement : 0.0;
+}
+
+} // namespace
+
+std::string visemeErrorTable(const ReduceOutcome& outcome) {
+    const ErrorScale scale = errorScale(outcome);
+    std::string text =
+        std::string("Per viseme error (") + scale.unit + "): max, RMS, max as % of its own motion\n";
+    for (std::size_t i = 0; i < outcome.visemeErrors.size() && i < outcome.visemeNames.size(); ++i) {
+        const VisemeError& e = outcome.visemeErrors[i];
+        char line[256];
+        std::snprintf(line, sizeof line, "  %-16s %10.4g %10.4g %8.1f %%\n", outcome.visemeNames[i].c_str(),
+                      e.max * scale.factor, e.rms * scale.factor, percentOf(e));
+        text += line;
+    }
+    return text;
+}
+
 std::string restSummary(const ReduceOutcome& outcome) {
     const std::string viseme =
         outcome.restViseme.empty() ? "no rest viseme" : "rest viseme " + outcome.restViseme;
@@ -158,6 +202,21 @@ std::string reductionReportJson(const ReduceOutcome& outcome, WeightMode mode, c
     pairs["apart"] = pairList(outcome.constraints.apart);
     pairs["together"] = pairList(outcome.constraints.together);
     report["constraints"] = pairs;
+    const ErrorScale scale = errorScale(outcome);
+    nlohmann::ordered_json errors = nlohmann::ordered_json::array();
+    for (std::size_t i = 0; i < outcome.visemeErrors.size() && i < outcome.visemeNames.size(); ++i) {
+        const VisemeError& e = outcome.visemeErrors[i];
+        errors.push_back({{"viseme", outcome.visemeNames[i]},
+                          {"max", e.max * scale.factor},
+                          {"rms", e.rms * scale.factor},
+                          {"percent_of_motion", percentOf(e)}});
+    }
+    report["viseme_errors"] = {{"unit", scale.unit}, {"visemes", errors}};
+    if (const auto& bound = outcome.maxError)
+        report["max_error"] = {{"limit_mm", bound->limitMm},
+                               {"keys", bound->keys},
+                               {"certified", bound->certified},
+                               {"optimal_within", bound->optimalWithin}};
     nlohmann::ordered_json freq = nlohmann::ordered_json::object();
     for (std::size_t i = 0; i < outcome.visemeNames.size(); ++i)
         freq[outcome.visemeNames[i]] = outcome.frequencies[i];

@@ -32,6 +32,13 @@ std::vector<VisemeMotion> visemeMotions(const VisemeSet& set, const ReduceOutcom
 // "viseme_sil moves 0 mm (rests)", "viseme_PP moves 4.8 of 6.5 mm (key viseme_PP+viseme_sil)".
 std::string formatVisemeMotion(const VisemeMotion& motion);
 
+// "Max error 2 mm: 6 keys is the fewest that keep every viseme within it (proved); the grouping is the
+// optimum among those (proved)".
+std::string maxErrorSummary(const MaxErrorFinding& finding);
+// One line per viseme: its largest and RMS vertex error after the reduction, in mm when the set's unit
+// is known (else model units), and the largest as a percentage of its own largest displacement.
+std::string visemeErrorTable(const ReduceOutcome& outcome);
+
 // One line on the reduction model that ran: "Rest: free (...); resting: sil, ..." or "Rest: key (...)".
 std::string restSummary(const ReduceOutcome& outcome);
 
@@ -40,7 +47,8 @@ std::string restSummary(const ReduceOutcome& outcome);
 // (null where the constraints allow no grouping), lower_bound_curve, optimal_curve, groups_curve (every p's
 // groups by name, null as cost_curve), rest_curve (every p's resting visemes, with a free rest), constraints,
 // frequencies, timing_ms, outputs, and compared_maps when maps were compared (each map's groups, cost, and
-// the optimum for as many groups when p <= m).
+// the optimum for as many groups when p <= m), viseme_errors (per viseme: max and RMS error, unit "mm" or
+// "model units", percent of its own largest displacement) and max_error with --max-error-mm.
 std::string reductionReportJson(const ReduceOutcome& outcome, WeightMode mode, const ReduceTimings& timings,
                                 const std::vector<std::string>& outputs);
 

@@ -1,5 +1,6 @@
 #include "core/inspect/DistanceUnits.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace vl {
@@ -73,6 +74,12 @@ int axisTicks(double lo, double hi, int count, bool logarithmic, double* ticks, 
          t += step)
         ticks[written++] = std::abs(t) < 1e-12 * step ? 0.0 : t;
     return written;
+}
+
+double guessMillimetresPerUnit(std::span<const Vec3> positions) {
+    Vec3 lo, hi;
+    if (!bounds(positions, lo, hi)) return millimetresPer(LengthUnit::Metre);
+    return millimetresPer(guessLengthUnit(std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]})));
 }
 
 } // namespace vl

@@ -2,6 +2,8 @@
 // The reduction cost in a unit a designer reads: rho_f (paper eq. 18-19) is a frequency- and
 // weight-weighted sum of squared vertex distances in model units; its root mean square per unit
 // of weight is a distance, shown in millimetres once the model's length unit is known.
+#include "core/mesh/Mesh.h"
+
 #include <span>
 
 namespace vl {
@@ -17,6 +19,9 @@ double rmsDistance(double cost, double frequencySum, double weightSum);
 LengthUnit guessLengthUnit(double extent);
 
 double millimetresPer(LengthUnit unit);
+
+// millimetresPer(guessLengthUnit(the largest side of the positions' bounding box)); metres when empty.
+double guessMillimetresPerUnit(std::span<const Vec3> positions);
 const char* lengthUnitName(LengthUnit unit); // "m", "cm", "mm", "in"
 
 // Nice axis ticks covering [lo, hi] (1, 2, 5 x 10^k steps), at most about `count` of them;

@@ -164,10 +164,15 @@ AvatarSpeech avatarSpeech(const std::filesystem::path& avatar, const AvatarSpeec
     std::vector<std::string> names = scan.visemes;
     speech.faces.full = unreducedModel(scan.set, visemeFrequencies(source, names), source);
     speech.faces.weights = computeWeights(WeightMode::Uniform, scan.set.neutral);
-    if (options.reduceTo > 0) {
+    if (options.reduceTo > 0 || options.maxErrorMm > 0) {
         ReduceSettings settings;
         settings.target = options.reduceTo;
-        settings.rest = RestChoice::Free; // as `avatar reduce`: the rest pose of a morph-target avatar is free
+        settings.constraints = options.constraints;
+        settings.constraintsSource = "--pin/--apart/--together";
+        settings.maxErrorMm = options.maxErrorMm;
+        settings.millimetresPerUnit = 1000; // glTF lengths are metres
+        settings.rest =
+            RestChoice::Free; // as `avatar reduce`: the rest pose of a morph-target avatar is free
         AvatarReduction r = reduceAvatar(*doc, scan, source, settings, {});
         speech.faces.reduced = std::move(r.outcome.model);
         speech.animated = std::make_shared<const GltfDocument>(

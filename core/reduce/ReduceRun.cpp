@@ -1,5 +1,7 @@
 #include "core/reduce/ReduceRun.h"
 
+#include "core/reduce/MaxErrorSearch.h"
+
 #include "core/common/Error.h"
 
 #include <algorithm>
@@ -57,6 +59,68 @@ int restVisemeOf(const VisemeSet& set, const ReduceSettings& settings) {
     return -1;
 }
 
+// rho_f of a grouping from the meshes: the keys' spread plus f_i rho(A_i, neutral) of every resting viseme.
+double costWithRest(const ShapeView& shapes, std::span<const Vec3> neutral, const ReduceOutcome& out,
+                    const Grouping& grouping) {
+    double cost = groupingCost(shapes, out.frequencies, out.weights, grouping.groups);
+    for (const int i : grouping.rest) {
+        double moved = 0;
+        for (std::size_t v = 0; v < neutral.size(); ++v)
+            moved += out.weights[v] * (shapes[static_cast<std::size_t>(i)][v] - neutral[v]).sqrnorm();
+        cost += out.frequencies[static_cast<std::size_t>(i)] * moved;
+    }
+    return cost;
+}
+
+// `--max-error-mm`: the smallest number of keys that keeps every viseme within the bound
+// (MaxErrorSearch.h), then the reduction at that m with the pairs the bound rules out kept apart (a
+// relaxation: its optimum bounds every grouping that meets the bound). When that optimum meets the
+// bound it is the proven optimum among them; otherwise the search's grouping is used, with the
+// relaxation's optimum as its lower bound.
+ReductionResult reduceWithinMaxError(const ShapeView& shapes, std::span<const Vec3> neutral,
+                                     ReduceOutcome& out, const ReduceSettings& settings,
+                                     const ReductionConstraints& constraints, const ConstraintUnits& units,
+                                     const RestPose& rest, const ProgressCallback& progress) {
+    if (!(settings.millimetresPerUnit > 0))
+        throwInputError("--max-error-mm",
+                        "the set's length unit is not known, so a bound in mm cannot be applied");
+    MaxErrorProblem bound;
+    bound.shapes = shapes;
+    if (rest.free) bound.rest = neutral;
+    bound.frequencies = out.frequencies;
+    bound.weights = out.weights;
+    bound.maxError = settings.maxErrorMm / settings.millimetresPerUnit;
+    bound.units = units;
+    if (rest.free && rest.viseme >= 0) bound.mustRest = {rest.viseme};
+    bound.mustKey = constraints.pinned;
+    const MaxErrorResult found = smallestKeysWithin(bound);
+    ReductionConstraints relaxed = constraints;
+    for (const auto& pair : maxErrorApartPairs(bound)) relaxed.apart.push_back(pair);
+    ReductionResult result = reduceVisemes({shapes, out.frequencies, out.weights, found.keys, relaxed, rest},
+                                           settings.options, progress);
+    MaxErrorFinding finding{settings.maxErrorMm, found.keys, found.certified, false};
+    if (withinMaxError(bound, result.groupOf())) {
+        finding.optimalWithin = result.best().optimal;
+    } else {
+        Grouping within;
+        within.lowerBound = result.best().lowerBound;
+        std::vector<std::vector<int>> keys(static_cast<std::size_t>(found.keys));
+        for (std::size_t i = 0; i < found.groupOf.size(); ++i) {
+            if (found.groupOf[i] < 0)
+                within.rest.push_back(static_cast<int>(i));
+            else
+                keys[static_cast<std::size_t>(found.groupOf[i])].push_back(static_cast<int>(i));
+        }
+        for (auto& key : keys)
+            if (!key.empty()) within.groups.push_back(std::move(key));
+        std::sort(within.groups.begin(), within.groups.end());
+        within.cost = costWithRest(shapes, neutral, out, within);
+        result.curve.back() = std::move(within);
+    }
+    out.maxError = finding;
+    return result;
+}
+
 } // namespace
 
 ReduceOutcome runReduction(const VisemeSet& set, const FrequencySource& frequencies,
@@ -85,8 +149,16 @@ ReduceOutcome runReduction(const VisemeSet& set, const FrequencySource& frequenc
         settings.rest == RestChoice::Free || (settings.rest == RestChoice::Auto && restViseme >= 0);
     const RestPose rest{restFree, restViseme, set.neutral.positions};
     if (restViseme >= 0) out.restViseme = set.visemes[static_cast<std::size_t>(restViseme)].name;
-    out.result = reduceVisemes({shapes, out.frequencies, out.weights, settings.target, constraints, rest},
-                               settings.options, progress);
+    out.millimetresPerUnit = settings.millimetresPerUnit;
+    if (settings.maxErrorMm > 0) {
+        out.result = reduceWithinMaxError(shapes, set.neutral.positions, out, settings, constraints, units,
+                                          rest, progress);
+    } else {
+        out.result = reduceVisemes({shapes, out.frequencies, out.weights, settings.target, constraints, rest},
+                                   settings.options, progress);
+    }
+    out.visemeErrors =
+        visemeErrors(shapes, set.neutral.positions, out.frequencies, out.weights, out.result.groupOf());
     out.constraints = settings.constraints;
     if (!settings.compareMaps.empty()) {
         std::vector<std::vector<std::vector<int>>> groupings;

@@ -5,9 +5,11 @@
 #include "core/reduce/Frequencies.h"
 #include "core/reduce/ReducedModel.h"
 #include "core/reduce/Reduction.h"
+#include "core/reduce/VisemeErrors.h"
 #include "core/reduce/VisemeSet.h"
 #include "core/reduce/Weights.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -37,6 +39,20 @@ struct ReduceSettings {
     // groups); the CLI passes Auto.
     RestChoice rest = RestChoice::Key;
     std::string restViseme{}; // the rest viseme's name; empty: the first of kRestVisemeNames in the set
+    // The set's length unit in millimetres (1000 for glTF's metres); 0 when unknown. Per-viseme errors
+    // are reported in mm only when it is known.
+    double millimetresPerUnit = 0;
+    // > 0 (`--max-error-mm`): the target becomes the smallest number of keys for which no viseme moves
+    // any vertex more than this from its own shape (MaxErrorSearch.h; needs millimetresPerUnit).
+    double maxErrorMm = 0;
+};
+
+// What `--max-error-mm` found.
+struct MaxErrorFinding {
+    double limitMm = 0;
+    int keys = 0;               // the smallest number of keys that meets the bound (the run's m)
+    bool certified = false;     // no grouping with fewer keys meets it (proven)
+    bool optimalWithin = false; // the run's grouping is the proven optimum among those meeting it
 };
 
 // A map used as a grouping: the set's visemes the map sends to the same viseme share a group.
@@ -62,6 +78,9 @@ struct ReduceOutcome {
     ReducedModel model;
     ConstraintNames constraints;             // the constraints the run honoured
     std::string restViseme;                  // the set's rest viseme ("" without one)
+    std::vector<VisemeError> visemeErrors;   // per viseme, model units (VisemeErrors.h)
+    double millimetresPerUnit = 0;           // settings.millimetresPerUnit
+    std::optional<MaxErrorFinding> maxError; // with settings.maxErrorMm
     std::vector<MapGrouping> comparedMaps{}; // settings.compareMaps, costed
 };
 

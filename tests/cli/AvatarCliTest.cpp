@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <filesystem>
 
 namespace vl {
@@ -140,6 +142,58 @@ TEST_F(AvatarCli, TheRestIsFreeSoSilenceMovesNothingAndKeepsItsTarget) {
     EXPECT_EQ(test::runCli("avatar reduce " + path("rpm.glb") + " -m 6 --rest none --out " + path("n.glb"))
                   .exitCode,
               2);
+}
+
+TEST_F(AvatarCli, ConstraintsAndMaxErrorAsInReduce) {
+    // --pin and --apart hold in the avatar's reduction.
+    const auto pinned =
+        test::runCli("avatar reduce " + path("rpm.glb") + " -m 4 --pin viseme_aa --apart " +
+                     "viseme_PP,viseme_FF --out " + path("pinned.glb") + " --report " + path("pinned.json"));
+    ASSERT_EQ(pinned.exitCode, 0) << pinned.output;
+    const auto report = nlohmann::json::parse(readFileToString(dir / "pinned.json"));
+    bool aaAlone = false;
+    for (const auto& group : report["groups"]) {
+        const auto has = [&](const char* name) {
+            return std::find(group.begin(), group.end(), name) != group.end();
+        };
+        if (has("viseme_aa")) aaAlone = group.size() == 1;
+        EXPECT_FALSE(has("viseme_PP") && has("viseme_FF")) << group.dump();
+    }
+    EXPECT_TRUE(aaAlone) << report["groups"].dump();
+    EXPECT_EQ(report["viseme_errors"]["unit"], "mm");
+    ASSERT_EQ(report["viseme_errors"]["visemes"].size(), 15u);
+
+    // --max-error-mm: the fewest keys that keep every viseme within the bound, proved; every viseme's
+    // reported max error is within it, and one key fewer is not enough.
+    const auto largest = [](const nlohmann::json& r) {
+        double worst = 0;
+        for (const auto& v : r["viseme_errors"]["visemes"]) worst = std::max(worst, v["max"].get<double>());
+        return worst;
+    };
+    const double bound = 0.5 * largest(report);
+    const auto within =
+        test::runCli("avatar reduce " + path("rpm.glb") + " --max-error-mm " + std::to_string(bound) +
+                     " --out " + path("within.glb") + " --report " + path("within.json"));
+    ASSERT_EQ(within.exitCode, 0) << within.output;
+    EXPECT_NE(within.output.find("is the fewest that keep every viseme within it (proved)"),
+              std::string::npos)
+        << within.output;
+    const auto w = nlohmann::json::parse(readFileToString(dir / "within.json"));
+    EXPECT_LE(largest(w), bound * (1 + 1e-9)) << w["viseme_errors"].dump();
+    EXPECT_TRUE(w["max_error"]["certified"].get<bool>());
+    const int keys = w["max_error"]["keys"].get<int>();
+    EXPECT_EQ(w["groups"].size(), static_cast<std::size_t>(keys));
+    if (keys > 1) {
+        const auto fewer =
+            test::runCli("avatar reduce " + path("rpm.glb") + " -m " + std::to_string(keys - 1) + " --out " +
+                         path("fewer.glb") + " --report " + path("fewer.json"));
+        ASSERT_EQ(fewer.exitCode, 0) << fewer.output;
+        EXPECT_GT(largest(nlohmann::json::parse(readFileToString(dir / "fewer.json"))), bound);
+    }
+    EXPECT_EQ(
+        test::runCli("avatar reduce " + path("rpm.glb") + " -m 3 --max-error-mm 1 --out " + path("x.glb"))
+            .exitCode,
+        2);
 }
 
 TEST_F(AvatarCli, ReduceRefusesToOverwriteItsInputAndChecksItsFlags) {
