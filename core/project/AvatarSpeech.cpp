@@ -86,6 +86,12 @@ ReducedModel reducedModelOf(const GltfDocument& reduced, const AvatarScan& scan,
         key.positions = reducedScan.set.visemes[static_cast<std::size_t>(first)].positions;
         model.keys.push_back(std::move(key));
     }
+    // The rest-free model: a viseme in no key rests (its target is there, moving nothing).
+    for (const std::string& viseme : scan.visemes)
+        if (std::none_of(model.keys.begin(), model.keys.end(), [&](const KeyMesh& k) {
+                return std::find(k.members.begin(), k.members.end(), viseme) != k.members.end();
+            }))
+            model.resting.push_back(viseme);
     setPhonemeMap(model, source.map, reduced.source + ": phoneme map");
     validateReducedModel(model, reduced.source);
     return model;

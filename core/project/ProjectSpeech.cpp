@@ -30,6 +30,11 @@ void setPhonemeMap(ReducedModel& model, const PhonemeVisemeMap& map, std::string
             std::find_if(model.keys.begin(), model.keys.end(), [&name = viseme](const KeyMesh& k) {
                 return std::find(k.members.begin(), k.members.end(), name) != k.members.end();
             });
+        if (key == model.keys.end() &&
+            std::find(model.resting.begin(), model.resting.end(), viseme) != model.resting.end()) {
+            phonemeToKey.emplace_back(phoneme, kRestingKey); // it rests: the neutral face
+            continue;
+        }
         if (key == model.keys.end()) {
             if (missing.find("'" + viseme + "'") == std::string::npos)
                 missing += (missing.empty() ? "'" : ", '") + viseme + "'";

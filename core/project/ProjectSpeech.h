@@ -26,7 +26,8 @@ struct SpeechFaces {
 SpeechFaces projectSpeechFaces(const Project& project, const PhonemeVisemeMap* map = nullptr);
 
 // Replaces the model's phoneme -> key map: each phoneme goes to the key whose members include its
-// viseme. Throws InputError at `where` listing the visemes of `map` no key holds.
+// viseme (a viseme of model.resting: kRestingKey, the neutral face). Throws InputError at `where`
+// listing the visemes of `map` that no key holds and that do not rest.
 void setPhonemeMap(ReducedModel& model, const PhonemeVisemeMap& map, std::string_view where);
 
 struct ErrorCurvePoint {

@@ -95,11 +95,12 @@ TEST_F(AvatarSpeechTest, ReducedFileGivesTheSameFaceAsReducingInMemory) {
     options.phonemeTable = test::fixturePhonemeTable();
     options.reduceTo = 4;
     const AvatarSpeech inMemory = avatarSpeech(dir / "rpm.glb", options);
-    // What `avatar reduce rpm.glb -m 4` writes (uniform weights, names original).
+    // What `avatar reduce rpm.glb -m 4` writes (uniform weights, names original, the rest is free).
     const GltfDocument doc = loadGltfDocument(dir / "rpm.glb");
     const AvatarScan scan = scanAvatar(doc, {});
     ReduceSettings settings;
     settings.target = 4;
+    settings.rest = RestChoice::Free;
     writeFileAtomically(
         dir / "reduced.glb",
         reduceAvatar(doc, scan, defaultAvatarFrequencies(scan, options.phonemeTable), settings, {}).glb);
@@ -114,6 +115,8 @@ TEST_F(AvatarSpeechTest, ReducedFileGivesTheSameFaceAsReducingInMemory) {
         for (std::size_t v = 0; v < a.positions.size(); ++v)
             ASSERT_NEAR((a.positions[v] - b.positions[v]).norm(), 0.0, 1e-5) << k << " " << v;
     }
+    EXPECT_EQ(fromFile.faces.reduced.resting, inMemory.faces.reduced.resting);
+    EXPECT_FALSE(fromFile.faces.reduced.resting.empty()); // viseme_sil at least
     EXPECT_EQ(fromFile.faces.reduced.phonemeToKey, inMemory.faces.reduced.phonemeToKey);
     ASSERT_EQ(fromFile.drives.size(), inMemory.drives.size());
     for (std::size_t d = 0; d < fromFile.drives.size(); ++d)
