@@ -5,7 +5,12 @@
 #include "core/common/InputRegistry.h"
 #include "core/common/Limits.h"
 
-#include <fstream>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <new>
 #include <system_error>
 
 namespace vl {
@@ -15,27 +20,39 @@ std::string readFileToString(const std::filesystem::path& path) {
     const auto status = std::filesystem::status(path, ec);
     if (!std::filesystem::exists(status)) throwInputError(path.string(), "file not found");
     if (std::filesystem::is_directory(status)) throwInputError(path.string(), "is a directory, not a file");
-    // A FIFO or device would block or never end.
+    // A FIFO or device would block or never end. Opened without blocking and checked again on the
+    // open file, so a file swapped for a FIFO after the check above cannot block the reader either.
     if (!std::filesystem::is_regular_file(status)) throwInputError(path.string(), "not a regular file");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throwInputError(path.string(), "cannot open file for reading");
+    const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0) throwInputError(path.string(), "cannot open file for reading");
+    struct FdCloser {
+        int fd;
+        ~FdCloser() { ::close(fd); }
+    } closer{fd};
+    struct stat opened {};
+    if (::fstat(fd, &opened) != 0 || !S_ISREG(opened.st_mode))
+        throwInputError(path.string(), "not a regular file");
+    const auto size = static_cast<std::uintmax_t>(opened.st_size);
+    if (size > limits::kMaxInputFileBytes)
+        throwInputError(path.string(), "file too large (" + std::to_string(size) + " bytes; the limit is " +
+                                           std::to_string(limits::kMaxInputFileBytes) + ")");
     std::string data;
-    in.seekg(0, std::ios::end);
-    const auto size = in.tellg();
-    in.seekg(0, std::ios::beg);
-    if (size > 0) {
-        if (static_cast<std::uintmax_t>(size) > limits::kMaxInputFileBytes)
-            throwInputError(path.string(),
-                            "file too large (" + std::to_string(static_cast<std::uintmax_t>(size)) +
-                                " bytes; the limit is " + std::to_string(limits::kMaxInputFileBytes) + ")");
-        try {
-            data.resize(static_cast<std::size_t>(size));
-        } catch (const std::bad_alloc&) {
-            throwInputError(path.string(), "not enough memory to read the file");
-        }
-        in.read(data.data(), size);
+    try {
+        data.resize(static_cast<std::size_t>(size));
+    } catch (const std::bad_alloc&) {
+        throwInputError(path.string(), "not enough memory to read the file");
     }
-    if (!in) throwInputError(path.string(), "read error");
+    std::size_t done = 0;
+    while (done < data.size()) {
+        const ssize_t got = ::read(fd, data.data() + done, data.size() - done);
+        if (got < 0 && errno == EINTR) continue;
+        if (got < 0) throwInputError(path.string(), "read error");
+        if (got == 0) { // shorter than when it was measured: keep what is there
+            data.resize(done);
+            break;
+        }
+        done += static_cast<std::size_t>(got);
+    }
     noteInputFile(path);
     return data;
 }
