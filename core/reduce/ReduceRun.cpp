@@ -157,8 +157,6 @@ ReduceOutcome runReduction(const VisemeSet& set, const FrequencySource& frequenc
         out.result = reduceVisemes({shapes, out.frequencies, out.weights, settings.target, constraints, rest},
                                    settings.options, progress);
     }
-    out.visemeErrors =
-        visemeErrors(shapes, set.neutral.positions, out.frequencies, out.weights, out.result.groupOf());
     out.constraints = settings.constraints;
     if (!settings.compareMaps.empty()) {
         std::vector<std::vector<std::vector<int>>> groupings;
@@ -170,7 +168,12 @@ ReduceOutcome runReduction(const VisemeSet& set, const FrequencySource& frequenc
         for (std::size_t k = 0; k < costs.size(); ++k) out.comparedMaps[k].cost = costs[k];
     }
 
-    out.model = buildReducedModel(set, out.frequencies, out.result.groupOf(), frequencies);
+    const std::vector<int> groupOf = out.result.groupOf();
+    out.model = buildReducedModel(set, out.frequencies, groupOf, frequencies);
+    // Errors against the model's own key meshes: the keys are merged once, not again here.
+    std::vector<std::span<const Vec3>> keyRows;
+    for (const KeyMesh& key : out.model.keys) keyRows.emplace_back(key.positions);
+    out.visemeErrors = visemeErrors(shapes, set.neutral.positions, out.weights, groupOf, ShapeView(keyRows));
     return out;
 }
 

@@ -25,6 +25,13 @@ std::vector<VisemeError> visemeErrors(const ShapeView& shapes, std::span<const V
         const double share = total[g] > 0 ? frequencies[i] / total[g] : 1.0 / count[g];
         for (std::size_t v = 0; v < vertices; ++v) keyShapes[g][v] += share * shapes[i][v];
     }
+    return visemeErrors(shapes, rest, weights, groupOf, ShapeView(keyShapes));
+}
+
+std::vector<VisemeError> visemeErrors(const ShapeView& shapes, std::span<const Vec3> rest,
+                                      std::span<const double> weights, std::span<const int> groupOf,
+                                      const ShapeView& keyShapes) {
+    const std::size_t n = shapes.size(), vertices = weights.size();
     std::vector<VisemeError> errors(n);
     for (std::size_t i = 0; i < n; ++i) {
         double weightSum = 0, squares = 0;

@@ -22,4 +22,10 @@ std::vector<VisemeError> visemeErrors(const ShapeView& shapes, std::span<const V
                                       std::span<const double> frequencies, std::span<const double> weights,
                                       std::span<const int> groupOf);
 
+// The same with the keys' shapes given (keyShapes[g] for groupOf[i] == g), e.g. a reduced model's
+// key meshes, so they are not merged again.
+std::vector<VisemeError> visemeErrors(const ShapeView& shapes, std::span<const Vec3> rest,
+                                      std::span<const double> weights, std::span<const int> groupOf,
+                                      const ShapeView& keyShapes);
+
 } // namespace vl
