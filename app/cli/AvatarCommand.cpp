@@ -109,6 +109,7 @@ int runAvatarReduce(const AvatarReduceOptions& o) {
     settings.constraints = o.constraints.names();
     settings.constraintsSource = "--pin/--apart/--together";
     settings.maxErrorMm = o.constraints.maxErrorMm;
+    settings.closure = closureSetting(o.constraints);
     settings.millimetresPerUnit = 1000; // glTF lengths are metres
     if ((o.target > 0) == (o.constraints.maxErrorMm > 0))
         throwUsage("give the number of keys -m M, or --max-error-mm X (which chooses it)");
@@ -204,7 +205,7 @@ void addAvatarCommand(CLI::App& app, CommandRunner& run) {
     r->add_option("input", reduce->input, "Avatar file (.glb, .gltf, .vrm)")->required();
     r->add_option("--target,-m", reduce->target, "Number of keys m (1..n), or --max-error-mm")
         ->check(CLI::PositiveNumber);
-    addConstraintOptions(*r, reduce->constraints);
+    addConstraintOptions(*r, reduce->constraints, kClosureAuto);
     r->add_option("--out", reduce->out, "The reduced avatar (.glb or .vrm; never the input)")->required();
     r->add_option("--rest", reduce->rest,
                   "The rest pose: free (default: the neutral is an extra key that costs nothing; a viseme "

@@ -24,7 +24,17 @@ ConstraintNames ConstraintOptions::names() const {
     return c;
 }
 
-void addConstraintOptions(CLI::App& command, ConstraintOptions& options) {
+std::string closureSetting(const ConstraintOptions& options) {
+    return options.closure == "none" ? std::string() : options.closure;
+}
+
+void addConstraintOptions(CLI::App& command, ConstraintOptions& options, const char* closureDefault) {
+    options.closure = closureDefault;
+    command
+        .add_option("--closure", options.closure,
+                    "With the rest free, the lips-closed viseme keeps a key of its own: auto (PP or "
+                    "viseme_PP when present), a viseme name, or none")
+        ->default_str(closureDefault);
     command.add_option("--pin", options.pin, "Keep this viseme as its own key, a group of one (repeatable)");
     command.add_option("--apart", options.apart, "Never merge these two visemes: A,B (repeatable)");
     command.add_option("--together", options.together, "Always merge these two visemes: A,B (repeatable)");

@@ -15,11 +15,16 @@ struct ConstraintOptions {
     std::vector<std::string> apart;    // "a,b"
     std::vector<std::string> together; // "a,b"
     double maxErrorMm = 0;             // 0: no bound
+    std::string closure;               // ReduceSettings::closure: "auto", "none" or a viseme name
 
     // The flags as names; throws a usage error for a pair that is not "A,B".
     ConstraintNames names() const;
 };
 
-void addConstraintOptions(CLI::App& command, ConstraintOptions& options);
+// `closureDefault`: the --closure value when the flag is absent ("auto" for avatars, "none" else).
+void addConstraintOptions(CLI::App& command, ConstraintOptions& options, const char* closureDefault);
+
+// ReduceSettings::closure for the flag's value ("none" -> "").
+std::string closureSetting(const ConstraintOptions& options);
 
 } // namespace vl::cli

@@ -187,6 +187,7 @@ void applySolverFlags(const ReduceOptions& o, ReduceSettings& settings) {
     settings.options.timeLimitSeconds = o.timeLimit;
     settings.rest = restChoiceFlag(o.rest);
     settings.restViseme = o.restViseme;
+    settings.closure = closureSetting(o.constraints);
     settings.maxErrorMm = o.constraints.maxErrorMm;
     for (const auto& file : o.compareMaps) settings.compareMaps.push_back(loadPhonemeMapFile(file));
 }
@@ -311,7 +312,7 @@ void addReduceCommand(CLI::App& app, CommandRunner& run) {
                     "Number of merged meshes m (1..n); required without --project");
     cmd->add_option("--out", options->outDir, "Output folder")->capture_default_str();
     cmd->add_option("--report", options->report, "JSON report path (default OUT/report.json)");
-    addConstraintOptions(*cmd, options->constraints);
+    addConstraintOptions(*cmd, options->constraints, "none");
     cmd->add_option("--method", options->method,
                     "Solver: auto, dp (subset DP, n <= 22), lp (set-partitioning LP, n <= 26) or bnb (branch "
                     "and bound, n <= 64)")

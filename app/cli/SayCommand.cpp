@@ -134,6 +134,7 @@ AvatarSpeech avatarFaces(const SayOptions& o, const std::optional<PhonemeVisemeM
     options.reduceTo = o.target;
     options.constraints = o.constraints.names();
     options.maxErrorMm = o.constraints.maxErrorMm;
+    options.closure = closureSetting(o.constraints);
     options.reduced = o.reduced;
     options.phonemeTable = bundledPhonemeFrequencies(VISEMELAB_ASSETS_DIR, "oculus");
     options.map = map;
@@ -289,7 +290,7 @@ void addSayCommand(CLI::App& app, CommandRunner& run) {
     cmd->add_option("--target,-m", o->target,
                     "With --avatar: reduce its visemes to m keys in memory (as `avatar reduce`)")
         ->check(CLI::PositiveNumber);
-    addConstraintOptions(*cmd, o->constraints);
+    addConstraintOptions(*cmd, o->constraints, kClosureAuto);
     cmd->add_option("--reduced", o->reduced,
                     "With --avatar: the avatar `avatar reduce` wrote from it, as the reduced face");
     cmd->add_option("--targets", o->targets,

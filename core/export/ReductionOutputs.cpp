@@ -133,11 +133,20 @@ std::string visemeErrorTable(const ReduceOutcome& outcome) {
 std::string restSummary(const ReduceOutcome& outcome) {
     const std::string viseme =
         outcome.restViseme.empty() ? "no rest viseme" : "rest viseme " + outcome.restViseme;
-    if (!outcome.result.restFree) return "Rest: key (the rest is a key like any other; " + viseme + ")";
-    std::string line = "Rest: free (the neutral is a free key; " + viseme + "); resting:";
-    const auto& resting = outcome.model.resting;
-    if (resting.empty()) line += " none";
-    for (std::size_t i = 0; i < resting.size(); ++i) line += (i ? ", " : " ") + resting[i];
+    std::string line;
+    if (!outcome.result.restFree) {
+        line = "Rest: key (the rest is a key like any other; " + viseme + ")";
+    } else {
+        line = "Rest: free (the neutral is a free key; " + viseme + "); resting:";
+        const auto& resting = outcome.model.resting;
+        if (resting.empty()) line += " none";
+        for (std::size_t i = 0; i < resting.size(); ++i) line += (i ? ", " : " ") + resting[i];
+    }
+    if (!outcome.closureViseme.empty())
+        line += "\nLip closure: " + outcome.closureViseme +
+                " keeps a key of its own (P, B, M close the lips; --closure none leaves it to the optimiser)";
+    else if (!outcome.closureNote.empty())
+        line += "\nLip closure: " + outcome.closureNote;
     return line;
 }
 
@@ -160,6 +169,11 @@ std::string reductionReportJson(const ReduceOutcome& outcome, WeightMode mode, c
                       {"viseme", outcome.restViseme.empty() ? nlohmann::ordered_json()
                                                             : nlohmann::ordered_json(outcome.restViseme)},
                       {"resting", outcome.model.resting}};
+    if (!outcome.closureViseme.empty() || !outcome.closureNote.empty())
+        report["closure"] = {{"viseme", outcome.closureViseme.empty()
+                                            ? nlohmann::ordered_json()
+                                            : nlohmann::ordered_json(outcome.closureViseme)},
+                             {"note", outcome.closureNote}};
     // Entries p the constraints rule out are null.
     nlohmann::ordered_json curve = nlohmann::ordered_json::array(), bounds = nlohmann::ordered_json::array(),
                            optimal = nlohmann::ordered_json::array();

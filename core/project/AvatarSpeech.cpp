@@ -176,6 +176,7 @@ AvatarSpeech avatarSpeech(const std::filesystem::path& avatar, const AvatarSpeec
         settings.constraints = options.constraints;
         settings.constraintsSource = "--pin/--apart/--together";
         settings.maxErrorMm = options.maxErrorMm;
+        settings.closure = options.closure;
         settings.millimetresPerUnit = 1000; // glTF lengths are metres
         settings.rest =
             RestChoice::Free; // as `avatar reduce`: the rest pose of a morph-target avatar is free

@@ -5,6 +5,7 @@
 #include "core/gltf/AvatarScan.h"
 #include "core/gltf/GltfDocument.h"
 #include "core/project/ProjectSpeech.h"
+#include "core/reduce/ReduceRun.h"
 #include "core/reduce/ReductionConstraints.h"
 
 #include <filesystem>
@@ -16,11 +17,12 @@
 namespace vl {
 
 struct AvatarSpeechOptions {
-    std::string targets;           // glob over target names; empty = the Oculus visemes
-    int reduceTo = 0;              // > 0: reduce to this many keys in memory (uniform weights)
-    std::filesystem::path reduced; // else, when set: the avatar `avatar reduce` wrote from this one
-    ConstraintNames constraints;   // with reduceTo or maxErrorMm: the designer's constraints
-    double maxErrorMm = 0;         // > 0: reduce to the fewest keys within this bound (ReduceSettings)
+    std::string targets;                // glob over target names; empty = the Oculus visemes
+    int reduceTo = 0;                   // > 0: reduce to this many keys in memory (uniform weights)
+    std::filesystem::path reduced;      // else, when set: the avatar `avatar reduce` wrote from this one
+    ConstraintNames constraints;        // with reduceTo or maxErrorMm: the designer's constraints
+    double maxErrorMm = 0;              // > 0: reduce to the fewest keys within this bound (ReduceSettings)
+    std::string closure = kClosureAuto; // ReduceSettings::closure: the lips-closed viseme keeps a key
     // The bundled en-us phoneme table with the Oculus map: the frequencies `avatar reduce` uses by
     // default (core/gltf/AvatarReduce.h defaultAvatarFrequencies).
     FrequencySource phonemeTable;

@@ -59,6 +59,49 @@ int restVisemeOf(const VisemeSet& set, const ReduceSettings& settings) {
     return -1;
 }
 
+// The index of the lips-closed viseme settings.closure names (-1: no rule, or auto and none in the set).
+int closureVisemeOf(const VisemeSet& set, const ReduceSettings& settings) {
+    if (settings.closure.empty()) return -1;
+    if (settings.closure != kClosureAuto) {
+        const int index = set.find(settings.closure);
+        if (index < 0) throwInputError("--closure", "the set has no viseme '" + settings.closure + "'");
+        return index;
+    }
+    for (const char* name : kClosureVisemeNames)
+        if (const int index = set.find(name); index >= 0) return index;
+    return -1;
+}
+
+bool mentions(const std::vector<std::pair<std::string, std::string>>& pairs, const std::string& name) {
+    for (const auto& [a, b] : pairs)
+        if (a == name || b == name) return true;
+    return false;
+}
+
+// settings.constraints plus the closure pin (ReduceSettings::closure) when the rest is free and the
+// designer left the closure viseme unconstrained; sets out.closureViseme or out.closureNote.
+ConstraintNames constraintsWithClosure(const VisemeSet& set, const ReduceSettings& settings, bool restFree,
+                                       int restViseme, ReduceOutcome& out) {
+    ConstraintNames names = settings.constraints;
+    const int closure = closureVisemeOf(set, settings);
+    if (closure < 0) return names;
+    const std::string& name = set.visemes[static_cast<std::size_t>(closure)].name;
+    const std::string leftAlone = ": " + name + " is left to the optimiser";
+    if (!restFree)
+        out.closureNote = "the rest is a key" + leftAlone;
+    else if (closure == restViseme)
+        out.closureNote = name + " is the rest viseme" + leftAlone;
+    else if (std::find(names.pinned.begin(), names.pinned.end(), name) != names.pinned.end())
+        out.closureViseme = name; // the designer pinned it already
+    else if (mentions(names.together, name))
+        out.closureNote = "--together names " + name + leftAlone;
+    else {
+        names.pinned.push_back(name);
+        out.closureViseme = name;
+    }
+    return names;
+}
+
 // rho_f of a grouping from the meshes: the keys' spread plus f_i rho(A_i, neutral) of every resting viseme.
 double costWithRest(const ShapeView& shapes, std::span<const Vec3> neutral, const ReduceOutcome& out,
                     const Grouping& grouping) {
@@ -135,19 +178,38 @@ ReduceOutcome runReduction(const VisemeSet& set, const FrequencySource& frequenc
     std::vector<std::span<const Vec3>> rows; // a view of the set's positions: no copy of the shapes
     for (const auto& v : set.visemes) rows.emplace_back(v.positions);
     const ShapeView shapes(rows);
-    const ReductionConstraints constraints =
-        resolveConstraints(settings.constraints, out.visemeNames, settings.constraintsSource);
-    // Contradictions and a target they rule out are reported by viseme name, at the constraints' source.
-    const ConstraintUnits units = constraintUnits(constraints, static_cast<int>(set.size()), out.visemeNames,
-                                                  settings.constraintsSource);
-    if (settings.target >= 1 && static_cast<std::size_t>(settings.target) <= set.size() &&
-        !units.feasible(settings.target))
-        throwInfeasibleTarget(units, settings.target, settings.constraintsSource);
     // The rest pose of a morph-target runtime is the neutral mesh: the rest-free model's free key.
     const int restViseme = restVisemeOf(set, settings);
     const bool restFree =
         settings.rest == RestChoice::Free || (settings.rest == RestChoice::Auto && restViseme >= 0);
     const RestPose rest{restFree, restViseme, set.neutral.positions};
+    const bool targetGiven = settings.target >= 1 && static_cast<std::size_t>(settings.target) <= set.size();
+    ConstraintNames constraintNames = constraintsWithClosure(set, settings, restFree, restViseme, out);
+    if (!out.closureViseme.empty() && constraintNames.pinned.size() > settings.constraints.pinned.size()) {
+        // The implicit pin yields to a target it would rule out (e.g. m = n - 1 with every other key pinned).
+        const ReductionConstraints withPin =
+            resolveConstraints(constraintNames, out.visemeNames, settings.constraintsSource);
+        if (targetGiven && !keyUnits(withPin, static_cast<int>(set.size()), rest, out.visemeNames,
+                                     settings.constraintsSource)
+                                .feasible(settings.target)) {
+            out.closureNote = "the designer's constraints leave no room for " + out.closureViseme +
+                              " as a key of its own at m = " + std::to_string(settings.target) +
+                              ": it is left to the optimiser";
+            out.closureViseme.clear();
+            constraintNames = settings.constraints;
+        }
+    }
+    const ReductionConstraints constraints =
+        resolveConstraints(constraintNames, out.visemeNames, settings.constraintsSource);
+    // Contradictions and a target they rule out are reported by viseme name, at the constraints' source.
+    const ConstraintUnits units = constraintUnits(constraints, static_cast<int>(set.size()), out.visemeNames,
+                                                  settings.constraintsSource);
+    if (targetGiven) {
+        const ConstraintUnits keys = keyUnits(constraints, static_cast<int>(set.size()), rest,
+                                              out.visemeNames, settings.constraintsSource);
+        if (!keys.feasible(settings.target))
+            throwInfeasibleTarget(keys, settings.target, settings.constraintsSource);
+    }
     if (restViseme >= 0) out.restViseme = set.visemes[static_cast<std::size_t>(restViseme)].name;
     out.millimetresPerUnit = settings.millimetresPerUnit;
     if (settings.maxErrorMm > 0) {

@@ -24,6 +24,11 @@ const char* toString(RestChoice choice); // "auto", "free", "key"
 // The rest viseme names a set may use, in order of preference (the sample's and the Oculus one).
 inline constexpr const char* kRestVisemeNames[] = {"sil", "viseme_sil"};
 
+// The lips-closed viseme names (P, B, M), in order of preference (the sample's and the Oculus one).
+inline constexpr const char* kClosureVisemeNames[] = {"PP", "viseme_PP"};
+// ReduceSettings::closure value that picks the first of kClosureVisemeNames the set has.
+inline constexpr const char* kClosureAuto = "auto";
+
 struct ReduceSettings {
     WeightMode weightMode = WeightMode::Uniform;
     std::vector<double> paintedWeights; // used when weightMode == Painted
@@ -39,6 +44,14 @@ struct ReduceSettings {
     // groups); the CLI passes Auto.
     RestChoice rest = RestChoice::Key;
     std::string restViseme{}; // the rest viseme's name; empty: the first of kRestVisemeNames in the set
+    // With the rest free, the lips-closed viseme keeps a key of its own (an implicit pin) unless the
+    // designer constrained it: a bilabial that does not close reads as wrong lip-sync whatever its
+    // squared error, yet on avatars whose closure is a small motion the frequency-weighted cost
+    // prefers to rest it or average it away. "" (default): no such rule; kClosureAuto: the first of
+    // kClosureVisemeNames in the set (none: no rule); else a viseme's name (InputError when absent).
+    // Dropped, with ReduceOutcome::closureNote saying why, where the target or the designer's
+    // constraints leave no room for it.
+    std::string closure{};
     // The set's length unit in millimetres (1000 for glTF's metres); 0 when unknown. Per-viseme errors
     // are reported in mm only when it is known.
     double millimetresPerUnit = 0;
@@ -78,6 +91,8 @@ struct ReduceOutcome {
     ReducedModel model;
     ConstraintNames constraints;             // the constraints the run honoured
     std::string restViseme;                  // the set's rest viseme ("" without one)
+    std::string closureViseme;               // the viseme settings.closure pinned ("" none)
+    std::string closureNote;                 // why settings.closure pinned nothing ("" when it did)
     std::vector<VisemeError> visemeErrors;   // per viseme, model units (VisemeErrors.h)
     double millimetresPerUnit = 0;           // settings.millimetresPerUnit
     std::optional<MaxErrorFinding> maxError; // with settings.maxErrorMm

@@ -124,6 +124,20 @@ RestUnits restUnitsOf(const ConstraintUnits& units, const RestPose& rest, std::s
     return out;
 }
 
+} // namespace
+
+ConstraintUnits keyUnits(const ReductionConstraints& constraints, int n, const RestPose& rest,
+                         std::span<const std::string> visemeNames, std::string_view where) {
+    const ConstraintUnits keyed = constraintUnits(constraints, n, visemeNames, where);
+    if (!rest.free) return keyed;
+    ConstraintUnits units = restUnitsOf(keyed, rest, constraints.pinned).units;
+    --units.minGroups;
+    --units.maxGroups;
+    return units;
+}
+
+namespace {
+
 // f_i rho(A_i, neutral) per viseme (in double, from the meshes, not the centred Gram).
 std::vector<double> visemeRestCosts(const ReductionProblem& problem) {
     const RestPose& rest = problem.rest;
@@ -353,13 +367,8 @@ ReductionResult reduceVisemes(const ReductionProblem& problem, const ReductionOp
                                          : RestUnits{keyedUnits, -1};
     const ConstraintUnits& units = restUnits.units;
     const int groupsWanted = m + restGroups;
-    auto throwInfeasible = [&] {
-        ConstraintUnits keys = units; // the limits in keys, as the user gives m
-        keys.minGroups -= restGroups;
-        keys.maxGroups -= restGroups;
-        throwInfeasibleTarget(keys, m, "reduction constraints");
-    };
-    if (!units.feasible(groupsWanted)) throwInfeasible();
+    if (!units.feasible(groupsWanted))
+        throwInfeasibleTarget(keyUnits(problem.constraints, n, problem.rest), m, "reduction constraints");
     GroupCostModel model = makeGroupCostModel(
         centredGram(problem.shapes, problem.frequencies, problem.weights), problem.frequencies, keyedUnits);
     if (restFree) makeRestFree(model, visemeRestCosts(problem), units, restUnits.restUnit);
@@ -445,7 +454,8 @@ ReductionResult reduceVisemes(const ReductionProblem& problem, const ReductionOp
         result.curve.push_back(toGrouping(curve[e], units, restUnits.restUnit));
     // More groups than units: nothing can be split further (the target check above excludes m).
     result.curve.resize(static_cast<std::size_t>(m), Grouping{kInfiniteCost, kInfiniteCost, true, {}, {}});
-    if (!result.best().feasible()) throwInfeasible();
+    if (!result.best().feasible())
+        throwInfeasibleTarget(keyUnits(problem.constraints, n, problem.rest), m, "reduction constraints");
     if (progress) progress(1.0);
     return result;
 }

@@ -117,6 +117,13 @@ ReductionResult reduceVisemes(const ReductionProblem& problem, const ReductionOp
                               const ProgressCallback& progress = {});
 ReductionResult reduceVisemes(const ReductionProblem& problem, const ProgressCallback& progress = {});
 
+// The constraint units of n visemes with their group limits counted in keys, as the user gives m:
+// under the rest-free model (rest.free) the rest is a group beyond the m keys, which a viseme may join
+// unless it is pinned. For feasibility checks and throwInfeasibleTarget before a run.
+ConstraintUnits keyUnits(const ReductionConstraints& constraints, int n, const RestPose& rest,
+                         std::span<const std::string> visemeNames = {},
+                         std::string_view where = "constraints");
+
 // The frequency-weighted mean of the members (eq. 19). A group whose frequencies are all zero
 // contributes nothing to the cost; its merged shape is the plain mean.
 std::vector<Vec3> mergeGroup(const ShapeView& shapes, std::span<const double> frequencies,

@@ -132,6 +132,29 @@ TEST_F(AvatarCli, TheRestIsFreeSoSilenceMovesNothingAndKeepsItsTarget) {
     ASSERT_EQ(shape.size(), out.set.neutral.positions.size());
     for (std::size_t v = 0; v < shape.size(); ++v) EXPECT_EQ(shape[v], out.set.neutral.positions[v]) << v;
 
+    // Lip closure: viseme_PP keeps a key of its own by default, so it moves as far as it did.
+    EXPECT_EQ(report["closure"]["viseme"], "viseme_PP") << report["closure"].dump();
+    bool ppReported = false;
+    for (const auto& motion : report["viseme_motion"])
+        if (motion["viseme"] == "viseme_PP") {
+            ppReported = true;
+            EXPECT_EQ(motion["key"], "viseme_PP") << motion.dump();
+            EXPECT_NEAR(motion["after_mm"].get<double>(), motion["before_mm"].get<double>(), 1e-6);
+            EXPECT_GT(motion["before_mm"].get<double>(), 1.0);
+        }
+    EXPECT_TRUE(ppReported) << report["viseme_motion"].dump();
+    // --closure none: the optimiser alone rests the fixture's small closure motion.
+    const auto free = test::runCli("avatar reduce " + path("rpm.glb") + " -m 6 --closure none --out " +
+                                   path("free.glb") + " --report " + path("free.json"));
+    ASSERT_EQ(free.exitCode, 0) << free.output;
+    const auto freeReport = nlohmann::json::parse(readFileToString(dir / "free.json"));
+    EXPECT_FALSE(freeReport.contains("closure"));
+    EXPECT_LE(freeReport["cost"].get<double>(), report["cost"].get<double>());
+    const auto unknown = test::runCli("avatar reduce " + path("rpm.glb") +
+                                      " -m 6 --closure viseme_MBP --out " + path("u.glb"));
+    EXPECT_EQ(unknown.exitCode, 3) << unknown.output;
+    EXPECT_NE(unknown.output.find("viseme_MBP"), std::string::npos) << unknown.output;
+
     // --rest key: the model before issue 29, silence in a key.
     const auto keyed = test::runCli("avatar reduce " + path("rpm.glb") + " -m 6 --rest key --out " +
                                     path("keyed.glb") + " --report " + path("keyed.json"));

@@ -101,6 +101,7 @@ TEST_F(AvatarSpeechTest, ReducedFileGivesTheSameFaceAsReducingInMemory) {
     ReduceSettings settings;
     settings.target = 4;
     settings.rest = RestChoice::Free;
+    settings.closure = kClosureAuto; // viseme_PP keeps a key of its own, as `avatar reduce` defaults
     writeFileAtomically(
         dir / "reduced.glb",
         reduceAvatar(doc, scan, defaultAvatarFrequencies(scan, options.phonemeTable), settings, {}).glb);
