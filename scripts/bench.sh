@@ -145,3 +145,4 @@ PY
 fi
 
 ./scripts/bench-say.sh
+./scripts/bench-say-avatar.sh

@@ -193,7 +193,9 @@ int runSay(const SayOptions& o) {
     else
         project = loadProject(o.project);
     const std::string where = avatar ? o.avatar : o.project;
-    const SpeechFaces faces = avatar ? avatar->faces : projectSpeechFaces(project, map ? &*map : nullptr);
+    // Moved, not copied, into the tracks below: an avatar's keys are the size of its meshes.
+    SpeechFaces faces =
+        avatar ? std::move(avatar->faces) : projectSpeechFaces(project, map ? &*map : nullptr);
     // glTF lengths are metres; a project of mesh files has no unit.
     const DisplacementUnit unit =
         avatar || project.avatar.isSet() ? millimetresFromMetres() : DisplacementUnit{};
@@ -203,8 +205,8 @@ int runSay(const SayOptions& o) {
     const Utterance utterance = speak(o, *synthesizer, wav ? &*wav : nullptr);
 
     const PlaybackSettings settings{*interpolation};
-    const FaceTrack full(faces.full, utterance.phonemes, settings, where);
-    const FaceTrack reduced(faces.reduced, utterance.phonemes, settings, where);
+    const FaceTrack full(std::move(faces.full), utterance.phonemes, settings, where);
+    const FaceTrack reduced(std::move(faces.reduced), utterance.phonemes, settings, where);
     const UtteranceError error = measureUtteranceError(full, reduced, faces.weights, o.fps);
     const DisplacementError displacement =
         measureDisplacementError(full, reduced, faces.weights, o.fps, unit);
@@ -245,7 +247,7 @@ int runSay(const SayOptions& o) {
         glb = speakingAvatarGlb(*avatar, avatar->reducedFace ? reduced : full, o.fps);
     } else if (!o.glb.empty() || !o.html.empty()) {
         const GltfMorphAnimation animation = gltfAnimationOf(reduced, o.fps);
-        glb = formatGlb(faces.reduced, &animation);
+        glb = formatGlb(reduced.model(), &animation);
     }
     if (!o.glb.empty()) writeFileAtomically(o.glb, glb);
     if (!o.html.empty()) {
@@ -258,7 +260,7 @@ int runSay(const SayOptions& o) {
     writeFileAtomically(o.out, trackText);
     if (!o.quiet) {
         if (avatar) std::printf("%s: frequencies %s\n", o.avatar.c_str(), avatar->frequencies.c_str());
-        printSummary(track, faces.reduced.keys.size(), faces.full.keys.size());
+        printSummary(track, reduced.model().keys.size(), full.model().keys.size());
     }
     for (const auto& [symbol, count] : synthesizer->skippedSymbols())
         std::fprintf(stderr,

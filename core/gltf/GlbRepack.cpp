@@ -93,6 +93,13 @@ int GlbRepack::addAccessor(Json accessor) {
     return static_cast<int>(json["accessors"].size()) - 1;
 }
 
+std::size_t GlbRepack::binBound() const {
+    std::size_t bound = 0;
+    for (const GltfBuffer& b : doc_.buffers) bound += b.length;
+    for (const std::string& bytes : newViews_) bound += bytes.size();
+    return bound + 4 * (arraySize(json, "bufferViews") + 1); // alignment padding
+}
+
 void GlbRepack::embedExternalImages() {
     const auto images = json.find("images");
     if (images == json.end() || !images->is_array()) return;
@@ -158,6 +165,7 @@ std::string GlbRepack::finish(RepackStats* stats) {
     std::vector<int> placeholderIndex(doc_.buffers.size(), -1);
     Json buffers = Json::array({Json{{"byteLength", 0}}});
     std::string bin;
+    bin.reserve(binBound()); // one allocation: appending a 15 MB chunk by doubling touched 2.5x its size
     const auto placeholder = [&](int buffer) {
         if (placeholderIndex[static_cast<std::size_t>(buffer)] < 0) {
             placeholderIndex[static_cast<std::size_t>(buffer)] = static_cast<int>(buffers.size());

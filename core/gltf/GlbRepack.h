@@ -38,6 +38,7 @@ class GlbRepack {
 
   private:
     void embedExternalImages();
+    std::size_t binBound() const; // at least the BIN chunk's size: every input buffer and new view
     const GltfDocument& doc_;
     std::size_t originalViews_ = 0;
     std::vector<std::string> newViews_; // bytes of views originalViews_, originalViews_ + 1, ...
