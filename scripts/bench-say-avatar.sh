@@ -21,12 +21,8 @@ import os, statistics, subprocess, sys
 runs, cli, out = int(sys.argv[1]), sys.argv[2], sys.argv[3]
 sentence = "The quick brown fox jumps over the lazy sleeping dog"  # 10 words
 
-def cpu_seconds(args):
-    process = subprocess.Popen(args, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
-    _, status, usage = os.wait4(process.pid, 0)
-    if status != 0:
-        sys.exit("failed: %s\n%s" % (" ".join(args), process.stderr.read().decode()))
-    return usage.ru_utime + usage.ru_stime
+sys.path.insert(0, "scripts")
+from process_cpu import cpu_seconds
 
 def line(values):
     return "min %.1f ms, median %.1f ms, max %.1f ms" % tuple(1000 * v for v in

@@ -18,12 +18,8 @@ import os, statistics, subprocess, sys
 runs, cli, out = int(sys.argv[1]), sys.argv[2], sys.argv[3]
 paragraph = open(os.path.join(out, "paragraph.txt")).read().strip()
 
-def cpu_seconds(args):
-    process = subprocess.Popen(args, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
-    _, status, usage = os.wait4(process.pid, 0)
-    if status != 0:
-        sys.exit("failed: %s\n%s" % (" ".join(args), process.stderr.read().decode()))
-    return usage.ru_utime + usage.ru_stime
+sys.path.insert(0, "scripts")
+from process_cpu import cpu_seconds
 
 say = [cli, "say", paragraph, "--project", "assets/sample/sample.vlproj", "--out", out + "/track.json",
        "--wav", out + "/audio.wav", "--glb", out + "/anim.glb", "--quiet"]
