@@ -14,6 +14,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include <ctime>
+
 #include <algorithm>
 #include <map>
 #include <random>
@@ -179,6 +181,52 @@ void restModelCases(benchmark::internal::Benchmark* b) {
 }
 BENCHMARK_CAPTURE(BM_ReduceArpabetRest, keyed, false)->Apply(restModelCases);
 BENCHMARK_CAPTURE(BM_ReduceArpabetRest, rest_free, true)->Apply(restModelCases);
+
+// The same comparison interleaved: each iteration solves the keyed model, then the rest-free one, and
+// the ratio of their CPU times is taken per iteration, so a change of the machine's speed between
+// them moves both sides (these machines are shared). Counters: keyed_ms, free_ms and ratio, with
+// min/median/max over the repetitions. Goal (issue 29): median ratio <= 1.2 at n = 16..40.
+double processCpuMs() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return 1e3 * static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_nsec);
+}
+void BM_RestFreeRatio(benchmark::State& state) {
+    const int n = static_cast<int>(state.range(0));
+    const Instance& inst = arpabetInstance(n);
+    vl::ReductionOptions options;
+    options.timeLimitSeconds = 60;
+    double keyedMs = 0, freeMs = 0;
+    bool proved = true;
+    for (auto _ : state) {
+        for (const bool restFree : {false, true}) {
+            const vl::RestPose rest{restFree, 0, inst.neutral}; // viseme 0 is sil
+            const double start = processCpuMs();
+            auto result =
+                vl::reduceVisemes({inst.shapes, inst.frequencies, inst.weights, 10, {}, rest}, options);
+            (restFree ? freeMs : keyedMs) += processCpuMs() - start;
+            proved = proved && result.best().optimal;
+            benchmark::DoNotOptimize(result);
+        }
+    }
+    state.counters["keyed_ms"] = keyedMs / static_cast<double>(state.iterations());
+    state.counters["free_ms"] = freeMs / static_cast<double>(state.iterations());
+    state.counters["ratio"] = keyedMs > 0 ? freeMs / keyedMs : 0;
+    state.SetLabel("arpabet n=" + std::to_string(n) + " m=10" + (proved ? " proved" : " NOT proved"));
+}
+BENCHMARK(BM_RestFreeRatio)
+    ->Arg(16)
+    ->Arg(20)
+    ->Arg(24)
+    ->Arg(32)
+    ->Arg(40)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(5)
+    ->Repetitions(7)
+    ->ComputeStatistics("min",
+                        [](const std::vector<double>& v) { return *std::min_element(v.begin(), v.end()); })
+    ->ComputeStatistics("max",
+                        [](const std::vector<double>& v) { return *std::max_element(v.begin(), v.end()); });
 
 // The inputs of `visemelab reduce` on the bundled sample: the 16 OBJ files, the phoneme table and
 // the map, read as the CLI reads them.
