@@ -39,11 +39,14 @@ function morphMeshes(root) {
 }
 
 // An independent statement of which target a key drives: by exact name, else the member's own name,
-// else the merged target whose '+'-joined name holds a member.
+// else the target the mesh's extras.targetAliases give a member (merged names drop the members'
+// shared prefix: "viseme_PP+FF"), else the merged target whose '+'-joined name holds a member.
 function expectedTarget(mesh, key) {
   const dict = mesh.morphTargetDictionary;
   if (key.name in dict) return dict[key.name];
   for (const m of key.members) if (m in dict) return dict[m];
+  const aliases = mesh.userData.targetAliases || (mesh.parent && mesh.parent.userData.targetAliases) || {};
+  for (const m of [key.name, ...key.members]) if (m in aliases) return aliases[m];
   for (const [name, index] of Object.entries(dict)) if (name.split('+').some((p) => key.members.includes(p))) return index;
   return -1;
 }
