@@ -98,10 +98,17 @@ struct MeshPlan {
     std::vector<int> keyTarget;                    // per key: its (first) target after writing, or -1
 };
 
-// The written name of every key (core/gltf/MergedNames.h), unique among the targets kept as they are
-// on every mesh carrying visemes, so that one key has one name on all of them.
-std::vector<std::string> keyTargetNames(const AvatarScan& scan, const KeyGrouping& grouping,
-                                        const ReducedModel& model) {
+// The name every key is recorded under. Merged names: its target's name (core/gltf/MergedNames.h),
+// unique among the targets kept as they are on every mesh carrying visemes, so that one key has one
+// name on all of them. Original names: no target carries the key's name, which stays the model's
+// (members joined by '+'), so that speech read back from the file names keys as the reduction did.
+std::vector<std::string> recordedKeyNames(const AvatarScan& scan, const KeyGrouping& grouping,
+                                          const ReducedModel& model, AvatarNames names) {
+    if (names == AvatarNames::Original) {
+        std::vector<std::string> out;
+        for (const KeyMesh& key : model.keys) out.push_back(key.name);
+        return out;
+    }
     std::vector<std::string> kept;
     for (const AvatarMesh& mesh : scan.meshes)
         for (const AvatarTarget& t : mesh.targets)
@@ -296,7 +303,7 @@ std::string write(const GltfDocument& doc, const AvatarScan& scan, const Reduced
     noteStorage(doc, s.notes);
 
     // Plans first, so that a --max-targets refusal names every mesh over the cap before anything is done.
-    const std::vector<std::string> keyNames = keyTargetNames(scan, grouping, model);
+    const std::vector<std::string> keyNames = recordedKeyNames(scan, grouping, model, options.names);
     std::vector<MeshPlan> plans(scan.meshes.size());
     std::string overCap;
     for (const AvatarMesh& mesh : scan.meshes) {
