@@ -89,6 +89,19 @@ for (const blend of ['linear', 'cubic', 'dominance']) {
   if (new player.VisemePlayer(reduced.scene, track).face !== 'reduced') fail(`${blend}: auto did not pick the reduced face`);
   if (new player.VisemePlayer(original.scene, track).face !== 'full') fail(`${blend}: auto did not pick the full face`);
 }
+// The merged-name avatar as three.js loads it: names Blender keeps whole (<= 63 bytes), and every
+// original viseme name resolving through the mesh's extras.targetAliases.
+for (const mesh of morphMeshes(merged.scene)) {
+  for (const name of Object.keys(mesh.morphTargetDictionary))
+    if (Buffer.byteLength(name, 'utf8') > 63) fail(`merged target name over 63 bytes: ${name}`);
+  const aliases = mesh.userData.targetAliases || (mesh.parent && mesh.parent.userData.targetAliases);
+  if (!aliases || !Object.keys(aliases).length) { fail(`${mesh.name}: no targetAliases`); continue; }
+  for (const [name, target] of Object.entries(aliases)) {
+    checks++;
+    if (!(target >= 0 && target < mesh.morphTargetInfluences.length)) fail(`${mesh.name}: alias ${name} -> ${target}`);
+    if (player.targetOfKey(mesh, { name, members: [name] }) !== target) fail(`${mesh.name}: ${name} does not resolve to ${target}`);
+  }
+}
 // Spellings: every Oculus name in the forms players meet.
 for (const [name, canonical] of [['viseme_aa', 'aa'], ['viseme_I', 'ih'], ['O', 'oh'], ['viseme_U', 'ou'], ['PP', 'PP'], ['jawOpen', null]])
   if (player.oculusVisemeOf(name) !== canonical) fail(`oculusVisemeOf(${name}) = ${player.oculusVisemeOf(name)}`);
