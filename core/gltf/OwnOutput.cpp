@@ -180,14 +180,19 @@ OwnOutput recogniseOwnOutput(const GltfDocument& doc) {
         own.notes.push_back("not read as VisemeLab's output");
         return own;
     }
+    readOwnMeshes(doc, own);
+    if (!own.recognised)
+        own.notes.push_back("no mesh lists its keys (extras.visemeKeys): not read as VisemeLab's output");
+    return own;
+}
+
+void readOwnMeshes(const GltfDocument& doc, OwnOutput& own) {
+    own.meshes.clear();
     const Json* meshes = field(doc.json, "meshes");
     for (std::size_t m = 0; meshes && meshes->is_array() && m < meshes->size() && m < doc.model.meshes.size();
          ++m)
         readMesh(doc, m, own);
     own.recognised = !own.meshes.empty();
-    if (!own.recognised)
-        own.notes.push_back("no mesh lists its keys (extras.visemeKeys): not read as VisemeLab's output");
-    return own;
 }
 
 std::string describeOwnOutput(const OwnOutput& own) {

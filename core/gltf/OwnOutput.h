@@ -41,6 +41,9 @@ struct OwnOutput {
 };
 
 OwnOutput recogniseOwnOutput(const GltfDocument& doc);
+// The meshes' key tables read against keys already known (`own.keys`, `own.mergedNames`), e.g. those
+// of a reduction just written, whatever the document's root extras hold; sets `recognised`.
+void readOwnMeshes(const GltfDocument& doc, OwnOutput& own);
 
 // "reduced by VisemeLab: 6 keys from 15 visemes (names merged)".
 std::string describeOwnOutput(const OwnOutput& own);

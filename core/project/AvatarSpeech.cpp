@@ -165,8 +165,18 @@ AvatarSpeech avatarSpeech(const std::filesystem::path& avatar, const AvatarSpeec
         speech.faces.reduced = speech.faces.full;
         speech.animated = doc;
     }
-    speech.drives = speech.reducedFace ? reducedDrives(*speech.animated, recogniseOwnOutput(*speech.animated))
-                                       : visemeDrives(scan, speech.faces.full);
+    if (speech.reducedFace) {
+        // The key tables of the reduced avatar, read against the reduced face's keys (whatever its root
+        // extras hold: a document whose extras are not an object has no extras.visemelab).
+        OwnOutput own;
+        for (const KeyMesh& key : speech.faces.reduced.keys)
+            own.keys.push_back({key.name, key.members, key.frequency});
+        own.mergedNames = recogniseOwnOutput(*speech.animated).mergedNames;
+        readOwnMeshes(*speech.animated, own);
+        speech.drives = reducedDrives(*speech.animated, own);
+    } else {
+        speech.drives = visemeDrives(scan, speech.faces.full);
+    }
     return speech;
 }
 

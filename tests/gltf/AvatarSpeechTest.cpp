@@ -236,6 +236,24 @@ TEST_F(AvatarSpeechTest, AReducedFileWithHostileExtrasIsAClearError) {
         {"hostile.glb", "/extras/visemelab/keys/0", "carried by no target"});
 }
 
+TEST_F(AvatarSpeechTest, ReducedInMemoryDrivesItsKeysWhateverTheRootExtrasHold) {
+    // Root extras that are not an object: the writer cannot add extras.visemelab, the meshes still
+    // carry their key tables, and speech reduced in memory drives them.
+    writeFileAtomically(dir / "odd.glb", test::editGlb(test::rpmLikeAvatar(), [](auto& j) {
+                            j["extras"] = {1, 2};
+                        }));
+    AvatarSpeechOptions options;
+    options.phonemeTable = test::fixturePhonemeTable();
+    options.reduceTo = 4;
+    const AvatarSpeech speech = avatarSpeech(dir / "odd.glb", options);
+    EXPECT_FALSE(speech.animated->json["extras"].is_object());
+    ASSERT_EQ(speech.drives.size(), 4u);
+    for (const MeshDrive& drive : speech.drives) {
+        std::set<int> keys(drive.keyOfTarget.begin(), drive.keyOfTarget.end());
+        EXPECT_TRUE(keys.count(0) && keys.count(3)) << drive.mesh;
+    }
+}
+
 TEST_F(AvatarSpeechTest, RhubarbMapSpeaksOnOculusNames) {
     AvatarSpeechOptions options;
     options.phonemeTable = test::fixturePhonemeTable();
