@@ -291,6 +291,13 @@ AvatarScan scan(const GltfDocument& doc, const AvatarSelection& selection) {
         }
     for (const std::string& name : scan.visemes)
         if (!oculusVisemeOf(name)) scan.oculusNames = false;
+    // Original names written before extras.visemelab listed the resting visemes: those in no key.
+    if (scan.own.recognised && !scan.own.mergedNames && scan.own.resting.empty())
+        for (const std::string& name : scan.visemes)
+            if (std::none_of(scan.own.keys.begin(), scan.own.keys.end(), [&](const OwnKey& k) {
+                    return std::find(k.members.begin(), k.members.end(), name) != k.members.end();
+                }))
+                scan.own.resting.push_back(name);
 
     // Storage and declared sizes of every primitive, for the report.
     for (AvatarMesh& mesh : scan.meshes)

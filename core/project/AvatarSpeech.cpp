@@ -45,12 +45,14 @@ ReducedModel reducedModelOf(const GltfDocument& reduced, const AvatarScan& scan,
         reduced.fail("/extras/visemelab",
                      "not an avatar written by `visemelab avatar reduce`" +
                          (own.notes.empty() ? std::string() : " (" + own.notes.front() + ")"));
-    std::vector<std::string> reducedVisemes = own.resting, visemes = scan.visemes;
-    for (const OwnKey& key : own.keys)
-        reducedVisemes.insert(reducedVisemes.end(), key.members.begin(), key.members.end());
-    std::sort(reducedVisemes.begin(), reducedVisemes.end());
-    std::sort(visemes.begin(), visemes.end());
-    if (reducedVisemes != visemes || reducedScan.set.vertexCount() != scan.set.vertexCount() ||
+    // Every member and listed resting viseme is one of the avatar's; the avatar's others rest too
+    // (files written before extras.visemelab.resting existed do not list them).
+    std::vector<std::string> named = own.resting;
+    for (const OwnKey& key : own.keys) named.insert(named.end(), key.members.begin(), key.members.end());
+    const bool known = std::all_of(named.begin(), named.end(), [&](const std::string& v) {
+        return std::find(scan.visemes.begin(), scan.visemes.end(), v) != scan.visemes.end();
+    });
+    if (!known || reducedScan.set.vertexCount() != scan.set.vertexCount() ||
         (!own.mergedNames && reducedScan.visemes != scan.visemes))
         reduced.fail("visemes", "is not a reduction of " + scan.source + " (other visemes or vertices)");
     // Which viseme of the reduced file's set carries each key.
