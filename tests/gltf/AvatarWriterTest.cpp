@@ -292,6 +292,12 @@ TEST(AvatarWriter, MaxTargetsRefusesClearly) {
                            {"--max-targets 8", "Wolf3D_Head", "10 morph targets", "6 kept + 4 reduced keys"});
     write.maxTargets = 10;
     EXPECT_NO_THROW(reduceAvatar(in, scan, uniformFrequencies(scan), settings, write));
+    // Resting visemes keep zero targets (their names still resolve): counted and said.
+    settings.rest = RestChoice::Free;
+    settings.restViseme = "viseme_sil";
+    test::expectInputError(
+        [&] { reduceAvatar(in, scan, uniformFrequencies(scan), settings, write); },
+        {"--max-targets 10", "14 morph targets", "6 kept + 4 reduced keys + 4 resting visemes"});
 }
 
 TEST(AvatarWriter, CompressedInputsKeepTheirCompressedPartsAndReadBack) {
