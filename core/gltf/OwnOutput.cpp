@@ -157,10 +157,12 @@ std::size_t OwnOutput::visemeCount() const {
 }
 
 int OwnOutput::keyOfTarget(int mesh, int target) const {
-    for (const OwnMesh& m : meshes)
-        if (m.mesh == mesh)
-            for (std::size_t k = 0; k < m.keyTargets.size(); ++k)
-                if (!m.keyTargets[k].empty() && m.keyTargets[k].front() == target) return static_cast<int>(k);
+    // meshes are in index order: a binary search keeps the scan linear in the file's targets.
+    const auto it = std::lower_bound(meshes.begin(), meshes.end(), mesh,
+                                     [](const OwnMesh& m, int index) { return m.mesh < index; });
+    if (it == meshes.end() || it->mesh != mesh) return -1;
+    for (std::size_t k = 0; k < it->keyTargets.size(); ++k)
+        if (!it->keyTargets[k].empty() && it->keyTargets[k].front() == target) return static_cast<int>(k);
     return -1;
 }
 

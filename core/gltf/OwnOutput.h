@@ -30,7 +30,7 @@ struct OwnOutput {
     bool mergedNames = false; // "merged": one target per key; else every viseme kept its own target
     std::vector<OwnKey> keys;
     std::vector<std::string> resting; // visemes in no key: the rest pose (zero-displacement targets)
-    std::vector<OwnMesh> meshes;      // the meshes with a key table
+    std::vector<OwnMesh> meshes;      // the meshes with a key table, in index order
     std::vector<std::string> notes;   // what was ignored, or why the file is not recognised
 
     // Members of every key and the resting visemes: the visemes of the avatar that was reduced.
