@@ -138,6 +138,15 @@ TEST_F(SayAvatarCli, SaysOnAnAvatarReducedWithMergedNamesByTheNamesItsTargetsHav
     EXPECT_NE(inspect.output.find("reduced by VisemeLab: 4 keys from 15 visemes (names merged)"),
               std::string::npos)
         << inspect.output;
+    ASSERT_EQ(
+        test::runCli("avatar inspect " + path("merged.glb") + " --json " + path("inspect.json")).exitCode, 0);
+    const auto report = nlohmann::json::parse(readFileToString(dir / "inspect.json"));
+    EXPECT_EQ(report["visemelab"]["names"], "merged");
+    EXPECT_EQ(report["visemelab"]["visemes"], 15);
+    ASSERT_EQ(report["visemelab"]["keys"].size(), 4u);
+    std::size_t members = report["visemelab"]["resting"].size();
+    for (const auto& key : report["visemelab"]["keys"]) members += key["members"].size();
+    EXPECT_EQ(members, 15u);
 
     const auto r = say("--avatar " + path("rpm.glb") + " --reduced " + path("merged.glb") + " --out " +
                        path("t.json") + " --glb " + path("anim.glb") + " --blend linear");
