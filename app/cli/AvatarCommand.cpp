@@ -100,17 +100,13 @@ int runAvatarReduce(const AvatarReduceOptions& o) {
     if (o.maxTargets < 0) throwUsage("--max-targets must be >= 1");
     if (!o.targets.empty()) checkGlobPattern(o.targets, "--targets");
     if (o.rest != "free" && o.rest != "key") throwUsage("--rest must be free or key, got '" + o.rest + "'");
-    ReduceSettings settings;
-    settings.target = o.target;
+    ReduceSettings settings = avatarReduceSettings(o.target);
     applyWeightsOption(o.weights, settings);
-    // A morph-target avatar's rest pose (all weights 0) is free: always the rest-free model unless asked.
-    settings.rest = o.rest == "key" ? RestChoice::Key : RestChoice::Free;
+    if (o.rest == "key") settings.rest = RestChoice::Key;
     settings.restViseme = o.restViseme;
     settings.constraints = o.constraints.names();
-    settings.constraintsSource = "--pin/--apart/--together";
     settings.maxErrorMm = o.constraints.maxErrorMm;
     settings.closure = closureSetting(o.constraints);
-    settings.millimetresPerUnit = 1000; // glTF lengths are metres
     if ((o.target > 0) == (o.constraints.maxErrorMm > 0))
         throwUsage("give the number of keys -m M, or --max-error-mm X (which chooses it)");
     AvatarWriteOptions write;

@@ -10,8 +10,9 @@
 // Keys are bound to morph targets on every mesh by the names the file has: the key's own name, else
 // a member's name (an avatar reduced with --names original keeps every viseme under its name, the
 // members of a key sharing one shape), else a merged target whose '+'-joined name or extras list the
-// member (--names merged), else the same Oculus viseme spelled another way (viseme_ prefix or not,
-// I/O/U for ih/oh/ou, any case). Targets no key binds (blinks, brows) are left as they are.
+// member (--names merged: extras.targetAliases maps every original name to its target; merged names
+// are at most 63 bytes, "viseme_PP+FF+TH"), else the same Oculus viseme spelled another way
+// (viseme_ prefix or not, I/O/U for ih/oh/ou, any case). Targets no key binds (blinks, brows) are left as they are.
 
 const OCULUS = ['sil', 'PP', 'FF', 'TH', 'DD', 'kk', 'CH', 'SS', 'nn', 'RR', 'aa', 'E', 'ih', 'oh', 'ou'];
 const SPELLINGS = { i: 'ih', o: 'oh', u: 'ou' };
@@ -136,9 +137,9 @@ function morphMeshes(root) {
 // on the group above it).
 function meshExtras(mesh) {
   const own = mesh.userData || {};
-  if (own.visemeKeys) return own;
+  if (own.visemeKeys || own.targetAliases) return own;
   const parent = mesh.parent && mesh.parent.userData;
-  return parent && parent.visemeKeys ? parent : own;
+  return parent && (parent.visemeKeys || parent.targetAliases) ? parent : own;
 }
 
 // The target index key {name, members} drives on `mesh`, or -1.
@@ -148,8 +149,14 @@ export function targetOfKey(mesh, key) {
   if (has(key.name)) return dict[key.name];
   const members = key.members && key.members.length ? key.members : [key.name];
   for (const m of members) if (has(m)) return dict[m];
-  // --names merged: the target whose key lists the member (extras), or whose name joins it with '+'.
+  // --names merged: the target an original name now resolves to (extras.targetAliases, written by
+  // VisemeLab 2026-11 or later), else the target whose key lists the member (extras), or whose name
+  // joins it with '+'. An alias of a resting viseme points to its zero target.
   const extras = meshExtras(mesh);
+  const aliases = extras.targetAliases || {};
+  for (const name of [key.name, ...members])
+    if (Object.prototype.hasOwnProperty.call(aliases, name) && Number.isInteger(aliases[name]) &&
+        aliases[name] >= 0 && aliases[name] < (mesh.morphTargetInfluences || []).length) return aliases[name];
   for (const vk of extras.visemeKeys || [])
     if (vk.members && vk.targets && vk.targets.length && members.some((m) => vk.members.includes(m))) return vk.targets[0];
   for (const [name, index] of Object.entries(dict))

@@ -60,4 +60,14 @@ AvatarReduction reduceAvatar(const GltfDocument& doc, const AvatarScan& scan,
     return r;
 }
 
+ReduceSettings avatarReduceSettings(int target) {
+    ReduceSettings settings;
+    settings.target = target;
+    settings.rest = RestChoice::Free;
+    settings.closure = kClosureAuto;
+    settings.millimetresPerUnit = 1000; // glTF lengths are metres
+    settings.constraintsSource = "--pin/--apart/--together";
+    return settings;
+}
+
 } // namespace vl

@@ -33,6 +33,11 @@ FrequencySource uniformFrequencies(const AvatarScan& scan);
 FrequencySource defaultAvatarFrequencies(const AvatarScan& scan, const FrequencySource& oculusTable,
                                          std::string* chosen = nullptr);
 
+// What `avatar reduce -m target` and `say --avatar -m target` reduce with unless told otherwise: the
+// rest free (the rest pose of a morph-target avatar, all weights 0, costs nothing), the lips-closed
+// viseme kept as a key of its own (ReduceSettings::closure), lengths in metres (errors in mm).
+ReduceSettings avatarReduceSettings(int target);
+
 struct AvatarReduction {
     ReduceOutcome outcome; // its model: keys over the concatenated geometry, phoneme -> key
     std::string glb;

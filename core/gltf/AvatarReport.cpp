@@ -28,6 +28,40 @@ std::string joined(const std::vector<std::string>& items, const char* separator 
     return out;
 }
 
+// What a file VisemeLab reduced says about itself: each key with its members, the resting visemes,
+// and what of its extras was ignored.
+std::string ownOutputReport(const OwnOutput& own) {
+    std::string out;
+    if (own.recognised) {
+        out += describeOwnOutput(own) + "\n";
+        for (const OwnKey& key : own.keys)
+            out += "  key " + key.name + ": " + joined(key.members, " ") + "\n";
+        if (!own.resting.empty()) out += "  resting (the neutral face): " + joined(own.resting, " ") + "\n";
+    }
+    for (const std::string& note : own.notes) out += "  extras.visemelab: " + note + "\n";
+    return out;
+}
+
+nlohmann::ordered_json ownOutputJson(const OwnOutput& own) {
+    nlohmann::ordered_json keys = nlohmann::ordered_json::array();
+    for (std::size_t k = 0; k < own.keys.size(); ++k) {
+        nlohmann::ordered_json targets = nlohmann::ordered_json::array();
+        for (const OwnMesh& mesh : own.meshes)
+            if (!mesh.keyTargets[k].empty())
+                targets.push_back({{"mesh", mesh.mesh}, {"target", mesh.keyTargets[k].front()}});
+        keys.push_back({{"name", own.keys[k].name},
+                        {"members", own.keys[k].members},
+                        {"frequency", own.keys[k].frequency},
+                        {"targets", targets}});
+    }
+    return {{"recognised", own.recognised},
+            {"names", own.mergedNames ? "merged" : "original"},
+            {"keys", keys},
+            {"visemes", own.visemeCount()},
+            {"resting", own.resting},
+            {"notes", own.notes}};
+}
+
 } // namespace
 
 std::vector<std::string> suggestedPatterns(const AvatarScan& scan) {
@@ -110,6 +144,7 @@ std::string formatAvatarReport(const AvatarScan& scan) {
         if (!patterns.empty()) out += "; targets match --targets '" + joined(patterns, "' or '") + "'";
         out += "\n";
     }
+    out += ownOutputReport(scan.own);
     for (const AvatarMesh& m : scan.meshes) out += formatAvatarMeshReport(m);
     return out;
 }
@@ -125,6 +160,7 @@ nlohmann::ordered_json avatarReportJson(const AvatarScan& scan) {
     j["viseme_triangles"] = scan.set.neutral.triangles.size();
     j["extensions_used"] = scan.extensionsUsed;
     j["extensions_required"] = scan.extensionsRequired;
+    if (scan.own.recognised || !scan.own.notes.empty()) j["visemelab"] = ownOutputJson(scan.own);
     nlohmann::ordered_json meshes = nlohmann::ordered_json::array();
     for (const AvatarMesh& m : scan.meshes) {
         nlohmann::ordered_json mesh{{"index", m.index}, {"name", m.name},

@@ -73,6 +73,30 @@ std::vector<std::string> selectTargets(AvatarMesh& mesh, const AvatarSelection& 
     return keys;
 }
 
+// VisemeLab's merged-name output: its key targets are the visemes, joined across meshes by key.
+std::vector<std::string> selectOwnKeys(AvatarMesh& mesh, const OwnOutput& own,
+                                       const AvatarSelection& selection) {
+    std::vector<std::string> keys(mesh.targets.size());
+    for (std::size_t k = 0; k < mesh.targets.size(); ++k) {
+        AvatarTarget& t = mesh.targets[k];
+        const int key = own.keyOfTarget(mesh.index, static_cast<int>(k));
+        if (key < 0) {
+            t.ignored = own.isResting(t.name) ? "resting viseme of VisemeLab's reduction (moves nothing)"
+                                              : "not a key of VisemeLab's reduction";
+            continue;
+        }
+        const auto& members = own.keys[static_cast<std::size_t>(key)].members;
+        if (!selection.pattern.empty() && !globMatch(selection.pattern, t.name) &&
+            std::none_of(members.begin(), members.end(),
+                         [&](const std::string& m) { return globMatch(selection.pattern, m); })) {
+            t.ignored = "neither it nor its members match '" + selection.pattern + "'";
+            continue;
+        }
+        keys[k] = "key " + std::to_string(key); // not a viseme name: never joins with another spelling
+    }
+    return keys;
+}
+
 // World placement of a primitive's vertices: one matrix, or one per vertex for skinned meshes.
 struct Placement {
     glm::dmat4 node{1.0};
@@ -199,8 +223,13 @@ void checkWorldSpaceBudget(const GltfDocument& doc, DecodedAccessors& decoded, c
 AvatarScan scan(const GltfDocument& doc, const AvatarSelection& selection) {
     AvatarScan scan;
     scan.source = doc.source;
-    scan.selection =
-        selection.pattern.empty() ? "Oculus viseme names" : "pattern '" + selection.pattern + "'";
+    scan.own = recogniseOwnOutput(doc);
+    const bool ownKeys = scan.own.recognised && scan.own.mergedNames;
+    scan.selection = ownKeys                     ? (selection.pattern.empty()
+                                                        ? std::string("keys of VisemeLab's reduction")
+                                                        : "keys of VisemeLab's reduction matching '" + selection.pattern + "'")
+                     : selection.pattern.empty() ? "Oculus viseme names"
+                                                 : "pattern '" + selection.pattern + "'";
     scan.extensionsUsed = doc.model.extensionsUsed;
     scan.extensionsRequired = doc.model.extensionsRequired;
     const SceneInstances scene = sceneInstances(doc);
@@ -228,7 +257,8 @@ AvatarScan scan(const GltfDocument& doc, const AvatarSelection& selection) {
                                                             std::to_string(gm.primitives[0].targets.size()));
         for (const TargetName& name : meshTargetNames(doc, mesh.index))
             mesh.targets.push_back({name.name, name.named, -1, ""});
-        keysOfMesh.push_back(selectTargets(mesh, selection));
+        keysOfMesh.push_back(ownKeys ? selectOwnKeys(mesh, scan.own, selection)
+                                     : selectTargets(mesh, selection));
         for (const std::string& key : keysOfMesh.back())
             if (!key.empty() && std::find(keyOrder.begin(), keyOrder.end(), key) == keyOrder.end())
                 keyOrder.push_back(key);
@@ -261,6 +291,13 @@ AvatarScan scan(const GltfDocument& doc, const AvatarSelection& selection) {
         }
     for (const std::string& name : scan.visemes)
         if (!oculusVisemeOf(name)) scan.oculusNames = false;
+    // Original names written before extras.visemelab listed the resting visemes: those in no key.
+    if (scan.own.recognised && !scan.own.mergedNames && scan.own.resting.empty())
+        for (const std::string& name : scan.visemes)
+            if (std::none_of(scan.own.keys.begin(), scan.own.keys.end(), [&](const OwnKey& k) {
+                    return std::find(k.members.begin(), k.members.end(), name) != k.members.end();
+                }))
+                scan.own.resting.push_back(name);
 
     // Storage and declared sizes of every primitive, for the report.
     for (AvatarMesh& mesh : scan.meshes)

@@ -9,6 +9,7 @@
 // transforms, or rest-pose skinning for skinned meshes: core/gltf/SceneGraph); a mesh that lacks a
 // viseme contributes zero displacement to it. Per-vertex weights and costs are measured on that
 // geometry; the writer never bakes the transforms into its output.
+#include "core/gltf/OwnOutput.h"
 #include "core/reduce/VisemeSet.h"
 
 #include <string>
@@ -72,6 +73,10 @@ struct AvatarScan {
     MeshData context; // with AvatarSelection::context: the other meshes, world space (rest pose)
     std::vector<std::string> extensionsUsed, extensionsRequired;
     std::size_t fileVertices = 0; // POSITION counts of every primitive of every mesh
+    // A file VisemeLab reduced. With merged names its visemes are the key targets (their names or
+    // members matching the pattern, when one is given); with original names every viseme kept its
+    // target, selected as usual.
+    OwnOutput own;
 };
 
 // The key that joins a target name across meshes: its Oculus spelling, else the lower-case name.

@@ -7,6 +7,7 @@
 #include "core/gltf/GlbRepack.h"
 #include "core/gltf/GltfDocument.h"
 #include "core/gltf/GltfReferences.h"
+#include "core/gltf/MergedNames.h"
 #include "core/gltf/MorphRemap.h"
 #include "core/reduce/Reduction.h"
 
@@ -97,8 +98,30 @@ struct MeshPlan {
     std::vector<int> keyTarget;                    // per key: its (first) target after writing, or -1
 };
 
+// The name every key is recorded under. Merged names: its target's name (core/gltf/MergedNames.h),
+// unique among the targets kept as they are on every mesh carrying visemes, so that one key has one
+// name on all of them. Original names: no target carries the key's name, which stays the model's
+// (members joined by '+'), so that speech read back from the file names keys as the reduction did.
+std::vector<std::string> recordedKeyNames(const AvatarScan& scan, const KeyGrouping& grouping,
+                                          const ReducedModel& model, AvatarNames names) {
+    if (names == AvatarNames::Original) {
+        std::vector<std::string> out;
+        for (const KeyMesh& key : model.keys) out.push_back(key.name);
+        return out;
+    }
+    std::vector<std::string> kept;
+    for (const AvatarMesh& mesh : scan.meshes)
+        for (const AvatarTarget& t : mesh.targets)
+            if (mesh.carriesVisemes &&
+                (t.viseme < 0 || grouping.groupOf[static_cast<std::size_t>(t.viseme)] == kRestGroup))
+                kept.push_back(t.name);
+    std::vector<std::vector<std::string>> members;
+    for (const KeyMesh& key : model.keys) members.push_back(key.members);
+    return mergedTargetNames(members, kept);
+}
+
 MeshPlan planMesh(const AvatarMesh& mesh, const KeyGrouping& grouping, const ReducedModel& model,
-                  AvatarNames names) {
+                  const std::vector<std::string>& keyNames, AvatarNames names) {
     MeshPlan plan;
     plan.members.resize(model.keys.size());
     plan.keyTarget.assign(model.keys.size(), -1);
@@ -117,7 +140,7 @@ MeshPlan planMesh(const AvatarMesh& mesh, const KeyGrouping& grouping, const Red
         int& target = plan.keyTarget[static_cast<std::size_t>(key)];
         if (target < 0) {
             target = static_cast<int>(plan.names.size());
-            plan.names.push_back(model.keys[static_cast<std::size_t>(key)].name);
+            plan.names.push_back(keyNames[static_cast<std::size_t>(key)]);
         }
         plan.remap[k] = target;
     }
@@ -168,8 +191,23 @@ Json* extrasObject(Json& object) {
     return object["extras"].is_object() ? &object["extras"] : nullptr;
 }
 
-void writeMeshExtras(Json& meshJson, const MeshPlan& plan, const ReducedModel& model, AvatarNames names,
-                     std::vector<std::string>& notes) {
+// Every viseme name that stood for a target of this mesh (its own spelling and the set's) -> the target
+// that now carries it: a player resolves original names through it (a resting viseme: its zero target).
+Json targetAliases(const AvatarMesh& mesh, const MeshPlan& plan, const std::vector<std::string>& visemes) {
+    Json aliases = Json::object();
+    for (std::size_t k = 0; k < mesh.targets.size(); ++k) {
+        const AvatarTarget& t = mesh.targets[k];
+        if (t.viseme < 0) continue;
+        aliases[t.name] = plan.remap[k];
+        const std::string& setName = visemes[static_cast<std::size_t>(t.viseme)];
+        if (!aliases.contains(setName)) aliases[setName] = plan.remap[k];
+    }
+    return aliases;
+}
+
+void writeMeshExtras(Json& meshJson, const AvatarMesh& mesh, const MeshPlan& plan, const ReducedModel& model,
+                     const std::vector<std::string>& keyNames, const std::vector<std::string>& visemes,
+                     AvatarNames names, std::vector<std::string>& notes) {
     Json* extras = extrasObject(meshJson);
     if (!extras) {
         notes.push_back("mesh '" + meshJson.value("name", std::string()) +
@@ -190,24 +228,32 @@ void writeMeshExtras(Json& meshJson, const MeshPlan& plan, const ReducedModel& m
             if (names == AvatarNames::Original) targets.push_back(plan.remap[k]);
         if (names == AvatarNames::Merged) targets.push_back(plan.keyTarget[g]);
         keys.push_back({{"key", g},
-                        {"name", model.keys[g].name},
+                        {"name", keyNames[g]},
                         {"members", model.keys[g].members},
                         {"frequency", model.keys[g].frequency},
                         {"targets", targets}});
     }
     (*extras)["phonemeToTarget"] = phonemeToTarget;
     (*extras)["visemeKeys"] = keys;
+    (*extras)["targetAliases"] = targetAliases(mesh, plan, visemes);
 }
 
-Json rootExtras(const ReducedModel& model, AvatarNames names, const std::vector<AvatarMeshChange>& meshes) {
+Json rootExtras(const ReducedModel& model, const std::vector<std::string>& keyNames, AvatarNames names,
+                const std::vector<AvatarMeshChange>& meshes) {
     Json keys = Json::array();
-    for (const KeyMesh& key : model.keys)
-        keys.push_back({{"name", key.name}, {"members", key.members}, {"frequency", key.frequency}});
+    for (std::size_t g = 0; g < model.keys.size(); ++g)
+        keys.push_back({{"name", keyNames[g]},
+                        {"members", model.keys[g].members},
+                        {"frequency", model.keys[g].frequency}});
     Json phonemeToKey = Json::object(), phonemeFrequencies = Json::object(), touched = Json::array();
     for (const auto& [phoneme, key] : model.phonemeToKey) phonemeToKey[phoneme] = key;
     for (const auto& [phoneme, f] : model.phonemeFrequencies) phonemeFrequencies[phoneme] = f;
     for (const AvatarMeshChange& m : meshes) touched.push_back(m.mesh);
-    Json out{{"version", 1}, {"names", toString(names)}, {"keys", keys}, {"phonemeToKey", phonemeToKey}};
+    Json out{{"version", 1},
+             {"names", toString(names)},
+             {"keys", keys},
+             {"resting", model.resting},
+             {"phonemeToKey", phonemeToKey}};
     if (!model.phonemeFrequencies.empty()) out["phonemeFrequencies"] = phonemeFrequencies;
     out["meshes"] = touched;
     return out;
@@ -257,12 +303,13 @@ std::string write(const GltfDocument& doc, const AvatarScan& scan, const Reduced
     noteStorage(doc, s.notes);
 
     // Plans first, so that a --max-targets refusal names every mesh over the cap before anything is done.
+    const std::vector<std::string> keyNames = recordedKeyNames(scan, grouping, model, options.names);
     std::vector<MeshPlan> plans(scan.meshes.size());
     std::string overCap;
     for (const AvatarMesh& mesh : scan.meshes) {
         if (!mesh.carriesVisemes) continue;
         MeshPlan& plan = plans[static_cast<std::size_t>(mesh.index)];
-        plan = planMesh(mesh, grouping, model, options.names);
+        plan = planMesh(mesh, grouping, model, keyNames, options.names);
         AvatarMeshChange change{mesh.index, mesh.name, mesh.targets.size(), plan.names.size(), 0, 0};
         for (const AvatarTarget& t : mesh.targets) change.visemeTargets += t.viseme >= 0;
         for (const auto& m : plan.members) change.keys += !m.empty();
@@ -270,11 +317,17 @@ std::string write(const GltfDocument& doc, const AvatarScan& scan, const Reduced
         if (options.maxTargets <= 0 || plan.names.size() <= static_cast<std::size_t>(options.maxTargets))
             continue;
         const bool original = options.names == AvatarNames::Original;
-        overCap += std::string(overCap.empty() ? "" : "; ") + "mesh '" + mesh.name + "' would have " +
-                   std::to_string(plan.names.size()) + " morph targets (" +
-                   std::to_string(mesh.targets.size() - change.visemeTargets) + " kept + " +
-                   std::to_string(original ? change.visemeTargets : change.keys) +
-                   (original ? " viseme names kept by --names original)" : " reduced keys)");
+        std::size_t resting = 0;
+        for (const AvatarTarget& t : mesh.targets)
+            resting += t.viseme >= 0 && grouping.groupOf[static_cast<std::size_t>(t.viseme)] == kRestGroup;
+        overCap +=
+            std::string(overCap.empty() ? "" : "; ") + "mesh '" + mesh.name + "' would have " +
+            std::to_string(plan.names.size()) + " morph targets (" +
+            std::to_string(mesh.targets.size() - change.visemeTargets) + " kept + " +
+            (original ? std::to_string(change.visemeTargets) + " viseme names kept by --names original)"
+                      : std::to_string(change.keys) + " reduced keys" +
+                            (resting ? " + " + std::to_string(resting) + " resting visemes (zero targets))"
+                                     : std::string(")")));
     }
     if (!overCap.empty())
         throwInputError("--max-targets " + std::to_string(options.maxTargets),
@@ -324,14 +377,14 @@ std::string write(const GltfDocument& doc, const AvatarScan& scan, const Reduced
                 primJson["extras"].contains("targetNames"))
                 primJson["extras"]["targetNames"] = plan.names;
         }
-        writeMeshExtras(meshJson, plan, model, options.names, s.notes);
+        writeMeshExtras(meshJson, mesh, plan, model, keyNames, scan.visemes, options.names, s.notes);
         if (options.names == AvatarNames::Merged) remaps[mesh.index] = plan.remap;
     }
     if (!remaps.empty()) remapMorphTargets(out, reader, remaps);
 
     if (!out.json.contains("extras")) out.json["extras"] = Json::object();
     if (out.json["extras"].is_object())
-        out.json["extras"]["visemelab"] = rootExtras(model, options.names, s.meshes);
+        out.json["extras"]["visemelab"] = rootExtras(model, keyNames, options.names, s.meshes);
     else
         s.notes.push_back(
             "the document's extras are not an object: the key table is only in the meshes' extras");

@@ -16,12 +16,16 @@
 //   index; the members of a group point to one shared accessor. Weights, animations and VRM binds
 //   are untouched.
 // - AvatarNames::Merged: one target per key present on the mesh, at the place of its first member,
-//   named by its members joined with '+' (a key of one member keeps its name). Target indices after
-//   it shift: mesh.weights, node.weights, morph-weight animations (a key's weight is the sum of its
-//   members'), VRM 0.x blendShapeMaster binds and VRM 1.0 morphTargetBinds are remapped.
+//   named by core/gltf/MergedNames.h (at most 63 bytes, e.g. "viseme_PP+FF+TH"; a key of one member
+//   keeps its name). Target indices after it shift: mesh.weights, node.weights, morph-weight
+//   animations (a key's weight is the sum of its members'), VRM 0.x blendShapeMaster binds and
+//   VRM 1.0 morphTargetBinds are remapped.
+// In both modes a resting viseme (in no key) keeps a zero-displacement target under its own name.
 // mesh.extras.targetNames follow the targets; mesh.extras gain "phonemeToTarget" (phoneme -> target
-// index on this mesh) and "visemeKeys"; the root extras gain "visemelab" (keys with members and
-// frequencies, phoneme -> key, phoneme frequencies).
+// index on this mesh), "visemeKeys" (key, name, members, targets) and "targetAliases" (every original
+// viseme name -> the target carrying it); the root extras gain "visemelab" (keys with the name they
+// are recorded under, members and frequencies, resting visemes, phoneme -> key, phoneme frequencies).
+// core/gltf/OwnOutput.h reads all of it back.
 //
 // Accessors and buffer views that only the replaced targets (or rewritten animations) used are
 // removed and the rest renumbered wherever glTF 2.0, KHR_draco_mesh_compression,

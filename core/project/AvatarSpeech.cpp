@@ -1,7 +1,6 @@
 #include "core/project/AvatarSpeech.h"
 
 #include "core/common/Error.h"
-#include "core/common/JsonParse.h"
 #include "core/gltf/AvatarReduce.h"
 #include "core/gltf/VisemeMapNames.h"
 #include "core/reduce/Weights.h"
@@ -33,57 +32,51 @@ FrequencySource speechFrequencies(const AvatarScan& scan, const AvatarSpeechOpti
     return source;
 }
 
-// The member `key` of an object, or null.
-const Json& member(const Json& object, const char* key) {
-    static const Json none;
-    return object.is_object() && object.contains(key) ? object[key] : none;
-}
-
-std::vector<std::string> requireStrings(const Json& value, const std::string& where,
-                                        const GltfDocument& doc) {
-    if (!value.is_array() || value.empty()) doc.fail(where, "expected a non-empty array of names");
-    std::vector<std::string> names;
-    for (const Json& name : value) {
-        if (!name.is_string()) doc.fail(where, "expected a name");
-        names.push_back(name.get<std::string>());
-    }
-    return names;
-}
-
-// The reduced face of a reduced avatar: its keys as extras.visemelab lists them (the order its meshes'
-// visemeKeys use), each with the geometry of its first member's target (names "original": the
-// members share the key's accessors), over the same concatenated geometry as the avatar's set.
+// The reduced face of a reduced avatar, as VisemeLab's own output reads (core/gltf/OwnOutput.h):
+// its keys in the order extras.visemelab lists them (the order its meshes' visemeKeys use), named as
+// the file names them, each with the geometry of the target that carries it (names "merged": the key
+// target; "original": the first member's, which every member shares), over the same concatenated
+// geometry as the avatar's set.
 ReducedModel reducedModelOf(const GltfDocument& reduced, const AvatarScan& scan, const std::string& targets,
                             const FrequencySource& source) {
-    const Json* root = nullptr;
-    if (reduced.json.contains("extras") && reduced.json["extras"].is_object() &&
-        reduced.json["extras"].contains("visemelab"))
-        root = &reduced.json["extras"]["visemelab"];
-    if (!root || !root->is_object() || !root->contains("keys"))
-        reduced.fail("/extras/visemelab", "missing: not an avatar written by `visemelab avatar reduce`");
-    if (root->value("names", std::string()) != "original")
-        reduced.fail("/extras/visemelab/names", "say reads reduced avatars written with --names original "
-                                                "(the default), where every viseme target keeps its name");
     const AvatarScan reducedScan = scanAvatar(reduced, {targets});
-    if (reducedScan.visemes != scan.visemes || reducedScan.set.vertexCount() != scan.set.vertexCount())
+    const OwnOutput& own = reducedScan.own;
+    if (!own.recognised)
+        reduced.fail("/extras/visemelab",
+                     "not an avatar written by `visemelab avatar reduce`" +
+                         (own.notes.empty() ? std::string() : " (" + own.notes.front() + ")"));
+    // Every member and listed resting viseme is one of the avatar's; the avatar's others rest too
+    // (files written before extras.visemelab.resting existed do not list them).
+    std::vector<std::string> named = own.resting;
+    for (const OwnKey& key : own.keys) named.insert(named.end(), key.members.begin(), key.members.end());
+    const bool known = std::all_of(named.begin(), named.end(), [&](const std::string& v) {
+        return std::find(scan.visemes.begin(), scan.visemes.end(), v) != scan.visemes.end();
+    });
+    if (!known || reducedScan.set.vertexCount() != scan.set.vertexCount() ||
+        (!own.mergedNames && reducedScan.visemes != scan.visemes))
         reduced.fail("visemes", "is not a reduction of " + scan.source + " (other visemes or vertices)");
+    // Which viseme of the reduced file's set carries each key.
+    std::vector<int> carrier(own.keys.size(), -1);
+    for (std::size_t k = 0; k < own.keys.size(); ++k)
+        if (!own.mergedNames) carrier[k] = reducedScan.set.find(own.keys[k].members.front());
+    for (const AvatarMesh& mesh : reducedScan.meshes)
+        for (std::size_t t = 0; own.mergedNames && t < mesh.targets.size(); ++t) {
+            const int key = own.keyOfTarget(mesh.index, static_cast<int>(t));
+            if (key >= 0 && mesh.targets[t].viseme >= 0)
+                carrier[static_cast<std::size_t>(key)] = mesh.targets[t].viseme;
+        }
     ReducedModel model;
     model.neutral = scan.set.neutral;
-    const Json& keys = (*root)["keys"];
-    if (!keys.is_array() || keys.empty())
-        reduced.fail("/extras/visemelab/keys", "expected a non-empty array");
-    for (std::size_t k = 0; k < keys.size(); ++k) {
-        const std::string where = "/extras/visemelab/keys/" + std::to_string(k);
-        if (!keys[k].is_object()) reduced.fail(where, "expected an object");
+    for (std::size_t k = 0; k < own.keys.size(); ++k) {
+        if (carrier[k] < 0)
+            reduced.fail("/extras/visemelab/keys/" + std::to_string(k),
+                         "key '" + own.keys[k].name + "' is carried by no target of the file" +
+                             (targets.empty() ? std::string() : " that --targets '" + targets + "' selects"));
         KeyMesh key;
-        key.members = requireStrings(member(keys[k], "members"), where + "/members", reduced);
-        key.name = mergedKeyName(key.members);
-        if (keys[k].contains("frequency") && keys[k]["frequency"].is_number())
-            key.frequency = keys[k]["frequency"].get<double>();
-        const int first = reducedScan.set.find(key.members.front());
-        if (first < 0)
-            reduced.fail(where + "/members", "'" + key.members.front() + "' is not a viseme of the file");
-        key.positions = reducedScan.set.visemes[static_cast<std::size_t>(first)].positions;
+        key.name = own.keys[k].name;
+        key.members = own.keys[k].members;
+        key.frequency = own.keys[k].frequency;
+        key.positions = reducedScan.set.visemes[static_cast<std::size_t>(carrier[k])].positions;
         model.keys.push_back(std::move(key));
     }
     // The rest-free model: a viseme in no key rests (its target is there, moving nothing).
@@ -97,36 +90,18 @@ ReducedModel reducedModelOf(const GltfDocument& reduced, const AvatarScan& scan,
     return model;
 }
 
-int integerIn(const Json& value, std::size_t size, const GltfDocument& doc, const std::string& where) {
-    if (!value.is_number_integer() || value.get<long long>() < 0 ||
-        value.get<long long>() >= static_cast<long long>(size))
-        doc.fail(where, "expected an index below " + std::to_string(size));
-    return value.get<int>();
-}
-
-// A reduced avatar's meshes: each key drives the first of its targets (mesh.extras.visemeKeys).
-std::vector<MeshDrive> reducedDrives(const GltfDocument& doc, std::size_t keyCount) {
+// A reduced avatar's meshes: each key drives the first of its targets; the other targets of it
+// (names "original": every member) stay at 0.
+std::vector<MeshDrive> reducedDrives(const GltfDocument& doc, const OwnOutput& own) {
     std::vector<MeshDrive> drives;
-    for (std::size_t m = 0; m < doc.model.meshes.size(); ++m) {
-        const Json& mesh = doc.json["meshes"][m];
-        if (!mesh.contains("extras") || !mesh["extras"].is_object() || !mesh["extras"].contains("visemeKeys"))
-            continue;
-        const std::string where = "/meshes/" + std::to_string(m) + "/extras/visemeKeys";
-        const auto& primitives = doc.model.meshes[m].primitives;
+    for (const OwnMesh& mesh : own.meshes) {
+        const auto& primitives = doc.model.meshes[static_cast<std::size_t>(mesh.mesh)].primitives;
         const std::size_t targets = primitives.empty() ? 0 : primitives.front().targets.size();
-        MeshDrive drive{static_cast<int>(m), std::vector<int>(targets, MeshDrive::kDefaultWeight)};
-        const Json& keys = mesh["extras"]["visemeKeys"];
-        if (!keys.is_array()) doc.fail(where, "expected an array");
-        for (std::size_t i = 0; i < keys.size(); ++i) {
-            const std::string at = where + "/" + std::to_string(i);
-            if (!keys[i].is_object() || !keys[i].contains("targets") || !keys[i]["targets"].is_array())
-                doc.fail(at, "expected {key, targets}");
-            const int key = integerIn(member(keys[i], "key"), keyCount, doc, at + "/key");
-            const Json& list = keys[i]["targets"];
-            for (std::size_t j = 0; j < list.size(); ++j)
-                drive.keyOfTarget[static_cast<std::size_t>(integerIn(
-                    list[j], targets, doc, at + "/targets"))] = j == 0 ? key : MeshDrive::kZeroWeight;
-        }
+        MeshDrive drive{mesh.mesh, std::vector<int>(targets, MeshDrive::kDefaultWeight)};
+        for (std::size_t k = 0; k < mesh.keyTargets.size(); ++k)
+            for (std::size_t j = 0; j < mesh.keyTargets[k].size(); ++j)
+                drive.keyOfTarget[static_cast<std::size_t>(mesh.keyTargets[k][j])] =
+                    j == 0 ? static_cast<int>(k) : MeshDrive::kZeroWeight;
         drives.push_back(std::move(drive));
     }
     return drives;
@@ -171,15 +146,10 @@ AvatarSpeech avatarSpeech(const std::filesystem::path& avatar, const AvatarSpeec
     speech.faces.full = unreducedModel(scan.set, visemeFrequencies(source, names), source);
     speech.faces.weights = computeWeights(WeightMode::Uniform, scan.set.neutral);
     if (options.reduceTo > 0 || options.maxErrorMm > 0) {
-        ReduceSettings settings;
-        settings.target = options.reduceTo;
+        ReduceSettings settings = avatarReduceSettings(options.reduceTo); // as `avatar reduce`
         settings.constraints = options.constraints;
-        settings.constraintsSource = "--pin/--apart/--together";
         settings.maxErrorMm = options.maxErrorMm;
         settings.closure = options.closure;
-        settings.millimetresPerUnit = 1000; // glTF lengths are metres
-        settings.rest =
-            RestChoice::Free; // as `avatar reduce`: the rest pose of a morph-target avatar is free
         AvatarReduction r = reduceAvatar(*doc, scan, source, settings, {});
         speech.faces.reduced = std::move(r.outcome.model);
         speech.animated = std::make_shared<const GltfDocument>(
@@ -193,8 +163,18 @@ AvatarSpeech avatarSpeech(const std::filesystem::path& avatar, const AvatarSpeec
         speech.faces.reduced = speech.faces.full;
         speech.animated = doc;
     }
-    speech.drives = speech.reducedFace ? reducedDrives(*speech.animated, speech.faces.reduced.keys.size())
-                                       : visemeDrives(scan, speech.faces.full);
+    if (speech.reducedFace) {
+        // The key tables of the reduced avatar, read against the reduced face's keys (whatever its root
+        // extras hold: a document whose extras are not an object has no extras.visemelab).
+        OwnOutput own;
+        for (const KeyMesh& key : speech.faces.reduced.keys)
+            own.keys.push_back({key.name, key.members, key.frequency});
+        own.mergedNames = recogniseOwnOutput(*speech.animated).mergedNames;
+        readOwnMeshes(*speech.animated, own);
+        speech.drives = reducedDrives(*speech.animated, own);
+    } else {
+        speech.drives = visemeDrives(scan, speech.faces.full);
+    }
     return speech;
 }
 

@@ -51,7 +51,8 @@ struct AvatarSpeech {
 
 // Throws InputError naming the file and element: fewer than 2 visemes, no phoneme -> viseme map
 // (the avatar's names are not Oculus visemes and no map is given), a map naming visemes the avatar
-// lacks, a reduced avatar that is not VisemeLab's reduction of this avatar with names "original".
+// lacks, a reduced avatar that is not VisemeLab's reduction of this avatar (either name mode; read
+// through core/gltf/OwnOutput.h).
 AvatarSpeech avatarSpeech(const std::filesystem::path& avatar, const AvatarSpeechOptions& options);
 
 } // namespace vl

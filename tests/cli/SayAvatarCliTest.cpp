@@ -1,7 +1,9 @@
 // `visemelab project new --avatar` and `visemelab say --avatar`: an avatar speaks without a
 // hand-written project; the animated GLB is the avatar itself.
 #include "core/common/AtomicFile.h"
+#include "core/gltf/AvatarScan.h"
 #include "core/gltf/GltfDocument.h"
+#include "core/gltf/TargetNames.h"
 #include "core/project/Project.h"
 #include "core/speech/TrackJson.h"
 #include "tests/cli/CliRunner.h"
@@ -10,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <set>
 
 namespace vl {
 namespace {
@@ -122,6 +125,55 @@ TEST_F(SayAvatarCli, SaysWithAnAvatarReducedInMemoryAndWritesTheAvatarSpeaking) 
     EXPECT_EQ(say("--avatar " + path("rpm.glb") + " --out " + path("x.json") + " --glb " + path("rpm.glb"))
                   .exitCode,
               2);
+}
+
+TEST_F(SayAvatarCli, SaysOnAnAvatarReducedWithMergedNamesByTheNamesItsTargetsHave) {
+    const auto reduce =
+        test::runCli("avatar reduce " + path("rpm.glb") + " -m 4 --names merged --out " + path("merged.glb"));
+    ASSERT_EQ(reduce.exitCode, 0) << reduce.output;
+    const auto inspect = test::runCli("avatar inspect " + path("merged.glb"));
+    ASSERT_EQ(inspect.exitCode, 0) << inspect.output;
+    EXPECT_NE(inspect.output.find("Visemes: 4 (keys of VisemeLab's reduction)"), std::string::npos)
+        << inspect.output;
+    EXPECT_NE(inspect.output.find("reduced by VisemeLab: 4 keys from 15 visemes (names merged)"),
+              std::string::npos)
+        << inspect.output;
+    ASSERT_EQ(
+        test::runCli("avatar inspect " + path("merged.glb") + " --json " + path("inspect.json")).exitCode, 0);
+    const auto report = nlohmann::json::parse(readFileToString(dir / "inspect.json"));
+    EXPECT_EQ(report["visemelab"]["names"], "merged");
+    EXPECT_EQ(report["visemelab"]["visemes"], 15);
+    ASSERT_EQ(report["visemelab"]["keys"].size(), 4u);
+    std::size_t members = report["visemelab"]["resting"].size();
+    for (const auto& key : report["visemelab"]["keys"]) members += key["members"].size();
+    EXPECT_EQ(members, 15u);
+
+    const auto r = say("--avatar " + path("rpm.glb") + " --reduced " + path("merged.glb") + " --out " +
+                       path("t.json") + " --glb " + path("anim.glb") + " --blend linear");
+    if (!skipped.empty()) GTEST_SKIP() << skipped;
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    // Every key of the reduced track is the name of a target of the merged file.
+    const GltfDocument merged = loadGltfDocument(dir / "merged.glb");
+    std::set<std::string> targetNames;
+    for (std::size_t m = 0; m < merged.model.meshes.size(); ++m)
+        for (const TargetName& t : meshTargetNames(merged, static_cast<int>(m))) targetNames.insert(t.name);
+    const SpeechTrackFile track = loadTrackJson(dir / "t.json");
+    ASSERT_FALSE(track.reducedCues.empty());
+    std::set<std::string> spoken;
+    for (const Cue& cue : track.reducedCues)
+        if (cue.value != kRestCue) {
+            EXPECT_TRUE(targetNames.count(cue.value)) << cue.value;
+            spoken.insert(cue.value);
+        }
+    EXPECT_GE(spoken.size(), 2u);
+    // The speaking avatar: the merged file with one more animation driving its four viseme meshes,
+    // still read as VisemeLab's reduction.
+    const GltfDocument anim = loadGltfDocument(dir / "anim.glb");
+    ASSERT_EQ(anim.model.animations.size(), merged.model.animations.size() + 1);
+    EXPECT_EQ(anim.model.animations.back().channels.size(), 4u);
+    const AvatarScan scan = scanAvatar(anim, {});
+    EXPECT_TRUE(scan.own.recognised);
+    EXPECT_EQ(scan.visemes.size(), 4u);
 }
 
 } // namespace vl

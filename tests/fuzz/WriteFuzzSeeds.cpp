@@ -7,7 +7,9 @@
 #include "core/export/Gltf.h"
 #include "core/export/RuntimePackageWriter.h"
 #include "core/export/Xface.h"
+#include "core/gltf/AvatarReduce.h"
 #include "core/gltf/GlbContainer.h"
+#include "core/gltf/GltfDocument.h"
 #include "core/speech/TrackJson.h"
 #include "tests/export/TestModels.h"
 #include "tests/gltf/AvatarFixtures.h"
@@ -90,8 +92,19 @@ int main(int argc, char** argv) {
             options.animation = storage == FixtureStorage::Plain;
             const std::string avatar = vl::test::rpmLikeAvatar(options);
             write("gltf_avatar", std::string("rpm_") + name + ".glb", avatar);
-            if (storage == FixtureStorage::Plain)
-                write("gltf_avatar", "rpm_plain.gltf", gltfWithDataUri(avatar));
+            if (storage != FixtureStorage::Plain) continue;
+            write("gltf_avatar", "rpm_plain.gltf", gltfWithDataUri(avatar));
+            // VisemeLab's own output (merged names, extras.visemelab, visemeKeys, targetAliases): the
+            // scan recognises it, so the fuzzer mutates what that reads.
+            const vl::GltfDocument doc = vl::parseGltfDocument(avatar, "seed", {});
+            const vl::AvatarScan scan = vl::scanAvatar(doc, {});
+            vl::ReduceSettings settings;
+            settings.target = 4;
+            settings.rest = vl::RestChoice::Free;
+            write(
+                "gltf_avatar", "rpm_plain_reduced_merged.glb",
+                vl::reduceAvatar(doc, scan, vl::uniformFrequencies(scan), settings, {vl::AvatarNames::Merged})
+                    .glb);
         }
         write("gltf_avatar", "vroid_vrm0.glb", vl::test::vroidLikeAvatar(false));
 

@@ -1,6 +1,8 @@
 // libFuzzer target: whole avatars (core/gltf): GLB/JSON glTF parsed by parseGltfDocument (tinygltf
-// behind our own limits), then every mesh, node and morph target scanned as `visemelab avatar` does.
+// behind our own limits), then every mesh, node and morph target scanned and reported as `visemelab
+// avatar inspect` does.
 #include "FuzzSupport.h"
+#include "core/gltf/AvatarReport.h"
 #include "core/gltf/AvatarScan.h"
 #include "core/gltf/GltfDocument.h"
 
@@ -12,6 +14,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         for (const auto& viseme : scan.set.visemes)
             if (viseme.positions.size() != scan.set.neutral.positions.size())
                 vl::fuzz::fail("viseme size differs");
+        // The report, including what a file claiming to be VisemeLab's output says (core/gltf/OwnOutput).
+        if (vl::formatAvatarReport(scan).empty() || vl::avatarReportJson(scan).dump().empty())
+            vl::fuzz::fail("empty report");
     });
     return 0;
 }

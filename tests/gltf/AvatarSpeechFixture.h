@@ -41,4 +41,18 @@ inline std::string speakingFixtureGlb(const std::filesystem::path& avatar, int m
     return speakingAvatarGlb(speech, track, 30.0);
 }
 
+// The avatar file speaking the fixture utterance on `reduced`, a reduction of it `avatar reduce`
+// wrote (say --avatar AVATAR --reduced REDUCED --glb).
+inline std::string speakingReducedFixtureGlb(const std::filesystem::path& avatar,
+                                             const std::filesystem::path& reduced,
+                                             runtime::Interpolation interpolation) {
+    AvatarSpeechOptions options;
+    options.reduced = reduced;
+    options.phonemeTable = fixturePhonemeTable();
+    const AvatarSpeech speech = avatarSpeech(avatar, options);
+    const FaceTrack track(speech.faces.reduced, fixtureUtterance(), PlaybackSettings{interpolation},
+                          avatar.string());
+    return speakingAvatarGlb(speech, track, 30.0);
+}
+
 } // namespace vl::test

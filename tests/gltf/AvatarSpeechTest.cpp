@@ -5,6 +5,7 @@
 #include "core/gltf/Accessors.h"
 #include "core/gltf/AvatarReduce.h"
 #include "core/gltf/BufferViews.h"
+#include "core/gltf/TargetNames.h"
 #include "core/gltf/VisemeMapNames.h"
 #include "tests/gltf/AvatarFixtures.h"
 #include "tests/gltf/AvatarFolderTest.h"
@@ -28,6 +29,49 @@ std::set<int> nodesOfVisemeMeshes(const GltfDocument& doc) {
             if (mesh.carriesVisemes && doc.model.nodes[n].mesh == mesh.index)
                 nodes.insert(static_cast<int>(n));
     return nodes;
+}
+
+// What `avatar reduce AVATAR -m 4 [--names merged]` writes with the fixture's phoneme table (uniform
+// weights, the rest free).
+std::string reducedFixture(const std::filesystem::path& avatar, AvatarNames names) {
+    const GltfDocument doc = loadGltfDocument(avatar);
+    const AvatarScan scan = scanAvatar(doc, {});
+    const ReduceSettings settings = avatarReduceSettings(4);
+    AvatarWriteOptions write;
+    write.names = names;
+    return reduceAvatar(doc, scan, defaultAvatarFrequencies(scan, test::fixturePhonemeTable()), settings,
+                        write)
+        .glb;
+}
+
+struct TwoReductions {
+    AvatarSpeech inMemory, fromFile;
+};
+
+// rpm.glb in `dir` speaking reduced to 4 keys in memory, and from the file `avatar reduce` wrote.
+TwoReductions reducedTwice(const std::filesystem::path& dir, AvatarNames names) {
+    AvatarSpeechOptions options;
+    options.phonemeTable = test::fixturePhonemeTable();
+    options.reduceTo = 4;
+    TwoReductions r{avatarSpeech(dir / "rpm.glb", options), {}};
+    const std::filesystem::path file = dir / (std::string("reduced_") + toString(names) + ".glb");
+    writeFileAtomically(file, reducedFixture(dir / "rpm.glb", names));
+    options.reduceTo = 0;
+    options.reduced = file;
+    r.fromFile = avatarSpeech(dir / "rpm.glb", options);
+    return r;
+}
+
+// The same keys (members and geometry), resting visemes and phoneme map.
+void expectSameReducedFace(const ReducedModel& a, const ReducedModel& b) {
+    ASSERT_EQ(a.keys.size(), b.keys.size());
+    for (std::size_t k = 0; k < a.keys.size(); ++k) {
+        EXPECT_EQ(a.keys[k].members, b.keys[k].members);
+        for (std::size_t v = 0; v < a.keys[k].positions.size(); ++v)
+            ASSERT_NEAR((a.keys[k].positions[v] - b.keys[k].positions[v]).norm(), 0.0, 1e-5) << k << " " << v;
+    }
+    EXPECT_EQ(a.resting, b.resting);
+    EXPECT_EQ(a.phonemeToKey, b.phonemeToKey);
 }
 
 } // namespace
@@ -91,40 +135,129 @@ TEST_F(AvatarSpeechTest, ReducedAvatarSpeaksWithEveryMeshSkinAndMaterialKept) {
 }
 
 TEST_F(AvatarSpeechTest, ReducedFileGivesTheSameFaceAsReducingInMemory) {
-    AvatarSpeechOptions options;
-    options.phonemeTable = test::fixturePhonemeTable();
-    options.reduceTo = 4;
-    const AvatarSpeech inMemory = avatarSpeech(dir / "rpm.glb", options);
-    // What `avatar reduce rpm.glb -m 4` writes (uniform weights, names original, the rest is free).
-    const GltfDocument doc = loadGltfDocument(dir / "rpm.glb");
-    const AvatarScan scan = scanAvatar(doc, {});
-    ReduceSettings settings;
-    settings.target = 4;
-    settings.rest = RestChoice::Free;
-    settings.closure = kClosureAuto; // viseme_PP keeps a key of its own, as `avatar reduce` defaults
-    writeFileAtomically(
-        dir / "reduced.glb",
-        reduceAvatar(doc, scan, defaultAvatarFrequencies(scan, options.phonemeTable), settings, {}).glb);
-    options.reduceTo = 0;
-    options.reduced = dir / "reduced.glb";
-    const AvatarSpeech fromFile = avatarSpeech(dir / "rpm.glb", options);
+    const auto [inMemory, fromFile] = reducedTwice(dir, AvatarNames::Original);
     ASSERT_TRUE(fromFile.reducedFace);
     ASSERT_EQ(fromFile.faces.reduced.keys.size(), 4u);
-    for (std::size_t k = 0; k < 4; ++k) {
-        const KeyMesh &a = inMemory.faces.reduced.keys[k], &b = fromFile.faces.reduced.keys[k];
-        EXPECT_EQ(a.members, b.members);
-        for (std::size_t v = 0; v < a.positions.size(); ++v)
-            ASSERT_NEAR((a.positions[v] - b.positions[v]).norm(), 0.0, 1e-5) << k << " " << v;
-    }
-    EXPECT_EQ(fromFile.faces.reduced.resting, inMemory.faces.reduced.resting);
+    expectSameReducedFace(fromFile.faces.reduced, inMemory.faces.reduced);
     EXPECT_FALSE(fromFile.faces.reduced.resting.empty()); // viseme_sil at least
-    EXPECT_EQ(fromFile.faces.reduced.phonemeToKey, inMemory.faces.reduced.phonemeToKey);
     ASSERT_EQ(fromFile.drives.size(), inMemory.drives.size());
     for (std::size_t d = 0; d < fromFile.drives.size(); ++d)
         EXPECT_EQ(fromFile.drives[d].keyOfTarget, inMemory.drives[d].keyOfTarget);
+    AvatarSpeechOptions options;
+    options.phonemeTable = test::fixturePhonemeTable();
+    // Written before the resting visemes were listed: those in no key rest all the same.
+    writeFileAtomically(dir / "older.glb",
+                        test::editGlb(reducedFixture(dir / "rpm.glb", AvatarNames::Original),
+                                      [](auto& j) { j["extras"]["visemelab"].erase("resting"); }));
+    options.reduced = dir / "older.glb";
+    EXPECT_EQ(avatarSpeech(dir / "rpm.glb", options).faces.reduced.resting, inMemory.faces.reduced.resting);
+    EXPECT_EQ(scanAvatar(loadGltfDocument(dir / "older.glb"), {}).own.resting,
+              inMemory.faces.reduced.resting);
     // The avatar itself is not a reduction.
     options.reduced = dir / "rpm.glb";
     test::expectInputError([&] { avatarSpeech(dir / "rpm.glb", options); }, {"rpm.glb", "extras/visemelab"});
+}
+
+TEST_F(AvatarSpeechTest, ReducedFileWithMergedNamesDrivesItsKeyTargetsByTheirNames) {
+    const auto [inMemory, speech] = reducedTwice(dir, AvatarNames::Merged);
+    ASSERT_TRUE(speech.reducedFace);
+    const auto& keys = speech.faces.reduced.keys;
+    ASSERT_EQ(keys.size(), 4u);
+    expectSameReducedFace(speech.faces.reduced, inMemory.faces.reduced);
+    // Each key drives the one target of its name on every mesh carrying it.
+    ASSERT_EQ(speech.drives.size(), 4u); // head, teeth, two eyes
+    for (const MeshDrive& drive : speech.drives) {
+        const auto names = meshTargetNames(*speech.animated, drive.mesh);
+        std::set<int> driven;
+        for (std::size_t t = 0; t < names.size(); ++t) {
+            const int key = drive.keyOfTarget[t];
+            EXPECT_NE(key, MeshDrive::kZeroWeight) << names[t].name; // merged: one target per key
+            if (key < 0) continue;
+            EXPECT_EQ(names[t].name, keys[static_cast<std::size_t>(key)].name);
+            EXPECT_TRUE(driven.insert(key).second);
+        }
+        EXPECT_FALSE(driven.empty());
+    }
+    // The speaking avatar: readable, still VisemeLab's reduction, AA's key target at 1 inside AA.
+    const GltfDocument out =
+        parseGltfDocument(test::speakingReducedFixtureGlb(dir / "rpm.glb", dir / "reduced_merged.glb",
+                                                          runtime::Interpolation::Linear),
+                          "anim", {});
+    const AvatarScan outScan = scanAvatar(out, {});
+    EXPECT_TRUE(outScan.own.recognised);
+    EXPECT_EQ(outScan.visemes.size(), 4u);
+    const tinygltf::Animation& animation = out.model.animations.back();
+    ASSERT_EQ(animation.name, "speech");
+    const auto aa =
+        std::find_if(speech.faces.reduced.phonemeToKey.begin(), speech.faces.reduced.phonemeToKey.end(),
+                     [](const auto& p) { return p.first == "AA"; });
+    ASSERT_NE(aa, speech.faces.reduced.phonemeToKey.end());
+    ASSERT_GE(aa->second, 0);
+    const std::string aaName = keys[static_cast<std::size_t>(aa->second)].name;
+    BufferViews views(out);
+    AccessorReader reader(out, views);
+    int checked = 0;
+    for (const auto& channel : animation.channels) {
+        const int mesh = out.model.nodes[static_cast<std::size_t>(channel.target_node)].mesh;
+        const auto names = meshTargetNames(out, mesh);
+        const auto at =
+            std::find_if(names.begin(), names.end(), [&](const TargetName& t) { return t.name == aaName; });
+        if (at == names.end()) continue;
+        const auto& sampler = animation.samplers[static_cast<std::size_t>(channel.sampler)];
+        const std::vector<float> times = reader.floats(sampler.input, TINYGLTF_TYPE_SCALAR, "input");
+        const std::vector<float> weights = reader.floats(sampler.output, TINYGLTF_TYPE_SCALAR, "output");
+        ASSERT_EQ(weights.size(), times.size() * names.size());
+        for (std::size_t i = 0; i < times.size(); ++i)
+            if (times[i] > 0.2f && times[i] < 0.5f) {
+                EXPECT_FLOAT_EQ(weights[i * names.size() + static_cast<std::size_t>(at - names.begin())],
+                                1.0f);
+                ++checked;
+            }
+    }
+    EXPECT_GT(checked, 0);
+}
+
+TEST_F(AvatarSpeechTest, AReducedFileWithHostileExtrasIsAClearError) {
+    AvatarSpeechOptions options;
+    options.phonemeTable = test::fixturePhonemeTable();
+    const std::string glb = reducedFixture(dir / "rpm.glb", AvatarNames::Merged);
+    const auto expectError = [&](const std::function<void(nlohmann::ordered_json&)>& edit,
+                                 const std::vector<std::string>& parts) {
+        writeFileAtomically(dir / "hostile.glb", test::editGlb(glb, edit));
+        options.reduced = dir / "hostile.glb";
+        test::expectInputError([&] { avatarSpeech(dir / "rpm.glb", options); }, parts);
+    };
+    expectError([](auto& j) { j["extras"]["visemelab"]["keys"][0]["members"] = 3; },
+                {"hostile.glb", "/extras/visemelab/keys/0/members"});
+    expectError([](auto& j) { j["extras"]["visemelab"]["keys"][0]["members"] = {"nothing"}; },
+                {"hostile.glb", "not a reduction of"});
+    // A key whose target entries all point nowhere is carried by no target.
+    expectError(
+        [](auto& j) {
+            for (auto& m : j["meshes"])
+                if (m.contains("extras") && m["extras"].contains("visemeKeys"))
+                    for (auto& k : m["extras"]["visemeKeys"])
+                        if (k["key"] == 0) k["targets"] = {12345};
+        },
+        {"hostile.glb", "/extras/visemelab/keys/0", "carried by no target"});
+}
+
+TEST_F(AvatarSpeechTest, ReducedInMemoryDrivesItsKeysWhateverTheRootExtrasHold) {
+    // Root extras that are not an object: the writer cannot add extras.visemelab, the meshes still
+    // carry their key tables, and speech reduced in memory drives them.
+    writeFileAtomically(dir / "odd.glb", test::editGlb(test::rpmLikeAvatar(), [](auto& j) {
+                            j["extras"] = {1, 2};
+                        }));
+    AvatarSpeechOptions options;
+    options.phonemeTable = test::fixturePhonemeTable();
+    options.reduceTo = 4;
+    const AvatarSpeech speech = avatarSpeech(dir / "odd.glb", options);
+    EXPECT_FALSE(speech.animated->json["extras"].is_object());
+    ASSERT_EQ(speech.drives.size(), 4u);
+    for (const MeshDrive& drive : speech.drives) {
+        std::set<int> keys(drive.keyOfTarget.begin(), drive.keyOfTarget.end());
+        EXPECT_TRUE(keys.count(0) && keys.count(3)) << drive.mesh;
+    }
 }
 
 TEST_F(AvatarSpeechTest, RhubarbMapSpeaksOnOculusNames) {

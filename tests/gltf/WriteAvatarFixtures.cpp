@@ -87,6 +87,11 @@ int main(int argc, char** argv) {
         vl::writeFileAtomically(
             dir / "rpm_draco_speech_m4.glb",
             vl::test::speakingFixtureGlb(dir / "rpm_draco.glb", 4, Interpolation::Dominance));
+        // say --reduced on an avatar reduced with merged names: the speech drives the key targets.
+        vl::writeFileAtomically(dir / "rpm_plain_speech_merged.glb",
+                                vl::test::speakingReducedFixtureGlb(dir / "rpm_plain.glb",
+                                                                    dir / "rpm_plain_reduced_merged.glb",
+                                                                    Interpolation::Linear));
         if (argc > 2 && std::strcmp(argv[2], "--bench") == 0) {
             // About 30,000 vertices on the 4 meshes that carry the 15 visemes.
             vl::test::AvatarFixtureOptions options;

@@ -39,11 +39,14 @@ function morphMeshes(root) {
 }
 
 // An independent statement of which target a key drives: by exact name, else the member's own name,
-// else the merged target whose '+'-joined name holds a member.
+// else the target the mesh's extras.targetAliases give a member (merged names drop the members'
+// shared prefix: "viseme_PP+FF"), else the merged target whose '+'-joined name holds a member.
 function expectedTarget(mesh, key) {
   const dict = mesh.morphTargetDictionary;
   if (key.name in dict) return dict[key.name];
   for (const m of key.members) if (m in dict) return dict[m];
+  const aliases = mesh.userData.targetAliases || (mesh.parent && mesh.parent.userData.targetAliases) || {};
+  for (const m of [key.name, ...key.members]) if (m in aliases) return aliases[m];
   for (const [name, index] of Object.entries(dict)) if (name.split('+').some((p) => key.members.includes(p))) return index;
   return -1;
 }
@@ -85,6 +88,19 @@ for (const blend of ['linear', 'cubic', 'dominance']) {
   // The player's own choice: a VisemeLab-reduced avatar plays the reduced face.
   if (new player.VisemePlayer(reduced.scene, track).face !== 'reduced') fail(`${blend}: auto did not pick the reduced face`);
   if (new player.VisemePlayer(original.scene, track).face !== 'full') fail(`${blend}: auto did not pick the full face`);
+}
+// The merged-name avatar as three.js loads it: names Blender keeps whole (<= 63 bytes), and every
+// original viseme name resolving through the mesh's extras.targetAliases.
+for (const mesh of morphMeshes(merged.scene)) {
+  for (const name of Object.keys(mesh.morphTargetDictionary))
+    if (Buffer.byteLength(name, 'utf8') > 63) fail(`merged target name over 63 bytes: ${name}`);
+  const aliases = mesh.userData.targetAliases || (mesh.parent && mesh.parent.userData.targetAliases);
+  if (!aliases || !Object.keys(aliases).length) { fail(`${mesh.name}: no targetAliases`); continue; }
+  for (const [name, target] of Object.entries(aliases)) {
+    checks++;
+    if (!(target >= 0 && target < mesh.morphTargetInfluences.length)) fail(`${mesh.name}: alias ${name} -> ${target}`);
+    if (player.targetOfKey(mesh, { name, members: [name] }) !== target) fail(`${mesh.name}: ${name} does not resolve to ${target}`);
+  }
 }
 // Spellings: every Oculus name in the forms players meet.
 for (const [name, canonical] of [['viseme_aa', 'aa'], ['viseme_I', 'ih'], ['O', 'oh'], ['viseme_U', 'ou'], ['PP', 'PP'], ['jawOpen', null]])
