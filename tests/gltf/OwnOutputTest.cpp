@@ -151,6 +151,21 @@ TEST(OwnOutput, MergedReductionIsRecognisedWithItsKeysMembersAndRestingVisemes) 
     }
 }
 
+TEST(OwnOutput, ReducingAReductionSaysWhatWasReduced) {
+    const Written twice =
+        reduceGlb(reduceGlb(test::rpmLikeAvatar(), 6, AvatarNames::Merged).glb, 3, AvatarNames::Merged);
+    const auto& notes = twice.reduction.summary.notes;
+    EXPECT_NE(
+        std::find(notes.begin(), notes.end(),
+                  "in.glb: reduced by VisemeLab: 6 keys from 15 visemes (names merged); its key targets "
+                  "were reduced as visemes"),
+        notes.end());
+    const AvatarScan scan = test::scanGlb(twice.glb);
+    ASSERT_TRUE(scan.own.recognised);
+    EXPECT_EQ(scan.own.keys.size(), 3u);
+    EXPECT_EQ(scan.own.visemeCount(), 6u); // the first reduction's keys
+}
+
 TEST(OwnOutput, OriginalNamesKeepEveryVisemeAndAreRecognisedToo) {
     const Written w = reduceGlb(test::rpmLikeAvatar(), 6, AvatarNames::Original);
     const AvatarScan scan = test::scanGlb(w.glb);
