@@ -148,6 +148,17 @@ TEST(OwnOutput, MergedReductionIsRecognisedWithItsKeysMembersAndRestingVisemes) 
         EXPECT_EQ(json["visemelab"]["names"], "merged");
         EXPECT_EQ(json["visemelab"]["visemes"], 15);
         EXPECT_EQ(json["visemelab"]["resting"].get<std::vector<std::string>>(), model.resting);
+        // Every original name of the head resolves through the aliases the report lists.
+        bool headAliases = false;
+        for (const Json& mesh : json["visemelab"]["meshes"])
+            if (json["meshes"][mesh["mesh"].get<std::size_t>()]["name"] == "Wolf3D_Head") {
+                headAliases = true;
+                for (const std::string& viseme : test::rpmVisemeNames())
+                    EXPECT_EQ(mesh["aliases"].value(viseme, -1),
+                              head["extras"]["targetAliases"].value(viseme, -2))
+                        << viseme;
+            }
+        EXPECT_TRUE(headAliases);
     }
 }
 
