@@ -2,6 +2,7 @@
 
 #include "core/common/Error.h"
 #include "core/gltf/GltfDocument.h"
+#include "core/gltf/OwnOutput.h"
 #include "core/gltf/VisemeMapNames.h"
 
 #include <algorithm>
@@ -51,6 +52,11 @@ AvatarReduction reduceAvatar(const GltfDocument& doc, const AvatarScan& scan,
     r.outcome = runReduction(scan.set, matched, settings, progress);
     const std::vector<int> groupOf = r.outcome.result.groupOf();
     r.glb = writeReducedAvatar(doc, scan, r.outcome.model, groupOf, r.outcome.frequencies, write, &r.summary);
+    if (scan.own.recognised) // reducing a reduction: say what was reduced
+        r.summary.notes.push_back(
+            doc.source + ": " + describeOwnOutput(scan.own) +
+            (scan.own.mergedNames ? "; its key targets were reduced as visemes"
+                                  : "; its visemes, which share their keys' shapes, were reduced again"));
     for (std::size_t i = 0; i < scan.visemes.size(); ++i)
         if (r.outcome.frequencies[i] == 0.0 && groupOf[i] != kRestGroup)
             r.summary.notes.push_back(scan.visemes[i] +

@@ -54,9 +54,16 @@ nlohmann::ordered_json ownOutputJson(const OwnOutput& own) {
                         {"frequency", own.keys[k].frequency},
                         {"targets", targets}});
     }
+    nlohmann::ordered_json meshes = nlohmann::ordered_json::array();
+    for (const OwnMesh& mesh : own.meshes) {
+        nlohmann::ordered_json aliases = nlohmann::ordered_json::object();
+        for (const auto& [name, target] : mesh.aliases) aliases[name] = target;
+        meshes.push_back({{"mesh", mesh.mesh}, {"aliases", aliases}});
+    }
     return {{"recognised", own.recognised},
             {"names", own.mergedNames ? "merged" : "original"},
             {"keys", keys},
+            {"meshes", meshes},
             {"visemes", own.visemeCount()},
             {"resting", own.resting},
             {"notes", own.notes}};

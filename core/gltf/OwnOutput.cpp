@@ -100,7 +100,10 @@ void readMesh(const GltfDocument& doc, std::size_t m, OwnOutput& own) {
     const Json* table = extras ? field(*extras, "visemeKeys") : nullptr;
     if (!table) return;
     const std::string where = "/meshes/" + std::to_string(m) + "/extras";
-    if (!table->is_array()) return note(own, where + "/visemeKeys", "not an array; ignored");
+    if (!table->is_array()) {
+        note(own, where + "/visemeKeys", "not an array; ignored");
+        return;
+    }
     const std::vector<TargetName> names = meshTargetNames(doc, static_cast<int>(m));
     OwnMesh mesh{static_cast<int>(m), std::vector<std::vector<int>>(own.keys.size()), {}};
     std::vector<bool> claimed(names.size(), false);

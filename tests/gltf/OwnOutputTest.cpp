@@ -146,7 +146,33 @@ TEST(OwnOutput, MergedReductionIsRecognisedWithItsKeysMembersAndRestingVisemes) 
         EXPECT_EQ(json["visemelab"]["names"], "merged");
         EXPECT_EQ(json["visemelab"]["visemes"], 15);
         EXPECT_EQ(json["visemelab"]["resting"].get<std::vector<std::string>>(), model.resting);
+        // Every original name of the head resolves through the aliases the report lists.
+        bool headAliases = false;
+        for (const Json& mesh : json["visemelab"]["meshes"])
+            if (json["meshes"][mesh["mesh"].get<std::size_t>()]["name"] == "Wolf3D_Head") {
+                headAliases = true;
+                for (const std::string& viseme : test::rpmVisemeNames())
+                    EXPECT_EQ(mesh["aliases"].value(viseme, -1),
+                              head["extras"]["targetAliases"].value(viseme, -2))
+                        << viseme;
+            }
+        EXPECT_TRUE(headAliases);
     }
+}
+
+TEST(OwnOutput, ReducingAReductionSaysWhatWasReduced) {
+    const Written twice =
+        reduceGlb(reduceGlb(test::rpmLikeAvatar(), 6, AvatarNames::Merged).glb, 3, AvatarNames::Merged);
+    const auto& notes = twice.reduction.summary.notes;
+    EXPECT_NE(
+        std::find(notes.begin(), notes.end(),
+                  "in.glb: reduced by VisemeLab: 6 keys from 15 visemes (names merged); its key targets "
+                  "were reduced as visemes"),
+        notes.end());
+    const AvatarScan scan = test::scanGlb(twice.glb);
+    ASSERT_TRUE(scan.own.recognised);
+    EXPECT_EQ(scan.own.keys.size(), 3u);
+    EXPECT_EQ(scan.own.visemeCount(), 6u); // the first reduction's keys
 }
 
 TEST(OwnOutput, OriginalNamesKeepEveryVisemeAndAreRecognisedToo) {
