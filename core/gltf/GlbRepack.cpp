@@ -5,6 +5,8 @@
 #include "core/gltf/GltfDocument.h"
 #include "core/gltf/GltfReferences.h"
 
+#include <algorithm>
+
 namespace vl {
 namespace {
 
@@ -78,13 +80,42 @@ GlbRepack::GlbRepack(const GltfDocument& doc) : json(doc.json), doc_(doc) {
     originalViews_ = arraySize(json, "bufferViews");
 }
 
-int GlbRepack::addView(std::string bytes, int target) {
+int GlbRepack::addView(std::string bytes, int target, std::size_t stride) {
     if (!json.contains("bufferViews")) json["bufferViews"] = Json::array();
     Json view{{"buffer", 0}, {"byteLength", bytes.size()}};
+    if (stride) view["byteStride"] = stride;
     if (target) view["target"] = target;
     json["bufferViews"].push_back(view);
-    newViews_.push_back(std::move(bytes));
+    newViews_.push_back({std::move(bytes), false});
     return static_cast<int>(json["bufferViews"].size()) - 1;
+}
+
+int GlbRepack::addMeshoptView(std::string encoded, std::size_t count, std::size_t stride,
+                              const std::string& mode, const std::string& filter, int target) {
+    requireExtension("EXT_meshopt_compression");
+    if (!json.contains("bufferViews")) json["bufferViews"] = Json::array();
+    Json ext{{"buffer", 0},
+             {"byteLength", encoded.size()},
+             {"byteStride", stride},
+             {"mode", mode},
+             {"count", count}};
+    if (filter != "NONE") ext["filter"] = filter;
+    // buffer and byteOffset (in the fallback buffer) are set by finish().
+    Json view{{"buffer", 0}, {"byteLength", count * stride}};
+    if (mode == "ATTRIBUTES") view["byteStride"] = stride;
+    if (target) view["target"] = target;
+    view["extensions"] = {{"EXT_meshopt_compression", ext}};
+    json["bufferViews"].push_back(view);
+    newViews_.push_back({std::move(encoded), true});
+    return static_cast<int>(json["bufferViews"].size()) - 1;
+}
+
+void GlbRepack::requireExtension(const std::string& name) {
+    for (const char* list : {"extensionsUsed", "extensionsRequired"}) {
+        if (!json.contains(list) || !json[list].is_array()) json[list] = Json::array();
+        Json& names = json[list];
+        if (std::find(names.begin(), names.end(), Json(name)) == names.end()) names.push_back(name);
+    }
 }
 
 int GlbRepack::addAccessor(Json accessor) {
@@ -174,13 +205,17 @@ std::string GlbRepack::finish(RepackStats* stats) {
         appendAligned(bin, b.data() + offset, length);
         return bin.size() - length;
     };
+    std::vector<std::size_t> newCompressed; // kept views of new compressed bytes
     for (std::size_t v = 0; v < sourceOf.size(); ++v) {
         Json& view = json["bufferViews"][v];
         if (sourceOf[v] < 0) {
-            const std::string& bytes = newViews_[static_cast<std::size_t>(-1 - sourceOf[v])];
-            appendAligned(bin, reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size());
-            view["buffer"] = 0;
-            view["byteOffset"] = bin.size() - bytes.size();
+            const NewView& added = newViews_[static_cast<std::size_t>(-1 - sourceOf[v])];
+            appendAligned(bin, reinterpret_cast<const unsigned char*>(added.bytes.data()),
+                          added.bytes.size());
+            Json& target = added.meshopt ? *meshoptExtension(view) : view;
+            target["buffer"] = 0;
+            target["byteOffset"] = bin.size() - added.bytes.size();
+            if (added.meshopt) newCompressed.push_back(v);
             continue;
         }
         const std::string element = "bufferViews/" + std::to_string(sourceOf[v]);
@@ -201,6 +236,23 @@ std::string GlbRepack::finish(RepackStats* stats) {
                                          view["byteLength"].get<std::size_t>(), element);
         view["buffer"] = 0;
         view["byteOffset"] = at;
+    }
+    if (!newCompressed.empty()) {
+        // The uncompressed layout of new compressed views: in a fallback buffer without data, as the
+        // extension requires; buffers after the BIN chunk are all such placeholders.
+        if (buffers.size() < 2)
+            buffers.push_back(
+                {{"byteLength", 0}, {"extensions", {{"EXT_meshopt_compression", {{"fallback", true}}}}}});
+        Json& fallback = buffers[1];
+        std::size_t end = fallback.value("byteLength", std::size_t{0});
+        for (std::size_t v : newCompressed) {
+            Json& view = json["bufferViews"][v];
+            end = (end + 3) / 4 * 4;
+            view["buffer"] = 1;
+            view["byteOffset"] = end;
+            end += view["byteLength"].get<std::size_t>();
+        }
+        fallback["byteLength"] = end;
     }
     while (bin.size() % 4 != 0 || bin.empty()) bin.push_back('\0');
     buffers[0]["byteLength"] = bin.size();
