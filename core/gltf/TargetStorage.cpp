@@ -144,12 +144,23 @@ int inferExponentBits(const unsigned char* data, std::size_t count, std::size_t 
     std::vector<float> input(size / 4);
     std::memcpy(input.data(), data, size);
     std::vector<unsigned char> trial(size);
-    for (int bits = 1; bits <= 24; ++bits) {
+    const auto roundTrips = [&](int bits) {
         meshopt_encodeFilterExp(trial.data(), count, stride, bits, input.data());
         meshopt_decodeFilterExp(trial.data(), count, stride);
-        if (std::memcmp(trial.data(), data, size) == 0) return bits;
+        return std::memcmp(trial.data(), data, size) == 0;
+    };
+    // Data that round-trips with K bits does with K + 1 (a finer grid with the same exponent
+    // choice): bisect instead of trying all 24 on a million vertices.
+    if (!roundTrips(24)) return kDefaultExponentBits;
+    int lo = 1, hi = 24; // hi round-trips
+    while (lo < hi) {
+        const int mid = (lo + hi) / 2;
+        if (roundTrips(mid))
+            hi = mid;
+        else
+            lo = mid + 1;
     }
-    return kDefaultExponentBits;
+    return hi;
 }
 
 int addVec3Target(GlbRepack& out, const std::vector<double>& values, const TargetStorage& storage,
