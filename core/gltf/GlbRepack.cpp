@@ -5,6 +5,8 @@
 #include "core/gltf/GltfDocument.h"
 #include "core/gltf/GltfReferences.h"
 
+#include <meshoptimizer.h>
+
 #include <algorithm>
 
 namespace vl {
@@ -124,6 +126,87 @@ int GlbRepack::addAccessor(Json accessor) {
     return static_cast<int>(json["accessors"].size()) - 1;
 }
 
+std::map<long long, std::string> GlbRepack::compactSharedViews(const std::vector<int>& accessorIndex) {
+    std::map<long long, std::string> compacted;
+    const std::size_t viewCount = arraySize(json, "bufferViews");
+    std::vector<std::size_t> references(viewCount, 0);
+    forEachBufferViewReference(json, [&](Json& index) {
+        const auto i = index.get<long long>();
+        if (i >= 0 && static_cast<std::size_t>(i) < viewCount) ++references[static_cast<std::size_t>(i)];
+    });
+    std::map<std::size_t, std::vector<std::size_t>> users; // view -> accessors reading it densely
+    for (std::size_t a = 0; a < accessorIndex.size(); ++a) {
+        const Json& accessor = json["accessors"][a];
+        if (accessor.is_object() && accessor.contains("bufferView") &&
+            accessor["bufferView"].is_number_integer()) {
+            const auto v = accessor["bufferView"].get<long long>();
+            if (v >= 0 && static_cast<std::size_t>(v) < originalViews_)
+                users[static_cast<std::size_t>(v)].push_back(a);
+        }
+    }
+    for (const auto& [v, list] : users) {
+        bool dropped = false, kept = false;
+        for (std::size_t a : list) (accessorIndex[a] < 0 ? dropped : kept) = true;
+        Json& view = json["bufferViews"][v];
+        Json* ext = meshoptExtension(view);
+        // Only views nothing else refers to, compressed as vertex data with a placeholder fallback.
+        if (!dropped || !kept || references[v] != list.size() || !ext ||
+            ext->value("mode", "") != "ATTRIBUTES")
+            continue;
+        const int buffer = view.value("buffer", -1), source = ext->value("buffer", -1);
+        const std::size_t stride = ext->value("byteStride", std::size_t{0}),
+                          count = ext->value("count", std::size_t{0});
+        const std::size_t offset = ext->value("byteOffset", std::size_t{0}),
+                          length = ext->value("byteLength", std::size_t{0});
+        if (buffer < 0 || static_cast<std::size_t>(buffer) >= doc_.buffers.size() ||
+            !doc_.buffers[static_cast<std::size_t>(buffer)].placeholder || source < 0 ||
+            static_cast<std::size_t>(source) >= doc_.buffers.size() || stride == 0 || stride % 4 != 0)
+            continue;
+        const GltfBuffer& b = doc_.buffers[static_cast<std::size_t>(source)];
+        if (b.placeholder || offset > b.length || length > b.length - offset ||
+            count * stride != view.value("byteLength", std::size_t{0}))
+            continue;
+        // Decoded without the filter: elements are filtered one by one, so a subset stays valid as it is.
+        std::vector<unsigned char> filtered(count * stride);
+        if (meshopt_decodeVertexBuffer(filtered.data(), count, stride, b.data() + offset, length) != 0)
+            doc_.fail("bufferViews/" + std::to_string(v), "meshoptimizer could not decode the data");
+        std::vector<char> keep(count, 0);
+        bool fits = true;
+        for (std::size_t a : list) {
+            if (accessorIndex[a] < 0) continue;
+            const Json& accessor = json["accessors"][a];
+            const std::size_t first = accessor.value("byteOffset", std::size_t{0}) / stride,
+                              n = accessor.value("count", std::size_t{0});
+            if (first > count || n > count - first) fits = false;
+            for (std::size_t e = first; fits && e < first + n; ++e) keep[e] = 1;
+        }
+        std::vector<std::size_t> newElement(count, 0);
+        std::string bytes;
+        for (std::size_t e = 0; e < count; ++e) {
+            if (!keep[e]) continue;
+            newElement[e] = bytes.size() / stride;
+            bytes.append(reinterpret_cast<const char*>(filtered.data() + e * stride), stride);
+        }
+        const std::size_t newCount = bytes.size() / stride;
+        if (!fits || newCount == count || newCount == 0) continue;
+        for (std::size_t a : list) {
+            if (accessorIndex[a] < 0) continue;
+            Json& accessor = json["accessors"][a];
+            const std::size_t byteOffset = accessor.value("byteOffset", std::size_t{0});
+            accessor["byteOffset"] = newElement[byteOffset / stride] * stride + byteOffset % stride;
+        }
+        meshopt_encodeVertexVersion(0); // EXT_meshopt_compression: version 0 only
+        std::string encoded(meshopt_encodeVertexBufferBound(newCount, stride), '\0');
+        encoded.resize(meshopt_encodeVertexBuffer(reinterpret_cast<unsigned char*>(encoded.data()),
+                                                  encoded.size(), bytes.data(), newCount, stride));
+        (*ext)["count"] = newCount;
+        (*ext)["byteLength"] = encoded.size();
+        view["byteLength"] = newCount * stride;
+        compacted[static_cast<long long>(v)] = std::move(encoded);
+    }
+    return compacted;
+}
+
 void GlbRepack::embedExternalImages() {
     const auto images = json.find("images");
     if (images == json.end() || !images->is_array()) return;
@@ -165,6 +248,7 @@ std::string GlbRepack::finish(RepackStats* stats) {
         single["accessors"] = Json::array({json["accessors"][a]});
         forEachBufferViewReference(single, [&](Json& view) { viewCandidates.insert(view.get<long long>()); });
     }
+    const std::map<long long, std::string> compacted = compactSharedViews(accessorIndex);
     renumber(json, "accessors", accessorIndex, &forEachAccessorReference);
 
     const std::size_t viewCount = arraySize(json, "bufferViews");
@@ -219,7 +303,12 @@ std::string GlbRepack::finish(RepackStats* stats) {
             continue;
         }
         const std::string element = "bufferViews/" + std::to_string(sourceOf[v]);
-        if (Json* meshopt = meshoptExtension(view)) {
+        if (const auto it = compacted.find(sourceOf[v]); it != compacted.end()) {
+            Json& meshopt = *meshoptExtension(view);
+            appendAligned(bin, reinterpret_cast<const unsigned char*>(it->second.data()), it->second.size());
+            meshopt["buffer"] = 0;
+            meshopt["byteOffset"] = bin.size() - it->second.size();
+        } else if (Json* meshopt = meshoptExtension(view)) {
             const std::size_t at =
                 copyRange((*meshopt)["buffer"].get<int>(), meshopt->value("byteOffset", std::size_t{0}),
                           (*meshopt)["byteLength"].get<std::size_t>(), element);

@@ -2,7 +2,8 @@
 // Writes an edited copy of a glTF document as one GLB: the caller edits `json` (a copy of the
 // original), adds accessors and views of new data, and names the accessors it stopped using.
 // finish() then removes those accessors and the buffer views only they used (nothing else: an
-// object the input already left unused stays), renumbers every reference (core/gltf/GltfReferences),
+// object the input already left unused stays), and the elements only they used from compressed vertex
+// views they shared with accessors that stay, renumbers every reference (core/gltf/GltfReferences),
 // copies the bytes of every remaining view unchanged into the BIN chunk (compressed
 // EXT_meshopt_compression data included; placeholder fallback buffers stay placeholders), places new
 // compressed views' compressed bytes in the BIN chunk and their uncompressed layout in a fallback
@@ -10,6 +11,7 @@
 // compression extensions nothing uses any more.
 #include <nlohmann/json.hpp>
 
+#include <map>
 #include <set>
 #include <string>
 #include <vector>
@@ -48,6 +50,10 @@ class GlbRepack {
 
   private:
     void embedExternalImages();
+    // EXT_meshopt_compression vertex views that accessors staying and accessors going share (gltfpack
+    // puts all morph targets of a primitive in one view): re-encoded with only the elements that stay,
+    // the staying accessors' byteOffsets moved. Original view -> its new compressed bytes.
+    std::map<long long, std::string> compactSharedViews(const std::vector<int>& accessorIndex);
     const GltfDocument& doc_;
     std::size_t originalViews_ = 0;
     struct NewView {
