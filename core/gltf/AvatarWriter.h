@@ -6,7 +6,7 @@
 // accessor, image and compressed stream are copied unchanged (EXT_meshopt_compression views and
 // Draco streams stay compressed). The new targets are stored as their members are in the input
 // (core/gltf/TargetStorage.h: quantised stays quantised on the same grid, meshopt-compressed stays
-// compressed, each in its smallest layout), so the output is no larger. On each primitive of a
+// compressed, each in its smallest layout), so merging visemes shrinks the data. On each primitive of a
 // mesh carrying visemes, the viseme targets are replaced by the m reduced keys, the same grouping
 // on every mesh: key g on a mesh is the frequency-weighted mean of its members' displacements on that
 // mesh (a member the mesh lacks counts as zero, as in the reduction's concatenated geometry), for
