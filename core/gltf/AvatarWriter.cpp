@@ -9,6 +9,7 @@
 #include "core/gltf/GltfReferences.h"
 #include "core/gltf/MergedNames.h"
 #include "core/gltf/MorphRemap.h"
+#include "core/gltf/TargetStorage.h"
 #include "core/reduce/Reduction.h"
 
 #include <cstring>
@@ -21,46 +22,6 @@ namespace {
 using Json = nlohmann::ordered_json;
 
 constexpr const char* kTargetAttributes[] = {"POSITION", "NORMAL", "TANGENT"};
-
-// A VEC3 float accessor for `values`: none of its own bytes when all are zero, sparse when few are
-// non-zero (teeth and eyes move little), dense otherwise. POSITION displacements carry min/max.
-int addVec3Accessor(GlbRepack& out, const std::vector<float>& values, bool bounds) {
-    const std::size_t count = values.size() / 3;
-    Json accessor{{"componentType", 5126}, {"count", count}, {"type", "VEC3"}};
-    if (bounds) {
-        std::vector<double> lo(3, std::numeric_limits<double>::infinity()),
-            hi(3, -std::numeric_limits<double>::infinity());
-        for (std::size_t i = 0; i < values.size(); ++i) {
-            lo[i % 3] = std::min(lo[i % 3], static_cast<double>(values[i]));
-            hi[i % 3] = std::max(hi[i % 3], static_cast<double>(values[i]));
-        }
-        accessor["min"] = lo;
-        accessor["max"] = hi;
-    }
-    std::vector<std::uint32_t> nonZero;
-    for (std::size_t i = 0; i < count; ++i)
-        if (values[3 * i] != 0.0f || values[3 * i + 1] != 0.0f || values[3 * i + 2] != 0.0f)
-            nonZero.push_back(static_cast<std::uint32_t>(i));
-    const std::size_t indexBytes = count <= 0xFF ? 1 : count <= 0xFFFF ? 2 : 4;
-    if (nonZero.empty()) return out.addAccessor(accessor);
-    if (nonZero.size() * (indexBytes + 12) < count * 12 * 2 / 3) {
-        std::string indices, sparseValues;
-        for (std::uint32_t i : nonZero) {
-            indices.append(reinterpret_cast<const char*>(&i), indexBytes); // little-endian low bytes
-            sparseValues.append(reinterpret_cast<const char*>(values.data() + 3 * i), 12);
-        }
-        const int componentType = indexBytes == 1 ? 5121 : indexBytes == 2 ? 5123 : 5125;
-        accessor["sparse"] = {
-            {"count", nonZero.size()},
-            {"indices", {{"bufferView", out.addView(std::move(indices))}, {"componentType", componentType}}},
-            {"values", {{"bufferView", out.addView(std::move(sparseValues))}}}};
-        return out.addAccessor(accessor);
-    }
-    std::string bytes(values.size() * 4, '\0');
-    std::memcpy(bytes.data(), values.data(), bytes.size());
-    accessor["bufferView"] = out.addView(std::move(bytes), 34962);
-    return out.addAccessor(accessor);
-}
 
 int attribute(const std::map<std::string, int>& attributes, const char* name) {
     const auto it = attributes.find(name);
@@ -147,11 +108,18 @@ MeshPlan planMesh(const AvatarMesh& mesh, const KeyGrouping& grouping, const Red
     return plan;
 }
 
-// The morph target of key `key` on one primitive.
-Json keyTarget(GlbRepack& out, AccessorReader& reader, const Json& originalTargets,
-               const tinygltf::Primitive& prim, const AvatarMesh& mesh,
-               const std::vector<std::size_t>& members, const KeyGrouping& grouping, std::size_t key,
-               std::size_t vertices, bool targetNormals, const std::string& where) {
+// What the key targets are written with: the reader of the members, and the tally of storages.
+struct KeyWriting {
+    const GltfDocument& doc;
+    BufferViews& views;
+    AccessorReader& reader;
+    StorageTally tally;
+};
+
+// The morph target of key `key` on one primitive, each attribute stored as its most precise member.
+Json keyTarget(GlbRepack& out, KeyWriting& w, const Json& originalTargets, const tinygltf::Primitive& prim,
+               const AvatarMesh& mesh, const std::vector<std::size_t>& members, const KeyGrouping& grouping,
+               std::size_t key, std::size_t vertices, bool targetNormals, const std::string& where) {
     if (grouping.size[key] == 1) { // one member: its own accessors, unchanged
         Json target = originalTargets[members.front()];
         if (!targetNormals) {
@@ -165,25 +133,27 @@ Json keyTarget(GlbRepack& out, AccessorReader& reader, const Json& originalTarge
         if (!targetNormals && std::strcmp(name, "POSITION") != 0) continue;
         std::vector<double> sum(3 * vertices, 0.0);
         bool any = false;
+        TargetStorage storage;
         for (std::size_t k : members) {
             const int accessor = attribute(prim.targets[k], name);
             if (accessor < 0) continue;
+            const std::string at = where + "/targets/" + std::to_string(k) + "/" + name;
+            const TargetStorage own = storageOf(w.doc, w.views, accessor, at);
+            storage = any ? morePrecise(storage, own) : own;
             any = true;
-            const double w = grouping.weightInGroup[static_cast<std::size_t>(mesh.targets[k].viseme)];
-            const std::vector<float> d = reader.floats(
-                accessor, TINYGLTF_TYPE_VEC3, where + "/targets/" + std::to_string(k) + "/" + name, vertices);
-            for (std::size_t c = 0; c < sum.size(); ++c) sum[c] += w * d[c];
+            const double weight = grouping.weightInGroup[static_cast<std::size_t>(mesh.targets[k].viseme)];
+            const std::vector<float> d = w.reader.floats(accessor, TINYGLTF_TYPE_VEC3, at, vertices);
+            for (std::size_t c = 0; c < sum.size(); ++c) sum[c] += weight * d[c];
         }
         if (!any && std::strcmp(name, "POSITION") != 0) continue;
-        target[name] = addVec3Accessor(out, std::vector<float>(sum.begin(), sum.end()),
-                                       std::strcmp(name, "POSITION") == 0);
+        target[name] = addVec3Target(out, sum, storage, std::strcmp(name, "POSITION") == 0, &w.tally);
     }
     return target;
 }
 
 // The morph target of a resting viseme: zero displacement.
-Json restingTarget(GlbRepack& out, std::size_t vertices) {
-    return Json{{"POSITION", addVec3Accessor(out, std::vector<float>(3 * vertices, 0.0f), true)}};
+Json restingTarget(GlbRepack& out, std::size_t vertices, StorageTally& tally) {
+    return Json{{"POSITION", addVec3Target(out, std::vector<double>(3 * vertices, 0.0), {}, true, &tally)}};
 }
 
 Json* extrasObject(Json& object) {
@@ -259,21 +229,26 @@ Json rootExtras(const ReducedModel& model, const std::vector<std::string>& keyNa
     return out;
 }
 
-void noteStorage(const GltfDocument& doc, std::vector<std::string>& notes) {
+void noteStorage(const GltfDocument& doc, const StorageTally& tally, std::vector<std::string>& notes) {
     const auto used = [&](const char* name) {
         return std::find(doc.model.extensionsUsed.begin(), doc.model.extensionsUsed.end(), name) !=
                doc.model.extensionsUsed.end();
     };
     if (used("EXT_meshopt_compression"))
-        notes.push_back(
-            "EXT_meshopt_compression: views left as they were stay compressed; the reduced targets are "
-            "written uncompressed");
+        notes.push_back("EXT_meshopt_compression: views left as they were stay compressed");
     if (used("KHR_draco_mesh_compression"))
         notes.push_back(
             "KHR_draco_mesh_compression: the Draco geometry streams are kept as they are; the reduced "
-            "targets are plain accessors (the extension never compresses targets)");
-    if (used("KHR_mesh_quantization"))
-        notes.push_back("KHR_mesh_quantization: the reduced targets are written as floats");
+            "targets are stored as the input's targets are (the extension never compresses targets)");
+    if (!tally.empty()) {
+        std::string line = "new target accessors, stored as their members were (smallest layout of each):";
+        const char* separator = " ";
+        for (const auto& [storage, n] : tally) {
+            line += separator + std::to_string(n) + " x " + storage;
+            separator = "; ";
+        }
+        notes.push_back(line);
+    }
     for (const std::string& name : doc.model.extensionsUsed)
         if (!isKnownExtension(name))
             notes.push_back("extension " + name +
@@ -298,9 +273,10 @@ std::string write(const GltfDocument& doc, const AvatarScan& scan, const Reduced
     GlbRepack out(doc);
     BufferViews views(doc);
     AccessorReader reader(doc, views);
+    KeyWriting keyWriting{doc, views, reader, {}};
     AvatarWriteSummary local;
     AvatarWriteSummary& s = summary ? *summary : local;
-    noteStorage(doc, s.notes);
+    const std::size_t storageNotesAt = s.notes.size(); // filled in once the keys are written
 
     // Plans first, so that a --max-targets refusal names every mesh over the cap before anything is done.
     const std::vector<std::string> keyNames = recordedKeyNames(scan, grouping, model, options.names);
@@ -350,7 +326,7 @@ std::string write(const GltfDocument& doc, const AvatarScan& scan, const Reduced
             for (std::size_t g = 0; g < model.keys.size(); ++g)
                 if (!plan.members[g].empty())
                     keys[g] =
-                        keyTarget(out, reader, originalTargets, gm.primitives[p], mesh, plan.members[g],
+                        keyTarget(out, keyWriting, originalTargets, gm.primitives[p], mesh, plan.members[g],
                                   grouping, g, mesh.primitives[p].vertices, options.targetNormals, where);
             Json targets = Json::array();
             for (std::size_t k = 0; k < mesh.targets.size(); ++k) {
@@ -364,7 +340,7 @@ std::string write(const GltfDocument& doc, const AvatarScan& scan, const Reduced
                 if (grouping.groupOf[static_cast<std::size_t>(viseme)] == kRestGroup) {
                     // A resting viseme keeps its target (every name still resolves in a player) but
                     // moves nothing: the rest pose is the neutral.
-                    targets.push_back(restingTarget(out, mesh.primitives[p].vertices));
+                    targets.push_back(restingTarget(out, mesh.primitives[p].vertices, keyWriting.tally));
                     continue;
                 }
                 const auto g = static_cast<std::size_t>(grouping.groupOf[static_cast<std::size_t>(viseme)]);
@@ -381,6 +357,10 @@ std::string write(const GltfDocument& doc, const AvatarScan& scan, const Reduced
         if (options.names == AvatarNames::Merged) remaps[mesh.index] = plan.remap;
     }
     if (!remaps.empty()) remapMorphTargets(out, reader, remaps);
+    std::vector<std::string> storageNotes;
+    noteStorage(doc, keyWriting.tally, storageNotes);
+    s.notes.insert(s.notes.begin() + static_cast<long>(storageNotesAt), storageNotes.begin(),
+                   storageNotes.end());
 
     if (!out.json.contains("extras")) out.json["extras"] = Json::object();
     if (out.json["extras"].is_object())

@@ -4,7 +4,10 @@
 // The output is the input document, edited: every node, skin, material, texture, image, animation,
 // extension and extra that is not a selected viseme target is kept, and the bytes of every kept
 // accessor, image and compressed stream are copied unchanged (EXT_meshopt_compression views and
-// Draco streams stay compressed; the new targets are written uncompressed). On each primitive of a
+// Draco streams stay compressed; a compressed view shared with replaced targets, as gltfpack writes
+// them, is re-encoded with only the rest, losslessly). The new targets are stored as their members are in the
+// input (core/gltf/TargetStorage.h: quantised stays quantised on the same grid, meshopt-compressed stays
+// compressed, each in its smallest layout), so merging visemes shrinks the data. On each primitive of a
 // mesh carrying visemes, the viseme targets are replaced by the m reduced keys, the same grouping
 // on every mesh: key g on a mesh is the frequency-weighted mean of its members' displacements on that
 // mesh (a member the mesh lacks counts as zero, as in the reduction's concatenated geometry), for

@@ -5,6 +5,10 @@
 #include "core/gltf/GltfDocument.h"
 #include "core/gltf/GltfReferences.h"
 
+#include <meshoptimizer.h>
+
+#include <algorithm>
+
 namespace vl {
 namespace {
 
@@ -78,13 +82,42 @@ GlbRepack::GlbRepack(const GltfDocument& doc) : json(doc.json), doc_(doc) {
     originalViews_ = arraySize(json, "bufferViews");
 }
 
-int GlbRepack::addView(std::string bytes, int target) {
+int GlbRepack::addView(std::string bytes, int target, std::size_t stride) {
     if (!json.contains("bufferViews")) json["bufferViews"] = Json::array();
     Json view{{"buffer", 0}, {"byteLength", bytes.size()}};
+    if (stride) view["byteStride"] = stride;
     if (target) view["target"] = target;
     json["bufferViews"].push_back(view);
-    newViews_.push_back(std::move(bytes));
+    newViews_.push_back({std::move(bytes), false});
     return static_cast<int>(json["bufferViews"].size()) - 1;
+}
+
+int GlbRepack::addMeshoptView(std::string encoded, std::size_t count, std::size_t stride,
+                              const std::string& mode, const std::string& filter, int target) {
+    requireExtension("EXT_meshopt_compression");
+    if (!json.contains("bufferViews")) json["bufferViews"] = Json::array();
+    Json ext{{"buffer", 0},
+             {"byteLength", encoded.size()},
+             {"byteStride", stride},
+             {"mode", mode},
+             {"count", count}};
+    if (filter != "NONE") ext["filter"] = filter;
+    // buffer and byteOffset (in the fallback buffer) are set by finish().
+    Json view{{"buffer", 0}, {"byteLength", count * stride}};
+    if (mode == "ATTRIBUTES") view["byteStride"] = stride;
+    if (target) view["target"] = target;
+    view["extensions"] = {{"EXT_meshopt_compression", ext}};
+    json["bufferViews"].push_back(view);
+    newViews_.push_back({std::move(encoded), true});
+    return static_cast<int>(json["bufferViews"].size()) - 1;
+}
+
+void GlbRepack::requireExtension(const std::string& name) {
+    for (const char* list : {"extensionsUsed", "extensionsRequired"}) {
+        if (!json.contains(list) || !json[list].is_array()) json[list] = Json::array();
+        Json& names = json[list];
+        if (std::find(names.begin(), names.end(), Json(name)) == names.end()) names.push_back(name);
+    }
 }
 
 int GlbRepack::addAccessor(Json accessor) {
@@ -96,8 +129,89 @@ int GlbRepack::addAccessor(Json accessor) {
 std::size_t GlbRepack::binBound() const {
     std::size_t bound = 0;
     for (const GltfBuffer& b : doc_.buffers) bound += b.length;
-    for (const std::string& bytes : newViews_) bound += bytes.size();
+    for (const NewView& added : newViews_) bound += added.bytes.size();
     return bound + 4 * (arraySize(json, "bufferViews") + 1); // alignment padding
+}
+
+std::map<long long, std::string> GlbRepack::compactSharedViews(const std::vector<int>& accessorIndex) {
+    std::map<long long, std::string> compacted;
+    const std::size_t viewCount = arraySize(json, "bufferViews");
+    std::vector<std::size_t> references(viewCount, 0);
+    forEachBufferViewReference(json, [&](Json& index) {
+        const auto i = index.get<long long>();
+        if (i >= 0 && static_cast<std::size_t>(i) < viewCount) ++references[static_cast<std::size_t>(i)];
+    });
+    std::map<std::size_t, std::vector<std::size_t>> users; // view -> accessors reading it densely
+    for (std::size_t a = 0; a < accessorIndex.size(); ++a) {
+        const Json& accessor = json["accessors"][a];
+        if (accessor.is_object() && accessor.contains("bufferView") &&
+            accessor["bufferView"].is_number_integer()) {
+            const auto v = accessor["bufferView"].get<long long>();
+            if (v >= 0 && static_cast<std::size_t>(v) < originalViews_)
+                users[static_cast<std::size_t>(v)].push_back(a);
+        }
+    }
+    for (const auto& [v, list] : users) {
+        bool dropped = false, kept = false;
+        for (std::size_t a : list) (accessorIndex[a] < 0 ? dropped : kept) = true;
+        Json& view = json["bufferViews"][v];
+        Json* ext = meshoptExtension(view);
+        // Only views nothing else refers to, compressed as vertex data with a placeholder fallback.
+        if (!dropped || !kept || references[v] != list.size() || !ext ||
+            ext->value("mode", "") != "ATTRIBUTES")
+            continue;
+        const int buffer = view.value("buffer", -1), source = ext->value("buffer", -1);
+        const std::size_t stride = ext->value("byteStride", std::size_t{0}),
+                          count = ext->value("count", std::size_t{0});
+        const std::size_t offset = ext->value("byteOffset", std::size_t{0}),
+                          length = ext->value("byteLength", std::size_t{0});
+        if (buffer < 0 || static_cast<std::size_t>(buffer) >= doc_.buffers.size() ||
+            !doc_.buffers[static_cast<std::size_t>(buffer)].placeholder || source < 0 ||
+            static_cast<std::size_t>(source) >= doc_.buffers.size() || stride == 0 || stride % 4 != 0)
+            continue;
+        const GltfBuffer& b = doc_.buffers[static_cast<std::size_t>(source)];
+        if (b.placeholder || offset > b.length || length > b.length - offset ||
+            count * stride != view.value("byteLength", std::size_t{0}))
+            continue;
+        // Decoded without the filter: elements are filtered one by one, so a subset stays valid as it is.
+        std::vector<unsigned char> filtered(count * stride);
+        if (meshopt_decodeVertexBuffer(filtered.data(), count, stride, b.data() + offset, length) != 0)
+            doc_.fail("bufferViews/" + std::to_string(v), "meshoptimizer could not decode the data");
+        std::vector<char> keep(count, 0);
+        bool fits = true;
+        for (std::size_t a : list) {
+            if (accessorIndex[a] < 0) continue;
+            const Json& accessor = json["accessors"][a];
+            const std::size_t first = accessor.value("byteOffset", std::size_t{0}) / stride,
+                              n = accessor.value("count", std::size_t{0});
+            if (first > count || n > count - first) fits = false;
+            for (std::size_t e = first; fits && e < first + n; ++e) keep[e] = 1;
+        }
+        std::vector<std::size_t> newElement(count, 0);
+        std::string bytes;
+        for (std::size_t e = 0; e < count; ++e) {
+            if (!keep[e]) continue;
+            newElement[e] = bytes.size() / stride;
+            bytes.append(reinterpret_cast<const char*>(filtered.data() + e * stride), stride);
+        }
+        const std::size_t newCount = bytes.size() / stride;
+        if (!fits || newCount == count || newCount == 0) continue;
+        for (std::size_t a : list) {
+            if (accessorIndex[a] < 0) continue;
+            Json& accessor = json["accessors"][a];
+            const std::size_t byteOffset = accessor.value("byteOffset", std::size_t{0});
+            accessor["byteOffset"] = newElement[byteOffset / stride] * stride + byteOffset % stride;
+        }
+        meshopt_encodeVertexVersion(0); // EXT_meshopt_compression: version 0 only
+        std::string encoded(meshopt_encodeVertexBufferBound(newCount, stride), '\0');
+        encoded.resize(meshopt_encodeVertexBuffer(reinterpret_cast<unsigned char*>(encoded.data()),
+                                                  encoded.size(), bytes.data(), newCount, stride));
+        (*ext)["count"] = newCount;
+        (*ext)["byteLength"] = encoded.size();
+        view["byteLength"] = newCount * stride;
+        compacted[static_cast<long long>(v)] = std::move(encoded);
+    }
+    return compacted;
 }
 
 void GlbRepack::embedExternalImages() {
@@ -141,6 +255,7 @@ std::string GlbRepack::finish(RepackStats* stats) {
         single["accessors"] = Json::array({json["accessors"][a]});
         forEachBufferViewReference(single, [&](Json& view) { viewCandidates.insert(view.get<long long>()); });
     }
+    const std::map<long long, std::string> compacted = compactSharedViews(accessorIndex);
     renumber(json, "accessors", accessorIndex, &forEachAccessorReference);
 
     const std::size_t viewCount = arraySize(json, "bufferViews");
@@ -182,17 +297,26 @@ std::string GlbRepack::finish(RepackStats* stats) {
         appendAligned(bin, b.data() + offset, length);
         return bin.size() - length;
     };
+    std::vector<std::size_t> newCompressed; // kept views of new compressed bytes
     for (std::size_t v = 0; v < sourceOf.size(); ++v) {
         Json& view = json["bufferViews"][v];
         if (sourceOf[v] < 0) {
-            const std::string& bytes = newViews_[static_cast<std::size_t>(-1 - sourceOf[v])];
-            appendAligned(bin, reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size());
-            view["buffer"] = 0;
-            view["byteOffset"] = bin.size() - bytes.size();
+            const NewView& added = newViews_[static_cast<std::size_t>(-1 - sourceOf[v])];
+            appendAligned(bin, reinterpret_cast<const unsigned char*>(added.bytes.data()),
+                          added.bytes.size());
+            Json& target = added.meshopt ? *meshoptExtension(view) : view;
+            target["buffer"] = 0;
+            target["byteOffset"] = bin.size() - added.bytes.size();
+            if (added.meshopt) newCompressed.push_back(v);
             continue;
         }
         const std::string element = "bufferViews/" + std::to_string(sourceOf[v]);
-        if (Json* meshopt = meshoptExtension(view)) {
+        if (const auto it = compacted.find(sourceOf[v]); it != compacted.end()) {
+            Json& meshopt = *meshoptExtension(view);
+            appendAligned(bin, reinterpret_cast<const unsigned char*>(it->second.data()), it->second.size());
+            meshopt["buffer"] = 0;
+            meshopt["byteOffset"] = bin.size() - it->second.size();
+        } else if (Json* meshopt = meshoptExtension(view)) {
             const std::size_t at =
                 copyRange((*meshopt)["buffer"].get<int>(), meshopt->value("byteOffset", std::size_t{0}),
                           (*meshopt)["byteLength"].get<std::size_t>(), element);
@@ -209,6 +333,23 @@ std::string GlbRepack::finish(RepackStats* stats) {
                                          view["byteLength"].get<std::size_t>(), element);
         view["buffer"] = 0;
         view["byteOffset"] = at;
+    }
+    if (!newCompressed.empty()) {
+        // The uncompressed layout of new compressed views: in a fallback buffer without data, as the
+        // extension requires; buffers after the BIN chunk are all such placeholders.
+        if (buffers.size() < 2)
+            buffers.push_back(
+                {{"byteLength", 0}, {"extensions", {{"EXT_meshopt_compression", {{"fallback", true}}}}}});
+        Json& fallback = buffers[1];
+        std::size_t end = fallback.value("byteLength", std::size_t{0});
+        for (std::size_t v : newCompressed) {
+            Json& view = json["bufferViews"][v];
+            end = (end + 3) / 4 * 4;
+            view["buffer"] = 1;
+            view["byteOffset"] = end;
+            end += view["byteLength"].get<std::size_t>();
+        }
+        fallback["byteLength"] = end;
     }
     while (bin.size() % 4 != 0 || bin.empty()) bin.push_back('\0');
     buffers[0]["byteLength"] = bin.size();
