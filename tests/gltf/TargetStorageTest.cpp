@@ -20,31 +20,31 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-struct Written {
+struct WrittenAccessor {
     GltfDocument doc;
     int accessor = -1;
     StorageTally tally;
 };
 
-Written write(const std::vector<double>& values, const TargetStorage& storage) {
+WrittenAccessor write(const std::vector<double>& values, const TargetStorage& storage) {
     test::GlbBuilder b;
     b.addView("data", 4); // a BIN chunk, as every avatar has
     const GltfDocument empty = parseGltfDocument(b.glb(), "empty.glb", {});
     GlbRepack out(empty);
-    Written w{{}, -1, {}};
+    WrittenAccessor w{{}, -1, {}};
     w.accessor = addVec3Target(out, values, storage, true, &w.tally);
     w.doc = parseGltfDocument(out.finish(), "out.glb", {});
     return w;
 }
 
-std::vector<float> readBack(const Written& w) {
+std::vector<float> readBack(const WrittenAccessor& w) {
     BufferViews views(w.doc);
     AccessorReader reader(w.doc, views);
     const std::size_t count = w.doc.model.accessors[static_cast<std::size_t>(w.accessor)].count;
     return reader.floats(w.accessor, -1, "test", count);
 }
 
-const Json& accessorJson(const Written& w) {
+const Json& accessorJson(const WrittenAccessor& w) {
     return w.doc.json["accessors"][static_cast<std::size_t>(w.accessor)];
 }
 
@@ -64,7 +64,7 @@ TEST(TargetStorage, QuantisedShortsKeepTheGridTheAlignmentAndIntegerBounds) {
     // 300 vertices, all moving: sparse (2-byte index + 6 bytes) ties with dense (8): dense.
     std::vector<double> values = moving(300, 0.5);
     values[0] = 2.0; // outside [-1, 1]: clamped
-    const Written w = write(values, shorts);
+    const WrittenAccessor w = write(values, shorts);
     const Json& a = accessorJson(w);
     EXPECT_EQ(a["componentType"], 5122);
     EXPECT_EQ(a["normalized"], true);
@@ -83,7 +83,7 @@ TEST(TargetStorage, QuantisedShortsKeepTheGridTheAlignmentAndIntegerBounds) {
 TEST(TargetStorage, UnnormalisedBytesRoundToIntegersWithStrideFour) {
     TargetStorage bytes;
     bytes.componentType = 5120;
-    const Written w = write(moving(20, 100.0), bytes);
+    const WrittenAccessor w = write(moving(20, 100.0), bytes);
     const Json& a = accessorJson(w);
     EXPECT_FALSE(a.contains("normalized"));
     EXPECT_EQ(w.doc.json["bufferViews"][a["bufferView"].get<std::size_t>()]["byteStride"], 4);
@@ -99,7 +99,7 @@ TEST(TargetStorage, FewMovingVerticesAreSparseAndZerosHaveNoBytes) {
     TargetStorage shorts;
     shorts.componentType = 5122;
     shorts.normalized = true;
-    const Written w = write(values, shorts);
+    const WrittenAccessor w = write(values, shorts);
     const Json& a = accessorJson(w);
     EXPECT_FALSE(a.contains("bufferView"));
     EXPECT_EQ(a["sparse"]["count"], 2);
@@ -109,7 +109,7 @@ TEST(TargetStorage, FewMovingVerticesAreSparseAndZerosHaveNoBytes) {
     EXPECT_NEAR(got[3 * 299], -0.5, 1e-4);
     EXPECT_EQ(got[3 * 100], 0.0f);
 
-    const Written zero = write(std::vector<double>(30, 0.0), shorts);
+    const WrittenAccessor zero = write(std::vector<double>(30, 0.0), shorts);
     EXPECT_FALSE(accessorJson(zero).contains("bufferView"));
     EXPECT_FALSE(accessorJson(zero).contains("sparse"));
     EXPECT_EQ(zero.tally.at("no bytes (all zero)"), 1u);
@@ -123,7 +123,7 @@ TEST(TargetStorage, MeshoptExponentialIsCompressedWithAFallbackBufferAndReadsBac
     exp.meshopt = true;
     exp.filter = MeshoptFilter::Exponential;
     exp.exponentBits = 15;
-    const Written w = write(values, exp);
+    const WrittenAccessor w = write(values, exp);
     const Json& a = accessorJson(w);
     const Json& view = w.doc.json["bufferViews"][a["bufferView"].get<std::size_t>()];
     const Json& ext = view["extensions"]["EXT_meshopt_compression"];
