@@ -80,6 +80,7 @@ Document removeViseme(const Document& document, int index, const std::string& ph
     const auto namesIt = [&](const auto& pair) { return pair.first == name || pair.second == name; };
     std::erase_if(next.constraints.apart, namesIt);
     std::erase_if(next.constraints.together, namesIt);
+    if (next.restViseme == name) next.restViseme.clear(); // back to sil / viseme_sil
     // So does its preset (a viseme and a preset of the same name are one viseme).
     if (next.face.cascade) {
         std::vector<VisemeParameters> presets = facePresets(next.face);
@@ -279,6 +280,14 @@ Document setConstraints(const Document& document, ConstraintNames constraints) {
     return checked(std::move(next));
 }
 
+Document setRest(const Document& document, RestChoice rest, const std::string& restViseme) {
+    Document next = document;
+    next.rest = rest;
+    next.restViseme = restViseme;
+    next.target = std::clamp(next.target, 1, std::max(1, documentMaxKeys(next)));
+    return checked(std::move(next));
+}
+
 Document setSpeech(const Document& document, SpeechSettings speech) {
     checkSpeechSettings(speech, "speech");
     Document next = document;
@@ -327,6 +336,8 @@ Document setAvatarPattern(const Document& document, const std::string& pattern,
         const auto unknownPair = [&](const auto& pair) { return !known(pair.first) || !known(pair.second); };
         std::erase_if(d.constraints.apart, unknownPair);
         std::erase_if(d.constraints.together, unknownPair);
+        d.rest = document.rest;
+        d.restViseme = known(document.restViseme) ? document.restViseme : std::string();
     });
     keep([&](Document& d) { d.target = std::min(document.target, static_cast<int>(d.visemeCount())); });
     keep([&](Document& d) {

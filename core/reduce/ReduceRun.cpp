@@ -43,21 +43,32 @@ const char* toString(RestChoice choice) {
     return "auto";
 }
 
-namespace {
+std::optional<RestChoice> restChoiceFromString(std::string_view text) {
+    for (const RestChoice choice : {RestChoice::Auto, RestChoice::Free, RestChoice::Key})
+        if (text == toString(choice)) return choice;
+    return std::nullopt;
+}
 
-// The index of the set's rest viseme: the one named in the settings (InputError when the set lacks
-// it), else the first of kRestVisemeNames the set has, else -1.
-int restVisemeOf(const VisemeSet& set, const ReduceSettings& settings) {
-    if (!settings.restViseme.empty()) {
-        const int index = set.find(settings.restViseme);
-        if (index < 0)
-            throwInputError("--rest-viseme", "the set has no viseme '" + settings.restViseme + "'");
+int restVisemeIndex(const std::vector<std::string>& names, const std::string& named, std::string_view where) {
+    const auto indexOf = [&](std::string_view name) {
+        const auto it = std::find(names.begin(), names.end(), name);
+        return it == names.end() ? -1 : static_cast<int>(it - names.begin());
+    };
+    if (!named.empty()) {
+        const int index = indexOf(named);
+        if (index < 0) throwInputError(where, "the set has no viseme '" + named + "'");
         return index;
     }
     for (const char* name : kRestVisemeNames)
-        if (const int index = set.find(name); index >= 0) return index;
+        if (const int index = indexOf(name); index >= 0) return index;
     return -1;
 }
+
+bool restIsFree(RestChoice choice, int restViseme) {
+    return choice == RestChoice::Free || (choice == RestChoice::Auto && restViseme >= 0);
+}
+
+namespace {
 
 // rho_f of a grouping from the meshes: the keys' spread plus f_i rho(A_i, neutral) of every resting viseme.
 double costWithRest(const ShapeView& shapes, std::span<const Vec3> neutral, const ReduceOutcome& out,
@@ -144,10 +155,8 @@ ReduceOutcome runReduction(const VisemeSet& set, const FrequencySource& frequenc
         !units.feasible(settings.target))
         throwInfeasibleTarget(units, settings.target, settings.constraintsSource);
     // The rest pose of a morph-target runtime is the neutral mesh: the rest-free model's free key.
-    const int restViseme = restVisemeOf(set, settings);
-    const bool restFree =
-        settings.rest == RestChoice::Free || (settings.rest == RestChoice::Auto && restViseme >= 0);
-    const RestPose rest{restFree, restViseme, set.neutral.positions};
+    const int restViseme = restVisemeIndex(out.visemeNames, settings.restViseme, settings.restVisemeSource);
+    const RestPose rest{restIsFree(settings.rest, restViseme), restViseme, set.neutral.positions};
     if (restViseme >= 0) out.restViseme = set.visemes[static_cast<std::size_t>(restViseme)].name;
     out.millimetresPerUnit = settings.millimetresPerUnit;
     if (settings.maxErrorMm > 0) {
