@@ -269,6 +269,11 @@ Document setTarget(const Document& document, int m) {
     const int n = static_cast<int>(document.visemeCount());
     if (m < 1 || m > std::max(n, 1))
         throwInputError("target", "m must be in 1.." + std::to_string(n) + ", got " + std::to_string(m));
+    // The resting rest viseme is no key: say so here rather than as an infeasible reduction later.
+    if (const RestPose rest = documentRestPose(document); rest.free && rest.viseme >= 0 && m >= n)
+        throwInputError("target", "m = " + std::to_string(m) + ": with the rest free, " +
+                                      document.visemes->visemes[static_cast<std::size_t>(rest.viseme)].name +
+                                      " rests, so at most " + std::to_string(n - 1) + " keys");
     Document next = document;
     next.target = m;
     return checked(std::move(next));

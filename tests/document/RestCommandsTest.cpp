@@ -36,6 +36,9 @@ TEST(RestCommands, SetRestChangesTheModelTheRestVisemeAndTheReductionInputs) {
     const int n = static_cast<int>(start.visemeCount());
     const Document all = edit::setTarget(keyed, n);
     EXPECT_EQ(edit::setRest(all, RestChoice::Free, "").target, n - 1);
+    EXPECT_EQ(test::refusal([&] { edit::setTarget(start, n); }),
+              "target: m = " + std::to_string(n) + ": with the rest free, sil rests, so at most " +
+                  std::to_string(n - 1) + " keys");
 }
 
 TEST(RestCommands, TheRestVisemeFollowsRenamesAndRemovals) {

@@ -247,6 +247,10 @@ TEST(AvatarClicks, ReducedAvatarIsExportedAndTheProjectRefersToTheAvatar) {
     EXPECT_EQ(again.document()["avatar"]["file"], folder.avatar.string());
     EXPECT_EQ(again.document()["visemes"].get<int>(), 15);
     EXPECT_EQ(again.document()["target"], saved["reduction"]["target"]);
+    // A new avatar document is rest-free (viseme_sil rests); the file keeps the model and its result.
+    EXPECT_EQ(saved["reduction"]["rest"], "auto");
+    EXPECT_EQ(saved["reduction"]["result"]["restFree"], true);
+    EXPECT_EQ(again.document()["reduction"]["rest"]["resolved"], "viseme_sil");
     EXPECT_FALSE(hasError(again)) << again.document()["messages"].dump();
 }
 

@@ -194,7 +194,7 @@ void EditorUi::reductionPanel() {
     if (const auto groupOf = grouping->groupOf(); static_cast<std::size_t>(selected) < groupOf.size() &&
                                                   groupOf[static_cast<std::size_t>(selected)] == kRestGroup) {
         ImGui::SameLine();
-        ImGui::TextColored(ImVec4(0.6f, 0.75f, 0.9f, 1.0f), "rests (shown as the neutral)");
+        ImGui::TextColored(ImVec4(0.6f, 0.75f, 0.9f, 1.0f), "rests");
     }
     ImGui::TextUnformatted("Right view:");
     int display = static_cast<int>(mergedDisplay_);

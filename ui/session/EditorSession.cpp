@@ -375,6 +375,7 @@ Project EditorSession::projectSnapshot() const {
         last.emplace();
         last->curve.assign(reductionCurve()->curve.begin(),
                            reductionCurve()->curve.begin() + document().target);
+        last->restFree = reductionCurve()->restFree; // the model its resting visemes belong to
     }
     const std::string selected = visemes() && selectedViseme >= 0
                                      ? visemes()->visemes[static_cast<std::size_t>(selectedViseme)].name
