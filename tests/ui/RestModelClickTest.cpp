@@ -6,8 +6,12 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 namespace vl::test {
@@ -94,6 +98,39 @@ TEST(RestModelClicks, TheModelIsShownSwitchedAndUndone) {
     EXPECT_ALIVE(gui);
     EXPECT_EQ(gui.document()["selected_viseme"].get<long>(), static_cast<long>(index));
     EXPECT_FALSE(hasError(gui)) << gui.document()["messages"].dump();
+}
+
+// A neutral grid and three visemes that bend it differently: a set without a rest viseme.
+std::filesystem::path writeSetWithoutRest() {
+    const auto dir =
+        std::filesystem::temp_directory_path() / ("visemelab-no-rest-" + std::to_string(getpid()));
+    writeGridVisemeFolder(dir, {"aa", "E", "oh"}, 6,
+                          [](int v, int i, int j) { return std::sin(v * (i + 2 * j)); });
+    return dir;
+}
+
+TEST(RestModelClicks, AddRestVisemeGivesASetWithoutOneItsRest) {
+    REQUIRE_GUI_TOOLS();
+    const auto dir = writeSetWithoutRest();
+    GuiDriver gui({"--visemes", dir.string(), "--panel", "Reduction"});
+    gui.waitIdle();
+    ASSERT_EQ(gui.document()["visemes"].get<int>(), 3);
+    // Auto without a rest viseme: the rest is a key.
+    EXPECT_FALSE(rest(gui)["free"].get<bool>()) << rest(gui);
+    EXPECT_EQ(rest(gui)["resolved"], "");
+
+    gui.click(gui.control("Add rest viseme", "button"));
+    gui.waitIdle();
+    EXPECT_ALIVE(gui);
+    EXPECT_EQ(gui.document()["visemes"].get<int>(), 4);
+    EXPECT_EQ(gui.document()["undo"], "Add rest viseme sil");
+    EXPECT_EQ(rest(gui)["resolved"], "sil");
+    EXPECT_TRUE(rest(gui)["free"].get<bool>());
+    EXPECT_TRUE(rests(gui, "sil")) << gui.document()["reduction"].dump();
+    // With a rest viseme the button is gone.
+    EXPECT_FALSE(gui.find("Add rest viseme", "button"));
+    EXPECT_FALSE(hasError(gui)) << gui.document()["messages"].dump();
+    std::filesystem::remove_all(dir);
 }
 
 } // namespace

@@ -34,7 +34,7 @@ void EditorUi::restModelSection() {
     const std::string shown =
         restViseme.empty()
             ? (pose.viseme >= 0 ? "default (" + set->visemes[static_cast<std::size_t>(pose.viseme)].name + ")"
-                                : std::string("default (none in the set)"))
+                                : std::string("default (none)"))
             : restViseme;
     ImGui::SetNextItemWidth(180);
     if (ctl::BeginCombo("rest viseme", shown.c_str(), ImGuiComboFlags_HeightLargest)) {
@@ -57,6 +57,20 @@ void EditorUi::restModelSection() {
                                 : " (the set has no rest viseme)");
     else
         ImGui::TextDisabled("The rest is a key like any other");
+    // A set without a rest viseme gets one: the neutral's shape, so silence maps to the rest pose.
+    if (pose.viseme < 0) {
+        const bool avatar = document.avatar.isSet();
+        ImGui::BeginDisabled(avatar);
+        if (ctl::Button("Add rest viseme"))
+            session.attempt("Add rest viseme", [&] { session.addRestViseme(kRestVisemeNames[0]); });
+        ImGui::EndDisabled();
+        ImGui::SameLine();
+        helpMarker(avatar
+                       ? "An avatar's visemes are its targets, so none is added; with the rest free its base "
+                         "mesh is the free rest all the same."
+                       : "Adds 'sil' with the neutral's shape (it rests with the rest free), as the "
+                         "Frequencies panel's 'Add rest viseme' does.");
+    }
     if (changed)
         session.attempt("Rest model", [&] { session.setRest(static_cast<RestChoice>(choice), restViseme); });
 }
