@@ -402,13 +402,16 @@ void EditorUi::updateScalars() {
                 const std::vector<double> w = session.weights();
                 double scale = 0.0;
                 std::vector<double> shown;
+                const auto measure = [&](int member, const std::vector<Vec3>& shape) {
+                    auto errors =
+                        vertexErrors(set->visemes[static_cast<std::size_t>(member)].positions, shape, w);
+                    scale = std::max(scale, maxOf(errors));
+                    if (member == selected) shown = std::move(errors);
+                };
                 for (std::size_t g = 0; g < grouping->groups.size(); ++g)
-                    for (int member : grouping->groups[g]) {
-                        auto errors = vertexErrors(set->visemes[static_cast<std::size_t>(member)].positions,
-                                                   merged->keys[g].positions, w);
-                        scale = std::max(scale, maxOf(errors));
-                        if (member == selected) shown = std::move(errors);
-                    }
+                    for (int member : grouping->groups[g]) measure(member, merged->keys[g].positions);
+                // A resting viseme is shown as the neutral: its error is its distance from it.
+                for (int member : grouping->rest) measure(member, set->neutral.positions);
                 // Square root: distances read better than squared distances on a colour ramp. The
                 // legend reads in distance for a vertex of the largest weight (sqrt(w) d / sqrt(w_max)).
                 for (double& e : shown) e = std::sqrt(e);

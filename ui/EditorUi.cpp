@@ -227,8 +227,25 @@ nlohmann::json EditorUi::reductionProbe() const {
     nlohmann::json out = {{"running", session.reductionRunning()}};
     if (const auto bound = session.reductionBound())
         out["bound"] = {{"groups", bound->groups}, {"lower", bound->lowerBound}, {"best", bound->bestFound}};
-    if (const Grouping* grouping = session.currentGrouping(); grouping && grouping->feasible())
+    if (const Grouping* grouping = session.currentGrouping(); grouping && grouping->feasible()) {
         out["current"] = {{"optimal", grouping->optimal}, {"gap", grouping->gap()}, {"cost", grouping->cost}};
+        nlohmann::json resting = nlohmann::json::array();
+        for (const int i : grouping->rest)
+            resting.push_back(session.visemes()->visemes[static_cast<std::size_t>(i)].name);
+        out["current"]["resting"] = std::move(resting);
+        out["current"]["keys"] = grouping->groups.size();
+    }
+    const Document& document = session.document();
+    nlohmann::json rest = {{"model", toString(document.rest)}, {"rest_viseme", document.restViseme}};
+    try {
+        const RestPose pose = documentRestPose(document);
+        rest["free"] = pose.free;
+        rest["resolved"] =
+            pose.viseme >= 0 ? document.visemes->visemes[static_cast<std::size_t>(pose.viseme)].name : "";
+    } catch (const InputError&) {
+    }
+    out["rest"] = std::move(rest);
+    out["last_avatar_export"] = session.lastAvatarExport();
     return out;
 }
 
@@ -728,10 +745,14 @@ void EditorUi::comparisonViews(ImVec2 size) {
         } else {
             const int group = grouping->groupOf()[static_cast<std::size_t>(selected)];
             after.assign(grouping->groups.size(), 0.0f);
-            after[static_cast<std::size_t>(group)] = 1.0f;
             static const char* const kShown[] = {" (error colours)", " (skin)", " on the original (cyan)"};
-            afterLabel =
-                "Merged group " + std::to_string(group + 1) + kShown[static_cast<int>(mergedDisplay_)];
+            if (group == kRestGroup) { // no key: every weight 0 shows the neutral
+                afterLabel = std::string("Rests: the neutral") + kShown[static_cast<int>(mergedDisplay_)];
+            } else {
+                after[static_cast<std::size_t>(group)] = 1.0f;
+                afterLabel =
+                    "Merged group " + std::to_string(group + 1) + kShown[static_cast<int>(mergedDisplay_)];
+            }
         }
     }
     DrawStyle plain;

@@ -186,6 +186,7 @@ class EditorUi {
         int pin = 0, first = 0, second = 1;
     } constraintChoice_;
     void constraintsSection();
+    void restModelSection(); // the Reduction panel's model: rest free or a key (panels/RestModelSection.cpp)
     double errorLegendMax_ = 0.0; // largest weighted distance of the error colours, model units
     // Millimetres per model unit: the chosen unit, or the guess from the neutral mesh's size.
     double millimetresPerModelUnit() const;

@@ -6,6 +6,7 @@
 #include "core/common/AtomicFile.h"
 #include "core/common/Error.h"
 #include "core/export/ReductionOutputs.h"
+#include "core/gltf/AvatarKeyTargets.h"
 #include "core/gltf/AvatarReduce.h"
 #include "core/gltf/AvatarReport.h"
 #include "core/gltf/AvatarScan.h"
@@ -161,6 +162,9 @@ int runAvatarReduce(const AvatarReduceOptions& o) {
         std::printf("mesh %d \"%s\": %zu morph targets -> %zu (%zu viseme targets, %zu keys, names %s)\n",
                     m.mesh, m.name.c_str(), m.targetsBefore, m.targetsAfter, m.visemeTargets, m.keys,
                     toString(write.names));
+    // Which target now carries which key, as the written file records it (mesh extras visemeKeys).
+    for (const std::string& line : formatAvatarKeyTargets(avatarKeyTargets(r.glb, o.out)))
+        std::printf("  %s\n", line.c_str());
     for (const std::string& note : r.summary.notes) std::printf("note: %s\n", note.c_str());
     std::printf("Wrote %s (%zu bytes; %zu bytes of binary data before%s, was %zu)%s%s\n", o.out.c_str(),
                 r.glb.size(), r.summary.binaryBytesAfter, o.gltfpack ? " re-compression" : "",

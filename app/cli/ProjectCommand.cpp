@@ -30,7 +30,13 @@ struct NewProjectOptions {
     std::string face;
     std::string order;
     bool reduce = false;
+    std::string rest = toString(kNewProjectRest); // the reduction model (ReduceRun.h RestChoice)
 };
+
+RestChoice restOf(const NewProjectOptions& o) {
+    if (const auto choice = restChoiceFromString(o.rest)) return *choice;
+    throwUsage("--rest must be auto, free or key, got '" + o.rest + "'");
+}
 
 // Frequencies from the options: a viseme table, or a phoneme table plus a phoneme -> viseme map.
 FrequencySource frequenciesOf(const NewProjectOptions& o) {
@@ -79,6 +85,7 @@ Project avatarProject(const NewProjectOptions& o, bool targetGiven) {
         project.frequencies = frequenciesOntoVisemes(frequenciesOf(o), names);
     }
     if (targetGiven) project.reduction.target = o.target;
+    project.reduction.rest = restOf(o);
     return project;
 }
 
@@ -98,6 +105,7 @@ int runNew(const NewProjectOptions& o, bool targetGiven) {
     }
     Project project;
     project.path = out;
+    project.reduction.rest = restOf(o);
 
     const auto files = listVisemeFolder(o.visemeDir, o.neutral);
     std::filesystem::path neutral = o.neutral;
@@ -173,6 +181,12 @@ void addProjectCommand(CLI::App& app, CommandRunner& run) {
     create->add_option("--face", o->face, "Include a deformable face: bundled | retarget");
     create->add_option("--order", o->order, "Viseme order, comma-separated (default: sorted by file name)");
     create->add_flag("--reduce", o->reduce, "Run the reduction and store its result in the project");
+    create
+        ->add_option("--rest", o->rest,
+                     "The reduction model: auto (free when the set has a rest viseme, sil or viseme_sil), "
+                     "free (the rest pose is a free key; visemes may rest) or key (the rest is a key like "
+                     "any other, as projects before version 3)")
+        ->capture_default_str();
     create->callback([&run, o, target] {
         const bool targetGiven = target->count() > 0;
         run = [o, targetGiven] { return runNew(*o, targetGiven); };

@@ -42,7 +42,7 @@ struct ReduceOptions {
     std::string method = "auto";
     double timeLimit = 60;
     std::vector<std::string> compareMaps; // phoneme -> viseme maps costed as groupings
-    std::string rest = "auto";            // auto, free or key (ReduceRun.h RestChoice)
+    std::string rest;                     // auto, free or key (ReduceRun.h RestChoice); empty: not given
     std::string restViseme;
 };
 
@@ -145,8 +145,7 @@ struct ReduceInputs {
 };
 
 RestChoice restChoiceFlag(const std::string& text) {
-    for (const RestChoice choice : {RestChoice::Auto, RestChoice::Free, RestChoice::Key})
-        if (text == toString(choice)) return choice;
+    if (const auto choice = restChoiceFromString(text)) return *choice;
     throwUsage("--rest must be free or key (or auto), got '" + text + "'");
 }
 
@@ -170,7 +169,7 @@ void checkFlagCombinations(const ReduceOptions& o) {
     if (o.method != "auto" && o.method != "dp" && o.method != "bnb" && o.method != "lp")
         throwUsage("--method must be auto, dp, bnb or lp, got '" + o.method + "'");
     if (!(o.timeLimit >= 0)) throwUsage("--time-limit must be >= 0 seconds (0: no limit)");
-    restChoiceFlag(o.rest);
+    if (!o.rest.empty()) restChoiceFlag(o.rest);
     o.constraints.names(); // A,B syntax
 }
 
@@ -185,8 +184,15 @@ void applySolverFlags(const ReduceOptions& o, ReduceSettings& settings) {
     }
     settings.options.method = reductionMethodFromString(o.method, "--method");
     settings.options.timeLimitSeconds = o.timeLimit;
-    settings.rest = restChoiceFlag(o.rest);
-    settings.restViseme = o.restViseme;
+    // A project's rest model holds unless a flag says otherwise; without a project: auto.
+    if (!o.rest.empty())
+        settings.rest = restChoiceFlag(o.rest);
+    else if (o.project.empty())
+        settings.rest = RestChoice::Auto;
+    if (!o.restViseme.empty()) {
+        settings.restViseme = o.restViseme;
+        settings.restVisemeSource = "--rest-viseme";
+    }
     settings.closure = closureSetting(o.constraints);
     settings.maxErrorMm = o.constraints.maxErrorMm;
     for (const auto& file : o.compareMaps) settings.compareMaps.push_back(loadPhonemeMapFile(file));
@@ -214,6 +220,9 @@ ReduceInputs loadInputs(const ReduceOptions& o, bool weightsGiven) {
         const ReduceSettings fromProject = projectReduceSettings(project);
         in.settings.constraints = fromProject.constraints;
         in.settings.constraintsSource = fromProject.constraintsSource;
+        in.settings.rest = fromProject.rest;
+        in.settings.restViseme = fromProject.restViseme;
+        in.settings.restVisemeSource = fromProject.restVisemeSource;
     }
     applySolverFlags(o, in.settings);
     in.settings.millimetresPerUnit = guessMillimetresPerUnit(in.set.neutral.positions);
@@ -327,8 +336,9 @@ void addReduceCommand(CLI::App& app, CommandRunner& run) {
         "costed under the same objective and compared with the optimum (repeatable)");
     cmd->add_option("--rest", options->rest,
                     "The rest pose: free (the neutral is an extra key that costs nothing; a viseme joins a "
-                    "key or rests) or key (the rest is a key like any other). Default: free when the set "
-                    "has a rest viseme (sil, viseme_sil or --rest-viseme), else key");
+                    "key or rests) or key (the rest is a key like any other). Default: the project's model "
+                    "(/reduction/rest); else free when the set has a rest viseme (sil, viseme_sil or "
+                    "--rest-viseme), else key");
     cmd->add_option("--rest-viseme", options->restViseme,
                     "The set's rest viseme (default: sil or viseme_sil); it always rests with --rest free");
     cmd->callback([&run, options, weights] {

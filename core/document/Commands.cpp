@@ -80,6 +80,7 @@ Document removeViseme(const Document& document, int index, const std::string& ph
     const auto namesIt = [&](const auto& pair) { return pair.first == name || pair.second == name; };
     std::erase_if(next.constraints.apart, namesIt);
     std::erase_if(next.constraints.together, namesIt);
+    if (next.restViseme == name) next.restViseme.clear(); // back to sil / viseme_sil
     // So does its preset (a viseme and a preset of the same name are one viseme).
     if (next.face.cascade) {
         std::vector<VisemeParameters> presets = facePresets(next.face);
@@ -268,6 +269,11 @@ Document setTarget(const Document& document, int m) {
     const int n = static_cast<int>(document.visemeCount());
     if (m < 1 || m > std::max(n, 1))
         throwInputError("target", "m must be in 1.." + std::to_string(n) + ", got " + std::to_string(m));
+    // The resting rest viseme is no key: say so here rather than as an infeasible reduction later.
+    if (const RestPose rest = documentRestPose(document); rest.free && rest.viseme >= 0 && m >= n)
+        throwInputError("target", "m = " + std::to_string(m) + ": with the rest free, " +
+                                      document.visemes->visemes[static_cast<std::size_t>(rest.viseme)].name +
+                                      " rests, so at most " + std::to_string(n - 1) + " keys");
     Document next = document;
     next.target = m;
     return checked(std::move(next));
@@ -276,6 +282,14 @@ Document setTarget(const Document& document, int m) {
 Document setConstraints(const Document& document, ConstraintNames constraints) {
     Document next = document;
     next.constraints = std::move(constraints);
+    return checked(std::move(next));
+}
+
+Document setRest(const Document& document, RestChoice rest, const std::string& restViseme) {
+    Document next = document;
+    next.rest = rest;
+    next.restViseme = restViseme;
+    next.target = std::clamp(next.target, 1, std::max(1, documentMaxKeys(next)));
     return checked(std::move(next));
 }
 
@@ -327,6 +341,8 @@ Document setAvatarPattern(const Document& document, const std::string& pattern,
         const auto unknownPair = [&](const auto& pair) { return !known(pair.first) || !known(pair.second); };
         std::erase_if(d.constraints.apart, unknownPair);
         std::erase_if(d.constraints.together, unknownPair);
+        d.rest = document.rest;
+        d.restViseme = known(document.restViseme) ? document.restViseme : std::string();
     });
     keep([&](Document& d) { d.target = std::min(document.target, static_cast<int>(d.visemeCount())); });
     keep([&](Document& d) {

@@ -52,6 +52,10 @@ Document setRefinementSettings(const Document& document, const CriterionSettings
 Document setTarget(const Document& document, int m);
 // Pins, apart and together pairs by viseme name (checked: known names, no contradictions).
 Document setConstraints(const Document& document, ConstraintNames constraints);
+// The reduction model (free rest or the rest as a key) and the rest viseme (a viseme's name, or empty
+// for sil / viseme_sil); InputError naming the rest viseme when the set has no such viseme. The
+// target is clamped to the keys the model allows (documentMaxKeys).
+Document setRest(const Document& document, RestChoice rest, const std::string& restViseme);
 
 // --- speech ------------------------------------------------------------------------------------
 // What the Say panel speaks (checkSpeechSettings; whether espeak-ng knows the voice is checked when

@@ -17,7 +17,27 @@ const std::vector<double>& DocumentWeights::paintedOrEmpty() const {
 
 bool sameReductionInputs(const Document& a, const Document& b) {
     return a.visemes == b.visemes && a.frequencies == b.frequencies && a.weights == b.weights &&
-           a.constraints == b.constraints;
+           a.constraints == b.constraints && a.rest == b.rest && a.restViseme == b.restViseme;
+}
+
+RestPose documentRestPose(const Document& document) {
+    if (!document.visemes) return {};
+    const int restViseme = restVisemeIndex(visemeNames(document), document.restViseme, "rest viseme");
+    return {restIsFree(document.rest, restViseme), restViseme, document.visemes->neutral.positions};
+}
+
+int documentMaxKeys(const Document& document) {
+    const std::vector<std::string> names = visemeNames(document);
+    const int n = static_cast<int>(names.size());
+    int groups = n;
+    try {
+        groups =
+            std::min(n, constraintUnits(resolveConstraints(document.constraints, names), n, names).maxGroups);
+    } catch (const InputError&) { // contradicting constraints: the reduction reports them
+    }
+    const RestPose rest = documentRestPose(document);
+    // The rest viseme's group rests, so it is no key.
+    return rest.free && rest.viseme >= 0 ? std::max(1, groups - 1) : groups;
 }
 
 std::vector<std::string> visemeNames(const Document& document) {
@@ -46,6 +66,7 @@ void validateDocument(const Document& document) {
     documentWeights(document);
     const std::vector<std::string> names = visemeNames(document);
     constraintUnits(resolveConstraints(document.constraints, names), static_cast<int>(names.size()), names);
+    documentRestPose(document); // the rest viseme is one of the set
     const int n = static_cast<int>(document.visemes->size());
     if (document.target < 1 || document.target > n)
         throwInputError("target",
@@ -100,6 +121,8 @@ LoadedProject documentFromProject(const Project& project) {
     document.refinement = project.refinement;
     document.target = project.reduction.target;
     document.constraints = project.reduction.constraints;
+    document.rest = project.reduction.rest;
+    document.restViseme = project.reduction.restViseme;
     document.speech = project.speech;
     if (project.deformation.isSet()) {
         FaceModel& model = document.face;
@@ -145,6 +168,8 @@ Project projectFromDocument(const Document& document, const std::optional<Reduct
     project.refinement = document.refinement;
     project.reduction.target = document.target;
     project.reduction.constraints = document.constraints;
+    project.reduction.rest = document.rest;
+    project.reduction.restViseme = document.restViseme;
     project.speech = document.speech;
     project.reduction.result = reduction;
     if (const FaceModel& face = document.face; face.cascade) {

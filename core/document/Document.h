@@ -67,7 +67,11 @@ struct Document {
     CriterionSettings refinement;
     int target = 1;              // m, the number of merged visemes the reduction keeps
     ConstraintNames constraints; // pins, apart and together pairs, by viseme name
-    SpeechSettings speech;       // what the Say panel speaks (text, voice, rate)
+    // The reduction model: new documents are rest-free when the set has a rest viseme; an opened
+    // project keeps the model its file records (keyed for files older than version 3).
+    RestChoice rest = kNewProjectRest;
+    std::string restViseme; // a viseme's name; empty: sil or viseme_sil when the set has one
+    SpeechSettings speech;  // what the Say panel speaks (text, voice, rate)
     // Set when the viseme set was read from an avatar (core/document/AvatarDocument.h): the set is
     // the avatar's visemes over the concatenated world-space geometry of the meshes carrying them.
     DocumentAvatar avatar;
@@ -92,6 +96,14 @@ std::vector<double> documentWeights(const Document& document);
 
 // Normalised frequency of every viseme (throws InputError when the table does not resolve).
 std::vector<double> documentFrequencies(const Document& document);
+
+// The rest pose the document's reduction runs with (Reduction.h): free or keyed, its rest viseme
+// (document.restViseme, else sil / viseme_sil, else none) and the set's neutral (a view into
+// document.visemes, valid while it lives). Throws InputError when restViseme names no viseme.
+RestPose documentRestPose(const Document& document);
+// The most keys a reduction of the document can have: the viseme count, one less when the rest
+// viseme rests (rest-free model), fewer when the constraints allow fewer groups.
+int documentMaxKeys(const Document& document);
 
 // A loaded project: the document, plus what the file held that is not document state.
 struct LoadedProject {

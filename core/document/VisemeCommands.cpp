@@ -39,6 +39,7 @@ void renameEverywhere(Document& next, const std::string& from, const std::string
     for (auto& [phoneme, viseme] : next.frequencies.map.entries)
         if (viseme == from) viseme = to;
     std::replace(next.constraints.pinned.begin(), next.constraints.pinned.end(), from, to);
+    if (next.restViseme == from) next.restViseme = to;
     for (auto* pairs : {&next.constraints.apart, &next.constraints.together})
         for (auto& [a, b] : *pairs) {
             if (a == from) a = to;

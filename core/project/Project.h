@@ -7,6 +7,7 @@
 #include "core/deform/Visemes.h"
 #include "core/mesh/Mesh.h"
 #include "core/reduce/Frequencies.h"
+#include "core/reduce/ReduceRun.h"
 #include "core/reduce/Reduction.h"
 #include "core/reduce/Weights.h"
 #include "core/speech/SpeechSettings.h"
@@ -19,9 +20,10 @@
 namespace vl {
 
 // The newest version this VisemeLab reads and writes; newer versions are refused. Version 2 only adds
-// /deformation/domain: a project without it is still written as version 1, so VisemeLabs that read
-// version 1 keep opening it.
-constexpr int kProjectVersion = 2;
+// /deformation/domain, version 3 the reduction's rest model (/reduction/rest, restViseme, resting
+// visemes): a project without them is still written as version 1 (or 2), so VisemeLabs that read
+// those versions keep opening it.
+constexpr int kProjectVersion = 3;
 constexpr int kOldestProjectVersion = 0; // older versions load through a migration
 inline constexpr const char* kProjectFormat = "visemelab-project";
 
@@ -49,9 +51,15 @@ struct ProjectWeights {
     bool operator==(const ProjectWeights&) const = default;
 };
 
+// The rest model new projects start with (`project new`, the editor's New, avatars): rest-free when
+// the set has a rest viseme. A file without /reduction/rest ran the keyed model and keeps it.
+inline constexpr RestChoice kNewProjectRest = RestChoice::Auto;
+
 struct ProjectReduction {
     int target = 1;                        // m, in 1..n
     ConstraintNames constraints;           // pins, apart and together pairs by viseme name
+    RestChoice rest = RestChoice::Key;     // what files without "rest" (versions 0..2) ran
+    std::string restViseme;                // a viseme's name; empty: sil or viseme_sil when present
     std::optional<ReductionResult> result; // the last run (groups ordered and canonical), if any
     bool operator==(const ProjectReduction&) const = default;
 };

@@ -228,7 +228,7 @@ Project projectFromJson(const JsonNode& root, const ProjectReadContext& context)
     if (root.has("weights")) project.weights = weightsFromJson(root["weights"], project.neutral);
     if (root.has("deformation")) project.deformation = deformationFromJson(root["deformation"], context);
     if (root.has("refinement")) project.refinement = refinementFromJson(root["refinement"]);
-    if (root.has("reduction")) project.reduction = reductionFromJson(root["reduction"], names);
+    if (root.has("reduction")) project.reduction = reductionFromJson(root["reduction"], names, context);
     if (root.has("speech")) project.speech = speechFromJson(root["speech"]);
     if (root.has("editor")) {
         const JsonNode editor = root["editor"];

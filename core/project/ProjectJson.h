@@ -45,8 +45,12 @@ CriterionSettings refinementFromJson(const JsonNode& node);
 Json constraintsToJson(const ConstraintNames& constraints);
 ConstraintNames constraintsFromJson(const JsonNode& node, const std::vector<std::string>& visemeNames);
 
+// The rest model's fields (rest, restViseme, a rest-free result) need version 3 (context.version).
 Json reductionToJson(const ProjectReduction& reduction, const std::vector<std::string>& visemeNames);
-ProjectReduction reductionFromJson(const JsonNode& node, const std::vector<std::string>& visemeNames);
+ProjectReduction reductionFromJson(const JsonNode& node, const std::vector<std::string>& visemeNames,
+                                   const ProjectReadContext& context);
+// Whether the reduction section holds anything of version 3 (the rest model).
+bool reductionNeedsVersion3(const ProjectReduction& reduction);
 
 // The optional "speech" section (written only when it differs from the defaults).
 Json speechToJson(const SpeechSettings& speech);

@@ -104,6 +104,9 @@ ReduceSettings projectReduceSettings(const Project& project) {
     settings.target = project.reduction.target;
     settings.constraints = project.reduction.constraints;
     settings.constraintsSource = projectWhere(project, "/reduction/constraints");
+    settings.rest = project.reduction.rest;
+    settings.restViseme = project.reduction.restViseme;
+    settings.restVisemeSource = projectWhere(project, "/reduction/restViseme");
     return settings;
 }
 
@@ -137,7 +140,11 @@ ReducedModel projectReducedModel(const Project& project, const VisemeSet& set, b
     if (unreduced)
         return unreducedModel(set, visemeFrequencies(project.frequencies, names), project.frequencies);
     const auto& stored = project.reduction.result;
-    if (stored && !stored->curve.empty() &&
+    // A stored result of the other rest model (the choice changed since) is not the project's.
+    const bool restFree =
+        restIsFree(project.reduction.rest, restVisemeIndex(names, project.reduction.restViseme,
+                                                           projectWhere(project, "/reduction/restViseme")));
+    if (stored && !stored->curve.empty() && stored->restFree == restFree &&
         static_cast<int>(stored->curve.size()) == project.reduction.target) {
         const std::vector<int> groupOf = stored->groupOf();
         if (groupOf.size() == set.size())

@@ -17,7 +17,8 @@ VisemeSet loadProjectVisemeSet(const Project& project);
 // when the avatar file (read with the project's pattern) now yields others.
 void checkAvatarVisemeNames(const Project& project, const std::vector<std::string>& avatarVisemes);
 
-// The reduction settings the project holds (weight mode, painted weights, target, constraints).
+// The reduction settings the project holds (weight mode, painted weights, target, constraints, rest
+// model and rest viseme).
 ReduceSettings projectReduceSettings(const Project& project);
 
 // Runs the exact reduction of `set` (normally loadProjectVisemeSet(project)) with the project's
@@ -26,7 +27,7 @@ ReduceOutcome reduceProject(const Project& project, const VisemeSet& set,
                             const ProgressCallback& progress = {});
 
 // The project's reduced model (buildReducedModel): its meshes, frequencies and phoneme map, grouped
-// by the stored last result when it matches the viseme count and target, else by a fresh exact
+// by the stored last result when it matches the viseme count, target and rest model, else by a fresh exact
 // reduction with the project's settings. `unreduced` makes every original viseme its own key instead.
 ReducedModel projectReducedModel(const Project& project, bool unreduced = false);
 // The same with the project's meshes already loaded (loadProjectVisemeSet).

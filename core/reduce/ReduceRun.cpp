@@ -43,21 +43,32 @@ const char* toString(RestChoice choice) {
     return "auto";
 }
 
-namespace {
+std::optional<RestChoice> restChoiceFromString(std::string_view text) {
+    for (const RestChoice choice : {RestChoice::Auto, RestChoice::Free, RestChoice::Key})
+        if (text == toString(choice)) return choice;
+    return std::nullopt;
+}
 
-// The index of the set's rest viseme: the one named in the settings (InputError when the set lacks
-// it), else the first of kRestVisemeNames the set has, else -1.
-int restVisemeOf(const VisemeSet& set, const ReduceSettings& settings) {
-    if (!settings.restViseme.empty()) {
-        const int index = set.find(settings.restViseme);
-        if (index < 0)
-            throwInputError("--rest-viseme", "the set has no viseme '" + settings.restViseme + "'");
+int restVisemeIndex(const std::vector<std::string>& names, const std::string& named, std::string_view where) {
+    const auto indexOf = [&](std::string_view name) {
+        const auto it = std::find(names.begin(), names.end(), name);
+        return it == names.end() ? -1 : static_cast<int>(it - names.begin());
+    };
+    if (!named.empty()) {
+        const int index = indexOf(named);
+        if (index < 0) throwInputError(where, "the set has no viseme '" + named + "'");
         return index;
     }
     for (const char* name : kRestVisemeNames)
-        if (const int index = set.find(name); index >= 0) return index;
+        if (const int index = indexOf(name); index >= 0) return index;
     return -1;
 }
+
+bool restIsFree(RestChoice choice, int restViseme) {
+    return choice == RestChoice::Free || (choice == RestChoice::Auto && restViseme >= 0);
+}
+
+namespace {
 
 // The index of the lips-closed viseme settings.closure names (-1: no rule, or auto and none in the set).
 int closureVisemeOf(const VisemeSet& set, const ReduceSettings& settings) {
@@ -179,10 +190,9 @@ ReduceOutcome runReduction(const VisemeSet& set, const FrequencySource& frequenc
     for (const auto& v : set.visemes) rows.emplace_back(v.positions);
     const ShapeView shapes(rows);
     // The rest pose of a morph-target runtime is the neutral mesh: the rest-free model's free key.
-    const int restViseme = restVisemeOf(set, settings);
-    const bool restFree =
-        settings.rest == RestChoice::Free || (settings.rest == RestChoice::Auto && restViseme >= 0);
-    const RestPose rest{restFree, restViseme, set.neutral.positions};
+    const int restViseme = restVisemeIndex(out.visemeNames, settings.restViseme, settings.restVisemeSource);
+    const RestPose rest{restIsFree(settings.rest, restViseme), restViseme, set.neutral.positions};
+    const bool restFree = rest.free;
     const bool targetGiven = settings.target >= 1 && static_cast<std::size_t>(settings.target) <= set.size();
     ConstraintNames constraintNames = constraintsWithClosure(set, settings, restFree, restViseme, out);
     if (!out.closureViseme.empty() && constraintNames.pinned.size() > settings.constraints.pinned.size()) {

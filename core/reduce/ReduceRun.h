@@ -11,6 +11,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace vl {
@@ -19,7 +20,8 @@ namespace vl {
 // Key, the rest is a key like any other (the model before issue 29); Auto, Free when the set has a
 // rest viseme, else Key.
 enum class RestChoice { Auto, Free, Key };
-const char* toString(RestChoice choice); // "auto", "free", "key"
+const char* toString(RestChoice choice);                               // "auto", "free", "key"
+std::optional<RestChoice> restChoiceFromString(std::string_view text); // the inverse; nullopt otherwise
 
 // The rest viseme names a set may use, in order of preference (the sample's and the Oculus one).
 inline constexpr const char* kRestVisemeNames[] = {"sil", "viseme_sil"};
@@ -52,6 +54,7 @@ struct ReduceSettings {
     // Dropped, with ReduceOutcome::closureNote saying why, where the target or the designer's
     // constraints leave no room for it.
     std::string closure{};
+    std::string restVisemeSource = "--rest-viseme"; // where errors about it point (a flag, a JSON path)
     // The set's length unit in millimetres (1000 for glTF's metres); 0 when unknown. Per-viseme errors
     // are reported in mm only when it is known.
     double millimetresPerUnit = 0;
@@ -59,6 +62,12 @@ struct ReduceSettings {
     // any vertex more than this from its own shape (MaxErrorSearch.h; needs millimetresPerUnit).
     double maxErrorMm = 0;
 };
+
+// The index in `names` of the rest viseme: `named` (InputError at `where` when no viseme has that
+// name), else the first of kRestVisemeNames present, else -1.
+int restVisemeIndex(const std::vector<std::string>& names, const std::string& named, std::string_view where);
+// Whether `choice` runs the rest-free model for a set whose rest viseme is `restViseme` (-1: none).
+bool restIsFree(RestChoice choice, int restViseme);
 
 // What `--max-error-mm` found.
 struct MaxErrorFinding {

@@ -29,7 +29,7 @@ TEST(ProjectCli, NewAndCheck) {
                                 (assets / "sample").string() + "\" --phonemes \"" +
                                 (assets / "phonemes" / "en-us_frequencies.csv").string() + "\" --map \"" +
                                 (assets / "phonemes" / "map_sample_face.csv").string() +
-                                "\" --weights area --target 10 --face bundled --reduce"
+                                "\" --weights area --target 10 --face bundled --reduce --rest key"
                                 " --order sil,PP,FF,TH,DD,kk,CH,SS,nn,RR,aa,E,ih,oh,ou";
     ASSERT_EQ(runCli(newArgs, dir / "new.txt"), 0) << readFileToString(dir / "new.txt");
 
@@ -63,6 +63,35 @@ TEST(ProjectCli, NewAndCheck) {
     EXPECT_NE(
         readFileToString(dir / "bad.txt").find("/reduction/target: 16 is outside the allowed range 1..15"),
         std::string::npos)
+        << readFileToString(dir / "bad.txt");
+}
+
+// New projects run the rest-free model when their set has a rest viseme (auto); --rest chooses.
+TEST(ProjectCli, NewProjectsAreRestFree) {
+    if (!std::filesystem::exists(VISEMELAB_CLI)) GTEST_SKIP() << "CLI not built: " << VISEMELAB_CLI;
+    const std::filesystem::path assets = VISEMELAB_ASSETS_DIR;
+    if (!std::filesystem::exists(assets / "sample" / "neutral.obj"))
+        GTEST_SKIP() << "sample meshes not generated";
+    test::ScratchDir dir("cli_rest");
+    const auto file = dir / "new.vlproj";
+    const std::string args =
+        "project new --out \"" + file.string() + "\" --visemes \"" + (assets / "sample").string() +
+        "\" --phonemes \"" + (assets / "phonemes" / "en-us_frequencies.csv").string() + "\" --map \"" +
+        (assets / "phonemes" / "map_sample_face.csv").string() + "\" --target 4 --reduce";
+    ASSERT_EQ(runCli(args, dir / "new.txt"), 0) << readFileToString(dir / "new.txt");
+    const Project made = loadProject(file);
+    EXPECT_EQ(made.reduction.rest, RestChoice::Auto);
+    ASSERT_TRUE(made.reduction.result);
+    EXPECT_TRUE(made.reduction.result->restFree); // the sample has sil: it rests
+    EXPECT_EQ(made.reduction.result->groupOf()[static_cast<std::size_t>(made.findViseme("sil"))], kRestGroup);
+    EXPECT_NE(readFileToString(file).find("\"version\": 3"), std::string::npos);
+
+    ASSERT_EQ(runCli(args + " --rest key", dir / "key.txt"), 0) << readFileToString(dir / "key.txt");
+    EXPECT_EQ(loadProject(file).reduction.rest, RestChoice::Key);
+    EXPECT_FALSE(loadProject(file).reduction.result->restFree);
+    EXPECT_EQ(runCli(args + " --rest sometimes", dir / "bad.txt"), 2);
+    EXPECT_NE(readFileToString(dir / "bad.txt").find("--rest must be auto, free or key, got 'sometimes'"),
+              std::string::npos)
         << readFileToString(dir / "bad.txt");
 }
 

@@ -249,12 +249,13 @@ TEST(CliReduce, ReducesMoreThanTwentyVisemes) {
 }
 
 TEST(CliReduce, TheRestIsFreeForTheSampleAndKeyedWithRestKey) {
-    // The sample project stores the keyed result (sil merged with PP); --rest key reproduces it, the
-    // default (the set has sil) rests sil: it gets no key and maps to -1, the neutral face.
+    // The sample project (a file without /reduction/rest) stores the keyed result (sil merged with
+    // PP): its own model, the keyed one, reproduces it; --rest auto (the set has sil) rests sil: it
+    // gets no key and maps to -1, the neutral face.
     TempDir dir("visemelab_cli_rest");
     const fs::path project = kSample / "sample.vlproj";
-    const auto keyed = test::runCli("reduce --project " + project.string() + " --rest key --out " +
-                                    (dir.path / "key").string());
+    const auto keyed =
+        test::runCli("reduce --project " + project.string() + " --out " + (dir.path / "key").string());
     ASSERT_EQ(keyed.exitCode, 0) << keyed.output;
     const auto stored = readJson(project)["reduction"]["result"]["curve"];
     const auto keyedReport = readJson(dir.path / "key" / "report.json");
@@ -266,8 +267,8 @@ TEST(CliReduce, TheRestIsFreeForTheSampleAndKeyedWithRestKey) {
             << "p=" << p + 1;
     EXPECT_NE(keyed.output.find("Rest: key"), std::string::npos) << keyed.output;
 
-    const auto free =
-        test::runCli("reduce --project " + project.string() + " --out " + (dir.path / "free").string());
+    const auto free = test::runCli("reduce --project " + project.string() + " --rest auto --out " +
+                                   (dir.path / "free").string());
     ASSERT_EQ(free.exitCode, 0) << free.output;
     const auto report = readJson(dir.path / "free" / "report.json");
     EXPECT_EQ(report["rest"]["model"], "free");

@@ -52,7 +52,8 @@ TEST(Commands, EachEditChangesWhatItNamesAndNothingElse) {
     const Document louder = edit::setPhonemeFrequency(phonemes, 1, 9.0);
     EXPECT_EQ(louder.frequencies.phonemes.entries[1].second, 9.0);
 
-    const Document removed = edit::removeViseme(edit::setTarget(start, 15), 14);
+    const Document keyed = edit::setRest(start, RestChoice::Key, ""); // every viseme may be a key
+    const Document removed = edit::removeViseme(edit::setTarget(keyed, 15), 14);
     EXPECT_EQ(removed.visemeCount(), 14u);
     EXPECT_EQ(removed.visemeFiles.size(), 14u);
     EXPECT_EQ(removed.target, 14); // clamped

@@ -65,6 +65,10 @@ TEST(Document, ARefinedFaceMeshIsSavedAndComesBackOnOpen) {
 
     const auto dir = tempDir("refined");
     saveProject(dir / "p.vlproj", projectFromDocument(document));
+    EXPECT_EQ(projectVersionFor(loadProject(dir / "p.vlproj")), 3); // a new document: its rest model
+    // Keyed, the face's (u,v) mesh alone needs version 2.
+    document = edit::setRest(document, RestChoice::Key, "");
+    saveProject(dir / "p.vlproj", projectFromDocument(document));
     const Project project = loadProject(dir / "p.vlproj");
     EXPECT_EQ(projectVersionFor(project), 2);
     const Document back = documentFromProject(project).document;

@@ -80,6 +80,12 @@ TEST(ProjectRoundTrip, EqualityNoticesEveryKindOfChange) {
     EXPECT_TRUE(changed([](Project& p) { p.reduction.constraints.apart.emplace_back("x", "y"); }));
     EXPECT_TRUE(changed([](Project& p) { p.reduction.constraints.together.emplace_back("x", "y"); }));
     EXPECT_TRUE(changed([](Project& p) {
+        p.reduction.rest = p.reduction.rest == RestChoice::Free ? RestChoice::Key : RestChoice::Free;
+    }));
+    EXPECT_TRUE(changed([](Project& p) { p.reduction.restViseme += "x"; }));
+    EXPECT_TRUE(changed([](Project& p) { p.reduction.result->restFree = !p.reduction.result->restFree; }));
+    EXPECT_TRUE(changed([](Project& p) { p.reduction.result->curve[0].rest.push_back(0); }));
+    EXPECT_TRUE(changed([](Project& p) {
         p.editor.selectedViseme = p.editor.selectedViseme.empty() ? p.visemes[0].name : "";
     }));
 }

@@ -88,6 +88,32 @@ TEST_F(ProjectRun, ReductionEqualsThePlainApiOnTheSameFiles) {
     EXPECT_EQ(reloaded.reduction.result->best().groups, expected.result.best().groups);
 }
 
+TEST_F(ProjectRun, TheProjectsRestModelRunsAndItsResultIsKeptOnlyForThatModel) {
+    const VisemeSet set = loadProjectVisemeSet(project);
+    // Keyed (a file without /reduction/rest): every viseme is in a key.
+    const ReduceOutcome keyed = reduceProject(project, set);
+    EXPECT_FALSE(keyed.result.restFree);
+    EXPECT_TRUE(keyed.result.best().rest.empty());
+    // Rest-free: sil rests by definition, as with the CLI's --rest free.
+    Project free = project;
+    free.reduction.rest = RestChoice::Free;
+    const ReduceOutcome outcome = reduceProject(free, set);
+    ReduceSettings settings = projectReduceSettings(free);
+    settings.rest = RestChoice::Free;
+    const ReduceOutcome expected = runReduction(set, free.frequencies, settings);
+    EXPECT_TRUE(outcome.result.restFree);
+    EXPECT_EQ(outcome.result, expected.result);
+    EXPECT_EQ(outcome.result.best().groupOf()[0], kRestGroup);
+    // The stored keyed result is not the rest-free project's model: it reduces afresh.
+    storeReductionResult(free, keyed);
+    EXPECT_EQ(projectReducedModel(free, set).resting, outcome.model.resting);
+    EXPECT_FALSE(projectReducedModel(free, set).resting.empty());
+    // A named rest viseme that the set lacks is refused at its JSON path.
+    free.reduction.restViseme = "neutral";
+    EXPECT_INPUT_ERROR(reduceProject(free, set),
+                       "face.vlproj: /reduction/restViseme: the set has no viseme 'neutral'");
+}
+
 TEST_F(ProjectRun, EmbeddedMeshesGiveTheSameSet) {
     Project embedded = project;
     const VisemeSet fromFiles = loadProjectVisemeSet(project);

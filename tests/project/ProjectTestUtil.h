@@ -141,6 +141,19 @@ inline std::vector<std::vector<int>> randomPartition(std::mt19937_64& rng, int n
     return groups;
 }
 
+// A rest-free result: in some groupings a member that is not its group's first rests instead (the
+// groups stay canonical and p of them).
+inline void makeRandomRestFree(std::mt19937_64& rng, ReductionResult& result) {
+    result.restFree = true;
+    for (Grouping& grouping : result.curve)
+        for (auto& group : grouping.groups)
+            if (group.size() > 1 && rng() % 2 == 0) {
+                grouping.rest.push_back(group.back());
+                group.pop_back();
+            }
+    for (Grouping& grouping : result.curve) std::sort(grouping.rest.begin(), grouping.rest.end());
+}
+
 inline InfluenceField randomInfluence(std::mt19937_64& rng) {
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     InfluenceField r;
@@ -306,6 +319,11 @@ inline Project randomProject(std::mt19937_64& rng, const std::filesystem::path& 
     project.refinement.contour = {randomDouble(rng, true), randomDouble(rng, true),
                                   1 + static_cast<int>(rng() % 32)};
     if (n > 0 && rng() % 2 == 0) project.editor.selectedViseme = names[rng() % names.size()];
+    if (rng() % 2 == 0) { // the rest model (version 3)
+        project.reduction.rest = static_cast<RestChoice>(rng() % 3);
+        if (n > 0 && rng() % 2 == 0) project.reduction.restViseme = names[rng() % names.size()];
+        if (project.reduction.result && rng() % 2 == 0) makeRandomRestFree(rng, *project.reduction.result);
+    }
     return project;
 }
 

@@ -210,6 +210,15 @@ TEST(AvatarClicks, ReducedAvatarIsExportedAndTheProjectRefersToTheAvatar) {
         EXPECT_TRUE(written.json["extras"].contains("visemelab"));
         EXPECT_EQ(written.json["extras"]["visemelab"]["names"], "merged");
         EXPECT_EQ(written.json["extras"]["visemelab"]["keys"].size(), static_cast<std::size_t>(m));
+        // The export says which target now carries which key (the Export panel lists it).
+        const auto& keys = gui.document()["reduction"]["last_avatar_export"];
+        ASSERT_GE(keys.size(), static_cast<std::size_t>(m)) << keys;
+        for (int g = 0; g < m; ++g)
+            EXPECT_EQ(keys[static_cast<std::size_t>(g)].get<std::string>().rfind(
+                          "key " + std::to_string(g) + " (", 0),
+                      0u)
+                << keys;
+        EXPECT_NE(keys[0].get<std::string>().find("' on "), std::string::npos) << keys;
 
         // The export button refuses the input itself, even after "Replace"; the input is untouched.
         gui.click(gui.control("Export avatar...", "button"));
@@ -238,6 +247,10 @@ TEST(AvatarClicks, ReducedAvatarIsExportedAndTheProjectRefersToTheAvatar) {
     EXPECT_EQ(again.document()["avatar"]["file"], folder.avatar.string());
     EXPECT_EQ(again.document()["visemes"].get<int>(), 15);
     EXPECT_EQ(again.document()["target"], saved["reduction"]["target"]);
+    // A new avatar document is rest-free (viseme_sil rests); the file keeps the model and its result.
+    EXPECT_EQ(saved["reduction"]["rest"], "auto");
+    EXPECT_EQ(saved["reduction"]["result"]["restFree"], true);
+    EXPECT_EQ(again.document()["reduction"]["rest"]["resolved"], "viseme_sil");
     EXPECT_FALSE(hasError(again)) << again.document()["messages"].dump();
 }
 

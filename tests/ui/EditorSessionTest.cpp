@@ -273,6 +273,31 @@ TEST(EditorSession, SaveAndReopenProjectKeepsTheState) {
     // The result the file recorded is shown at once (a fresh reduction replaces it).
     ASSERT_NE(reopened.currentGrouping(), nullptr);
     EXPECT_EQ(reopened.currentGrouping()->groups, session.currentGrouping()->groups);
+    // A new document is rest-free (the face's set has sil): its resting visemes come back too.
+    EXPECT_EQ(reopened.document().rest, RestChoice::Auto);
+    EXPECT_TRUE(reopened.reductionCurve()->restFree);
+    EXPECT_FALSE(reopened.currentGrouping()->rest.empty());
+    EXPECT_EQ(reopened.currentGrouping()->rest, session.currentGrouping()->rest);
+}
+
+TEST(EditorSession, TheRestModelIsOneUndoStepTheReductionFollows) {
+    EditorSession session;
+    loadGeneratedSet(session);
+    session.setTarget(5);
+    session.startReduction();
+    session.finishBackgroundWork();
+    ASSERT_TRUE(session.reductionCurve() && session.reductionCurve()->restFree);
+    session.setRest(RestChoice::Key, "");
+    EXPECT_EQ(session.undoName(), "Rest is a key");
+    EXPECT_EQ(session.reductionCurve(), nullptr); // the inputs changed: the curve is computed again
+    session.startReduction();
+    session.finishBackgroundWork();
+    ASSERT_NE(session.currentGrouping(), nullptr);
+    EXPECT_FALSE(session.reductionCurve()->restFree);
+    EXPECT_TRUE(session.currentGrouping()->rest.empty());
+    EXPECT_EQ(session.currentGrouping()->groups.size(), 5u);
+    session.undo();
+    EXPECT_EQ(session.document().rest, RestChoice::Auto);
 }
 
 TEST(EditorSession, ReopenedProjectKeepsTheRetargetingChoice) {
@@ -886,6 +911,7 @@ TEST(EditorSession, ExportIsWhatTheDocumentShowsNotWhatTheDiskHolds) {
     EditorSession session;
     session.autoReduce = false;
     session.loadVisemeFolder(dir);
+    session.setRest(RestChoice::Key, "");                       // sil is a key too
     session.setTarget(static_cast<int>(session.visemeCount())); // nothing merged: keys = visemes
     const VisemeSet shown = *session.visemes();
     // Another program rewrites one viseme file.

@@ -357,4 +357,22 @@ void GuiDriver::chooseFile(const std::filesystem::path& file, const std::string&
     waitIdle();
 }
 
+void writeGridVisemeFolder(const std::filesystem::path& dir, const std::vector<std::string>& names, int side,
+                           const std::function<double(int, int, int)>& height) {
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    for (std::size_t v = 0; v <= names.size(); ++v) {
+        std::ofstream obj(dir / ((v == 0 ? std::string("neutral") : names[v - 1]) + ".obj"));
+        for (int i = 0; i < side; ++i)
+            for (int j = 0; j < side; ++j)
+                obj << "v " << i << ' ' << j << ' ' << (v == 0 ? 0.0 : height(static_cast<int>(v), i, j))
+                    << '\n';
+        for (int i = 0; i + 1 < side; ++i)
+            for (int j = 0; j + 1 < side; ++j) {
+                const int a = i * side + j + 1, b = a + 1, c = a + side, d = c + 1;
+                obj << "f " << a << ' ' << b << ' ' << d << "\nf " << a << ' ' << d << ' ' << c << '\n';
+            }
+    }
+}
+
 } // namespace vl::test

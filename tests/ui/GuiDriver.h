@@ -11,6 +11,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <optional>
 #include <string>
@@ -20,6 +21,11 @@ namespace vl::test {
 
 // Empty when Xvfb and xdotool are both installed, else what is missing (for GTEST_SKIP).
 std::string missingGuiTools();
+
+// A folder the editor opens with --visemes: `dir`/neutral.obj, a flat side x side grid, and one OBJ
+// per name with the grid's heights height(viseme 1.., i, j), called in file order.
+void writeGridVisemeFolder(const std::filesystem::path& dir, const std::vector<std::string>& names, int side,
+                           const std::function<double(int, int, int)>& height);
 
 class GuiDriver {
   public:

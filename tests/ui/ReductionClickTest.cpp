@@ -21,23 +21,11 @@ namespace {
 std::filesystem::path writeRandomVisemeFolder(int count) {
     const auto dir =
         std::filesystem::temp_directory_path() / ("visemelab-large-set-" + std::to_string(getpid()));
-    std::filesystem::remove_all(dir);
-    std::filesystem::create_directories(dir);
-    constexpr int kSide = 8;
     std::mt19937 random(20261126);
     std::normal_distribution<double> normal(0.0, 1.0);
-    for (int v = 0; v <= count; ++v) {
-        const std::string name = v == 0 ? "neutral" : "v" + std::to_string(v);
-        std::ofstream obj(dir / (name + ".obj"));
-        for (int i = 0; i < kSide; ++i)
-            for (int j = 0; j < kSide; ++j)
-                obj << "v " << i << ' ' << j << ' ' << (v == 0 ? 0.0 : 0.3 * normal(random)) << '\n';
-        for (int i = 0; i + 1 < kSide; ++i)
-            for (int j = 0; j + 1 < kSide; ++j) {
-                const int a = i * kSide + j + 1, b = a + 1, c = a + kSide, d = c + 1;
-                obj << "f " << a << ' ' << b << ' ' << d << "\nf " << a << ' ' << d << ' ' << c << '\n';
-            }
-    }
+    std::vector<std::string> names;
+    for (int v = 1; v <= count; ++v) names.push_back("v" + std::to_string(v));
+    writeGridVisemeFolder(dir, names, 8, [&](int, int, int) { return 0.3 * normal(random); });
     return dir;
 }
 

@@ -159,6 +159,14 @@ void EditorUi::avatarExportSection() {
     if (ctl::Button("Export avatar...", ImVec2(200, 0))) openAvatarExport();
     ImGui::SameLine();
     noteText("a .glb (or .vrm), never the file it was read from");
+    // What the last export wrote, read back from the file: a runtime drives these targets.
+    if (const auto& lines = session.lastAvatarExport(); !lines.empty()) {
+        ImGui::TextUnformatted("Last export, which target carries which key:");
+        for (const std::string& line : lines) {
+            ImGui::Bullet();
+            ImGui::TextWrapped("%s", line.c_str()); // long member lists wrap instead of running off
+        }
+    }
 }
 
 // Re-compression offered where it can run: gltfpack found, and not a VRM (gltfpack renumbers what

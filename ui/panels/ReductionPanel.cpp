@@ -24,9 +24,13 @@ void EditorUi::reductionPanel() {
     }
     const int n = static_cast<int>(set->size());
     int m = session.document().target;
+    // With a free rest the rest viseme is no key: the slider stops at the keys the model allows.
+    RestPose rest;
+    session.attempt("Rest viseme", [&] { rest = documentRestPose(session.document()); });
+    const int maxKeys = rest.free && rest.viseme >= 0 ? std::max(1, n - 1) : n;
     sectionHeader("Target");
     ImGui::SetNextItemWidth(-90);
-    if (ctl::SliderInt("groups m", &m, 1, n)) session.attempt("Target", [&] { session.setTarget(m); });
+    if (ctl::SliderInt("groups m", &m, 1, maxKeys)) session.attempt("Target", [&] { session.setTarget(m); });
     endEditOnRelease(session);
     ctl::Checkbox("Re-run automatically", &session.autoReduce);
     ImGui::SameLine();
@@ -48,6 +52,7 @@ void EditorUi::reductionPanel() {
         }
     }
 
+    restModelSection();
     constraintsSection();
 
     const ReductionResult* curve = session.reductionCurve();
@@ -59,7 +64,7 @@ void EditorUi::reductionPanel() {
         return;
     }
 
-    sectionHeader("Cost for p = 1..n");
+    sectionHeader(curve->restFree ? "Cost for p = 1..n keys (+ the free rest)" : "Cost for p = 1..n");
     ctl::Checkbox("log scale", &costView_.logarithmic);
     ImGui::SameLine();
     ctl::Checkbox("% of p = 1", &costView_.percent);
@@ -84,6 +89,7 @@ void EditorUi::reductionPanel() {
     options.logarithmic = costView_.logarithmic;
     options.unit = costView_.percent ? "%" : "mm";
     options.marked = m;
+    if (curve->restFree) options.axis = "keys p (+ free rest)";
     if (const int picked = costPlot("##cost", distances, options, ImVec2(0, 170)); picked > 0 && picked != m)
         session.attempt("Target", [&] {
             session.setTarget(picked);
@@ -149,8 +155,30 @@ void EditorUi::reductionPanel() {
             ImGui::TableNextColumn();
             ImGui::Text("%.1f%%", 100.0 * total);
         }
+        // The resting visemes: no key, all weights 0 (the rest-free model).
+        if (!grouping->rest.empty()) {
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::TextColored(ImVec4(0.6f, 0.75f, 0.9f, 1.0f), "rest");
+            ImGui::TableNextColumn();
+            double total = 0.0;
+            for (std::size_t k = 0; k < grouping->rest.size(); ++k) {
+                const int member = grouping->rest[k];
+                if (k > 0) ImGui::SameLine(0.0f, 6.0f);
+                ImGui::PushID(1000 + member);
+                if (ctl::SmallButton(set->visemes[static_cast<std::size_t>(member)].name.c_str()))
+                    session.selectedViseme = member;
+                ImGui::PopID();
+                if (static_cast<std::size_t>(member) < frequencies.size())
+                    total += frequencies[static_cast<std::size_t>(member)];
+            }
+            ImGui::TableNextColumn();
+            ImGui::Text("%.1f%%", 100.0 * total);
+        }
         ImGui::EndTable();
     }
+    if (!grouping->rest.empty())
+        ImGui::TextDisabled("Resting visemes have no key: the mouth stays at the neutral (all weights 0).");
 
     sectionHeader("Compare");
     const int selected = std::max(session.selectedViseme, 0);
@@ -162,6 +190,11 @@ void EditorUi::reductionPanel() {
                 pauseSpeech();
             }
         ImGui::EndCombo();
+    }
+    if (const auto groupOf = grouping->groupOf(); static_cast<std::size_t>(selected) < groupOf.size() &&
+                                                  groupOf[static_cast<std::size_t>(selected)] == kRestGroup) {
+        ImGui::SameLine();
+        ImGui::TextColored(ImVec4(0.6f, 0.75f, 0.9f, 1.0f), "rests");
     }
     ImGui::TextUnformatted("Right view:");
     int display = static_cast<int>(mergedDisplay_);

@@ -162,6 +162,8 @@ void EditorUi::sayTimeline(ImVec2 size) {
     if (playback->reduced) {
         data.reducedCues = playback->reduced->cues();
         data.reducedName = "m = " + std::to_string(playback->groups);
+        // Rest-free: phonemes of resting visemes show the neutral, besides the m keys.
+        if (!playback->reduced->model().resting.empty()) data.reducedName += " + rest";
     }
     if (playback->error) {
         data.error = playback->error->frames;

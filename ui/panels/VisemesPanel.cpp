@@ -83,11 +83,8 @@ void EditorUi::visemesPanel() {
     const bool frequenciesOk =
         session.attempt("Frequencies", [&] { frequencies = session.visemeFrequencies(); });
     const Grouping* grouping = session.currentGrouping();
-    std::vector<int> groupOf(set->size(), -1);
-    if (grouping)
-        for (std::size_t g = 0; g < grouping->groups.size(); ++g)
-            for (int member : grouping->groups[g])
-                groupOf[static_cast<std::size_t>(member)] = static_cast<int>(g);
+    std::vector<int> groupOf(set->size(), -2); // -2: no grouping yet
+    if (grouping && grouping->feasible()) groupOf = grouping->groupOf();
 
     sectionHeader("Visemes");
     ImGui::Text("%zu visemes, neutral: %s", set->size(),
@@ -126,6 +123,8 @@ void EditorUi::visemesPanel() {
             ImGui::TableNextColumn();
             if (groupOf[i] >= 0)
                 ImGui::Text("%d", groupOf[i] + 1);
+            else if (groupOf[i] == kRestGroup) // rest-free model: no key, the neutral
+                ImGui::TextColored(ImVec4(0.6f, 0.75f, 0.9f, 1.0f), "rest");
             else
                 ImGui::TextDisabled("-");
             ImGui::TableNextColumn();

@@ -1,5 +1,7 @@
 #include "ui/session/EditorSession.h"
 
+#include "core/gltf/AvatarKeyTargets.h"
+
 #include "core/common/AtomicFile.h"
 #include "core/common/Error.h"
 #include "core/common/TextParsing.h"
@@ -9,6 +11,7 @@
 #include "core/document/Commands.h"
 #include "core/export/Gltf.h"
 #include "core/export/ModelFrequencies.h"
+#include "core/gltf/AvatarKeyTargets.h"
 #include "core/gltf/AvatarScan.h"
 #include "core/gltf/Gltfpack.h"
 #include "core/io/MeshIO.h"
@@ -148,8 +151,10 @@ void EditorSession::adopt(Loaded loaded) {
     noteChange(before);
     ++geometryGeneration_;
     // The result the file recorded is shown until a fresh reduction replaces it.
+    // (Only a result of the document's rest model: a file may record one of the other.)
     if (const auto& stored = loaded.project.reduction;
-        stored && !stored->curve.empty() && static_cast<int>(stored->curve.size()) >= document().target)
+        stored && !stored->curve.empty() && static_cast<int>(stored->curve.size()) >= document().target &&
+        stored->restFree == documentRestPose(document()).free)
         reduction_.seed(std::make_shared<const ReductionResult>(*stored));
     selectedViseme = visemes() ? visemes()->find(loaded.project.selectedViseme) : -1;
     info(loaded.message);
@@ -287,7 +292,8 @@ std::string EditorSession::writeAvatarExport(const Document& document, const Pro
     // The grouping shown (recorded in the snapshot), else a fresh reduction with the document's settings.
     const auto& stored = snapshot.reduction.result;
     const std::vector<int> groupOf =
-        stored && static_cast<int>(stored->curve.size()) == snapshot.reduction.target
+        stored && static_cast<int>(stored->curve.size()) == snapshot.reduction.target &&
+                stored->restFree == documentRestPose(document).free
             ? stored->groupOf()
             : reduceProject(snapshot, *document.visemes).result.groupOf();
     AvatarWriteSummary summary;
@@ -308,14 +314,34 @@ std::string EditorSession::writeAvatarExport(const Document& document, const Pro
                           std::to_string(keys) + " keys (names " + toString(options.write.names) + ")" +
                           (options.gltfpack ? ", re-compressed with gltfpack," : "") + " to " + out.string();
     for (const std::string& note : summary.notes) message += "; " + note;
+    // Which target now carries which key, read back from what was written.
+    for (const std::string& line : formatAvatarKeyTargets(avatarKeyTargets(glb, out.string())))
+        message += "\n" + line;
+    std::string resting;
+    for (std::size_t i = 0; i < groupOf.size(); ++i)
+        if (groupOf[i] == kRestGroup) resting += (resting.empty() ? "" : ", ") + visemeNames(document)[i];
+    if (!resting.empty()) message += "\nresting (all weights 0, no target): " + resting;
     return message;
+}
+
+void EditorSession::noteAvatarExport(const std::string& message) {
+    lastAvatarExport_.clear();
+    std::size_t start = 0;
+    for (std::size_t end = message.find('\n'); start <= message.size(); end = message.find('\n', start)) {
+        if (end == std::string::npos) end = message.size();
+        lastAvatarExport_.push_back(message.substr(start, end - start));
+        start = end + 1;
+    }
+    info(lastAvatarExport_.front() + " (which target carries which key: Export panel)");
+    lastAvatarExport_.erase(lastAvatarExport_.begin());
 }
 
 std::vector<std::string> EditorSession::exportAvatar(const std::filesystem::path& out,
                                                      const AvatarExport& options) {
-    const std::string message = writeAvatarExport(document(), projectSnapshot(), out, options);
-    info(message);
-    return {message};
+    noteAvatarExport(writeAvatarExport(document(), projectSnapshot(), out, options));
+    std::vector<std::string> lines{messages_.back().text};
+    lines.insert(lines.end(), lastAvatarExport_.begin(), lastAvatarExport_.end());
+    return lines;
 }
 
 void EditorSession::startExportAvatar(const std::filesystem::path& out, const AvatarExport& options) {
@@ -349,6 +375,7 @@ Project EditorSession::projectSnapshot() const {
         last.emplace();
         last->curve.assign(reductionCurve()->curve.begin(),
                            reductionCurve()->curve.begin() + document().target);
+        last->restFree = reductionCurve()->restFree; // the model its resting visemes belong to
     }
     const std::string selected = visemes() && selectedViseme >= 0
                                      ? visemes()->visemes[static_cast<std::size_t>(selectedViseme)].name
@@ -636,6 +663,14 @@ void EditorSession::setConstraints(ConstraintNames constraints) {
     commit("Constraints", edit::setConstraints(document(), std::move(constraints)));
 }
 
+void EditorSession::setRest(RestChoice rest, const std::string& restViseme) {
+    if (rest == document().rest && restViseme == document().restViseme) return;
+    commit(rest == RestChoice::Key    ? "Rest is a key"
+           : rest == RestChoice::Free ? "Rest free"
+                                      : "Rest free with a rest viseme",
+           edit::setRest(document(), rest, restViseme));
+}
+
 void EditorSession::collectRefinement() {
     auto outcome = refinement_.take();
     if (!outcome) return;
@@ -668,6 +703,7 @@ void EditorSession::poll() {
     // The held-back action (quit, open) runs only when the document it guarded is saved.
     if (files.saved && recordSaved(*files.saved, files.savedId) && files.afterSave) files.afterSave();
     for (const std::string& message : files.infos) info(message);
+    if (files.avatarExported) noteAvatarExport(*files.avatarExported);
     for (const std::string& message : files.errors) error(message);
     if (auto failed = speech_.poll()) error("Say: " + *failed);
     if (auto outcome = countTask_.take()) {

@@ -110,8 +110,12 @@ class EditorSession {
         bool gltfpack = false;
     };
     // Writes the avatar with its visemes reduced (the current grouping, else a fresh reduction with
-    // the document's settings) as a GLB; never over the avatar it was read from. Returns notes.
+    // the document's settings) as a GLB; never over the avatar it was read from. Returns the message
+    // and which target carries which key (lastAvatarExport()).
     std::vector<std::string> exportAvatar(const std::filesystem::path& out, const AvatarExport& options);
+    // The last avatar export's keys: "key 2 (viseme_PP+viseme_FF): target 'viseme_PP' on ..." and the
+    // visemes that rest (empty before any export).
+    const std::vector<std::string>& lastAvatarExport() const { return lastAvatarExport_; }
     // The same on a worker thread from a snapshot taken now; the result is a message in poll().
     void startExportAvatar(const std::filesystem::path& out, const AvatarExport& options);
 
@@ -181,6 +185,8 @@ class EditorSession {
     void setTarget(int m);
     // Pins, apart and together pairs by viseme name (validated; saved in the project).
     void setConstraints(ConstraintNames constraints);
+    // The reduction model and rest viseme (edit::setRest), one undo step.
+    void setRest(RestChoice rest, const std::string& restViseme);
     // Starts the reduction of the current inputs on a worker thread (no-op when already current).
     void startReduction() { reduction_.start(document()); }
     bool reductionRunning() const { return reduction_.running(); }
@@ -292,8 +298,10 @@ class EditorSession {
     static Loaded loadFolder(const std::filesystem::path& folder);
     static Loaded loadSampleFiles();
     static Loaded loadAvatarFile(const std::filesystem::path& file, const std::string& pattern);
+    // The message: one line saying what was written, then one line per key (and the resting visemes).
     static std::string writeAvatarExport(const Document& document, const Project& snapshot,
                                          const std::filesystem::path& out, const AvatarExport& options);
+    void noteAvatarExport(const std::string& message); // status message + lastAvatarExport_
     // True when `file` lies inside the bundled assets folder (never written by the editor).
     static bool isBundled(const std::filesystem::path& file);
     // The target of a save request (throws InputError when there is none).
@@ -315,6 +323,7 @@ class EditorSession {
     std::filesystem::path path_;
     std::vector<DocumentPtr> frameDocuments_; // documents replaced this frame
     std::deque<StatusMessage> messages_;
+    std::vector<std::string> lastAvatarExport_;
     std::uint64_t messageSerial_ = 0;
     std::uint64_t geometryGeneration_ = 1;
     ReductionService reduction_;

@@ -67,7 +67,12 @@ FileJobs::Finished FileJobs::poll() {
         }
     }
     collectMessage(model_, finished);
-    collectMessage(avatar_, finished);
+    if (auto outcome = avatar_.take()) { // its message lists the keys: the session keeps it
+        if (outcome->index() == 0)
+            finished.avatarExported = std::move(std::get<0>(*outcome));
+        else
+            finished.errors.push_back(avatar_.label() + ": " + std::get<1>(*outcome));
+    }
     return finished;
 }
 

@@ -32,6 +32,7 @@ class FileJobs {
         std::uint64_t savedId = 0;                  // ... from the document with this history id
         std::function<void()> afterSave;            // the action held back until that save
         std::vector<std::string> infos, errors;     // messages; errors name the job
+        std::optional<std::string> avatarExported;  // a finished avatar export's message
     };
 
     // Each throws InputError naming the job when one of its kind still runs.

@@ -38,14 +38,7 @@ const ReducedModel* ReductionService::reducedModel(const Document& document) {
 }
 
 std::size_t ReductionService::curveLength(const Document& document) {
-    const std::vector<std::string> names = visemeNames(document);
-    const int n = static_cast<int>(names.size());
-    try {
-        return static_cast<std::size_t>(std::min(
-            n, constraintUnits(resolveConstraints(document.constraints, names), n, names).maxGroups));
-    } catch (const InputError&) {
-        return names.size();
-    }
+    return static_cast<std::size_t>(std::max(1, documentMaxKeys(document)));
 }
 
 void ReductionService::start(const Document& document) {
@@ -76,16 +69,22 @@ void ReductionService::start(const Document& document) {
     auto set = document.visemes;
     auto frequencies = std::make_shared<std::vector<double>>(documentFrequencies(document));
     auto weights = std::make_shared<std::vector<double>>(documentWeights(document));
+    const RestPose rest = documentRestPose(document); // views set's neutral, which the worker holds
     runningRevision_ = revision_;
     runningLarge_ = n > kMaxExactVisemes;
-    task_.start("Reducing " + std::to_string(n) + " visemes",
-                [set, frequencies, weights, groups, constraints, options, watch, stop](const auto& progress) {
-                    std::vector<std::span<const Vec3>> rows;
-                    for (const auto& viseme : set->visemes) rows.emplace_back(viseme.positions);
-                    const ReductionProblem problem{ShapeView(std::span<const std::span<const Vec3>>(rows)),
-                                                   *frequencies, *weights, groups, constraints};
-                    return std::make_shared<const ReductionResult>(reduceVisemes(problem, options, progress));
-                });
+    task_.start(
+        "Reducing " + std::to_string(n) + " visemes",
+        [set, frequencies, weights, groups, constraints, rest, options, watch, stop](const auto& progress) {
+            std::vector<std::span<const Vec3>> rows;
+            for (const auto& viseme : set->visemes) rows.emplace_back(viseme.positions);
+            const ReductionProblem problem{ShapeView(std::span<const std::span<const Vec3>>(rows)),
+                                           *frequencies,
+                                           *weights,
+                                           groups,
+                                           constraints,
+                                           rest};
+            return std::make_shared<const ReductionResult>(reduceVisemes(problem, options, progress));
+        });
 }
 
 void ReductionService::stop() {

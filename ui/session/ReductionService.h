@@ -62,7 +62,8 @@ class ReductionService {
     bool complete(const Document& document) const {
         return curve() && curve()->curve.size() >= curveLength(document);
     }
-    // Entries of a full curve: p = 1..n, or up to the most groups the constraints allow.
+    // Entries of a full curve: p = 1..n, or up to the most keys the constraints and the rest model
+    // allow (documentMaxKeys).
     static std::size_t curveLength(const Document& document);
     // Time a reduction of more than kMaxExactVisemes visemes may take before it reports the best
     // grouping found with its gap.

@@ -91,7 +91,7 @@ int costPlot(const char* id, std::span<const double> values, const CostPlotOptio
     if (options.unit[0])
         draw->AddText(ImVec2(std::max(origin.x, left - 4.0f - ImGui::CalcTextSize(options.unit).x), origin.y),
                       kText, options.unit);
-    draw->AddText(ImVec2(right - ImGui::CalcTextSize("groups p").x, origin.y), kText, "groups p");
+    draw->AddText(ImVec2(right - ImGui::CalcTextSize(options.axis).x, origin.y), kText, options.axis);
 
     // Runs of finite values are drawn as lines; a p without a grouping leaves a gap.
     std::vector<ImVec2> points, run;

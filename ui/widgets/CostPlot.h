@@ -11,6 +11,8 @@ struct CostPlotOptions {
     bool logarithmic = true; // values over decades: p = 1 is often 100x p = n-1
     const char* unit = "";   // suffix of the value ticks and the readout ("mm", "%")
     int marked = 0;          // 1-based index drawn highlighted (the target m); 0 = none
+    // What p counts: groups, or keys beside the free rest (the rest-free model).
+    const char* axis = "groups p";
 };
 
 // values[p-1] for p = 1..n (>= 0; zeros sit on the bottom of a logarithmic axis). Occupies `size`
