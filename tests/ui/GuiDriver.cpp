@@ -273,6 +273,18 @@ void GuiDriver::press(int button, bool down) {
               std::string("button ") + std::to_string(button) + (down ? " down" : " up"));
 }
 
+nlohmann::json GuiDriver::reveal(const std::string& text, const std::string& kind) {
+    for (int attempt = 0; attempt < 40; ++attempt) {
+        const nlohmann::json c = control(text, kind);
+        if (c.value("visible", true)) return c;
+        // Scroll inside the control's column, towards it: up when it lies above the window's top.
+        const double x = c["x"].get<double>() + 5.0;
+        const bool above = c["y"].get<double>() < 150.0;
+        scroll(x, 400.0, above ? -2 : 2);
+    }
+    throw std::runtime_error("the " + kind + " '" + text + "' never came into view");
+}
+
 void GuiDriver::click(const nlohmann::json& control, double fx, double fy) {
     // A real user cannot click a row scrolled out of its list (the click lands on something else).
     if (!control.value("visible", true))

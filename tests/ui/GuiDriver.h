@@ -55,6 +55,10 @@ class GuiDriver {
     // The same, failing the test when the control is not there.
     nlohmann::json control(const std::string& text, const std::string& kind = {}, int nth = 0) const;
 
+    // The control, after scrolling the window under it until it is in view (a user scrolls to
+    // reach a control below the fold too); fails the test when it never comes into view.
+    nlohmann::json reveal(const std::string& text, const std::string& kind = {});
+
     // Left click at a fraction of the control's rectangle (0.5, 0.5 = its centre).
     void click(const nlohmann::json& control, double fx = 0.5, double fy = 0.5);
     void clickAt(double x, double y, int button = 1);

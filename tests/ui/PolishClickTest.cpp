@@ -166,11 +166,11 @@ TEST(PolishClicks, MergedShapeInSkinAndAsOverlay) {
     GuiDriver gui({"--sample", "--panel", "Reduction"});
     gui.waitIdle();
     EXPECT_EQ(gui.document()["merged_display"], 0);
-    gui.click(gui.control("skin", "radio"));
+    gui.click(gui.reveal("skin", "radio"));
     EXPECT_EQ(gui.document()["merged_display"], 1);
-    gui.click(gui.control("overlay on original", "radio"));
+    gui.click(gui.reveal("overlay on original", "radio"));
     EXPECT_EQ(gui.document()["merged_display"], 2);
-    gui.click(gui.control("error colours", "radio"));
+    gui.click(gui.reveal("error colours", "radio"));
     EXPECT_EQ(gui.document()["merged_display"], 0);
     EXPECT_ALIVE(gui);
     // The start option (the guide's pictures use it); a wrong name is shown, not fatal.
