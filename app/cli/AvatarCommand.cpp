@@ -204,7 +204,7 @@ void addAvatarCommand(CLI::App& app, CommandRunner& run) {
                                      "Reduce an avatar's visemes to m keys and write the same avatar back");
     r->add_option("input", reduce->input, "Avatar file (.glb, .gltf, .vrm)")->required();
     r->add_option("--target,-m", reduce->target, "Number of keys m (1..n), or --max-error-mm")
-        ->check(CLI::PositiveNumber);
+        ->check(kPositive);
     addConstraintOptions(*r, reduce->constraints, kClosureAuto);
     r->add_option("--out", reduce->out, "The reduced avatar (.glb or .vrm; never the input)")->required();
     r->add_option("--rest", reduce->rest,

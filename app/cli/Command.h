@@ -24,6 +24,15 @@ class UsageError : public std::runtime_error {
     throw UsageError(message);
 }
 
+// A number > 0, said in words a user reads (CLI11's PositiveNumber prints DBL_MAX's 309 digits).
+inline const CLI::Validator kPositive(
+    [](std::string& text) -> std::string {
+        double value = 0;
+        if (!CLI::detail::lexical_cast(text, value)) return "expected a number, got '" + text + "'";
+        return value > 0 ? std::string() : "must be greater than 0, got " + text;
+    },
+    "> 0");
+
 void addReduceCommand(CLI::App& app, CommandRunner& run);
 void addFreqCommand(CLI::App& app, CommandRunner& run);
 void addVisemesCommand(CLI::App& app, CommandRunner& run);

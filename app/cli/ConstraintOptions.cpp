@@ -43,7 +43,7 @@ void addConstraintOptions(CLI::App& command, ConstraintOptions& options, const c
             "--max-error-mm", options.maxErrorMm,
             "Use the smallest number of keys for which no viseme moves any vertex more than this many "
             "mm from its own shape (found and certified; replaces -m)")
-        ->check(CLI::PositiveNumber);
+        ->check(kPositive);
 }
 
 } // namespace vl::cli

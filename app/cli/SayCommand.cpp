@@ -291,7 +291,7 @@ void addSayCommand(CLI::App& app, CommandRunner& run) {
                     "face");
     cmd->add_option("--target,-m", o->target,
                     "With --avatar: reduce its visemes to m keys in memory (as `avatar reduce`)")
-        ->check(CLI::PositiveNumber);
+        ->check(kPositive);
     addConstraintOptions(*cmd, o->constraints, kClosureAuto);
     cmd->add_option("--reduced", o->reduced,
                     "With --avatar: the avatar `avatar reduce` wrote from it, as the reduced face");

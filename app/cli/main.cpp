@@ -67,6 +67,19 @@ int main(int argc, char** argv) {
     vl::cli::addFaceCommand(app, run);
     vl::cli::addAvatarCommand(app, run);
     vl::cli::addSayCommand(app, run);
+    app.set_version_flag("--version", std::string("visemelab ") + VISEMELAB_VERSION);
+
+    // A first argument that is neither an option nor a command is named as such (CLI11 would only
+    // say that a subcommand is required).
+    if (argc > 1 && argv[1][0] != '-') {
+        bool known = false;
+        for (const CLI::App* sub : app.get_subcommands({})) known = known || sub->check_name(argv[1]);
+        if (!known) {
+            std::fprintf(stderr, "visemelab: usage error: unknown command '%s' (see visemelab --help)\n",
+                         vl::quoteInput(argv[1]).c_str());
+            return vl::cli::kExitUsage;
+        }
+    }
 
     try {
         app.parse(argc, argv);
