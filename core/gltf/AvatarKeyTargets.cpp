@@ -64,9 +64,10 @@ std::vector<std::string> formatAvatarKeyTargets(const std::vector<AvatarKeyTarge
     for (const AvatarKeyTargets& key : keys) {
         // Meshes whose targets have the same names are listed together (the head and teeth of an RPM).
         std::vector<std::pair<std::vector<std::string>, std::string>> same;
-        for (const auto& [mesh, targets] : key.meshes) {
-            const auto it =
-                std::find_if(same.begin(), same.end(), [&](const auto& s) { return s.first == targets; });
+        for (const auto& entry : key.meshes) { // not a structured binding: clang 14 cannot capture one
+            const auto& [mesh, targets] = entry;
+            const auto it = std::find_if(same.begin(), same.end(),
+                                         [&](const auto& s) { return s.first == entry.second; });
             if (it == same.end())
                 same.emplace_back(targets, mesh);
             else
