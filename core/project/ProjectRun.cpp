@@ -107,6 +107,8 @@ ReduceSettings projectReduceSettings(const Project& project) {
     settings.rest = project.reduction.rest;
     settings.restViseme = project.reduction.restViseme;
     settings.restVisemeSource = projectWhere(project, "/reduction/restViseme");
+    // An avatar project reduces as `avatar reduce` does: the lips-closed viseme keeps a key.
+    if (project.avatar.isSet()) settings.closure = kClosureAuto;
     return settings;
 }
 

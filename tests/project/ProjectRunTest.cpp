@@ -219,3 +219,19 @@ TEST(SampleProject, LoadsAndReduces) {
 
 } // namespace
 } // namespace vl
+
+namespace vl {
+namespace {
+
+// An avatar project reduces as `avatar reduce` does (the lips-closed viseme keeps a key); a project
+// of mesh files leaves it to the optimiser, as `visemelab reduce` does.
+TEST(ProjectSettings, AvatarProjectsKeepTheLipClosureRule) {
+    Project meshes;
+    EXPECT_TRUE(projectReduceSettings(meshes).closure.empty());
+    Project avatar;
+    avatar.avatar.file = "avatar.glb";
+    EXPECT_EQ(projectReduceSettings(avatar).closure, kClosureAuto);
+}
+
+} // namespace
+} // namespace vl
