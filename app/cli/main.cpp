@@ -1,5 +1,6 @@
 // visemelab: the headless pipeline (reduce, refine, visemes, export, freq, project, avatar, say).
 #include "app/cli/Command.h"
+#include "app/cli/ProcessMemory.h"
 #include "core/common/Error.h"
 #include "core/common/InputRegistry.h"
 #include "core/common/OutputPolicy.h"
@@ -7,7 +8,6 @@
 #include <cstdio>
 #include <exception>
 #include <filesystem>
-#include <malloc.h>
 #include <new>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -40,13 +40,7 @@ std::string invalidUtf8Argument(int argc, char** argv) {
 } // namespace
 
 int main(int argc, char** argv) {
-    // A run allocates and frees buffers of the input's size one after the other (file, decoded
-    // accessors, world-space geometry, models, output). glibc hands freed memory back to the kernel
-    // and maps large blocks afresh, so every buffer paid its page faults again (a third of `say
-    // --avatar`'s time on a 15 MB avatar). Keep freed memory for reuse instead; the peak is the same.
-    mallopt(M_TRIM_THRESHOLD, 1 << 30);
-    mallopt(M_TOP_PAD, 64 << 20);
-    mallopt(M_MMAP_THRESHOLD, 32 << 20);
+    vl::cli::tuneProcessMemory();
     CLI::App app{"VisemeLab: optimal viseme reduction and adaptive deformable faces"};
     app.require_subcommand(1, 1);
     app.fallthrough(); // the output flags below may follow the subcommand (inherited by every subcommand)
