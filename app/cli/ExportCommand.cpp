@@ -31,9 +31,9 @@ int runExport(const ExportOptions& o) {
     options.quantise = o.quantise;
     options.faceName = std::filesystem::path(o.project).stem().string();
     const auto written = exportModel(model, *format, o.out, options);
-    std::printf("exported %zu key meshes (%s) as %s:\n", model.keys.size(),
+    std::fprintf(stderr, "exported %zu key meshes (%s) as %s:\n", model.keys.size(),
                 o.unreduced ? "unreduced" : "reduced", toString(*format));
-    for (const auto& path : written) std::printf("  %s\n", path.string().c_str());
+    for (const auto& path : written) std::fprintf(stderr, "  %s\n", path.string().c_str());
     return kExitOk;
 }
 

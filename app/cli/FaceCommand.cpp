@@ -98,7 +98,7 @@ void printReport(const face::FaceBuildReport& r) {
                 r.frame.up[2], r.frame.forward[0], r.frame.forward[1], r.frame.forward[2]);
     std::printf("coverage: the mesh covers %.0f%% of the face domain; %.0f%% is drawn in from the border\n",
                 100.0 * r.domainCoverage, 100.0 * r.retracted);
-    for (const auto& w : r.warnings) std::printf("warning: %s\n", w.c_str());
+    for (const auto& w : r.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
 }
 
 nlohmann::json reportJson(const face::BuiltFace& built, const std::string& layout) {
@@ -162,7 +162,7 @@ int runFaceBuild(const FaceBuildCliOptions& o) {
                 mesh.positions.size(), mesh.triangles.size(), mesh.islandCount);
     const face::FaceLandmarks given = givenLandmarks(mesh, o.landmarks);
     const face::LandmarkSuggestion suggestion = face::suggestLandmarks(mesh, given, !o.ignoreLayout);
-    for (const auto& note : suggestion.notes) std::printf("%s\n", note.c_str());
+    for (const auto& note : suggestion.notes) std::fprintf(stderr, "%s\n", note.c_str());
     printLandmarks(suggestion.landmarks);
     if (!suggestion.landmarks.hasRequired()) {
         std::string missing;
@@ -203,7 +203,7 @@ int runFaceBuild(const FaceBuildCliOptions& o) {
     saveProject(out, project);
     if (!o.landmarksOut.empty()) writeFileAtomically(o.landmarksOut, landmarksToJsonText(built.landmarks));
     if (!o.report.empty()) writeFileAtomically(o.report, reportJson(built, suggestion.layout).dump(2) + "\n");
-    std::printf("wrote %s: face '%s', %zu visemes on %zu vertices\n", o.out.c_str(), options.name.c_str(),
+    std::fprintf(stderr, "wrote %s: face '%s', %zu visemes on %zu vertices\n", o.out.c_str(), options.name.c_str(),
                 project.visemes.size(), project.neutral.embedded.positions.size());
     return kExitOk;
 }

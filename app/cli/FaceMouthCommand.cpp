@@ -120,7 +120,7 @@ int runFaceMouth(const FaceMouthCliOptions& o) {
     }
     if (!o.json.empty()) {
         writeFileAtomically(o.json, report.dump(2) + "\n");
-        std::printf("wrote %s\n", o.json.c_str());
+        std::fprintf(stderr, "wrote %s\n", o.json.c_str());
     }
     return kExitOk;
 }

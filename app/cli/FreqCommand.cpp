@@ -72,7 +72,7 @@ int runFreq(const FreqOptions& o) {
     if (!out.empty()) {
         const PhonemeTableInfo info{o.voice, std::filesystem::path(o.corpus).filename().string()};
         savePhonemeTable(out, result.counts, info, o.map.empty() ? nullptr : &map);
-        std::printf("Wrote %s\n", out.string().c_str());
+        std::fprintf(stderr, "Wrote %s\n", out.string().c_str());
     }
     return kExitOk;
 }

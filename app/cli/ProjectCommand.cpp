@@ -99,7 +99,7 @@ int runNew(const NewProjectOptions& o, bool targetGiven) {
         project.path = out;
         if (o.reduce) storeReductionResult(project, reduceProject(project, loadProjectVisemeSet(project)));
         saveProject(out, project);
-        std::printf("wrote %s: avatar %s, %zu visemes, target %d%s\n", out.string().c_str(), o.avatar.c_str(),
+        std::fprintf(stderr, "wrote %s: avatar %s, %zu visemes, target %d%s\n", out.string().c_str(), o.avatar.c_str(),
                     project.visemes.size(), project.reduction.target, o.reduce ? ", reduced" : "");
         return kExitOk;
     }
@@ -136,7 +136,7 @@ int runNew(const NewProjectOptions& o, bool targetGiven) {
     }
     if (o.reduce) storeReductionResult(project, reduceProject(project, loadProjectVisemeSet(project)));
     saveProject(out, project);
-    std::printf("wrote %s: %zu visemes%s\n", out.string().c_str(), project.visemes.size(),
+    std::fprintf(stderr, "wrote %s: %zu visemes%s\n", out.string().c_str(), project.visemes.size(),
                 o.reduce ? (", reduced to " + std::to_string(o.target)).c_str() : "");
     return kExitOk;
 }

@@ -290,7 +290,7 @@ int runReduce(const ReduceOptions& o, bool weightsGiven) {
         }
         std::printf("\n");
     }
-    std::printf("Merged meshes (OBJ + VRML) and mapping.json in %s\nReport: %s\n", outDir.string().c_str(),
+    std::fprintf(stderr, "Merged meshes (OBJ + VRML) and mapping.json in %s\nReport: %s\n", outDir.string().c_str(),
                 reportPath.string().c_str());
     return kExitOk;
 }

@@ -185,7 +185,7 @@ int runRefine(const RefineOptions& o) {
                 o.out.empty() ? "refined" : o.out.c_str(), result.triangles.size(), result.positions.size(),
                 mesh.maxLevel(), error.average, error.maximum, ms,
                 o.save ? (" (refined for " + std::to_string(poses) + " poses)").c_str() : "");
-    if (o.save) std::printf("stored the refined mesh in %s: %s\n", o.project.c_str(), saved.c_str());
+    if (o.save) std::fprintf(stderr, "stored the refined mesh in %s: %s\n", o.project.c_str(), saved.c_str());
     return kExitOk;
 }
 

@@ -74,7 +74,7 @@ int runRender(const RenderCliOptions& o) {
     }
     preview::writePng(o.out,
                       images.size() == 1 ? images.front() : preview::contactSheet(images, o.columns, labels));
-    std::printf("wrote %s\n", o.out.c_str());
+    std::fprintf(stderr, "wrote %s\n", o.out.c_str());
     return kExitOk;
 }
 

@@ -267,11 +267,11 @@ int runSay(const SayOptions& o) {
                      "visemelab: note: espeak symbol '%s' (%zu) has no ARPAbet equivalent; its time went to "
                      "the phoneme before it\n",
                      symbol.c_str(), count);
-    std::printf("Wrote %s", o.out.c_str());
-    if (!o.wav.empty()) std::printf(", %s", o.wav.c_str());
-    if (!o.glb.empty()) std::printf(", %s", o.glb.c_str());
-    if (!o.html.empty()) std::printf(", %s", o.html.c_str());
-    std::printf("\n");
+    std::fprintf(stderr, "Wrote %s", o.out.c_str());
+    if (!o.wav.empty()) std::fprintf(stderr, ", %s", o.wav.c_str());
+    if (!o.glb.empty()) std::fprintf(stderr, ", %s", o.glb.c_str());
+    if (!o.html.empty()) std::fprintf(stderr, ", %s", o.html.c_str());
+    std::fprintf(stderr, "\n");
     return kExitOk;
 }
 

@@ -1,6 +1,7 @@
 // visemelab: the headless pipeline (reduce, refine, visemes, export, freq, project, avatar, say).
 #include "app/cli/Command.h"
 #include "app/cli/ProcessMemory.h"
+#include "app/cli/StandardOutput.h"
 #include "core/common/Error.h"
 #include "core/common/InputRegistry.h"
 #include "core/common/OutputPolicy.h"
@@ -81,8 +82,10 @@ int main(int argc, char** argv) {
         const int code = app.exit(e);
         return code == 0 ? vl::cli::kExitOk : vl::cli::kExitUsage;
     }
-    vl::setOutputPolicy({.followSymlinks = followSymlinks, .waitForBusyFolder = !noWait});
     try {
+        vl::setOutputPolicy({.followSymlinks = followSymlinks,
+                             .waitForBusyFolder = !noWait,
+                             .standardOutputFd = vl::cli::claimStandardOutput(argc, argv)});
         const vl::InputRecording inputs; // every file read is an input no output may overwrite
         return run ? run() : vl::cli::kExitUsage;
     } catch (const vl::cli::UsageError& e) {

@@ -5,12 +5,34 @@
 #include "core/common/InputRegistry.h"
 #include "core/common/OutputPolicy.h"
 
+#include <cerrno>
 #include <system_error>
 #include <unistd.h>
 
 namespace vl {
 
+namespace {
+
+// Writes all of `bytes` to `fd` (a pipe may take them in parts); false on an error (EPIPE: the reader
+// went away).
+bool writeAll(int fd, std::string_view bytes) {
+    while (!bytes.empty()) {
+        const ssize_t n = ::write(fd, bytes.data(), bytes.size());
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) return false;
+        bytes.remove_prefix(static_cast<std::size_t>(n));
+    }
+    return true;
+}
+
+} // namespace
+
 AtomicFileWriter::AtomicFileWriter(const std::filesystem::path& path) : path_(path) {
+    open_ = true;
+    if (isStandardOutput(path)) {
+        toStandardOutput_ = true;
+        return;
+    }
     refuseOverwritingInput(path);
     target_ = resolveOutputPath(path, false); // a link's target folder exists: it is not created
     const auto folder = target_.has_parent_path() ? target_.parent_path() : std::filesystem::path(".");
@@ -22,6 +44,7 @@ AtomicFileWriter::AtomicFileWriter(const std::filesystem::path& path) : path_(pa
     temp_ = temp.path;
     file_ = ::fdopen(temp.fd, "wb");
     if (!file_) {
+        open_ = false;
         ::close(temp.fd);
         std::filesystem::remove(temp_, ec);
         throwInputError(path.string(), "cannot open the temporary file for writing");
@@ -37,6 +60,8 @@ AtomicFileWriter::~AtomicFileWriter() {
 
 void AtomicFileWriter::fail(const char* what) {
     const std::string problem = fileio::lastSystemError();
+    open_ = false;
+    if (toStandardOutput_) throwInputError("the standard output", std::string(what) + " (" + problem + ")");
     std::fclose(file_);
     file_ = nullptr;
     std::error_code ec;
@@ -45,14 +70,23 @@ void AtomicFileWriter::fail(const char* what) {
 }
 
 void AtomicFileWriter::write(std::string_view bytes) {
-    if (!file_) throwInputError(path_.string(), "write after the file was closed");
+    if (!open_) throwInputError(path_.string(), "write after the file was closed");
+    if (toStandardOutput_) {
+        pending_.append(bytes);
+        size_ += bytes.size();
+        return;
+    }
     if (std::fwrite(bytes.data(), 1, bytes.size(), file_) != bytes.size()) fail("write failed");
     size_ += bytes.size();
 }
 
 void AtomicFileWriter::overwrite(std::uint64_t offset, std::string_view bytes) {
-    if (!file_) throwInputError(path_.string(), "write after the file was closed");
+    if (!open_) throwInputError(path_.string(), "write after the file was closed");
     if (offset + bytes.size() > size_) throwInputError(path_.string(), "overwrite past the end of the data");
+    if (toStandardOutput_) {
+        pending_.replace(static_cast<std::size_t>(offset), bytes.size(), bytes);
+        return;
+    }
     const bool ok = std::fseek(file_, static_cast<long>(offset), SEEK_SET) == 0 &&
                     std::fwrite(bytes.data(), 1, bytes.size(), file_) == bytes.size() &&
                     std::fseek(file_, 0, SEEK_END) == 0;
@@ -60,11 +94,18 @@ void AtomicFileWriter::overwrite(std::uint64_t offset, std::string_view bytes) {
 }
 
 void AtomicFileWriter::commit() {
-    if (!file_) throwInputError(path_.string(), "commit after the file was closed");
+    if (!open_) throwInputError(path_.string(), "commit after the file was closed");
+    if (toStandardOutput_) {
+        if (!writeAll(outputPolicy().standardOutputFd, pending_)) fail("write failed");
+        open_ = false;
+        pending_ = {};
+        return;
+    }
     const bool ok = std::fflush(file_) == 0 && ::fsync(fileno(file_)) == 0;
     if (!ok) fail("write failed");
     std::fclose(file_);
     file_ = nullptr;
+    open_ = false;
     std::error_code ec;
     std::filesystem::rename(temp_, target_, ec);
     if (ec) {

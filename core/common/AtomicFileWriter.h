@@ -4,10 +4,13 @@
 // over the path. Destroyed without commit(), the temporary file is removed and the path untouched.
 // The same protocol as writeFileAtomically (core/common/AtomicFile.h): inputs of the run refused,
 // mode kept, symlinks as the output policy says (core/common/OutputPolicy.h), the folder synced after
-// the rename, the temporaries of killed writers in the folder swept.
+// the rename, the temporaries of killed writers in the folder swept. A path `-` under a policy that
+// sends it to the standard output (OutputPolicy::standardOutputFd) is held in memory and written there
+// at commit, so a failed run writes nothing to the pipe either.
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <string>
 #include <string_view>
 
 namespace vl {
@@ -37,6 +40,9 @@ class AtomicFileWriter {
     std::filesystem::path temp_;
     std::FILE* file_ = nullptr;
     std::uint64_t size_ = 0;
+    bool toStandardOutput_ = false;
+    bool open_ = false;   // written to until commit() or a failure
+    std::string pending_; // the bytes for the standard output
 };
 
 } // namespace vl

@@ -22,6 +22,10 @@ const OutputPolicy& outputPolicy() {
     return policy();
 }
 
+bool isStandardOutput(const std::filesystem::path& path) {
+    return policy().standardOutputFd >= 0 && path == "-";
+}
+
 std::filesystem::path resolveOutputPath(const std::filesystem::path& path, bool isFolder) {
     std::error_code ec;
     if (!std::filesystem::is_symlink(std::filesystem::symlink_status(path, ec))) return path;

@@ -104,6 +104,8 @@ bool isHiddenOurs(std::string_view name) {
 OutputSet::OutputSet(std::filesystem::path folder, std::string setName)
     : folder_(folder.empty() ? std::filesystem::path(".") : std::move(folder)), setName_(std::move(setName)) {
     if (!isSetName(setName_)) throwInputError("output set", "invalid set name '" + setName_ + "'");
+    if (isStandardOutput(folder_))
+        throwInputError("-", "this output is a folder of several files; the standard output takes one file");
     refuseWritingIntoInputFolder(folder_);
     refuseFolderHoldingInputs(folder_);
     place_ = placeOf(resolveOutputPath(folder_, true));

@@ -3,9 +3,11 @@
 #include "TempFolder.h"
 
 #include "core/common/AtomicFile.h"
+#include "core/common/AtomicFileWriter.h"
 #include "core/common/InputRegistry.h"
 #include "core/common/OutputPolicy.h"
 
+#include <fcntl.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -104,6 +106,34 @@ TEST(AtomicFile, ASymlinkIsRefusedUnlessFollowedAndADanglingOneCreatesNoFolder) 
     EXPECT_THROW(writeFileAtomically(dir / "dangling.txt", "new"), OutputRefusedError);
     EXPECT_FALSE(std::filesystem::exists(dir / "missing"));
     setOutputPolicy(saved);
+}
+
+TEST(AtomicFile, DashGoesToTheStandardOutputDescriptorWholeAtCommit) {
+    TempFolder dir;
+    const int fd = ::open((dir / "stdout").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    ASSERT_GE(fd, 0);
+    const OutputPolicy saved = outputPolicy();
+    setOutputPolicy({.standardOutputFd = fd});
+    {
+        AtomicFileWriter writer("-");
+        writer.write("RIFF????data");
+        EXPECT_EQ(readText(dir / "stdout"), ""); // nothing before commit: a failed run writes nothing
+        writer.overwrite(4, "1234");             // a header patched at the end (WAV) still works
+        writer.commit();
+    }
+    {
+        AtomicFileWriter abandoned("-");
+        abandoned.write("never");
+    } // no commit: nothing written
+    setOutputPolicy(saved);
+    ::close(fd);
+    EXPECT_EQ(readText(dir / "stdout"), "RIFF1234data");
+    // Without the policy `-` is a file name like any other (the editor).
+    const auto cwd = std::filesystem::current_path();
+    std::filesystem::current_path(dir.path);
+    writeFileAtomically("-", "a file");
+    std::filesystem::current_path(cwd);
+    EXPECT_EQ(readText(dir / "-"), "a file");
 }
 
 TEST(AtomicFile, AFailedSaveLeavesTheOldFileAndNoTemporary) {
