@@ -7,8 +7,11 @@
 #include "app/cli/ConstraintOptions.h"
 #include "app/cli/PlayerModule.h"
 #include "app/cli/Progress.h"
+#include "app/cli/StandardOutput.h"
 #include "core/common/AtomicFile.h"
+#include "core/common/AtomicFileWriter.h"
 #include "core/common/Error.h"
+#include "core/common/OutputPolicy.h"
 #include "core/export/Gltf.h"
 #include "core/gltf/TargetNames.h"
 #include "core/phonetics/CorpusText.h"
@@ -26,7 +29,9 @@
 #include "core/speech/WavFile.h"
 
 #include <cstdio>
+#include <iostream>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <optional>
 
 namespace vl::cli {
@@ -55,6 +60,7 @@ struct SayOptions {
     ConstraintOptions constraints; // with --avatar -m
     bool curve = false;
     bool quiet = false;
+    bool lines = false; // --stdin
 };
 
 constexpr double kMaxFps = 1000;
@@ -167,8 +173,110 @@ void printSummary(const SpeechTrackFile& track, std::size_t reducedKeys, std::si
         std::printf("%4d %16.6g %14.6g %14.6g %10.2f %%\n", p.m, p.cost, p.mean, p.max, 100 * p.relative);
 }
 
+// What every sentence of a run speaks with: the full and the reduced face (shared by the sentences'
+// tracks), the vertex weights of the error and the unit of displacements.
+struct SayFace {
+    std::shared_ptr<const ReducedModel> full, reduced;
+    std::vector<double> weights;
+    DisplacementUnit unit;
+    std::string where;
+};
+
+struct SpokenTrack {
+    FaceTrack full, reduced;
+    SpeechTrackFile file;
+};
+
+// One utterance's tracks on both faces, their error and the track file (without the error curve).
+SpokenTrack trackOf(const SayOptions& o, const SayFace& face, const Utterance& utterance,
+                    runtime::Interpolation interpolation, const std::string& text) {
+    const PlaybackSettings settings{interpolation};
+    SpokenTrack spoken{FaceTrack(face.full, utterance.phonemes, settings, face.where),
+                       FaceTrack(face.reduced, utterance.phonemes, settings, face.where),
+                       {}};
+    const FaceTrack& full = spoken.full;
+    const FaceTrack& reduced = spoken.reduced;
+    const UtteranceError error = measureUtteranceError(full, reduced, face.weights, o.fps);
+    const DisplacementError displacement =
+        measureDisplacementError(full, reduced, face.weights, o.fps, face.unit);
+    SpeechTrackFile& track = spoken.file;
+    track.metadata = {o.wav.empty() ? std::string() : projectRelativePath(o.out, o.wav).generic_string(),
+                      utterance.duration(),
+                      text,
+                      o.textFile,
+                      o.voice,
+                      o.rate,
+                      o.project,
+                      toString(interpolation),
+                      o.fps};
+    track.mouthCues = full.cues();
+    track.reducedCues = reduced.cues();
+    track.phonemes = utterance.phonemes;
+    track.error = TrackError{error.mean,
+                             error.max,
+                             error.maxTime,
+                             error.relative,
+                             error.frames,
+                             TrackDisplacementError{displacement.unit, displacement.rms, displacement.max,
+                                                    displacement.maxTime, displacement.rmsFrames,
+                                                    displacement.maxFrames}};
+    track.playback =
+        TrackPlayback{toString(interpolation), settings.dominanceRate, playbackOf(full), playbackOf(reduced)};
+    return spoken;
+}
+
+// `say --stdin`: one sentence per line of the standard input, one JSON line out per line in
+// ({"line": N, "track": {...}} or {"line": N, "error": "..."}), flushed at once when the output is the
+// standard output (a server reads each answer before it sends the next sentence). The faces are
+// loaded once. A bad line is answered with its error and the run goes on; exit 3 if any line failed.
+int sayLines(const SayOptions& o, const SayFace& face, SpeechSynthesizer& synthesizer,
+             runtime::Interpolation interpolation, TrackFormat format) {
+    const bool streaming = isStandardOutput(o.out);
+    std::optional<AtomicFileWriter> file;
+    if (!streaming) file.emplace(o.out);
+    std::size_t lineNumber = 0, failed = 0;
+    std::string line;
+    while (std::getline(std::cin, line)) {
+        ++lineNumber;
+        nlohmann::ordered_json answer{{"line", lineNumber}};
+        try {
+            if (!isValidUtf8(line)) throwInputError("stdin:" + std::to_string(lineNumber), "not UTF-8 text");
+            Utterance utterance;
+            synthesizer.speak(line, utterance, [](std::span<const std::int16_t>) {});
+            bool speech = false;
+            for (const auto& p : utterance.phonemes) speech = speech || p.phoneme != kSilencePhoneme;
+            if (!speech)
+                throwInputError("stdin:" + std::to_string(lineNumber),
+                                "nothing to say: the line has no words espeak-ng speaks");
+            const SpokenTrack spoken = trackOf(o, face, utterance, interpolation, line);
+            answer["track"] = nlohmann::ordered_json::parse(formatTrack(spoken.file, format, o.out));
+        } catch (const InputError& e) {
+            answer["error"] = e.what();
+            ++failed;
+        }
+        const std::string text = answer.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+        if (file) {
+            file->write(text);
+        } else if (!writeToStandardOutput(text)) {
+            throwInputError("the standard output",
+                            "closed by its reader after line " + std::to_string(lineNumber));
+        }
+    }
+    if (file) file->commit();
+    std::fprintf(stderr, "said %zu lines (%zu failed)%s%s\n", lineNumber, failed, file ? "; wrote " : "",
+                 file ? o.out.c_str() : "");
+    return failed == 0 ? kExitOk : kExitInvalidInput;
+}
+
 int runSay(const SayOptions& o) {
-    if (o.text.empty() == o.textFile.empty()) throwUsage("give the text to say, or --text-file, not both");
+    if (o.lines) {
+        if (!o.text.empty() || !o.textFile.empty() || !o.wav.empty() || !o.glb.empty() || !o.html.empty() ||
+            o.curve)
+            throwUsage("--stdin reads the sentences from the standard input: drop the text, --text-file, "
+                       "--wav, --glb, --html and --curve");
+    } else if (o.text.empty() == o.textFile.empty()) {
+        throwUsage("give the text to say, or --text-file, not both");
+    }
     if (!(o.fps > 0 && o.fps <= kMaxFps)) throwUsage("--fps must be in (0, 1000]");
     const auto interpolation = interpolationFromString(o.blend);
     if (!interpolation) throwUsage("--blend must be linear, cubic or dominance, not '" + o.blend + "'");
@@ -193,47 +301,25 @@ int runSay(const SayOptions& o) {
     else
         project = loadProject(o.project);
     const std::string where = avatar ? o.avatar : o.project;
-    // Moved, not copied, into the tracks below: an avatar's keys are the size of its meshes.
+    // Moved, not copied, into the face below: an avatar's keys are the size of its meshes.
     SpeechFaces faces =
         avatar ? std::move(avatar->faces) : projectSpeechFaces(project, map ? &*map : nullptr);
     // glTF lengths are metres; a project of mesh files has no unit.
-    const DisplacementUnit unit =
-        avatar || project.avatar.isSet() ? millimetresFromMetres() : DisplacementUnit{};
+    const SayFace face{
+        std::make_shared<const ReducedModel>(std::move(faces.full)),
+        std::make_shared<const ReducedModel>(std::move(faces.reduced)), std::move(faces.weights),
+        avatar || project.avatar.isSet() ? millimetresFromMetres() : DisplacementUnit{}, where};
     auto synthesizer = makeEspeakSynthesizer({o.voice, o.rate});
+    if (o.lines) return sayLines(o, face, *synthesizer, *interpolation, *format);
     std::optional<WavStreamWriter> wav;
     if (!o.wav.empty()) wav.emplace(o.wav, synthesizer->sampleRate());
     const Utterance utterance = speak(o, *synthesizer, wav ? &*wav : nullptr);
 
+    SpokenTrack spoken = trackOf(o, face, utterance, *interpolation, o.text);
     const PlaybackSettings settings{*interpolation};
-    const FaceTrack full(std::move(faces.full), utterance.phonemes, settings, where);
-    const FaceTrack reduced(std::move(faces.reduced), utterance.phonemes, settings, where);
-    const UtteranceError error = measureUtteranceError(full, reduced, faces.weights, o.fps);
-    const DisplacementError displacement =
-        measureDisplacementError(full, reduced, faces.weights, o.fps, unit);
-
-    SpeechTrackFile track;
-    track.metadata = {o.wav.empty() ? std::string() : projectRelativePath(o.out, o.wav).generic_string(),
-                      utterance.duration(),
-                      o.text,
-                      o.textFile,
-                      o.voice,
-                      o.rate,
-                      o.project,
-                      toString(*interpolation),
-                      o.fps};
-    track.mouthCues = full.cues();
-    track.reducedCues = reduced.cues();
-    track.phonemes = utterance.phonemes;
-    track.error = TrackError{error.mean,
-                             error.max,
-                             error.maxTime,
-                             error.relative,
-                             error.frames,
-                             TrackDisplacementError{displacement.unit, displacement.rms, displacement.max,
-                                                    displacement.maxTime, displacement.rmsFrames,
-                                                    displacement.maxFrames}};
-    track.playback = TrackPlayback{toString(*interpolation), settings.dominanceRate, playbackOf(full),
-                                   playbackOf(reduced)};
+    const FaceTrack& full = spoken.full;
+    const FaceTrack& reduced = spoken.reduced;
+    SpeechTrackFile& track = spoken.file;
     if (!avatar && (o.curve || !o.textFile.empty()))
         track.errorCurve = errorCurve(o, project, utterance, settings, map ? &*map : nullptr);
 
@@ -326,6 +412,10 @@ void addSayCommand(CLI::App& app, CommandRunner& run) {
                     "visemes/vtimes/vdurations in ms)");
     cmd->add_flag("--curve", o->curve, "Also compute the error curve over m = 1..n for inline text");
     cmd->add_flag("--quiet", o->quiet, "Print only the written files");
+    cmd->add_flag("--stdin", o->lines,
+                  "Serve: read one sentence per line of the standard input and write one JSON line per "
+                  "sentence to --out (`--out -`: the standard output, flushed per line); the face is loaded "
+                  "once");
     cmd->callback([&run, o] { run = [o] { return runSay(*o); }; });
 }
 

@@ -1,6 +1,9 @@
 #include "app/cli/StandardOutput.h"
 
 #include "app/cli/Command.h"
+#include "core/common/OutputPolicy.h"
+
+#include <cerrno>
 
 #include <cstdio>
 #include <string>
@@ -21,6 +24,18 @@ int claimStandardOutput(int argc, char** argv) {
     if (data < 0 || ::dup2(STDERR_FILENO, STDOUT_FILENO) < 0)
         throw UsageError("the standard output cannot be used for an output here");
     return data;
+}
+
+bool writeToStandardOutput(std::string_view bytes) {
+    const int fd = outputPolicy().standardOutputFd;
+    if (fd < 0) return false;
+    while (!bytes.empty()) {
+        const ssize_t n = ::write(fd, bytes.data(), bytes.size());
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) return false;
+        bytes.remove_prefix(static_cast<std::size_t>(n));
+    }
+    return true;
 }
 
 } // namespace vl::cli

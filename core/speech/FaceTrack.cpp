@@ -10,17 +10,24 @@ namespace vl {
 FaceTrack::FaceTrack(ReducedModel model, std::span<const TimedPhoneme> phonemes,
                      const PlaybackSettings& settings, std::string_view where) {
     keys_ = keysOfPhonemes(phonemes, model, where);
+    init(std::make_shared<const ReducedModel>(std::move(model)), phonemes, settings, where);
+}
+
+FaceTrack::FaceTrack(std::shared_ptr<const ReducedModel> model, std::span<const TimedPhoneme> phonemes,
+                     const PlaybackSettings& settings, std::string_view where) {
+    keys_ = keysOfPhonemes(phonemes, *model, where);
     init(std::move(model), phonemes, settings, where);
 }
 
 FaceTrack::FaceTrack(ReducedModel model, std::span<const TimedPhoneme> phonemes, std::vector<int> keys,
                      const PlaybackSettings& settings, std::string_view where)
     : keys_(std::move(keys)) {
-    init(std::move(model), phonemes, settings, where);
+    init(std::make_shared<const ReducedModel>(std::move(model)), phonemes, settings, where);
 }
 
-void FaceTrack::init(ReducedModel model, std::span<const TimedPhoneme> phonemes,
+void FaceTrack::init(std::shared_ptr<const ReducedModel> shared, std::span<const TimedPhoneme> phonemes,
                      const PlaybackSettings& settings, std::string_view where) {
+    const ReducedModel& model = *shared;
     checkTimedPhonemes(phonemes, where);
     validateReducedModel(model, where);
     if (model.keys.size() > runtime::kMaxKeys)
@@ -39,7 +46,7 @@ void FaceTrack::init(ReducedModel model, std::span<const TimedPhoneme> phonemes,
                              keyframesOf(phonemes, keys_, settings), settings.interpolation, error,
                              settings.dominanceRate))
         throwInputError(where, "animation: " + error);
-    model_ = std::make_shared<const ReducedModel>(std::move(model));
+    model_ = std::move(shared);
 }
 
 void FaceTrack::keyWeights(double t, float* out) const {

@@ -26,6 +26,10 @@ class FaceTrack {
     // sequence of viseme names typed by a designer.
     FaceTrack(ReducedModel model, std::span<const TimedPhoneme> phonemes, std::vector<int> keys,
               const PlaybackSettings& settings, std::string_view where);
+    // The first form on a model shared with other tracks: a server speaking many sentences with one
+    // face copies no keys per sentence (`say --stdin`).
+    FaceTrack(std::shared_ptr<const ReducedModel> model, std::span<const TimedPhoneme> phonemes,
+              const PlaybackSettings& settings, std::string_view where);
 
     const ReducedModel& model() const { return *model_; }
     const std::vector<Cue>& cues() const { return cues_; }
@@ -41,8 +45,8 @@ class FaceTrack {
     std::vector<float> keyWeights(double t) const;
 
   private:
-    void init(ReducedModel model, std::span<const TimedPhoneme> phonemes, const PlaybackSettings& settings,
-              std::string_view where);
+    void init(std::shared_ptr<const ReducedModel> model, std::span<const TimedPhoneme> phonemes,
+              const PlaybackSettings& settings, std::string_view where);
 
     std::shared_ptr<const ReducedModel> model_; // shared: tracks are copied into the editor's state
     runtime::KeyframeCurve curve_;

@@ -7,7 +7,11 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <nlohmann/json.hpp>
+#include <poll.h>
+#include <sys/wait.h>
 #include <unistd.h>
+#include <vector>
 
 using namespace vl;
 
@@ -121,4 +125,88 @@ TEST_F(SayCli, OnlySpeechLoadsEspeak) {
     ASSERT_EQ(said.exitCode, 0) << said.output;
     EXPECT_EQ(exported.output.find("libespeak-ng"), std::string::npos);
     EXPECT_NE(said.output.find("libespeak-ng"), std::string::npos);
+}
+
+namespace {
+
+// Runs `visemelab say --stdin ARGS` with pipes on both ends: sends `first`, reads the first answer
+// line while stdin is still open (a server's way), then sends `rest`, closes stdin and reads the
+// remaining answers. Returns the answer lines and the exit code.
+struct ServedRun {
+    std::vector<std::string> answers;
+    bool firstAnsweredBeforeEof = false;
+    int exitCode = -1;
+};
+
+ServedRun serve(const std::string& args, const std::string& first, const std::string& rest) {
+    int in[2], out[2];
+    if (::pipe(in) != 0 || ::pipe(out) != 0) return {};
+    const pid_t child = ::fork();
+    if (child == 0) {
+        ::dup2(in[0], 0);
+        ::dup2(out[1], 1);
+        ::close(in[1]);
+        ::close(out[0]);
+        ::execl("/bin/sh", "sh", "-c",
+                (std::string(VISEMELAB_CLI) + " say --stdin " + args + " 2>/dev/null").c_str(),
+                static_cast<char*>(nullptr));
+        ::_exit(127);
+    }
+    ::close(in[0]);
+    ::close(out[1]);
+    ServedRun run;
+    std::string buffer;
+    const auto readLine = [&](int timeoutMs) {
+        while (buffer.find('\n') == std::string::npos) {
+            pollfd p{out[0], POLLIN, 0};
+            if (::poll(&p, 1, timeoutMs) <= 0) return false;
+            char chunk[4096];
+            const ssize_t n = ::read(out[0], chunk, sizeof chunk);
+            if (n <= 0) return false;
+            buffer.append(chunk, static_cast<std::size_t>(n));
+        }
+        const auto end = buffer.find('\n');
+        run.answers.push_back(buffer.substr(0, end));
+        buffer.erase(0, end + 1);
+        return true;
+    };
+    (void)!::write(in[1], first.data(), first.size());
+    run.firstAnsweredBeforeEof = readLine(60000);
+    (void)!::write(in[1], rest.data(), rest.size());
+    ::close(in[1]);
+    while (readLine(60000)) {
+    }
+    ::close(out[0]);
+    int status = 0;
+    ::waitpid(child, &status, 0);
+    run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return run;
+}
+
+} // namespace
+
+TEST_F(SayCli, StdinServesOneJsonLinePerSentenceAsSayWould) {
+    const auto single = dir / "single.json";
+    ASSERT_EQ(test::runCli("say 'Hello world' --project " + sampleProject() + " --out " + quotedPath(single))
+                  .exitCode,
+              0);
+    const ServedRun run =
+        serve("--project " + sampleProject() + " --out -", "Hello world\n", "\n... ,,,\nHow are you today\n");
+    EXPECT_TRUE(run.firstAnsweredBeforeEof) << "the first answer waited for the end of the input";
+    ASSERT_EQ(run.answers.size(), 4u);
+    EXPECT_EQ(run.exitCode, 3) << "two lines failed";
+    const auto first = nlohmann::json::parse(run.answers[0]);
+    EXPECT_EQ(first["line"], 1);
+    EXPECT_EQ(first["track"], nlohmann::json::parse(readFileToString(single))); // the same bytes' meaning
+    for (const int failed : {1, 2}) {
+        const auto answer = nlohmann::json::parse(run.answers[static_cast<std::size_t>(failed)]);
+        EXPECT_EQ(answer["line"], failed + 1);
+        EXPECT_NE(answer["error"].get<std::string>().find("nothing to say"), std::string::npos) << answer;
+    }
+    const auto last = nlohmann::json::parse(run.answers[3]);
+    EXPECT_EQ(last["track"]["metadata"]["text"], "How are you today");
+    // All lines good: exit 0; usage errors are refused before reading anything.
+    EXPECT_EQ(serve("--project " + sampleProject() + " --out -", "Hi\n", "").exitCode, 0);
+    EXPECT_EQ(test::runCli("say hi --stdin --project " + sampleProject() + " --out -").exitCode, 2);
+    EXPECT_EQ(test::runCli("say --stdin --wav x.wav --project " + sampleProject() + " --out -").exitCode, 2);
 }
