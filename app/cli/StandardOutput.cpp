@@ -1,9 +1,8 @@
 #include "app/cli/StandardOutput.h"
 
 #include "app/cli/Command.h"
+#include "core/common/FileWriting.h"
 #include "core/common/OutputPolicy.h"
-
-#include <cerrno>
 
 #include <cstdio>
 #include <string>
@@ -28,14 +27,7 @@ int claimStandardOutput(int argc, char** argv) {
 
 bool writeToStandardOutput(std::string_view bytes) {
     const int fd = outputPolicy().standardOutputFd;
-    if (fd < 0) return false;
-    while (!bytes.empty()) {
-        const ssize_t n = ::write(fd, bytes.data(), bytes.size());
-        if (n < 0 && errno == EINTR) continue;
-        if (n <= 0) return false;
-        bytes.remove_prefix(static_cast<std::size_t>(n));
-    }
-    return true;
+    return fd >= 0 && fileio::writeAll(fd, bytes);
 }
 
 } // namespace vl::cli

@@ -5,27 +5,10 @@
 #include "core/common/InputRegistry.h"
 #include "core/common/OutputPolicy.h"
 
-#include <cerrno>
 #include <system_error>
 #include <unistd.h>
 
 namespace vl {
-
-namespace {
-
-// Writes all of `bytes` to `fd` (a pipe may take them in parts); false on an error (EPIPE: the reader
-// went away).
-bool writeAll(int fd, std::string_view bytes) {
-    while (!bytes.empty()) {
-        const ssize_t n = ::write(fd, bytes.data(), bytes.size());
-        if (n < 0 && errno == EINTR) continue;
-        if (n <= 0) return false;
-        bytes.remove_prefix(static_cast<std::size_t>(n));
-    }
-    return true;
-}
-
-} // namespace
 
 AtomicFileWriter::AtomicFileWriter(const std::filesystem::path& path) : path_(path) {
     open_ = true;
@@ -96,7 +79,7 @@ void AtomicFileWriter::overwrite(std::uint64_t offset, std::string_view bytes) {
 void AtomicFileWriter::commit() {
     if (!open_) throwInputError(path_.string(), "commit after the file was closed");
     if (toStandardOutput_) {
-        if (!writeAll(outputPolicy().standardOutputFd, pending_)) fail("write failed");
+        if (!fileio::writeAll(outputPolicy().standardOutputFd, pending_)) fail("write failed");
         open_ = false;
         pending_ = {};
         return;
