@@ -99,27 +99,20 @@ int runNew(const NewProjectOptions& o, bool targetGiven) {
         project.path = out;
         if (o.reduce) storeReductionResult(project, reduceProject(project, loadProjectVisemeSet(project)));
         saveProject(out, project);
-        std::fprintf(stderr, "wrote %s: avatar %s, %zu visemes, target %d%s\n", out.string().c_str(), o.avatar.c_str(),
-                    project.visemes.size(), project.reduction.target, o.reduce ? ", reduced" : "");
+        std::fprintf(stderr, "wrote %s: avatar %s, %zu visemes, target %d%s\n", out.string().c_str(),
+                     o.avatar.c_str(), project.visemes.size(), project.reduction.target,
+                     o.reduce ? ", reduced" : "");
         return kExitOk;
     }
     Project project;
     project.path = out;
     project.reduction.rest = restOf(o);
 
-    const auto files = listVisemeFolder(o.visemeDir, o.neutral);
-    std::filesystem::path neutral = o.neutral;
-    if (neutral.empty()) {
-        for (const char* ext : {".obj", ".ply", ".wrl"})
-            if (std::filesystem::exists(std::filesystem::path(o.visemeDir) / (std::string("neutral") + ext)))
-                neutral = std::filesystem::path(o.visemeDir) / (std::string("neutral") + ext);
-        if (neutral.empty())
-            throwUsage("no neutral.obj/.ply/.wrl in " + o.visemeDir + ": give --neutral FILE");
-    }
+    const std::filesystem::path neutral =
+        o.neutral.empty() ? findNeutralMesh(o.visemeDir) : std::filesystem::path(o.neutral);
     project.neutral.file = projectRelativePath(out, neutral);
-    for (const auto& [name, file] : files)
-        if (name != neutral.stem().string())
-            project.visemes.push_back({name, projectRelativePath(out, file), {}});
+    for (const auto& [name, file] : listVisemeFolder(o.visemeDir, neutral))
+        project.visemes.push_back({name, projectRelativePath(out, file), {}});
 
     project.visemes = reordered(std::move(project.visemes), o.order);
     project.frequencies = frequenciesOf(o);
@@ -137,7 +130,7 @@ int runNew(const NewProjectOptions& o, bool targetGiven) {
     if (o.reduce) storeReductionResult(project, reduceProject(project, loadProjectVisemeSet(project)));
     saveProject(out, project);
     std::fprintf(stderr, "wrote %s: %zu visemes%s\n", out.string().c_str(), project.visemes.size(),
-                o.reduce ? (", reduced to " + std::to_string(o.target)).c_str() : "");
+                 o.reduce ? (", reduced to " + std::to_string(o.target)).c_str() : "");
     return kExitOk;
 }
 

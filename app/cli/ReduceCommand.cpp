@@ -53,15 +53,6 @@ std::pair<std::string, std::string> splitAssignment(const std::string& text, con
     return {text.substr(0, eq), text.substr(eq + 1)};
 }
 
-std::filesystem::path findNeutralIn(const std::filesystem::path& dir) {
-    for (const char* ext : {".obj", ".ply", ".wrl"}) {
-        const auto candidate = dir / (std::string("neutral") + ext);
-        if (std::filesystem::exists(candidate)) return candidate;
-    }
-    throwInputError(dir.string(),
-                    "no neutral mesh (neutral.obj/.ply/.wrl) in the folder; pass --neutral FILE");
-}
-
 VisemeSet loadSet(const ReduceOptions& o, XfaceFace& xface) {
     if (!o.fdp.empty()) { // the "Rest" entity and the Viseme entities; <stem>.dic as phoneme map
         xface = loadXfaceFace(o.fdp);
@@ -70,7 +61,7 @@ VisemeSet loadSet(const ReduceOptions& o, XfaceFace& xface) {
     std::filesystem::path neutral = o.neutral;
     std::vector<std::pair<std::string, std::filesystem::path>> files;
     if (!o.visemeDir.empty()) {
-        if (neutral.empty()) neutral = findNeutralIn(o.visemeDir);
+        if (neutral.empty()) neutral = findNeutralMesh(o.visemeDir);
         files = listVisemeFolder(o.visemeDir, neutral);
     } else {
         for (const auto& v : o.visemes) files.emplace_back(splitAssignment(v, "--viseme"));
@@ -290,8 +281,8 @@ int runReduce(const ReduceOptions& o, bool weightsGiven) {
         }
         std::printf("\n");
     }
-    std::fprintf(stderr, "Merged meshes (OBJ + VRML) and mapping.json in %s\nReport: %s\n", outDir.string().c_str(),
-                reportPath.string().c_str());
+    std::fprintf(stderr, "Merged meshes (OBJ + VRML) and mapping.json in %s\nReport: %s\n",
+                 outDir.string().c_str(), reportPath.string().c_str());
     return kExitOk;
 }
 

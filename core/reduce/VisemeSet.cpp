@@ -7,6 +7,7 @@
 #include "core/io/MeshIO.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <unordered_set>
 
@@ -134,6 +135,38 @@ listVisemeFolder(const std::filesystem::path& folder, const std::filesystem::pat
     }
     if (result.empty()) throwInputError(folder.string(), "contains no mesh files (.obj, .ply, .wrl)");
     return result;
+}
+
+std::filesystem::path findNeutralMesh(const std::filesystem::path& folder) {
+    std::error_code ec;
+    if (!std::filesystem::is_directory(folder, ec)) throwInputError(folder.string(), "not a folder");
+    std::vector<std::filesystem::path> exact, containing;
+    for (const auto& entry : std::filesystem::directory_iterator(folder, ec)) {
+        std::error_code fileError;
+        if (!entry.is_regular_file(fileError) || !isMeshFile(entry.path())) continue;
+        std::string stem = entry.path().stem().string();
+        std::transform(stem.begin(), stem.end(), stem.begin(),
+                       [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+        if (stem == "neutral")
+            exact.push_back(entry.path());
+        else if (stem.find("neutral") != std::string::npos)
+            containing.push_back(entry.path());
+    }
+    const std::vector<std::filesystem::path>& found = exact.empty() ? containing : exact;
+    if (found.empty())
+        throwInputError(folder.string(),
+                        "no neutral mesh in the folder (a mesh file named neutral.obj, "
+                        ".ply or .wrl, or with 'neutral' in its name); give it with --neutral");
+    if (found.size() > 1) {
+        std::vector<std::string> names;
+        for (const auto& file : found) names.push_back(file.filename().string());
+        std::sort(names.begin(), names.end());
+        std::string list;
+        for (const auto& name : names) list += (list.empty() ? "" : ", ") + name;
+        throwInputError(folder.string(),
+                        "several meshes could be the neutral (" + list + "); give it with --neutral");
+    }
+    return found.front();
 }
 
 } // namespace vl

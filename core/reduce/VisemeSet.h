@@ -57,4 +57,11 @@ VisemeSet loadVisemeSet(const std::filesystem::path& neutral,
 std::vector<std::pair<std::string, std::filesystem::path>>
 listVisemeFolder(const std::filesystem::path& folder, const std::filesystem::path& excluded = {});
 
+// The one rule for which mesh of a folder is the neutral (`reduce --visemes`, `project new`, the
+// editor's Open folder): the mesh file whose stem is "neutral" in any case (neutral.obj, Neutral.PLY);
+// failing that, the one whose stem contains "neutral" (face_neutral.obj). Throws InputError naming the
+// folder when no file qualifies, and naming the candidates when several do at the same rank (a
+// neutral.obj beside a neutral.ply must not be decided by the order of a listing).
+std::filesystem::path findNeutralMesh(const std::filesystem::path& folder);
+
 } // namespace vl

@@ -80,3 +80,23 @@ TEST(VisemeSet, NonInterpolableMeshesAreNamed) {
     });
     EXPECT_NE(msg.find("missing.obj: file not found"), std::string::npos) << msg;
 }
+
+TEST(VisemeSet, OneNeutralRuleExactNameFirstThenContainingAndAmbiguityNamed) {
+    TempDir dir("visemelab_set_neutral");
+    writeMesh(dir.path / "aa.obj", quadMesh(1));
+    EXPECT_NE(errorOf([&] { findNeutralMesh(dir.path); }).find("no neutral mesh in the folder"),
+              std::string::npos);
+    writeMesh(dir.path / "face_neutral_v2.obj", quadMesh(0));
+    EXPECT_EQ(findNeutralMesh(dir.path), dir.path / "face_neutral_v2.obj"); // contains "neutral"
+    writeMesh(dir.path / "Neutral.PLY", quadMesh(0));
+    EXPECT_EQ(findNeutralMesh(dir.path), dir.path / "Neutral.PLY"); // the exact stem wins, any case
+    writeMesh(dir.path / "neutral.obj", quadMesh(0));
+    const std::string msg = errorOf([&] { findNeutralMesh(dir.path); });
+    EXPECT_NE(msg.find("several meshes could be the neutral (Neutral.PLY, neutral.obj)"), std::string::npos)
+        << msg;
+    EXPECT_NE(msg.find(dir.path.string()), std::string::npos) << msg;
+    std::filesystem::remove(dir.path / "Neutral.PLY");
+    std::filesystem::remove(dir.path / "face_neutral_v2.obj");
+    std::filesystem::create_directory(dir.path / "neutral.d"); // not a mesh file: ignored
+    EXPECT_EQ(findNeutralMesh(dir.path), dir.path / "neutral.obj");
+}

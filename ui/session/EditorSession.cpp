@@ -30,12 +30,6 @@ namespace {
 
 constexpr std::size_t kMaxMessages = 200;
 
-std::string lowercase(std::string text) {
-    std::transform(text.begin(), text.end(), text.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return text;
-}
-
 std::string exportMessage(ExportFormat format, const std::vector<std::filesystem::path>& written,
                           const std::filesystem::path& out) {
     return std::string("Exported ") + toString(format) + ": " + std::to_string(written.size()) +
@@ -173,13 +167,9 @@ EditorSession::Loaded EditorSession::loadProjectFile(const std::filesystem::path
 }
 
 EditorSession::Loaded EditorSession::loadFolder(const std::filesystem::path& folder) {
-    auto files = listVisemeFolder(folder);
-    auto neutral = std::find_if(files.begin(), files.end(), [](const auto& entry) {
-        return lowercase(entry.first).find("neutral") != std::string::npos;
-    });
-    if (neutral == files.end()) throwInputError(folder.string(), "no mesh named *neutral* in the folder");
-    const std::filesystem::path neutralFile = neutral->second;
-    files.erase(neutral);
+    const std::filesystem::path neutralFile =
+        findNeutralMesh(folder); // the rule `reduce` and `project new` use
+    const auto files = listVisemeFolder(folder, neutralFile);
     auto set = std::make_shared<const VisemeSet>(loadVisemeSet(neutralFile, files));
     std::vector<std::filesystem::path> visemeFiles;
     for (const auto& viseme : set->visemes) visemeFiles.push_back(std::filesystem::absolute(viseme.source));

@@ -70,7 +70,7 @@ class EditorSession {
     void startSaveProject(const std::filesystem::path& file = {}, std::function<void()> then = {});
     bool saving() const { return files_.saving(); }
     std::string savingLabel() const { return files_.savingLabel(); }
-    // A folder of meshes: the one whose name contains "neutral" is the neutral, the others are
+    // A folder of meshes: the neutral by findNeutralMesh (core/reduce/VisemeSet.h), the others are
     // visemes sorted by name; frequencies start uniform.
     void loadVisemeFolder(const std::filesystem::path& folder);
     // The bundled sample (assets/), whatever form the core ships it in.
