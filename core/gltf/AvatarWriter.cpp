@@ -13,6 +13,7 @@
 #include "core/gltf/TargetStorage.h"
 #include "core/reduce/Reduction.h"
 
+#include <cmath>
 #include <cstring>
 #include <limits>
 #include <map>
@@ -220,6 +221,13 @@ void writeMeshExtras(Json& meshJson, const AvatarMesh& mesh, const MeshPlan& pla
         (*extras)["targetAliases"] = aliases;
 }
 
+// A frequency as written (core/gltf/KeyTable.h); a whole number (phoneme counts) without ".0".
+Json frequencyJson(double frequency) {
+    const double written = writtenFrequency(frequency);
+    if (std::abs(written) < 1e15 && written == std::floor(written)) return static_cast<long long>(written);
+    return written;
+}
+
 // Version 2 of extras.visemelab (core/gltf/KeyTable.h): a key's name only when it is not its members
 // joined with '+' (merged names of several members), frequencies to 4 significant digits.
 Json rootExtras(const ReducedModel& model, const std::vector<std::string>& keyNames, AvatarNames names) {
@@ -228,13 +236,12 @@ Json rootExtras(const ReducedModel& model, const std::vector<std::string>& keyNa
         Json key = Json::object();
         if (keyNames[g] != mergedKeyName(model.keys[g].members)) key["name"] = keyNames[g];
         key["members"] = model.keys[g].members;
-        key["frequency"] = writtenFrequency(model.keys[g].frequency);
+        key["frequency"] = frequencyJson(model.keys[g].frequency);
         keys.push_back(std::move(key));
     }
     Json phonemeToKey = Json::object(), phonemeFrequencies = Json::object();
     for (const auto& [phoneme, key] : model.phonemeToKey) phonemeToKey[phoneme] = key;
-    for (const auto& [phoneme, f] : model.phonemeFrequencies)
-        phonemeFrequencies[phoneme] = writtenFrequency(f);
+    for (const auto& [phoneme, f] : model.phonemeFrequencies) phonemeFrequencies[phoneme] = frequencyJson(f);
     Json out{{"version", kKeyTableVersion},
              {"names", toString(names)},
              {"keys", keys},
