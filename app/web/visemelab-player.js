@@ -170,6 +170,15 @@ function tableTarget(mesh, table, names) {
   return -1;
 }
 
+// The member names a merged target name (core/gltf/MergedNames.h) may stand for: its first part is a
+// whole name, the others dropped the prefix all members share up to a separator ("viseme_PP+FF" ->
+// viseme_PP, FF, viseme_FF), so that a scene without the key table still binds them.
+function mergedMembersOf(name) {
+  const [first, ...rest] = name.split('+');
+  const prefixes = [...first].flatMap((c, i) => ('_.-: '.includes(c) ? [first.slice(0, i + 1)] : []));
+  return [first, ...rest.flatMap((part) => [part, ...prefixes.map((p) => p + part)])];
+}
+
 // The target index key {name, members} drives on `mesh`, or -1; `table`: the root key table, if any.
 export function targetOfKey(mesh, key, table = null) {
   const dict = mesh.morphTargetDictionary;
@@ -190,7 +199,7 @@ export function targetOfKey(mesh, key, table = null) {
   for (const vk of extras.visemeKeys || [])
     if (vk && vk.members && vk.targets && vk.targets.length && members.some((m) => vk.members.includes(m))) return vk.targets[0];
   for (const [name, index] of Object.entries(dict))
-    if (name.includes('+') && name.split('+').some((part) => members.includes(part))) return index;
+    if (name.includes('+') && mergedMembersOf(name).some((part) => members.includes(part))) return index;
   // The same Oculus viseme under another spelling.
   const wanted = new Set(members.map(oculusVisemeOf).filter((v) => v));
   if (wanted.size === 0) return -1;

@@ -3,13 +3,14 @@
 // write_player_reference is played, and every mesh's morphTargetInfluences must equal the C++ key
 // weights (written beside the track) at every sampled time within 1e-5, for linear, cubic and
 // dominance blending, on the original avatar (full track) and on the reduced one in both name
-// modes (reduced track, and the full track through merged names).
-//   node player.test.mjs THREE_DIR REFERENCE_DIR AVATAR.glb MERGED.glb
+// modes (reduced track, and the full track through merged names), and on a merged-name file of key
+// table version 1 (written before 2026-11-28: every mesh repeating the table and listing every alias).
+//   node player.test.mjs THREE_DIR REFERENCE_DIR AVATAR.glb MERGED.glb MERGED_V1.glb
 import { existsSync, readFileSync } from 'node:fs';
 import { pathToFileURL } from 'node:url';
 import path from 'node:path';
 
-const [threeDir, referenceDir, avatarPath, mergedPath] = process.argv.slice(2);
+const [threeDir, referenceDir, avatarPath, mergedPath, mergedV1Path] = process.argv.slice(2);
 if (!existsSync(path.join(threeDir, 'node_modules/three/package.json'))) {
   console.log(`SKIPPED: three is not installed in ${threeDir} (no npm registry?)`);
   process.exit(77);
@@ -89,12 +90,25 @@ function check(label, gltf, track, weights, face) {
 const original = await loadAvatar(avatarPath);
 const reduced = await loadAvatar(path.join(referenceDir, 'reduced.glb'));
 const merged = await loadAvatar(mergedPath);
+const mergedV1 = await loadAvatar(mergedV1Path);
 for (const blend of ['linear', 'cubic', 'dominance']) {
   const track = JSON.parse(readFileSync(path.join(referenceDir, `${blend}.track.json`), 'utf8'));
   const weights = JSON.parse(readFileSync(path.join(referenceDir, `${blend}.weights.json`), 'utf8'));
   check(`${blend}, original avatar, full track`, original, track, weights, 'full');
   check(`${blend}, reduced avatar (original names), reduced track`, reduced, track, weights, 'reduced');
   check(`${blend}, merged-name avatar, full track`, merged, track, weights, 'full');
+  check(`${blend}, merged-name avatar of key table version 1, full track`, mergedV1, track, weights, 'full');
+  // Given only the scene (no root table), the merged-name avatar binds every key as with the table.
+  const withTable = new player.VisemePlayer(merged, track, { face: 'full' });
+  const sceneOnly = new player.VisemePlayer(merged.scene, track, { face: 'full' });
+  if (sceneOnly.unbound.length) fail(`${blend}: scene only: keys bound to no target: ${sceneOnly.unbound.join(', ')}`);
+  sceneOnly.bindings.forEach((b, i) => {
+    checks++;
+    if (b.targets.join() !== withTable.bindings[i].targets.join()) fail(`${blend}: scene only binds ${b.mesh.name} otherwise`);
+  });
+  // Version 1 resolved every name on the meshes: a page passing only the scene keeps working.
+  check(`${blend}, merged-name avatar of key table version 1 (scene only), full track`,
+    { scene: mergedV1.scene, userData: {} }, track, weights, 'full');
   // The player's own choice: a VisemeLab-reduced avatar plays the reduced face (given the loader's
   // result, whose userData holds the key table, or only its scene, whose meshes list their keys).
   for (const given of [reduced, reduced.scene])
