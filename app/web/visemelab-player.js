@@ -4,15 +4,17 @@
 // dominance). Plain ES module, no imports, no build step.
 //
 //   import { VisemePlayer } from './visemelab-player.js';
-//   const player = new VisemePlayer(gltf.scene, track);   // track = the say --out JSON
+//   const player = new VisemePlayer(gltf, track);   // gltf = GLTFLoader's result; track = the say --out JSON
 //   function frame() { player.update(audio.currentTime); renderer.render(scene, camera); }
 //
 // Keys are bound to morph targets on every mesh by the names the file has: the key's own name, else
 // a member's name (an avatar reduced with --names original keeps every viseme under its name, the
 // members of a key sharing one shape), else a merged target whose '+'-joined name or extras list the
-// member (--names merged: extras.targetAliases maps every original name to its target; merged names
-// are at most 63 bytes, "viseme_PP+FF+TH"), else the same Oculus viseme spelled another way
-// (viseme_ prefix or not, I/O/U for ih/oh/ou, any case). Targets no key binds (blinks, brows) are left as they are.
+// member (--names merged, merged names at most 63 bytes, "viseme_PP+FF+TH": the key table resolves
+// every original name, core/gltf/KeyTable.h), else the same Oculus viseme spelled another way
+// (viseme_ prefix or not, I/O/U for ih/oh/ou, any case). Targets no key binds (blinks, brows) are left
+// as they are. The key table is the glTF's root extras.visemelab, which three.js puts in the loader
+// result's userData, not on the scene: pass the result (or a scene and { table }).
 
 const OCULUS = ['sil', 'PP', 'FF', 'TH', 'DD', 'kk', 'CH', 'SS', 'nn', 'RR', 'aa', 'E', 'ih', 'oh', 'ou'];
 const SPELLINGS = { i: 'ih', o: 'oh', u: 'ou' };
@@ -142,25 +144,62 @@ function meshExtras(mesh) {
   return parent && (parent.visemeKeys || parent.targetAliases) ? parent : own;
 }
 
-// The target index key {name, members} drives on `mesh`, or -1.
-export function targetOfKey(mesh, key) {
+// The scene to drive and the root key table: `root` is GLTFLoader's result ({scene, userData}) or a
+// scene (whose userData may carry the table, e.g. copied there by the page).
+function avatarParts(root, table) {
+  const scene = root && root.scene && !root.isObject3D ? root.scene : root;
+  const data = (root && root.userData) || {};
+  return { scene, table: table || data.visemelab || null };
+}
+
+const hasOwn = (object, name) => Object.prototype.hasOwnProperty.call(object, name);
+
+// Key table version 2 (extras.visemelab version 2: mesh visemeKeys[k] = key k's targets on the mesh):
+// the first target of the key that lists one of `names` as a member or is named by one of them.
+function tableTarget(mesh, table, names) {
+  const lists = meshExtras(mesh).visemeKeys;
+  if (!table || !Array.isArray(table.keys) || !Array.isArray(lists)) return -1;
+  for (let k = 0; k < table.keys.length && k < lists.length; ++k) {
+    const key = table.keys[k] || {};
+    const members = Array.isArray(key.members) ? key.members : [];
+    const keyName = typeof key.name === 'string' ? key.name : members.join('+');
+    if (!names.some((n) => n === keyName || members.includes(n))) continue;
+    const target = Array.isArray(lists[k]) ? lists[k][0] : undefined;
+    if (Number.isInteger(target) && target >= 0 && target < (mesh.morphTargetInfluences || []).length) return target;
+  }
+  return -1;
+}
+
+// The member names a merged target name (core/gltf/MergedNames.h) may stand for: its first part is a
+// whole name, the others dropped the prefix all members share up to a separator ("viseme_PP+FF" ->
+// viseme_PP, FF, viseme_FF), so that a scene without the key table still binds them.
+function mergedMembersOf(name) {
+  const [first, ...rest] = name.split('+');
+  const prefixes = [...first].flatMap((c, i) => ('_.-: '.includes(c) ? [first.slice(0, i + 1)] : []));
+  return [first, ...rest.flatMap((part) => [part, ...prefixes.map((p) => p + part)])];
+}
+
+// The target index key {name, members} drives on `mesh`, or -1; `table`: the root key table, if any.
+export function targetOfKey(mesh, key, table = null) {
   const dict = mesh.morphTargetDictionary;
-  const has = (name) => Object.prototype.hasOwnProperty.call(dict, name);
-  if (has(key.name)) return dict[key.name];
+  if (hasOwn(dict, key.name)) return dict[key.name];
   const members = key.members && key.members.length ? key.members : [key.name];
-  for (const m of members) if (has(m)) return dict[m];
-  // --names merged: the target an original name now resolves to (extras.targetAliases, written by
-  // VisemeLab 2026-11 or later), else the target whose key lists the member (extras), or whose name
-  // joins it with '+'. An alias of a resting viseme points to its zero target.
+  for (const m of members) if (hasOwn(dict, m)) return dict[m];
+  // --names merged: the target a name now resolves to: the mesh's extras.targetAliases (version 1
+  // lists every original name, version 2 only those the key table does not resolve), then the key
+  // table, then (version 1) the mesh's visemeKeys that list the member, or a name joining it with '+'.
+  // A resting viseme keeps its zero target under its own name.
   const extras = meshExtras(mesh);
   const aliases = extras.targetAliases || {};
   for (const name of [key.name, ...members])
-    if (Object.prototype.hasOwnProperty.call(aliases, name) && Number.isInteger(aliases[name]) &&
+    if (hasOwn(aliases, name) && Number.isInteger(aliases[name]) &&
         aliases[name] >= 0 && aliases[name] < (mesh.morphTargetInfluences || []).length) return aliases[name];
+  const keyed = tableTarget(mesh, table, [key.name, ...members]);
+  if (keyed >= 0) return keyed;
   for (const vk of extras.visemeKeys || [])
-    if (vk.members && vk.targets && vk.targets.length && members.some((m) => vk.members.includes(m))) return vk.targets[0];
+    if (vk && vk.members && vk.targets && vk.targets.length && members.some((m) => vk.members.includes(m))) return vk.targets[0];
   for (const [name, index] of Object.entries(dict))
-    if (name.includes('+') && name.split('+').some((part) => members.includes(part))) return index;
+    if (name.includes('+') && mergedMembersOf(name).some((part) => members.includes(part))) return index;
   // The same Oculus viseme under another spelling.
   const wanted = new Set(members.map(oculusVisemeOf).filter((v) => v));
   if (wanted.size === 0) return -1;
@@ -172,16 +211,18 @@ export function targetOfKey(mesh, key) {
 }
 
 export class VisemePlayer {
-  // root: the avatar (e.g. gltf.scene); track: the say track JSON; face: 'full', 'reduced' or
-  // 'auto' (reduced when the avatar or face was reduced by VisemeLab, i.e. its extras name keys).
-  constructor(root, track, { face = 'auto' } = {}) {
+  // root: the avatar (GLTFLoader's result, or a scene); track: the say track JSON; face: 'full',
+  // 'reduced' or 'auto' (reduced when the avatar or face was reduced by VisemeLab, i.e. its extras
+  // name keys); table: the key table when root is a scene without it (gltf.userData.visemelab).
+  constructor(root, track, { face = 'auto', table = null } = {}) {
+    const parts = avatarParts(root, table);
     if (face === 'auto') face = VisemePlayer.isReducedAvatar(root) ? 'reduced' : 'full';
     this.face = face;
     this.curve = curveOfTrack(track, face);
     this.keys = track.playback[face].keys;
     this.bindings = []; // per mesh: {mesh, targets: target index per key, driven: targets to zero}
-    for (const mesh of morphMeshes(root)) {
-      const targets = this.keys.map((key) => targetOfKey(mesh, key));
+    for (const mesh of morphMeshes(parts.scene)) {
+      const targets = this.keys.map((key) => targetOfKey(mesh, key, parts.table));
       const driven = [...new Set(targets.filter((t) => t >= 0))];
       if (driven.length) this.bindings.push({ mesh, targets, driven });
     }
@@ -189,13 +230,14 @@ export class VisemePlayer {
   }
 
   static isReducedAvatar(root) {
-    let reduced = false;
+    const parts = avatarParts(root, null);
+    let reduced = Boolean(parts.table);
     const visit = (o) => {
       const u = o.userData || {};
       if (u.visemelab || u.visemeKeys || u.targetMembers) reduced = true;
       for (const child of o.children || []) visit(child);
     };
-    visit(root);
+    visit(parts.scene);
     return reduced;
   }
 

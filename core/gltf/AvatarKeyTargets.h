@@ -1,7 +1,8 @@
 #pragma once
 // Which morph targets of a reduced avatar carry which key: read back from what the writer recorded
-// (mesh.extras.visemeKeys and targetNames, core/gltf/AvatarWriter.h), so the designer is told what
-// the file really holds, whichever name mode wrote it.
+// (mesh.extras.visemeKeys and targetNames, the key names from the root extras.visemelab; either
+// version of the key table, core/gltf/KeyTable.h), so the designer is told what the file really
+// holds, whichever name mode wrote it.
 #include <string>
 #include <string_view>
 #include <utility>
@@ -11,7 +12,8 @@ namespace vl {
 
 struct AvatarKeyTargets {
     int key = 0;
-    std::string name; // the key's name: its members joined with '+'
+    std::string
+        name; // the key's name as recorded (merged names: its target's), else its members joined with '+'
     // Per mesh carrying the key: the mesh's name and the names of the targets that hold the key.
     std::vector<std::pair<std::string, std::vector<std::string>>> meshes;
 };

@@ -61,6 +61,7 @@ nlohmann::ordered_json ownOutputJson(const OwnOutput& own) {
         meshes.push_back({{"mesh", mesh.mesh}, {"aliases", aliases}});
     }
     return {{"recognised", own.recognised},
+            {"version", own.version},
             {"names", own.mergedNames ? "merged" : "original"},
             {"keys", keys},
             {"meshes", meshes},

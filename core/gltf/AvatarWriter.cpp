@@ -7,11 +7,13 @@
 #include "core/gltf/GlbRepack.h"
 #include "core/gltf/GltfDocument.h"
 #include "core/gltf/GltfReferences.h"
+#include "core/gltf/KeyTable.h"
 #include "core/gltf/MergedNames.h"
 #include "core/gltf/MorphRemap.h"
 #include "core/gltf/TargetStorage.h"
 #include "core/reduce/Reduction.h"
 
+#include <cmath>
 #include <cstring>
 #include <limits>
 #include <map>
@@ -161,71 +163,91 @@ Json* extrasObject(Json& object) {
     return object["extras"].is_object() ? &object["extras"] : nullptr;
 }
 
-// Every viseme name that stood for a target of this mesh (its own spelling and the set's) -> the target
-// that now carries it: a player resolves original names through it (a resting viseme: its zero target).
-Json targetAliases(const AvatarMesh& mesh, const MeshPlan& plan, const std::vector<std::string>& visemes) {
+// Per key, this mesh's targets of it after writing (names original: every member's, the first driven;
+// merged: the key's one target).
+std::vector<std::vector<int>> keyTargetsOf(const MeshPlan& plan, AvatarNames names) {
+    std::vector<std::vector<int>> out(plan.members.size());
+    for (std::size_t g = 0; g < plan.members.size(); ++g) {
+        if (plan.members[g].empty()) continue;
+        if (names == AvatarNames::Merged) out[g].push_back(plan.keyTarget[g]);
+        for (std::size_t k : plan.members[g])
+            if (names == AvatarNames::Original) out[g].push_back(plan.remap[k]);
+    }
+    return out;
+}
+
+// The viseme names of this mesh (its own spelling and the set's) whose target core/gltf/KeyTable.h's
+// rule (targetNames, then the key listing the name) does not already give: a spelling of the mesh's
+// own that no target keeps (merged names), or the set's spelling of a target named otherwise.
+Json targetAliases(const AvatarMesh& mesh, const MeshPlan& plan, const std::vector<std::string>& visemes,
+                   const std::vector<std::string>& writtenNames,
+                   const std::vector<std::vector<std::string>>& members,
+                   const std::vector<std::vector<int>>& keyTargets) {
     Json aliases = Json::object();
     for (std::size_t k = 0; k < mesh.targets.size(); ++k) {
         const AvatarTarget& t = mesh.targets[k];
         if (t.viseme < 0) continue;
-        aliases[t.name] = plan.remap[k];
-        const std::string& setName = visemes[static_cast<std::size_t>(t.viseme)];
-        if (!aliases.contains(setName)) aliases[setName] = plan.remap[k];
+        for (const std::string& name : {t.name, visemes[static_cast<std::size_t>(t.viseme)]})
+            if (!aliases.contains(name) &&
+                impliedTarget(name, writtenNames, members, keyTargets) != plan.remap[k])
+                aliases[name] = plan.remap[k];
     }
     return aliases;
 }
 
+// Version 2 (core/gltf/KeyTable.h): what only this mesh knows. Fields a version-1 table of an input
+// that was itself reduced left here are removed, so that no stale table survives.
 void writeMeshExtras(Json& meshJson, const AvatarMesh& mesh, const MeshPlan& plan, const ReducedModel& model,
-                     const std::vector<std::string>& keyNames, const std::vector<std::string>& visemes,
-                     AvatarNames names, std::vector<std::string>& notes) {
+                     const std::vector<std::string>& visemes, AvatarNames names,
+                     std::vector<std::string>& notes) {
     Json* extras = extrasObject(meshJson);
     if (!extras) {
         notes.push_back("mesh '" + meshJson.value("name", std::string()) +
-                        "': its extras are not an object, so the phoneme map was not added to them");
+                        "': its extras are not an object, so its key targets were not added to them");
         return;
     }
-    if (names == AvatarNames::Merged || extras->contains("targetNames"))
-        (*extras)["targetNames"] = plan.names;
-    Json phonemeToTarget = Json::object();
-    for (const auto& [phoneme, key] : model.phonemeToKey)
-        if (key != kRestingKey && plan.keyTarget[static_cast<std::size_t>(key)] >= 0)
-            phonemeToTarget[phoneme] = plan.keyTarget[static_cast<std::size_t>(key)];
-    Json keys = Json::array();
-    for (std::size_t g = 0; g < model.keys.size(); ++g) {
-        if (plan.members[g].empty()) continue;
-        Json targets = Json::array();
-        for (std::size_t k : plan.members[g])
-            if (names == AvatarNames::Original) targets.push_back(plan.remap[k]);
-        if (names == AvatarNames::Merged) targets.push_back(plan.keyTarget[g]);
-        keys.push_back({{"key", g},
-                        {"name", keyNames[g]},
-                        {"members", model.keys[g].members},
-                        {"frequency", model.keys[g].frequency},
-                        {"targets", targets}});
-    }
-    (*extras)["phonemeToTarget"] = phonemeToTarget;
-    (*extras)["visemeKeys"] = keys;
-    (*extras)["targetAliases"] = targetAliases(mesh, plan, visemes);
+    const bool named = names == AvatarNames::Merged || extras->contains("targetNames");
+    if (named) (*extras)["targetNames"] = plan.names;
+    const std::vector<std::vector<int>> keyTargets = keyTargetsOf(plan, names);
+    std::vector<std::vector<std::string>> members;
+    for (const KeyMesh& key : model.keys) members.push_back(key.members);
+    const Json aliases = targetAliases(mesh, plan, visemes, named ? plan.names : std::vector<std::string>(),
+                                       members, keyTargets);
+    extras->erase("phonemeToTarget");
+    (*extras)["visemeKeys"] = keyTargets;
+    if (aliases.empty())
+        extras->erase("targetAliases");
+    else
+        (*extras)["targetAliases"] = aliases;
 }
 
-Json rootExtras(const ReducedModel& model, const std::vector<std::string>& keyNames, AvatarNames names,
-                const std::vector<AvatarMeshChange>& meshes) {
+// A frequency as written (core/gltf/KeyTable.h); a whole number (phoneme counts) without ".0".
+Json frequencyJson(double frequency) {
+    const double written = writtenFrequency(frequency);
+    if (std::abs(written) < 1e15 && written == std::floor(written)) return static_cast<long long>(written);
+    return written;
+}
+
+// Version 2 of extras.visemelab (core/gltf/KeyTable.h): a key's name only when it is not its members
+// joined with '+' (merged names of several members), frequencies to 4 significant digits.
+Json rootExtras(const ReducedModel& model, const std::vector<std::string>& keyNames, AvatarNames names) {
     Json keys = Json::array();
-    for (std::size_t g = 0; g < model.keys.size(); ++g)
-        keys.push_back({{"name", keyNames[g]},
-                        {"members", model.keys[g].members},
-                        {"frequency", model.keys[g].frequency}});
-    Json phonemeToKey = Json::object(), phonemeFrequencies = Json::object(), touched = Json::array();
+    for (std::size_t g = 0; g < model.keys.size(); ++g) {
+        Json key = Json::object();
+        if (keyNames[g] != mergedKeyName(model.keys[g].members)) key["name"] = keyNames[g];
+        key["members"] = model.keys[g].members;
+        key["frequency"] = frequencyJson(model.keys[g].frequency);
+        keys.push_back(std::move(key));
+    }
+    Json phonemeToKey = Json::object(), phonemeFrequencies = Json::object();
     for (const auto& [phoneme, key] : model.phonemeToKey) phonemeToKey[phoneme] = key;
-    for (const auto& [phoneme, f] : model.phonemeFrequencies) phonemeFrequencies[phoneme] = f;
-    for (const AvatarMeshChange& m : meshes) touched.push_back(m.mesh);
-    Json out{{"version", 1},
+    for (const auto& [phoneme, f] : model.phonemeFrequencies) phonemeFrequencies[phoneme] = frequencyJson(f);
+    Json out{{"version", kKeyTableVersion},
              {"names", toString(names)},
              {"keys", keys},
              {"resting", model.resting},
              {"phonemeToKey", phonemeToKey}};
     if (!model.phonemeFrequencies.empty()) out["phonemeFrequencies"] = phonemeFrequencies;
-    out["meshes"] = touched;
     return out;
 }
 
@@ -353,7 +375,7 @@ std::string write(const GltfDocument& doc, const AvatarScan& scan, const Reduced
                 primJson["extras"].contains("targetNames"))
                 primJson["extras"]["targetNames"] = plan.names;
         }
-        writeMeshExtras(meshJson, mesh, plan, model, keyNames, scan.visemes, options.names, s.notes);
+        writeMeshExtras(meshJson, mesh, plan, model, scan.visemes, options.names, s.notes);
         if (options.names == AvatarNames::Merged) remaps[mesh.index] = plan.remap;
     }
     if (!remaps.empty()) remapMorphTargets(out, reader, remaps);
@@ -364,10 +386,11 @@ std::string write(const GltfDocument& doc, const AvatarScan& scan, const Reduced
 
     if (!out.json.contains("extras")) out.json["extras"] = Json::object();
     if (out.json["extras"].is_object())
-        out.json["extras"]["visemelab"] = rootExtras(model, keyNames, options.names, s.meshes);
+        out.json["extras"]["visemelab"] = rootExtras(model, keyNames, options.names);
     else
         s.notes.push_back(
-            "the document's extras are not an object: the key table is only in the meshes' extras");
+            "the document's extras are not an object: the key table (extras.visemelab) was not written, "
+            "only each mesh's key targets");
 
     RepackStats stats;
     std::string glb = out.finish(&stats);

@@ -24,10 +24,11 @@
 //   animations (a key's weight is the sum of its members'), VRM 0.x blendShapeMaster binds and
 //   VRM 1.0 morphTargetBinds are remapped.
 // In both modes a resting viseme (in no key) keeps a zero-displacement target under its own name.
-// mesh.extras.targetNames follow the targets; mesh.extras gain "phonemeToTarget" (phoneme -> target
-// index on this mesh), "visemeKeys" (key, name, members, targets) and "targetAliases" (every original
-// viseme name -> the target carrying it); the root extras gain "visemelab" (keys with the name they
-// are recorded under, members and frequencies, resting visemes, phoneme -> key, phoneme frequencies).
+// mesh.extras.targetNames follow the targets. The key table is written once, at the root:
+// extras.visemelab version 2 (core/gltf/KeyTable.h: keys with members and frequencies, resting
+// visemes, phoneme -> key, phoneme frequencies); each mesh's extras gain only what is its own:
+// "visemeKeys" (per key, its targets on the mesh) and, when some viseme name would not resolve by
+// targetNames and the table, "targetAliases" (that name -> the target carrying it).
 // core/gltf/OwnOutput.h reads all of it back.
 //
 // Accessors and buffer views that only the replaced targets (or rewritten animations) used are

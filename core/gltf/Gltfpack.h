@@ -6,7 +6,7 @@
 // gltfpack rebuilds the document: meshes are re-ordered and placed on unnamed child nodes of the
 // named nodes it keeps (-kn), mesh names and every extras object except targetNames are dropped,
 // and so are extensions it does not know. What VisemeLab wrote and clients need is put back: mesh
-// names and extras (targetNames, phonemeToTarget, visemeKeys) by matching each mesh through the
+// names and extras (targetNames, visemeKeys, targetAliases) by matching each mesh through the
 // named node that places it, and the document's extras (the key table). The result is read back
 // and must yield the same visemes on the same meshes, else nothing is written. A VRM is refused:
 // its extension addresses nodes, meshes and materials by the indices gltfpack renumbers.

@@ -1,6 +1,7 @@
 #include "core/gltf/OwnOutput.h"
 
 #include "core/gltf/GltfDocument.h"
+#include "core/gltf/KeyTable.h"
 #include "core/gltf/TargetNames.h"
 #include "core/reduce/ReducedModel.h"
 
@@ -39,6 +40,14 @@ int indexBelow(const Json& value, std::size_t size) {
 
 // The root key table; false (with a note) when it cannot be used at all.
 bool readKeys(const Json& root, OwnOutput& own) {
+    const Json* version = field(root, "version");
+    const long long read = version ? (version->is_number_integer() ? version->get<long long>() : -1) : 1;
+    if (read < 1 || read > kKeyTableVersion) {
+        note(own, "/extras/visemelab/version",
+             "expected 1 or " + std::to_string(kKeyTableVersion) + " (the versions this VisemeLab reads)");
+        return false;
+    }
+    own.version = static_cast<int>(read);
     const Json* names = field(root, "names");
     if (!names || !names->is_string() ||
         (names->get<std::string>() != "original" && names->get<std::string>() != "merged")) {
@@ -93,6 +102,90 @@ bool readKeys(const Json& root, OwnOutput& own) {
     return true;
 }
 
+// Entry i of a mesh's visemeKeys: its key and its list of targets, or key -1. Version 2 lists the
+// targets of key i as an array; version 1 wrote {key, name, members, frequency, targets} objects.
+std::pair<int, const Json*> keyEntry(const Json& entry, std::size_t i, std::size_t keys) {
+    if (entry.is_array()) return {i < keys ? static_cast<int>(i) : -1, &entry};
+    const Json* key = field(entry, "key");
+    const Json* targets = field(entry, "targets");
+    return {key && targets && targets->is_array() ? indexBelow(*key, keys) : -1, targets};
+}
+
+// The mesh's targets of each key, read from extras.visemeKeys (either version).
+void readKeyTargets(const Json& table, const std::string& where, const std::vector<TargetName>& names,
+                    OwnMesh& mesh, OwnOutput& own) {
+    std::vector<bool> claimed(names.size(), false);
+    for (std::size_t i = 0; i < table.size(); ++i) {
+        const std::string at = where + "/visemeKeys/" + std::to_string(i);
+        const auto [key, targets] = keyEntry(table[i], i, own.keys.size());
+        if (key < 0) {
+            note(own, at,
+                 "expected the targets of key " + std::to_string(i) + " (an array; version 1: {key below " +
+                     std::to_string(own.keys.size()) + ", targets}); ignored");
+            continue;
+        }
+        auto& list = mesh.keyTargets[static_cast<std::size_t>(key)];
+        if (!list.empty()) {
+            note(own, at, "key " + std::to_string(key) + " listed twice on the mesh; ignored");
+            continue;
+        }
+        const std::string targetsAt = table[i].is_array() ? at : at + "/targets";
+        for (const Json& t : *targets) {
+            const int target = indexBelow(t, names.size());
+            if (target < 0 || claimed[static_cast<std::size_t>(target)]) {
+                note(own, targetsAt, "not a target of the mesh, or one another key has; ignored");
+                continue;
+            }
+            claimed[static_cast<std::size_t>(target)] = true;
+            list.push_back(target);
+        }
+        if (own.mergedNames && !list.empty() &&
+            names[static_cast<std::size_t>(list.front())].name !=
+                own.keys[static_cast<std::size_t>(key)].name)
+            note(own, at,
+                 "its target is named '" + names[static_cast<std::size_t>(list.front())].name +
+                     "', the key '" + own.keys[static_cast<std::size_t>(key)].name + "'");
+    }
+}
+
+// The mesh's extras.targetNames as three.js reads them (an entry that is no string names nothing).
+std::vector<std::string> extrasTargetNames(const Json& extras, std::size_t targets) {
+    std::vector<std::string> out;
+    const Json* names = field(extras, "targetNames");
+    for (std::size_t t = 0; names && names->is_array() && t < names->size() && t < targets; ++t)
+        out.push_back((*names)[t].is_string() ? (*names)[t].get<std::string>() : std::string());
+    return out;
+}
+
+// Every viseme name the table knows that resolves on the mesh: by targetNames, else by the mesh's
+// extras.targetAliases (version 1 lists every name, version 2 only those the next rule misses), else
+// by the key listing it (core/gltf/KeyTable.h). Aliases of other names (a mesh's own spelling) are kept.
+void readAliases(const Json& extras, const std::string& where, std::size_t targets, OwnMesh& mesh,
+                 OwnOutput& own) {
+    if (const Json* aliases = field(extras, "targetAliases")) {
+        if (!aliases->is_object()) note(own, where + "/targetAliases", "not an object; ignored");
+        for (auto it = aliases->begin(); aliases->is_object() && it != aliases->end(); ++it) {
+            const int target = indexBelow(it.value(), targets);
+            if (target < 0)
+                note(own, where + "/targetAliases/" + it.key(), "not a target of the mesh; ignored");
+            else
+                mesh.aliases[it.key()] = target;
+        }
+    }
+    const std::vector<std::string> targetNames = extrasTargetNames(extras, targets);
+    std::vector<std::vector<std::string>> members;
+    for (const OwnKey& key : own.keys) members.push_back(key.members);
+    std::vector<std::string> visemes = own.resting;
+    for (const auto& m : members) visemes.insert(visemes.end(), m.begin(), m.end());
+    for (const std::string& name : visemes) {
+        if (const int named = impliedTarget(name, targetNames, {}, {}); named >= 0)
+            mesh.aliases[name] = named;
+        else if (const int keyed = impliedTarget(name, {}, members, mesh.keyTargets);
+                 keyed >= 0 && !mesh.aliases.count(name))
+            mesh.aliases[name] = keyed;
+    }
+}
+
 // Mesh m's key table and aliases, entries that do not fit ignored with a note.
 void readMesh(const GltfDocument& doc, std::size_t m, OwnOutput& own) {
     const Json& meshJson = doc.json["meshes"][m];
@@ -106,49 +199,12 @@ void readMesh(const GltfDocument& doc, std::size_t m, OwnOutput& own) {
     }
     const std::vector<TargetName> names = meshTargetNames(doc, static_cast<int>(m));
     OwnMesh mesh{static_cast<int>(m), std::vector<std::vector<int>>(own.keys.size()), {}};
-    std::vector<bool> claimed(names.size(), false);
-    for (std::size_t i = 0; i < table->size(); ++i) {
-        const std::string at = where + "/visemeKeys/" + std::to_string(i);
-        const Json* keyField = field((*table)[i], "key");
-        const Json* targets = field((*table)[i], "targets");
-        const int key = keyField ? indexBelow(*keyField, own.keys.size()) : -1;
-        if (key < 0 || !targets || !targets->is_array()) {
-            note(own, at, "expected {key below " + std::to_string(own.keys.size()) + ", targets}; ignored");
-            continue;
-        }
-        auto& list = mesh.keyTargets[static_cast<std::size_t>(key)];
-        if (!list.empty()) {
-            note(own, at, "key " + std::to_string(key) + " listed twice on the mesh; ignored");
-            continue;
-        }
-        for (const Json& t : *targets) {
-            const int target = indexBelow(t, names.size());
-            if (target < 0 || claimed[static_cast<std::size_t>(target)]) {
-                note(own, at + "/targets", "not a target of the mesh, or one another key has; ignored");
-                continue;
-            }
-            claimed[static_cast<std::size_t>(target)] = true;
-            list.push_back(target);
-        }
-        if (own.mergedNames && !list.empty() &&
-            names[static_cast<std::size_t>(list.front())].name !=
-                own.keys[static_cast<std::size_t>(key)].name)
-            note(own, at,
-                 "its target is named '" + names[static_cast<std::size_t>(list.front())].name +
-                     "', the key '" + own.keys[static_cast<std::size_t>(key)].name + "'");
-    }
-    if (const Json* aliases = field(*extras, "targetAliases")) {
-        if (!aliases->is_object()) note(own, where + "/targetAliases", "not an object; ignored");
-        for (auto it = aliases->begin(); aliases->is_object() && it != aliases->end(); ++it) {
-            const int target = indexBelow(it.value(), names.size());
-            if (target < 0)
-                note(own, where + "/targetAliases/" + it.key(), "not a target of the mesh; ignored");
-            else
-                mesh.aliases[it.key()] = target;
-        }
-    }
-    if (std::any_of(mesh.keyTargets.begin(), mesh.keyTargets.end(), [](const auto& l) { return !l.empty(); }))
-        own.meshes.push_back(std::move(mesh));
+    readKeyTargets(*table, where, names, mesh, own);
+    if (std::none_of(mesh.keyTargets.begin(), mesh.keyTargets.end(),
+                     [](const auto& l) { return !l.empty(); }))
+        return;
+    readAliases(*extras, where, names.size(), mesh, own);
+    own.meshes.push_back(std::move(mesh));
 }
 
 } // namespace
@@ -182,6 +238,7 @@ OwnOutput recogniseOwnOutput(const GltfDocument& doc) {
         if (!root->is_object()) note(own, "/extras/visemelab", "not an object");
         own.keys.clear();
         own.resting.clear();
+        own.version = 0;
         own.notes.push_back("not read as VisemeLab's output");
         return own;
     }

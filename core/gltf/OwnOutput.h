@@ -1,10 +1,12 @@
 #pragma once
-// Recognising a file `visemelab avatar reduce` wrote (core/gltf/AvatarWriter.h): the root
-// extras.visemelab (keys with their members, the resting visemes, the name mode) and each mesh's
-// extras.visemeKeys (key -> its targets on the mesh) and extras.targetAliases (original viseme name
-// -> target). The reader trusts nothing: an element of the wrong type, an index out of range or a
-// key listed twice is ignored with a note naming it; when the key table itself is unusable the file
-// is not recognised (and the notes say why). It never throws for the extras' sake.
+// Recognising a file `visemelab avatar reduce` wrote (core/gltf/AvatarWriter.h), in either version
+// of its key table (core/gltf/KeyTable.h): the root extras.visemelab (keys with their members, the
+// resting visemes, the name mode) and each mesh's extras.visemeKeys (key -> its targets on the mesh)
+// and extras.targetAliases (viseme name -> target; version 2 lists only the names that targetNames
+// and the key table do not resolve, and the reader resolves the others as a player does). The reader trusts
+// nothing: an element of the wrong type, an index out of range or a key listed twice is ignored with a note
+// naming it; when the key table itself is unusable the file is not recognised (and the notes say why). It
+// never throws for the extras' sake.
 #include <map>
 #include <string>
 #include <vector>
@@ -22,11 +24,12 @@ struct OwnKey {
 struct OwnMesh {
     int mesh = 0;
     std::vector<std::vector<int>> keyTargets; // per key: its targets on this mesh (first: the one to drive)
-    std::map<std::string, int> aliases;       // original viseme name -> target index
+    std::map<std::string, int> aliases;       // every viseme name that resolves on the mesh -> target
 };
 
 struct OwnOutput {
     bool recognised = false;
+    int version = 0;          // of extras.visemelab: 1 or 2 (core/gltf/KeyTable.h); 0 when not read
     bool mergedNames = false; // "merged": one target per key; else every viseme kept its own target
     std::vector<OwnKey> keys;
     std::vector<std::string> resting; // visemes in no key: the rest pose (zero-displacement targets)

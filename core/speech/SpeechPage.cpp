@@ -67,7 +67,7 @@ loader.setMeshoptDecoder(MeshoptDecoder);
 loader.parse(bytesOf('avatar').buffer, '', (gltf) => {
   scene.add(gltf.scene);
   gltf.scene.updateMatrixWorld(true);
-  const player = new VisemePlayer(gltf.scene, track);
+  const player = new VisemePlayer(gltf, track); // the result: its userData holds the key table
   frame(player.bindings.length ? player.bindings.map((b) => b.mesh) : [gltf.scene]);
   resize();
   const fixed = new URLSearchParams(location.hash.slice(1)).get('t');

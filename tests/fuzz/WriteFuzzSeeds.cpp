@@ -13,6 +13,7 @@
 #include "core/speech/TrackJson.h"
 #include "tests/export/TestModels.h"
 #include "tests/gltf/AvatarFixtures.h"
+#include "tests/gltf/KeyTableVersion1.h"
 
 #include <nlohmann/json.hpp>
 
@@ -94,17 +95,21 @@ int main(int argc, char** argv) {
             write("gltf_avatar", std::string("rpm_") + name + ".glb", avatar);
             if (storage != FixtureStorage::Plain) continue;
             write("gltf_avatar", "rpm_plain.gltf", gltfWithDataUri(avatar));
-            // VisemeLab's own output (merged names, extras.visemelab, visemeKeys, targetAliases): the
-            // scan recognises it, so the fuzzer mutates what that reads.
+            // VisemeLab's own output (extras.visemelab, each mesh's visemeKeys and targetAliases), in
+            // both name modes and both key table versions (core/gltf/KeyTable.h): the scan recognises
+            // it, so the fuzzer mutates what that reads.
             const vl::GltfDocument doc = vl::parseGltfDocument(avatar, "seed", {});
             const vl::AvatarScan scan = vl::scanAvatar(doc, {});
             vl::ReduceSettings settings;
             settings.target = 4;
             settings.rest = vl::RestChoice::Free;
-            write(
-                "gltf_avatar", "rpm_plain_reduced_merged.glb",
-                vl::reduceAvatar(doc, scan, vl::uniformFrequencies(scan), settings, {vl::AvatarNames::Merged})
-                    .glb);
+            const auto reduced = [&](vl::AvatarNames names) {
+                return vl::reduceAvatar(doc, scan, vl::uniformFrequencies(scan), settings, {names}).glb;
+            };
+            const std::string merged = reduced(vl::AvatarNames::Merged);
+            write("gltf_avatar", "rpm_plain_reduced_merged.glb", merged);
+            write("gltf_avatar", "rpm_plain_reduced_original.glb", reduced(vl::AvatarNames::Original));
+            write("gltf_avatar", "rpm_plain_reduced_merged_v1.glb", vl::test::withKeyTableVersion1(merged));
         }
         write("gltf_avatar", "vroid_vrm0.glb", vl::test::vroidLikeAvatar(false));
 

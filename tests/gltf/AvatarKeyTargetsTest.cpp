@@ -5,6 +5,7 @@
 #include "core/gltf/GltfDocument.h"
 #include "core/gltf/MergedNames.h"
 #include "tests/gltf/AvatarFixtures.h"
+#include "tests/gltf/KeyTableVersion1.h"
 
 #include <gtest/gtest.h>
 
@@ -67,6 +68,16 @@ TEST(AvatarKeyTargets, MergedNamesGiveOneTargetPerKeyNamedByItsMembers) {
         merged = merged || model.keys[g].members.size() > 1;
     }
     EXPECT_TRUE(merged); // some key has several members, so its name is a '+' join
+}
+
+// A file of key table version 1 (every mesh repeating the table) lists the same.
+TEST(AvatarKeyTargets, Version1FilesListTheSame) {
+    for (AvatarNames names : {AvatarNames::Original, AvatarNames::Merged}) {
+        const AvatarReduction r = reduced(names);
+        EXPECT_EQ(formatAvatarKeyTargets(avatarKeyTargets(test::withKeyTableVersion1(r.glb), "v1.glb")),
+                  formatAvatarKeyTargets(avatarKeyTargets(r.glb, "v2.glb")))
+            << toString(names);
+    }
 }
 
 TEST(AvatarKeyTargets, BytesThatAreNoGlbAreRefusedNamingTheSource) {

@@ -91,7 +91,6 @@ TEST(AvatarSizeAfterTools, ReductionsStaySmallerAfterGltfTransformMeshoptAndGltf
         writeFileAtomically(in, kind.glb);
         const GltfDocument doc = parseGltfDocument(kind.glb, in.string(), {});
         const AvatarScan scan = scanAvatar(doc, {kind.pattern});
-        const int n = static_cast<int>(scan.visemes.size());
         std::vector<long long> inAfter;
         for (const Tool& t : tools) {
             inAfter.push_back(packedSize(t, in, dir / (std::string(kind.name) + "_" + t.suffix + ".glb")));
@@ -125,14 +124,13 @@ TEST(AvatarSizeAfterTools, ReductionsStaySmallerAfterGltfTransformMeshoptAndGltf
                     table << "| " << kind.name << " | " << m << " | " << toString(names) << " | " << inSize
                           << " | " << outSize << " | " << percent(outSize, inSize) << " | " << label << " | "
                           << inAfter[t] << " | " << after << " | " << percent(after, inAfter[t]) << " |\n";
-                    // Merged names, where the reduction itself is smaller and merges more than one pair:
-                    // it stays smaller after the pass. (At m = n - 1 on rpm the one merged pair saves less
-                    // than the key table adds to the JSON once the tool has compressed the data.)
-                    // Original names are only measured: both tools give every target its own accessor
-                    // again (the members' shared key is copied n times), so the binary data is about
-                    // the input's and the key table in the extras is what remains of the difference.
-                    if (names == AvatarNames::Merged && outSize < inSize && m + 1 < n) {
-                        EXPECT_LE(after, inAfter[t]) << stem << " after " << label;
+                    // Merged names stay smaller after the pass, for every m < n. Original names are only
+                    // measured: both tools give every target its own accessor again (the members'
+                    // shared key is copied n times), so the binary data is about the input's, and
+                    // gltf-transform keeps the key table in the extras (gltfpack drops it): about 1.2 KB
+                    // more than the input on the rpm kinds (docs/avatars.md, "Output size").
+                    if (names == AvatarNames::Merged) {
+                        EXPECT_LT(after, inAfter[t]) << stem << " after " << label;
                     }
                 }
             }

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 namespace vl {
 namespace {
@@ -47,23 +48,21 @@ AvatarReduction reduced(const GltfDocument& doc, const AvatarScan& scan, int m, 
 }
 
 // Bytes of the key table VisemeLab adds to the JSON: the root's extras.visemelab and each mesh's
-// extras.phonemeToTarget and extras.visemeKeys (compact, as written).
+// extras.visemeKeys and extras.targetAliases (compact, as written; core/gltf/KeyTable.h).
 std::size_t keyTableBytes(const std::string& glb) {
     const GltfDocument doc = parseGltfDocument(glb, "out.glb", {});
     std::size_t bytes = doc.json["extras"]["visemelab"].dump().size();
     for (const auto& mesh : doc.json["meshes"])
         if (mesh.contains("extras"))
-            for (const char* key : {"phonemeToTarget", "visemeKeys"})
+            for (const char* key : {"visemeKeys", "targetAliases"})
                 if (mesh["extras"].contains(key)) bytes += mesh["extras"][key].dump().size();
     return bytes;
 }
 
-// Smaller for every m < n, in every storage and both names modes, but for one case: at m = n - 1
-// the rpm fixtures merge one pair of visemes, which saves one target's data per mesh (about 6 KB)
-// while the key table on each of the 4 meshes and the root adds about 7 KB of JSON. Without the
-// key table the output is smaller there too.
+// Smaller for every m < n, in every storage and both names modes. At m = n - 1 the rpm fixtures merge
+// one pair of visemes, which saves one target's data per mesh (about 6 KB on the compressed kinds);
+// the key table (core/gltf/KeyTable.h: once at the root, per mesh only its key targets) adds less.
 TEST(AvatarSize, EveryReductionIsSmallerThanItsInputInEveryStorageAndNamesMode) {
-    std::size_t largerWithTable = 0;
     for (const Kind& kind : kinds()) {
         const GltfDocument doc = parseGltfDocument(kind.glb, "in.glb", {});
         const AvatarScan scan = scanAvatar(doc, {kind.pattern});
@@ -72,16 +71,15 @@ TEST(AvatarSize, EveryReductionIsSmallerThanItsInputInEveryStorageAndNamesMode) 
         for (int m = 1; m < n; ++m)
             for (AvatarNames names : {AvatarNames::Original, AvatarNames::Merged}) {
                 const AvatarReduction r = reduced(doc, scan, m, names);
+                const std::size_t table = keyTableBytes(r.glb);
                 const std::string what = std::string(kind.name) + " m=" + std::to_string(m) + " names " +
                                          toString(names) + ": " + std::to_string(r.glb.size()) +
-                                         " bytes out, " + std::to_string(kind.glb.size()) + " in";
-                EXPECT_LT(r.glb.size() - keyTableBytes(r.glb), kind.glb.size()) << what;
-                if (r.glb.size() < kind.glb.size()) continue;
-                EXPECT_EQ(m, n - 1) << what;
-                ++largerWithTable;
+                                         " bytes out (key table " + std::to_string(table) + "), " +
+                                         std::to_string(kind.glb.size()) + " in";
+                EXPECT_LT(r.glb.size(), kind.glb.size()) << what;
+                if (m == n - 1) std::printf("%s\n", what.c_str());
             }
     }
-    EXPECT_LE(largerWithTable, 5u * 2u); // at most the compressed rpm kinds at m = 14
 }
 
 // Every key accessor with bytes is stored as the input's targets are: shorts in, shorts out;

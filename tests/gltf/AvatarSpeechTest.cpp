@@ -11,6 +11,7 @@
 #include "tests/gltf/AvatarFolderTest.h"
 #include "tests/gltf/AvatarSpeechFixture.h"
 #include "tests/gltf/GltfTestSupport.h"
+#include "tests/gltf/KeyTableVersion1.h"
 
 #include <gtest/gtest.h>
 
@@ -113,10 +114,12 @@ TEST_F(AvatarSpeechTest, ReducedAvatarSpeaksWithEveryMeshSkinAndMaterialKept) {
                 [static_cast<std::size_t>(out.model.nodes[static_cast<std::size_t>(headNode)].mesh)];
     const std::size_t targets = headMesh["extras"]["targetNames"].size();
     ASSERT_EQ(weights.size(), times.size() * targets);
-    const int aaTarget = headMesh["extras"]["phonemeToTarget"]["AA"].get<int>();
+    // AA's key (root table) is driven by its first target on the head (the mesh's visemeKeys).
+    const auto aaKey = out.json["extras"]["visemelab"]["phonemeToKey"]["AA"].get<std::size_t>();
+    const int aaTarget = headMesh["extras"]["visemeKeys"][aaKey][0].get<int>();
     std::set<int> visemeTargets;
-    for (const auto& key : headMesh["extras"]["visemeKeys"])
-        for (const auto& t : key["targets"]) visemeTargets.insert(t.get<int>());
+    for (const auto& keyTargets : headMesh["extras"]["visemeKeys"])
+        for (const auto& t : keyTargets) visemeTargets.insert(t.get<int>());
     bool sawAa = false;
     for (std::size_t i = 0; i < times.size(); ++i) {
         if (!(times[i] > 0.2f && times[i] < 0.5f)) continue;
@@ -217,6 +220,27 @@ TEST_F(AvatarSpeechTest, ReducedFileWithMergedNamesDrivesItsKeyTargetsByTheirNam
     EXPECT_GT(checked, 0);
 }
 
+// A reduced avatar VisemeLab wrote before key table version 2 (core/gltf/KeyTable.h) speaks as the
+// same reduction does now, in both name modes.
+TEST_F(AvatarSpeechTest, ReducedFileOfKeyTableVersion1GivesTheSameFace) {
+    for (AvatarNames names : {AvatarNames::Original, AvatarNames::Merged}) {
+        const auto [inMemory, fromFile] = reducedTwice(dir, names);
+        writeFileAtomically(dir / "version1.glb",
+                            test::withKeyTableVersion1(reducedFixture(dir / "rpm.glb", names)));
+        AvatarSpeechOptions options;
+        options.phonemeTable = test::fixturePhonemeTable();
+        options.reduced = dir / "version1.glb";
+        const AvatarSpeech older = avatarSpeech(dir / "rpm.glb", options);
+        ASSERT_TRUE(older.reducedFace);
+        expectSameReducedFace(older.faces.reduced, fromFile.faces.reduced);
+        for (std::size_t k = 0; k < older.faces.reduced.keys.size(); ++k)
+            EXPECT_EQ(older.faces.reduced.keys[k].name, fromFile.faces.reduced.keys[k].name) << k;
+        ASSERT_EQ(older.drives.size(), fromFile.drives.size());
+        for (std::size_t d = 0; d < older.drives.size(); ++d)
+            EXPECT_EQ(older.drives[d].keyOfTarget, fromFile.drives[d].keyOfTarget) << toString(names);
+    }
+}
+
 TEST_F(AvatarSpeechTest, AReducedFileWithHostileExtrasIsAClearError) {
     AvatarSpeechOptions options;
     options.phonemeTable = test::fixturePhonemeTable();
@@ -236,8 +260,7 @@ TEST_F(AvatarSpeechTest, AReducedFileWithHostileExtrasIsAClearError) {
         [](auto& j) {
             for (auto& m : j["meshes"])
                 if (m.contains("extras") && m["extras"].contains("visemeKeys"))
-                    for (auto& k : m["extras"]["visemeKeys"])
-                        if (k["key"] == 0) k["targets"] = {12345};
+                    m["extras"]["visemeKeys"][0] = {12345};
         },
         {"hostile.glb", "/extras/visemelab/keys/0", "carried by no target"});
 }

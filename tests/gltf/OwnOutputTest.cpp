@@ -6,6 +6,7 @@
 #include "core/gltf/TargetNames.h"
 #include "tests/gltf/AvatarFixtures.h"
 #include "tests/gltf/GltfTestSupport.h"
+#include "tests/gltf/KeyTableVersion1.h"
 
 #include <gtest/gtest.h>
 
@@ -61,6 +62,29 @@ const Json& meshNamed(const GltfDocument& doc, const std::string& name) {
     for (const Json& m : doc.json["meshes"])
         if (m["name"] == name) return m;
     throw std::runtime_error("no mesh " + name);
+}
+
+// The key table the scan read for the mesh named `name`.
+const OwnMesh& ownMeshNamed(const AvatarScan& scan, const GltfDocument& doc, const std::string& name) {
+    for (const OwnMesh& m : scan.own.meshes)
+        if (doc.json["meshes"][static_cast<std::size_t>(m.mesh)]["name"] == name) return m;
+    throw std::runtime_error("no key table on mesh " + name);
+}
+
+// Every original viseme name resolves on the mesh, as a player resolves it (targetNames, the mesh's
+// few aliases, the root key table): to its key's target, a resting viseme to its own zero target.
+void expectEveryVisemeResolves(const AvatarScan& scan, const GltfDocument& doc, const std::string& mesh,
+                               const std::vector<std::string>& visemes) {
+    const OwnMesh& own = ownMeshNamed(scan, doc, mesh);
+    const auto targetNames = meshNamed(doc, mesh)["extras"]["targetNames"].get<std::vector<std::string>>();
+    for (const std::string& viseme : visemes) {
+        ASSERT_TRUE(own.aliases.count(viseme)) << viseme;
+        const std::string& at = targetNames[static_cast<std::size_t>(own.aliases.at(viseme))];
+        const auto owner = std::find_if(scan.own.keys.begin(), scan.own.keys.end(), [&](const OwnKey& k) {
+            return std::find(k.members.begin(), k.members.end(), viseme) != k.members.end();
+        });
+        EXPECT_EQ(at, owner == scan.own.keys.end() ? viseme : owner->name) << viseme;
+    }
 }
 
 TEST(MergedNames, DropTheMembersSharedPrefixAfterTheFirst) {
@@ -122,17 +146,14 @@ TEST(OwnOutput, MergedReductionIsRecognisedWithItsKeysMembersAndRestingVisemes) 
             EXPECT_NE(std::find(scan.visemes.begin(), scan.visemes.end(), scan.own.keys[k].name),
                       scan.visemes.end());
         }
-        // Every original name resolves through the aliases: to its key's target, or to its zero target.
+        // Every original name resolves: to its key's target, or to its zero target. The table is
+        // written once, at the root (version 2): the head lists only its targets per key.
+        expectEveryVisemeResolves(scan, out, "Wolf3D_Head", test::rpmVisemeNames());
         const Json& head = meshNamed(out, "Wolf3D_Head");
-        const auto targetNames = head["extras"]["targetNames"].get<std::vector<std::string>>();
-        for (const std::string& viseme : test::rpmVisemeNames()) {
-            ASSERT_TRUE(head["extras"]["targetAliases"].contains(viseme)) << viseme;
-            const std::string& at = targetNames[head["extras"]["targetAliases"][viseme].get<std::size_t>()];
-            const auto owner = std::find_if(scan.own.keys.begin(), scan.own.keys.end(), [&](const OwnKey& k) {
-                return std::find(k.members.begin(), k.members.end(), viseme) != k.members.end();
-            });
-            EXPECT_EQ(at, owner == scan.own.keys.end() ? viseme : owner->name) << viseme;
-        }
+        EXPECT_EQ(out.json["extras"]["visemelab"]["version"], 2);
+        EXPECT_EQ(head["extras"]["visemeKeys"].size(), static_cast<std::size_t>(m));
+        EXPECT_FALSE(head["extras"].contains("phonemeToTarget"));
+        EXPECT_FALSE(head["extras"].contains("targetAliases")) << head["extras"]["targetAliases"].dump();
         const std::string report = formatAvatarReport(scan);
         EXPECT_NE(report.find("reduced by VisemeLab: " + std::to_string(m) +
                               " keys from 15 visemes (names merged)"),
@@ -146,15 +167,15 @@ TEST(OwnOutput, MergedReductionIsRecognisedWithItsKeysMembersAndRestingVisemes) 
         EXPECT_EQ(json["visemelab"]["names"], "merged");
         EXPECT_EQ(json["visemelab"]["visemes"], 15);
         EXPECT_EQ(json["visemelab"]["resting"].get<std::vector<std::string>>(), model.resting);
+        EXPECT_EQ(json["visemelab"]["version"], 2);
         // Every original name of the head resolves through the aliases the report lists.
         bool headAliases = false;
+        const OwnMesh& ownHead = ownMeshNamed(scan, out, "Wolf3D_Head");
         for (const Json& mesh : json["visemelab"]["meshes"])
-            if (json["meshes"][mesh["mesh"].get<std::size_t>()]["name"] == "Wolf3D_Head") {
+            if (mesh["mesh"] == ownHead.mesh) {
                 headAliases = true;
                 for (const std::string& viseme : test::rpmVisemeNames())
-                    EXPECT_EQ(mesh["aliases"].value(viseme, -1),
-                              head["extras"]["targetAliases"].value(viseme, -2))
-                        << viseme;
+                    EXPECT_EQ(mesh["aliases"].value(viseme, -1), ownHead.aliases.at(viseme)) << viseme;
             }
         EXPECT_TRUE(headAliases);
     }
@@ -224,9 +245,13 @@ TEST(OwnOutput, LongTargetNamesGiveMergedNamesWithin63BytesAndReadBack) {
         const Written w = reduceGlb(glb, m, AvatarNames::Merged, "Kopf_*");
         const GltfDocument out = parseGltfDocument(w.glb, "out.glb", {});
         for (std::size_t k = 0; k < w.reduction.outcome.model.keys.size(); ++k) {
-            const std::string name = out.json["extras"]["visemelab"]["keys"][k]["name"].get<std::string>();
+            // A key of several members is named by its target (its one member's name: left out).
+            const Json& key = out.json["extras"]["visemelab"]["keys"][k];
             if (w.reduction.outcome.model.keys[k].members.size() > 1) {
-                EXPECT_LE(name.size(), kMaxTargetNameBytes) << name;
+                ASSERT_TRUE(key.contains("name")) << key.dump();
+                EXPECT_LE(key["name"].get<std::string>().size(), kMaxTargetNameBytes) << key["name"];
+            } else {
+                EXPECT_FALSE(key.contains("name")) << key.dump();
             }
         }
         for (std::size_t mesh = 0; mesh < out.model.meshes.size(); ++mesh) {
@@ -240,10 +265,8 @@ TEST(OwnOutput, LongTargetNamesGiveMergedNamesWithin63BytesAndReadBack) {
         ASSERT_TRUE(scan.own.recognised);
         EXPECT_EQ(scan.visemes.size(), static_cast<std::size_t>(m));
         EXPECT_EQ(scan.own.visemeCount(), 15u);
-        // The full member list is in the extras, and every long name resolves through the aliases.
-        const Json& head = meshNamed(out, "Wolf3D_Head");
-        for (const std::string& viseme : test::scanGlb(glb, "Kopf_*").visemes)
-            EXPECT_TRUE(head["extras"]["targetAliases"].contains(viseme)) << viseme;
+        // The full member list is in the root table, and every long name resolves through it.
+        expectEveryVisemeResolves(scan, out, "Wolf3D_Head", test::scanGlb(glb, "Kopf_*").visemes);
     }
 }
 
@@ -255,17 +278,26 @@ struct Hostile {
     bool recognised;
 };
 
-TEST(OwnOutput, HostileExtrasAreIgnoredWithANoteNamingTheElementNeverACrash) {
-    const std::string glb = reduceGlb(test::rpmLikeAvatar(), 4, AvatarNames::Merged).glb;
-    const GltfDocument base = parseGltfDocument(glb, "base.glb", {});
+// The rpm-like avatar reduced to 4 keys with merged names, and its head mesh.
+struct HostileBase {
+    std::string glb;
     int head = -1;
-    for (std::size_t m = 0; m < base.json["meshes"].size(); ++m)
-        if (base.json["meshes"][m]["name"] == "Wolf3D_Head") head = static_cast<int>(m);
-    const std::string headExtras = "/meshes/" + std::to_string(head) + "/extras";
-    const auto headJson = [head](Json& json) -> Json& {
-        return json["meshes"][static_cast<std::size_t>(head)];
-    };
-    const std::vector<Hostile> cases{
+    std::string headExtras;
+    Json& headJson(Json& json) const { return json["meshes"][static_cast<std::size_t>(head)]; }
+};
+
+HostileBase hostileBase() {
+    HostileBase base{reduceGlb(test::rpmLikeAvatar(), 4, AvatarNames::Merged).glb, -1, ""};
+    const GltfDocument doc = parseGltfDocument(base.glb, "base.glb", {});
+    for (std::size_t m = 0; m < doc.json["meshes"].size(); ++m)
+        if (doc.json["meshes"][m]["name"] == "Wolf3D_Head") base.head = static_cast<int>(m);
+    base.headExtras = "/meshes/" + std::to_string(base.head) + "/extras";
+    return base;
+}
+
+// The root table's hostile edits: the same in both versions.
+std::vector<Hostile> hostileRootCases() {
+    return {
         {"root not an object", [](Json& j) { j["extras"]["visemelab"] = 42; },
          "/extras/visemelab: not an object", false},
         {"names", [](Json& j) { j["extras"]["visemelab"]["names"] = 7; }, "/extras/visemelab/names", false},
@@ -288,21 +320,6 @@ TEST(OwnOutput, HostileExtrasAreIgnoredWithANoteNamingTheElementNeverACrash) {
                  j["extras"]["visemelab"]["keys"].push_back({{"members", {"v" + std::to_string(i)}}});
          },
          "at most 64 keys", false},
-        {"targets out of range",
-         [&](Json& j) {
-             headJson(j)["extras"]["visemeKeys"][0]["targets"] = Json::array({999, -1, "a"});
-         },
-         headExtras + "/visemeKeys/0/targets", true},
-        {"key index out of range", [&](Json& j) { headJson(j)["extras"]["visemeKeys"][1]["key"] = 99; },
-         headExtras + "/visemeKeys/1", true},
-        {"key listed twice",
-         [&](Json& j) { headJson(j)["extras"]["visemeKeys"][2] = headJson(j)["extras"]["visemeKeys"][1]; },
-         headExtras + "/visemeKeys/2", true},
-        {"aliases out of range",
-         [&](Json& j) {
-             headJson(j)["extras"]["targetAliases"] = {{"viseme_aa", 1000000000}, {"x", "y"}};
-         },
-         headExtras + "/targetAliases/viseme_aa", true},
         {"resting of the wrong type",
          [](Json& j) {
              j["extras"]["visemelab"]["resting"] = Json::array({3, "viseme_sil"});
@@ -316,7 +333,38 @@ TEST(OwnOutput, HostileExtrasAreIgnoredWithANoteNamingTheElementNeverACrash) {
          "no mesh lists its keys", false},
         {"a key named unlike its target",
          [](Json& j) { j["extras"]["visemelab"]["keys"][0]["name"] = "nothing"; }, "'nothing'", true},
+        {"a version this VisemeLab does not know", [](Json& j) { j["extras"]["visemelab"]["version"] = 3; },
+         "/extras/visemelab/version", false},
+        {"a version that is no number", [](Json& j) { j["extras"]["visemelab"]["version"] = "2"; },
+         "/extras/visemelab/version", false},
     };
+}
+
+// The root cases and the head's edits that mean the same in both versions: an entry copied onto
+// another (version 2: its targets claimed twice; version 1: its key listed twice), aliases out of range.
+std::vector<Hostile> hostileCommonCases(const HostileBase& base) {
+    std::vector<Hostile> cases = hostileRootCases();
+    const std::string& at = base.headExtras;
+    cases.push_back({"an entry copied onto another",
+                     [&base](Json& j) {
+                         Json& keys = base.headJson(j)["extras"]["visemeKeys"];
+                         keys[2] = keys[1];
+                     },
+                     at + "/visemeKeys/2", true});
+    cases.push_back(
+        {"aliases out of range",
+         [&base](Json& j) {
+             base.headJson(j)["extras"]["targetAliases"] = {{"viseme_aa", 1000000000}, {"x", "y"}};
+         },
+         at + "/targetAliases/viseme_aa", true});
+    return cases;
+}
+
+// Every common case and `meshCases` on `glb` (the base, or another version of it).
+void expectHostileCases(const std::string& glb, const HostileBase& base,
+                        const std::vector<Hostile>& meshCases) {
+    std::vector<Hostile> cases = hostileCommonCases(base);
+    cases.insert(cases.end(), meshCases.begin(), meshCases.end());
     for (const Hostile& h : cases) {
         const std::string edited = test::editGlb(glb, h.edit);
         AvatarScan scan;
@@ -330,6 +378,92 @@ TEST(OwnOutput, HostileExtrasAreIgnoredWithANoteNamingTheElementNeverACrash) {
         EXPECT_NE(report.find(h.note), std::string::npos) << h.what;
         EXPECT_NO_THROW(avatarReportJson(scan).dump()) << h.what;
     }
+}
+
+TEST(OwnOutput, HostileExtrasAreIgnoredWithANoteNamingTheElementNeverACrash) {
+    const HostileBase base = hostileBase();
+    const std::string& at = base.headExtras;
+    expectHostileCases(
+        base.glb, base,
+        {{"targets out of range",
+          [&](Json& j) {
+              base.headJson(j)["extras"]["visemeKeys"][0] = Json::array({999, -1, "a"});
+          },
+          at + "/visemeKeys/0: not a target", true},
+         {"an entry that is no array", [&](Json& j) { base.headJson(j)["extras"]["visemeKeys"][1] = "x"; },
+          at + "/visemeKeys/1", true},
+         {"more entries than keys",
+          [&](Json& j) {
+              for (int i = 0; i < 100000; ++i) base.headJson(j)["extras"]["visemeKeys"].push_back({0});
+          },
+          at + "/visemeKeys/4", true},
+         {"aliases not an object", [&](Json& j) { base.headJson(j)["extras"]["targetAliases"] = 3; },
+          at + "/targetAliases: not an object", true},
+         {"targetNames of the wrong type",
+          [&](Json& j) {
+              base.headJson(j)["extras"]["targetNames"] = Json::array({1, nullptr});
+          },
+          "", true}});
+}
+
+TEST(OwnOutput, HostileVersion1ExtrasAreIgnoredWithANoteToo) {
+    const HostileBase base = hostileBase();
+    const std::string& at = base.headExtras;
+    expectHostileCases(
+        test::withKeyTableVersion1(base.glb), base,
+        {{"targets out of range",
+          [&](Json& j) {
+              base.headJson(j)["extras"]["visemeKeys"][0]["targets"] = Json::array({999, -1, "a"});
+          },
+          at + "/visemeKeys/0/targets", true},
+         {"key index out of range", [&](Json& j) { base.headJson(j)["extras"]["visemeKeys"][1]["key"] = 99; },
+          at + "/visemeKeys/1", true}});
+}
+
+// A file VisemeLab wrote before key table version 2 reads as the same reduction, in both name modes.
+TEST(OwnOutput, Version1FilesReadAsTheirVersion2Equivalents) {
+    for (AvatarNames names : {AvatarNames::Original, AvatarNames::Merged}) {
+        const std::string v2 = reduceGlb(test::rpmLikeAvatar(), 5, names).glb;
+        const std::string v1 = test::withKeyTableVersion1(v2);
+        const AvatarScan a = test::scanGlb(v2), b = test::scanGlb(v1);
+        ASSERT_TRUE(a.own.recognised && b.own.recognised) << toString(names);
+        EXPECT_TRUE(b.own.notes.empty()) << b.own.notes.front();
+        EXPECT_EQ(a.own.version, 2);
+        EXPECT_EQ(b.own.version, 1);
+        EXPECT_EQ(a.own.mergedNames, b.own.mergedNames);
+        EXPECT_EQ(a.visemes, b.visemes);
+        EXPECT_EQ(a.own.resting, b.own.resting);
+        ASSERT_EQ(a.own.keys.size(), b.own.keys.size());
+        for (std::size_t k = 0; k < a.own.keys.size(); ++k) {
+            EXPECT_EQ(a.own.keys[k].name, b.own.keys[k].name);
+            EXPECT_EQ(a.own.keys[k].members, b.own.keys[k].members);
+            EXPECT_EQ(a.own.keys[k].frequency, b.own.keys[k].frequency);
+        }
+        ASSERT_EQ(a.own.meshes.size(), b.own.meshes.size());
+        for (std::size_t m = 0; m < a.own.meshes.size(); ++m) {
+            EXPECT_EQ(a.own.meshes[m].mesh, b.own.meshes[m].mesh);
+            EXPECT_EQ(a.own.meshes[m].keyTargets, b.own.meshes[m].keyTargets);
+            for (const auto& [name, target] : b.own.meshes[m].aliases)
+                EXPECT_EQ(a.own.meshes[m].aliases.count(name) ? a.own.meshes[m].aliases.at(name) : -1, target)
+                    << toString(names) << " mesh " << a.own.meshes[m].mesh << " " << name;
+        }
+        EXPECT_EQ(formatAvatarReport(a).find("extras.visemelab:"), std::string::npos)
+            << formatAvatarReport(a);
+    }
+}
+
+// Frequencies are written to 4 significant digits, names only where they are not the members joined.
+TEST(OwnOutput, TheRootTableIsCompact) {
+    const Written w = reduceGlb(test::rpmLikeAvatar(), 5, AvatarNames::Original);
+    const Json root = test::glbJson(w.glb)["extras"]["visemelab"];
+    const ReducedModel& model = w.reduction.outcome.model;
+    for (std::size_t k = 0; k < model.keys.size(); ++k) {
+        EXPECT_FALSE(root["keys"][k].contains("name")); // original names: the members joined with '+'
+        EXPECT_NEAR(root["keys"][k]["frequency"].get<double>(), model.keys[k].frequency,
+                    model.keys[k].frequency * 5e-4);
+        EXPECT_LE(root["keys"][k]["frequency"].dump().size(), 9u) << root["keys"][k]["frequency"].dump();
+    }
+    EXPECT_FALSE(root.contains("meshes")); // each mesh's visemeKeys say which meshes carry keys
 }
 
 } // namespace

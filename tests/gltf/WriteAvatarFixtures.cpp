@@ -8,6 +8,7 @@
 #include "core/project/ProjectRun.h"
 #include "tests/gltf/AvatarFixtures.h"
 #include "tests/gltf/AvatarSpeechFixture.h"
+#include "tests/gltf/KeyTableVersion1.h"
 
 #include <cstdio>
 #include <cstring>
@@ -70,6 +71,11 @@ int main(int argc, char** argv) {
             // Few keys: most targets are new, in the input's storage (core/gltf/TargetStorage.h).
             writeReductions(dir, std::string(name) + "_reduced2", glb, 2, "");
         }
+        // A merged-name reduction as VisemeLab wrote it before key table version 2 (core/gltf/KeyTable.h),
+        // for the three.js player's test.
+        vl::writeFileAtomically(
+            dir / "rpm_plain_reduced_merged_v1.glb",
+            vl::test::withKeyTableVersion1(vl::readFileToString(dir / "rpm_plain_reduced_merged.glb")));
         for (bool vrm1 : {false, true}) {
             const std::string stem = vrm1 ? "vroid_vrm1" : "vroid_vrm0",
                               glb = vl::test::vroidLikeAvatar(vrm1);
