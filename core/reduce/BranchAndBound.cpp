@@ -230,9 +230,19 @@ class SuffixSearch {
 // its optimum is a large share of the whole optimum and the bounds prune early; and the units placed first
 // are those whose groups decide the most. On the 40 ARPAbet meshes (area weights) this proves p = 9 in 1.1 s
 // where interleaving the groups of the heuristics' partition (the order before) took 53 s.
+// The rest unit takes no part in the farthest-first choice: seeded by it (the units resting dearest
+// first), the rest-free search took 1.6x the time it takes now on 32 ARPAbet meshes.
 // Units of weight 0 cost nothing in any group, except the rest unit.
 bool placedBySearch(const GroupCostModel& model, int a) {
     return model.weight[static_cast<std::size_t>(a)] > 0 || a == model.restUnit;
+}
+
+// Moves the heaviest unit of order[from..] to order[from].
+void heaviestTo(const GroupCostModel& model, std::vector<int>& order, std::size_t from) {
+    const auto begin = order.begin() + static_cast<std::ptrdiff_t>(from);
+    std::swap(*begin, *std::max_element(begin, order.end(), [&](int a, int b) {
+        return model.weight[static_cast<std::size_t>(a)] < model.weight[static_cast<std::size_t>(b)];
+    }));
 }
 
 std::vector<int> placementOrder(const GroupCostModel& model) {
@@ -240,15 +250,13 @@ std::vector<int> placementOrder(const GroupCostModel& model) {
     std::vector<int> order, zero;
     for (int a = 0; a < n; ++a) (placedBySearch(model, a) ? order : zero).push_back(a);
     if (!order.empty()) {
-        std::swap(order.front(), model.restUnit >= 0
-                                     ? *std::find(order.begin(), order.end(), model.restUnit)
-                                     : *std::max_element(order.begin(), order.end(), [&](int a, int b) {
-                                           return model.weight[static_cast<std::size_t>(a)] <
-                                                  model.weight[static_cast<std::size_t>(b)];
-                                       }));
+        std::size_t ordered = 0;
+        if (model.restUnit >= 0)
+            std::swap(order[ordered++], *std::find(order.begin(), order.end(), model.restUnit));
+        if (ordered < order.size()) heaviestTo(model, order, ordered++);
         // nearest[a]: the cost of a's cheapest pair with an ordered unit; order[0..k) is ordered.
         std::vector<double> nearest(static_cast<std::size_t>(n), std::numeric_limits<double>::infinity());
-        for (std::size_t k = 1; k < order.size(); ++k) {
+        for (std::size_t k = ordered; k < order.size(); ++k) {
             const int last = order[k - 1];
             std::size_t farthest = k;
             for (std::size_t i = k; i < order.size(); ++i) {
