@@ -65,15 +65,24 @@ struct Child {
 
 class SuffixSearch {
   public:
+    // `restOpen`: a suffix problem of the rest-free model, which starts with the rest group open as
+    // group 0 holding the rest unit (at rest cost 0 in `model`, see searchPartition).
     SuffixSearch(const GroupCostModel& model, std::span<const int> order, std::span<const double> suffixBound,
-                 int first, int groups, int zeroFrom, const SearchLimits& limits, Incumbent& incumbent)
+                 int first, int groups, int zeroFrom, bool restOpen, const SearchLimits& limits,
+                 Incumbent& incumbent)
         : model_(model), order_(order), suffixBound_(suffixBound), first_(first), q_(groups),
-          n_(static_cast<int>(order.size())), zeroFrom_(std::max(zeroFrom, first)), limits_(limits),
-          incumbent_(incumbent), tolerance_(model.tolerance()) {}
+          n_(static_cast<int>(order.size())), zeroFrom_(std::max(zeroFrom, first)), restOpen_(restOpen),
+          limits_(limits), incumbent_(incumbent), tolerance_(model.tolerance()) {}
 
     // Lower bound of the parts of the tree left unexplored (+inf when the search completed).
     double run() {
         State s;
+        if (restOpen_) {
+            s.k = 1;
+            s.masks[0] = UnitMask{1} << model_.restUnit;
+            s.sums[0] = GroupSums{}.plus(model_, model_.restUnit, 0.0);
+            s.partial = s.sums[0].cost();
+        }
         return explore(s, first_);
     }
 
@@ -206,6 +215,7 @@ class SuffixSearch {
     std::span<const int> order_;
     std::span<const double> suffixBound_;
     const int first_, q_, n_, zeroFrom_;
+    const bool restOpen_;
     const SearchLimits& limits_;
     Incumbent& incumbent_;
     const double tolerance_;
@@ -220,9 +230,19 @@ class SuffixSearch {
 // its optimum is a large share of the whole optimum and the bounds prune early; and the units placed first
 // are those whose groups decide the most. On the 40 ARPAbet meshes (area weights) this proves p = 9 in 1.1 s
 // where interleaving the groups of the heuristics' partition (the order before) took 53 s.
+// The rest unit takes no part in the farthest-first choice: seeded by it (the units resting dearest
+// first), the rest-free search took 1.6x the time it takes now on 32 ARPAbet meshes.
 // Units of weight 0 cost nothing in any group, except the rest unit.
 bool placedBySearch(const GroupCostModel& model, int a) {
     return model.weight[static_cast<std::size_t>(a)] > 0 || a == model.restUnit;
+}
+
+// Moves the heaviest unit of order[from..] to order[from].
+void heaviestTo(const GroupCostModel& model, std::vector<int>& order, std::size_t from) {
+    const auto begin = order.begin() + static_cast<std::ptrdiff_t>(from);
+    std::swap(*begin, *std::max_element(begin, order.end(), [&](int a, int b) {
+        return model.weight[static_cast<std::size_t>(a)] < model.weight[static_cast<std::size_t>(b)];
+    }));
 }
 
 std::vector<int> placementOrder(const GroupCostModel& model) {
@@ -230,15 +250,13 @@ std::vector<int> placementOrder(const GroupCostModel& model) {
     std::vector<int> order, zero;
     for (int a = 0; a < n; ++a) (placedBySearch(model, a) ? order : zero).push_back(a);
     if (!order.empty()) {
-        std::swap(order.front(), model.restUnit >= 0
-                                     ? *std::find(order.begin(), order.end(), model.restUnit)
-                                     : *std::max_element(order.begin(), order.end(), [&](int a, int b) {
-                                           return model.weight[static_cast<std::size_t>(a)] <
-                                                  model.weight[static_cast<std::size_t>(b)];
-                                       }));
+        std::size_t ordered = 0;
+        if (model.restUnit >= 0)
+            std::swap(order[ordered++], *std::find(order.begin(), order.end(), model.restUnit));
+        if (ordered < order.size()) heaviestTo(model, order, ordered++);
         // nearest[a]: the cost of a's cheapest pair with an ordered unit; order[0..k) is ordered.
         std::vector<double> nearest(static_cast<std::size_t>(n), std::numeric_limits<double>::infinity());
-        for (std::size_t k = 1; k < order.size(); ++k) {
+        for (std::size_t k = ordered; k < order.size(); ++k) {
             const int last = order[k - 1];
             std::size_t farthest = k;
             for (std::size_t i = k; i < order.size(); ++i) {
@@ -323,6 +341,76 @@ void canonicalise(UnitPartition& result, const GroupCostModel& model) {
     }
 }
 
+// A placement of the units order[first..n-1]: labels[i] is the group of order[first + i].
+struct Placement {
+    double cost = kNoBound;
+    std::vector<std::int8_t> labels;
+};
+
+// The groups of `placement` of order[first..]; `openRest` (the rest unit, or -1) is in group 0 too.
+std::vector<UnitMask> groupsOf(const Placement& placement, std::span<const int> order, int first, int groups,
+                               int openRest) {
+    std::vector<UnitMask> masks(static_cast<std::size_t>(groups), 0);
+    if (openRest >= 0) masks[0] |= UnitMask{1} << openRest;
+    for (std::size_t i = 0; i < placement.labels.size(); ++i)
+        masks[static_cast<std::size_t>(placement.labels[i])] |= UnitMask{1}
+                                                                << order[static_cast<std::size_t>(first) + i];
+    return masks;
+}
+
+// Every unit of order[first..] in a group of its own, after the open rest group (group 0) if any.
+Placement eachAlone(const GroupCostModel& model, std::span<const int> order, int first, bool restOpen) {
+    Placement out{0, {}};
+    for (std::size_t t = static_cast<std::size_t>(first); t < order.size(); ++t) {
+        out.cost += model.singletonCost(order[t]);
+        out.labels.push_back(
+            static_cast<std::int8_t>(t - static_cast<std::size_t>(first) + (restOpen ? 1 : 0)));
+    }
+    return out;
+}
+
+// `previous`, the best placement of order[first + 1..], with unit order[first] added to the group
+// where it costs least. `openRest` as in groupsOf; when it is order[first] itself, it is in group 0
+// already.
+Placement extended(const GroupCostModel& model, std::span<const int> order, int first, int groups,
+                   const Placement& previous, int openRest) {
+    const int u = order[static_cast<std::size_t>(first)];
+    const std::vector<UnitMask> masks = groupsOf(previous, order, first + 1, groups, openRest);
+    const double base = partitionCost(model, masks);
+    Placement out;
+    for (int g = 0; g < groups; ++g) {
+        const UnitMask members = masks[static_cast<std::size_t>(g)];
+        const bool holds = members >> u & 1;
+        if ((model.conflicts[static_cast<std::size_t>(u)] & members) || (u == openRest && !holds)) continue;
+        const double cost =
+            holds ? base : base - model.cost(members) + model.cost(members | UnitMask{1} << u);
+        if (cost < out.cost) {
+            out.cost = cost;
+            out.labels.assign(1, static_cast<std::int8_t>(g));
+            out.labels.insert(out.labels.end(), previous.labels.begin(), previous.labels.end());
+        }
+    }
+    return out;
+}
+
+// The caller's partition `start` of all units, as a placement in `order`.
+Placement givenPlacement(const GroupCostModel& model, std::span<const int> order,
+                         std::span<const UnitMask> start) {
+    Placement out{partitionCost(model, start), std::vector<std::int8_t>(order.size(), 0)};
+    for (std::size_t t = 0; t < order.size(); ++t)
+        for (std::size_t g = 0; g < start.size(); ++g)
+            if (start[g] >> order[t] & 1) out.labels[t] = static_cast<std::int8_t>(g);
+    return out;
+}
+
+// The model of the rest-free suffix problems: the rest unit's own rest cost left out, as the whole
+// problem's placement of the rest unit (order[0]) pays it.
+GroupCostModel withoutOwnRest(const GroupCostModel& model) {
+    GroupCostModel out = model;
+    out.rest[static_cast<std::size_t>(model.restUnit)] = 0;
+    return out;
+}
+
 UnitPartition searchPartition(const GroupCostModel& model, int p, std::span<const UnitMask> start,
                               const SearchLimits& limits, std::atomic<double>* done,
                               std::atomic<double>* provenBound) {
@@ -330,63 +418,51 @@ UnitPartition searchPartition(const GroupCostModel& model, int p, std::span<cons
     const std::vector<int> order = placementOrder(model);
     int zeroFrom = n;
     while (zeroFrom > 0 && !placedBySearch(model, order[static_cast<std::size_t>(zeroFrom - 1)])) --zeroFrom;
+    // Rest-free (order[0] is then the rest unit): the suffix problems of order[first..], first >= 1, are
+    // rest-free too, with the rest group open from the start (group 0: the rest unit, at rest cost 0).
+    // Their optima bound the suffix of any placement of order[0..first): the rest group's cost
+    // sum_{a in R} rest_a (GroupCostModel.h) splits exactly into its parts before and from first, a key
+    // group's cost (eq. 4) is at least the sum of its two parts' costs (each part about its own mean,
+    // eq. 19), and the parts from first on are a placement of the suffix with the rest group open into
+    // at most p groups, which costs at least the optimum with min(p, units) groups (splitting a group
+    // never costs more). Keyed suffix problems (the rest group as one more key) bounded the resting
+    // units' costs by their keyed costs only, and branch and bound explored about 1.5x the nodes.
+    const bool restFree = model.restUnit >= 0;
+    const GroupCostModel suffixModel = restFree ? withoutOwnRest(model) : GroupCostModel{};
+    const int openRest = restFree ? model.restUnit : -1;
 
-    // suffixBound[t]: lower bound (the optimum once proven) of units order[t..n-1] in min(p, n - t) groups.
+    // suffixBound[t]: lower bound (the optimum once proven) of units order[t..n-1] in min(p, n - t) groups
+    // (rest-free, t >= 1: with the open rest group, in min(p, n - t + 1) groups).
     std::vector<double> suffixBound(static_cast<std::size_t>(n + 1), 0.0);
-    std::vector<std::int8_t> labels; // best placement of the last suffix solved, per position
+    Placement previous; // best placement of the last suffix solved
     UnitPartition result;
     for (int first = n - 1; first >= 0; --first) {
-        const int size = n - first;
+        const bool restOpen = restFree && first > 0;
+        const GroupCostModel& problem = restOpen ? suffixModel : model;
+        const int size = n - first + (restOpen ? 1 : 0); // units of the suffix problem
         const int groups = std::min(p, size);
-        const int u = order[static_cast<std::size_t>(first)];
-        // Starting bound: the previous suffix's best placement with unit u added where it costs least.
-        double startCost = kNoBound;
-        std::vector<std::int8_t> startLabels;
-        if (groups == size) { // every unit alone
-            startCost = 0;
-            for (int t = first; t < n; ++t)
-                startCost += model.singletonCost(order[static_cast<std::size_t>(t)]);
-            startLabels.resize(static_cast<std::size_t>(size));
-            std::iota(startLabels.begin(), startLabels.end(), std::int8_t{0});
-        } else if (!labels.empty()) {
-            std::vector<UnitMask> masks(static_cast<std::size_t>(groups), 0);
-            for (std::size_t i = 0; i < labels.size(); ++i)
-                masks[static_cast<std::size_t>(labels[i])] |=
-                    UnitMask{1} << order[static_cast<std::size_t>(first + 1) + i];
-            double base = partitionCost(model, masks);
-            for (int g = 0; g < groups; ++g) {
-                if (model.conflicts[static_cast<std::size_t>(u)] & masks[static_cast<std::size_t>(g)])
-                    continue;
-                const UnitMask grown = masks[static_cast<std::size_t>(g)] | UnitMask{1} << u;
-                const double cost = base - model.cost(masks[static_cast<std::size_t>(g)]) + model.cost(grown);
-                if (cost < startCost) {
-                    startCost = cost;
-                    startLabels.assign(1, static_cast<std::int8_t>(g));
-                    startLabels.insert(startLabels.end(), labels.begin(), labels.end());
-                }
-            }
-        }
+        // Starting bound: the previous suffix's best placement with unit order[first] added.
+        Placement initial;
+        if (groups == size)
+            initial = eachAlone(problem, order, first, restOpen);
+        else if (!previous.labels.empty())
+            initial = extended(problem, order, first, groups, previous, openRest);
         if (first == 0 && static_cast<int>(start.size()) == p) { // the caller's partition of all units
-            const double cost = partitionCost(model, start);
-            if (cost < startCost) {
-                startCost = cost;
-                startLabels.assign(static_cast<std::size_t>(n), 0);
-                for (int t = 0; t < n; ++t)
-                    for (int g = 0; g < p; ++g)
-                        if (start[static_cast<std::size_t>(g)] >> order[static_cast<std::size_t>(t)] & 1)
-                            startLabels[static_cast<std::size_t>(t)] = static_cast<std::int8_t>(g);
-            }
+            Placement given = givenPlacement(model, order, start);
+            if (given.cost < initial.cost) initial = std::move(given);
         }
-        Incumbent incumbent(startCost);
+        Incumbent incumbent(initial.cost);
         double unexplored = kNoBound;
         if (groups < size) {
-            SuffixSearch search(model, order, suffixBound, first, groups, zeroFrom, limits, incumbent);
+            SuffixSearch search(problem, order, suffixBound, first, groups, zeroFrom, restOpen, limits,
+                                incumbent);
             unexplored = search.run();
         }
-        labels = incumbent.labels().empty() ? startLabels : incumbent.labels();
         const double best = incumbent.cost();
+        previous = {best, incumbent.labels().empty() ? std::move(initial.labels) : incumbent.labels()};
+        const std::vector<std::int8_t>& labels = previous.labels;
         suffixBound[static_cast<std::size_t>(first)] = std::min(best, unexplored);
-        if (done) done->store(static_cast<double>(size) / n, std::memory_order_relaxed);
+        if (done) done->store(static_cast<double>(n - first) / n, std::memory_order_relaxed);
         if (provenBound && unexplored == kNoBound && first > 0) {
             // Same argument as the stopped case below: the solved suffix plus blocks of the rest.
             const double bound =

@@ -103,8 +103,11 @@ const Instance& arpabetInstance(int n) {
     const std::vector<std::string> order{"sil", "AA", "B", "IY", "F",  "UW", "S",  "OW",
                                          "TH",  "EH", "K", "L",  "R",  "W",  "CH", "AE",
                                          "M",   "ER", "D", "AY", "SH", "UH", "V",  "EY"};
+    // The list names 24 phonemes: n = 32 and 40 solve these 24 (reading past the list was undefined
+    // behaviour). With 32 and 40 distinct meshes this benchmark takes far longer (issue 29 in
+    // docs/performance.md).
     std::vector<vl::VisemeParameters> chosen;
-    for (int i = 0; i < n; ++i)
+    for (int i = 0; i < std::min(n, static_cast<int>(order.size())); ++i)
         for (const auto& v : all)
             if (v.name == order[static_cast<std::size_t>(i)]) chosen.push_back(v);
     const auto parts = vl::face::makeHeadParts(cascade);

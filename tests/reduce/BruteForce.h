@@ -12,9 +12,26 @@
 #include <functional>
 #include <limits>
 #include <optional>
+#include <random>
 #include <span>
 
 namespace vl::test {
+
+// A few random pins, apart and together pairs among n >= 2 items (possibly contradictory).
+inline ReductionConstraints randomConstraints(std::mt19937& rng, int n) {
+    std::uniform_int_distribution<int> item(0, n - 1), count(0, 3);
+    auto pair = [&] {
+        const int a = item(rng);
+        int b = item(rng);
+        while (b == a) b = item(rng);
+        return std::pair{a, b};
+    };
+    ReductionConstraints c;
+    for (int k = count(rng) / 2; k > 0; --k) c.pinned.push_back(item(rng));
+    for (int k = count(rng); k > 0; --k) c.apart.push_back(pair());
+    for (int k = count(rng); k > 0; --k) c.together.push_back(pair());
+    return c;
+}
 
 inline bool satisfies(const std::vector<int>& block, const ReductionConstraints& c) {
     for (const int i : c.pinned)

@@ -18,21 +18,6 @@ using vl::test::errorOf;
 
 namespace {
 
-ReductionConstraints randomConstraints(std::mt19937& rng, int n) {
-    std::uniform_int_distribution<int> item(0, n - 1), count(0, 3);
-    auto pair = [&] {
-        const int a = item(rng);
-        int b = item(rng);
-        while (b == a) b = item(rng);
-        return std::pair{a, b};
-    };
-    ReductionConstraints c;
-    for (int k = count(rng) / 2; k > 0; --k) c.pinned.push_back(item(rng));
-    for (int k = count(rng); k > 0; --k) c.apart.push_back(pair());
-    for (int k = count(rng); k > 0; --k) c.together.push_back(pair());
-    return c;
-}
-
 // Every p of `result` proved and equal to brute force's optimum (reference[p - 1], none when no grouping
 // into p groups exists), with a valid grouping and certificate; returns how many p had an optimum.
 int expectBruteForceOptima(const ReductionResult& result, const std::vector<std::optional<double>>& reference,
@@ -62,7 +47,7 @@ TEST(ReductionConstraints, BothSolversMatchBruteForceOnRandomConstraintSets) {
     for (int n = 2; n <= 10; ++n) {
         for (int trial = 0; trial < (n <= 8 ? 6 : 2); ++trial) {
             const auto inst = test::randomInstance(rng, n, 8, trial == 1);
-            const auto c = randomConstraints(rng, n);
+            const auto c = test::randomConstraints(rng, n);
             std::vector<std::optional<double>> reference;
             for (int m = 1; m <= n; ++m) reference.push_back(test::bruteForceBest(inst, m, c));
             int largest = 0;

@@ -5,10 +5,15 @@
 #include "RandomShapes.h"
 
 #include "core/common/Error.h"
+#include "core/reduce/BranchAndBound.h"
+#include "core/reduce/GramMatrix.h"
+#include "core/reduce/SubsetDp.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
+#include <functional>
 #include <numeric>
 
 using namespace vl;
@@ -21,6 +26,75 @@ std::vector<Vec3> neutralNear(const test::RandomInstance& inst, std::mt19937& rn
     std::vector<Vec3> neutral = inst.shapes.front();
     for (auto& v : neutral) v += Vec3(jitter(rng), jitter(rng), jitter(rng));
     return neutral;
+}
+
+// A rest-free model straight from a random instance and constraints, no solver in between: unit a of
+// `units`, the rest unit that of `restViseme`, rest costs f_i sum_k w_k |a_ik - neutral_k|^2 per
+// viseme. Nothing when the constraints contradict each other.
+std::optional<GroupCostModel> restFreeModel(const test::RandomInstance& inst, const ReductionConstraints& c,
+                                            int restViseme, std::span<const Vec3> neutral) {
+    const int n = static_cast<int>(inst.shapes.size());
+    ConstraintUnits units;
+    try {
+        units = constraintUnits(c, n);
+    } catch (const InputError&) {
+        return std::nullopt;
+    }
+    GroupCostModel model =
+        makeGroupCostModel(centredGram(inst.shapes, inst.frequencies, inst.weights), inst.frequencies, units);
+    std::vector<double> restCosts;
+    for (std::size_t i = 0; i < inst.shapes.size(); ++i) {
+        double sum = 0;
+        for (std::size_t k = 0; k < neutral.size(); ++k)
+            sum += inst.weights[k] * (inst.shapes[i][k] - neutral[k]).sqrnorm();
+        restCosts.push_back(inst.frequencies[i] * sum);
+    }
+    makeRestFree(model, restCosts, units, units.unitOf[static_cast<std::size_t>(restViseme)]);
+    return model;
+}
+
+// The optimum over every partition of the model's units into exactly p allowed groups (+inf: none).
+double bruteForceModel(const GroupCostModel& model, int p) {
+    const int n = model.size();
+    std::vector<UnitMask> groups(static_cast<std::size_t>(p), 0);
+    double best = std::numeric_limits<double>::infinity();
+    std::function<void(int, int)> recurse = [&](int a, int used) {
+        if (n - a < p - used) return;
+        if (a == n) {
+            if (std::all_of(groups.begin(), groups.end(), [&](UnitMask g) { return model.allowed(g); }))
+                best = std::min(best, partitionCost(model, groups));
+            return;
+        }
+        for (int g = 0; g <= used && g < p; ++g) {
+            groups[static_cast<std::size_t>(g)] |= UnitMask{1} << a;
+            recurse(a + 1, std::max(used, g + 1));
+            groups[static_cast<std::size_t>(g)] &= ~(UnitMask{1} << a);
+        }
+    };
+    recurse(0, 0);
+    return best;
+}
+
+// Random instances with zero frequencies (units of weight 0), random constraints and a rest viseme whose
+// own rest cost is not 0 (the neutral is another shape), or is 0 (it is the neutral).
+struct ModelCase {
+    test::RandomInstance inst;
+    GroupCostModel model;
+};
+std::vector<ModelCase> randomRestFreeModels(std::mt19937& rng, int minN, int maxN, int trials) {
+    std::vector<ModelCase> cases;
+    for (int n = minN; n <= maxN; ++n)
+        for (int trial = 0; trial < trials; ++trial) {
+            auto inst = trial % 2 ? test::rigInstance(rng, n, 12, 4) : test::randomInstance(rng, n, 8, true);
+            if (trial % 3 == 2) inst.frequencies[static_cast<std::size_t>(n - 1)] = 0;
+            const int restViseme = static_cast<int>(rng() % static_cast<unsigned>(n));
+            const std::vector<Vec3> neutral =
+                trial % 4 == 3 ? inst.shapes[static_cast<std::size_t>(restViseme)] : neutralNear(inst, rng);
+            const ReductionConstraints c =
+                trial % 4 == 0 ? ReductionConstraints{} : test::randomConstraints(rng, n);
+            if (auto model = restFreeModel(inst, c, restViseme, neutral)) cases.push_back({inst, *model});
+        }
+    return cases;
 }
 
 ReductionResult solveRestFree(const test::RandomInstance& inst, int m, ReductionMethod method, RestPose rest,
@@ -143,6 +217,74 @@ TEST(RestFree, ConstraintsHoldAndAgreeWithBruteForce) {
             expectAgreement(inst, {false, restViseme, restViseme >= 0 ? std::span<const Vec3>{} : neutral},
                             neutral, c);
         }
+}
+
+TEST(RestFree, BranchAndBoundWithoutAStartAgreesWithBruteForceOnTheModel) {
+    // No heuristic start: the search's own bounds (the rest-free suffix problems with the rest group
+    // open) must find and prove every optimum. Zero weights, constraints, rest costs of the rest unit
+    // 0 and not 0.
+    std::mt19937 rng(2937);
+    int checked = 0;
+    for (const ModelCase& c : randomRestFreeModels(rng, 2, 9, 6)) {
+        const int units = c.model.size();
+        for (int p = 1; p <= units; ++p) {
+            SCOPED_TRACE("units=" + std::to_string(units) + " p=" + std::to_string(p));
+            const double expected = bruteForceModel(c.model, p);
+            const UnitPartition found = branchAndBound(c.model, p, {});
+            EXPECT_TRUE(found.optimal);
+            if (std::isinf(expected)) {
+                EXPECT_TRUE(found.groups.empty());
+                continue;
+            }
+            const double tolerance = 1e-9 * std::max(1.0, expected);
+            EXPECT_NEAR(found.cost, expected, tolerance);
+            EXPECT_NEAR(partitionCost(c.model, found.groups), found.cost, tolerance);
+            ++checked;
+        }
+    }
+    EXPECT_GT(checked, 150);
+}
+
+TEST(RestFree, BranchAndBoundAgreesWithTheDpOnLargerModels) {
+    std::mt19937 rng(2938);
+    for (const ModelCase& c : randomRestFreeModels(rng, 11, 15, 3)) {
+        const int units = c.model.size();
+        const int m = std::min(units, 9);
+        const UnitCurve dp = solveSubsetDp(c.model, m);
+        for (int p = 1; p <= m; ++p) {
+            SCOPED_TRACE("units=" + std::to_string(units) + " p=" + std::to_string(p));
+            const UnitPartition& expected = dp[static_cast<std::size_t>(p - 1)];
+            const UnitPartition found = branchAndBound(c.model, p, {});
+            EXPECT_TRUE(found.optimal);
+            EXPECT_EQ(found.groups.empty(), expected.groups.empty());
+            if (!expected.groups.empty()) {
+                EXPECT_NEAR(found.cost, expected.cost, 1e-9 * std::max(1.0, expected.cost));
+            }
+        }
+    }
+}
+
+TEST(RestFree, AStoppedSearchKeepsAValidBound) {
+    // Stopped at once, the bound comes from a rest-free suffix problem plus blocks of the units before
+    // it: never above the optimum, and the groups found never below it.
+    std::mt19937 rng(2939);
+    std::atomic<bool> cancelled{true};
+    SearchLimits limits;
+    limits.cancelled = &cancelled;
+    for (const ModelCase& c : randomRestFreeModels(rng, 14, 16, 2)) {
+        const int m = std::min(c.model.size(), 9);
+        const UnitCurve dp = solveSubsetDp(c.model, m);
+        for (int p = 2; p <= m; ++p) {
+            SCOPED_TRACE("units=" + std::to_string(c.model.size()) + " p=" + std::to_string(p));
+            const UnitPartition& expected = dp[static_cast<std::size_t>(p - 1)];
+            if (expected.groups.empty()) continue;
+            const UnitPartition stopped = branchAndBound(c.model, p, {}, limits);
+            EXPECT_LE(stopped.lowerBound, expected.cost * (1 + 1e-9));
+            if (!stopped.groups.empty()) {
+                EXPECT_GE(stopped.cost, expected.cost * (1 - 1e-9));
+            }
+        }
+    }
 }
 
 TEST(RestFree, LargerSetsAgreeBetweenSolvers) {
