@@ -143,6 +143,7 @@ nlohmann::json avatarSummary(const Document& document) {
         meshes.push_back({{"name", mesh.name}, {"visemes", mesh.carriesVisemes}});
     return {{"file", avatar.file.string()},
             {"pattern", avatar.pattern},
+            {"added_rest", avatar.scan->addedRest},
             {"visemes", visemeNames(document)},
             {"meshes", std::move(meshes)},
             {"viseme_vertices", document.visemes->vertexCount()},

@@ -31,11 +31,19 @@ struct NewProjectOptions {
     std::string order;
     bool reduce = false;
     std::string rest = toString(kNewProjectRest); // the reduction model (ReduceRun.h RestChoice)
+    bool addRest = false, noAddRest = false;      // --avatar: force / refuse the added rest viseme
 };
 
 RestChoice restOf(const NewProjectOptions& o) {
     if (const auto choice = restChoiceFromString(o.rest)) return *choice;
     throwUsage("--rest must be auto, free or key, got '" + o.rest + "'");
+}
+
+// Whether an avatar lacking a rest viseme gains one: by default when the rest is free or auto (silence
+// then rests at all weights 0, and an Oculus avatar gets the bundled en-us table), else when asked.
+bool addsAvatarRest(const NewProjectOptions& o) {
+    if (o.addRest && o.noAddRest) throwUsage("give --add-rest or --no-add-rest, not both");
+    return !o.noAddRest && (o.addRest || restOf(o) != RestChoice::Key);
 }
 
 // Frequencies from the options: a viseme table, or a phoneme table plus a phoneme -> viseme map.
@@ -77,8 +85,8 @@ Project avatarProject(const NewProjectOptions& o, bool targetGiven) {
         throwUsage(
             "--avatar takes its meshes and their order from the avatar: drop --neutral, --order, --face");
     if (!o.targets.empty()) checkGlobPattern(o.targets, "--targets");
-    Project project =
-        newAvatarProject(o.avatar, o.targets, bundledPhonemeFrequencies(VISEMELAB_ASSETS_DIR, "oculus"));
+    Project project = newAvatarProject(
+        o.avatar, o.targets, bundledPhonemeFrequencies(VISEMELAB_ASSETS_DIR, "oculus"), addsAvatarRest(o));
     if (!o.freqFile.empty() || !o.phonemeFile.empty()) {
         std::vector<std::string> names;
         for (const ProjectViseme& viseme : project.visemes) names.push_back(viseme.name);
@@ -99,11 +107,15 @@ int runNew(const NewProjectOptions& o, bool targetGiven) {
         project.path = out;
         if (o.reduce) storeReductionResult(project, reduceProject(project, loadProjectVisemeSet(project)));
         saveProject(out, project);
-        std::fprintf(stderr, "wrote %s: avatar %s, %zu visemes, target %d%s\n", out.string().c_str(),
-                     o.avatar.c_str(), project.visemes.size(), project.reduction.target,
+        const std::string added = project.avatar.addedRest.empty()
+                                      ? std::string()
+                                      : " (" + project.avatar.addedRest + " added: the base mesh, no target)";
+        std::fprintf(stderr, "wrote %s: avatar %s, %zu visemes%s, target %d%s\n", out.string().c_str(),
+                     o.avatar.c_str(), project.visemes.size(), added.c_str(), project.reduction.target,
                      o.reduce ? ", reduced" : "");
         return kExitOk;
     }
+    if (o.addRest || o.noAddRest) throwUsage("--add-rest and --no-add-rest go with --avatar");
     Project project;
     project.path = out;
     project.reduction.rest = restOf(o);
@@ -180,6 +192,12 @@ void addProjectCommand(CLI::App& app, CommandRunner& run) {
                      "free (the rest pose is a free key; visemes may rest) or key (the rest is a key like "
                      "any other, as projects before version 3)")
         ->capture_default_str();
+    create->add_flag(
+        "--add-rest", o->addRest,
+        "With --avatar: add a rest viseme (viseme_sil or sil: the base mesh, no target) when the "
+        "avatar has none, whatever the model (default: added with --rest auto or free)");
+    create->add_flag("--no-add-rest", o->noAddRest,
+                     "With --avatar: keep only the avatar's visemes, even when it has no rest viseme");
     create->callback([&run, o, target] {
         const bool targetGiven = target->count() > 0;
         run = [o, targetGiven] { return runNew(*o, targetGiven); };

@@ -1,8 +1,10 @@
 #include "core/document/AvatarDocument.h"
 
 #include "core/common/Error.h"
+#include "core/document/Commands.h"
 #include "core/gltf/AvatarReduce.h"
 #include "core/gltf/AvatarReport.h"
+#include "core/gltf/AvatarRest.h"
 #include "core/gltf/GltfDocument.h"
 #include "core/reduce/ReducedModel.h"
 
@@ -10,12 +12,13 @@
 
 namespace vl {
 
-DocumentAvatar loadDocumentAvatar(const std::filesystem::path& file, const std::string& pattern) {
+DocumentAvatar loadDocumentAvatar(const std::filesystem::path& file, const std::string& pattern,
+                                  const std::string& addedRest) {
     DocumentAvatar avatar;
     avatar.file = std::filesystem::absolute(file);
     avatar.pattern = pattern;
     auto gltf = std::make_shared<const GltfDocument>(loadGltfDocument(file));
-    avatar.scan = std::make_shared<const AvatarScan>(scanAvatar(*gltf, {pattern, true}));
+    avatar.scan = std::make_shared<const AvatarScan>(scanAvatar(*gltf, {pattern, true, addedRest}));
     avatar.gltf = std::move(gltf);
     return avatar;
 }
@@ -42,8 +45,11 @@ Document documentFromAvatar(DocumentAvatar avatar, const FrequencySource& oculus
 }
 
 Project newAvatarProject(const std::filesystem::path& file, const std::string& pattern,
-                         const FrequencySource& oculusTable) {
-    return projectFromDocument(documentFromAvatar(loadDocumentAvatar(file, pattern), oculusTable));
+                         const FrequencySource& oculusTable, bool addRest) {
+    Document document = documentFromAvatar(loadDocumentAvatar(file, pattern), oculusTable);
+    if (addRest && !avatarHasRest(*document.avatar.scan))
+        document = edit::addAvatarRestViseme(document, oculusTable);
+    return projectFromDocument(document);
 }
 
 std::string reducedAvatarGlb(const Document& document, const std::vector<int>& groupOf,

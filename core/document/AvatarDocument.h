@@ -16,8 +16,10 @@
 namespace vl {
 
 // Reads and scans an avatar with a target pattern (empty: the Oculus visemes), the meshes without
-// visemes included (shown greyed). Throws InputError naming the file and element.
-DocumentAvatar loadDocumentAvatar(const std::filesystem::path& file, const std::string& pattern);
+// visemes included (shown greyed), and the rest viseme `addedRest` added when not empty
+// (core/gltf/AvatarRest.h). Throws InputError naming the file and element.
+DocumentAvatar loadDocumentAvatar(const std::filesystem::path& file, const std::string& pattern,
+                                  const std::string& addedRest = {});
 
 // A new document of the avatar's visemes: frequencies from defaultAvatarFrequencies(scan,
 // oculusTable) (the bundled en-us table and Oculus map for Oculus names, else equal), uniform
@@ -26,10 +28,11 @@ DocumentAvatar loadDocumentAvatar(const std::filesystem::path& file, const std::
 Document documentFromAvatar(DocumentAvatar avatar, const FrequencySource& oculusTable);
 
 // The project of a new avatar document (`visemelab project new --avatar`): the avatar file and target
-// pattern, the visemes by name, the frequencies, weights and target documentFromAvatar chooses.
+// pattern, the visemes by name, the frequencies, weights and target documentFromAvatar chooses; with
+// `addRest`, an avatar whose visemes lack a rest viseme gains one (edit::addAvatarRestViseme).
 // Throws what loadDocumentAvatar and documentFromAvatar throw.
 Project newAvatarProject(const std::filesystem::path& file, const std::string& pattern,
-                         const FrequencySource& oculusTable);
+                         const FrequencySource& oculusTable, bool addRest = false);
 
 // The document's avatar with its visemes grouped by `groupOf` (viseme i -> key, 0..m-1): keys are
 // the frequency-weighted means of their members on every mesh (core/gltf/AvatarWriter.h), written

@@ -10,6 +10,7 @@
 #include "core/document/VisemeCommands.h"
 #include "core/face/FaceFrame.h"
 #include "core/gltf/AvatarReduce.h"
+#include "core/gltf/AvatarRest.h"
 #include "core/gltf/TargetNames.h"
 
 #include <algorithm>
@@ -306,7 +307,11 @@ Document setAvatarPattern(const Document& document, const std::string& pattern,
     if (!pattern.empty()) checkGlobPattern(pattern, "target pattern '" + pattern + "'");
     DocumentAvatar avatar = document.avatar;
     avatar.pattern = pattern;
-    avatar.scan = std::make_shared<const AvatarScan>(scanAvatar(*avatar.gltf, {pattern, true}));
+    AvatarScan scan = scanAvatar(*avatar.gltf, {pattern, true});
+    // A rest viseme the designer added stays while the new selection has none of its own.
+    if (!document.avatar.scan->addedRest.empty() && !avatarHasRest(scan))
+        addAvatarRest(scan, avatarRestName(scan));
+    avatar.scan = std::make_shared<const AvatarScan>(std::move(scan));
     if (avatar.scan->visemes.size() < 2)
         throwInputError("target pattern '" + pattern + "'",
                         "selects " + std::to_string(avatar.scan->visemes.size()) +

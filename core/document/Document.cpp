@@ -96,8 +96,8 @@ LoadedProject documentFromProject(const Project& project) {
     if (project.avatar.isSet()) {
         // The meshes come from the avatar, read once; the project only names its visemes.
         try {
-            document.avatar =
-                loadDocumentAvatar(resolveProjectFile(project, project.avatar.file), project.avatar.targets);
+            document.avatar = loadDocumentAvatar(resolveProjectFile(project, project.avatar.file),
+                                                 project.avatar.targets, project.avatar.addedRest);
         } catch (const InputError& e) {
             throwInputError((project.path.empty() ? "" : project.path.string() + ": ") + "/avatar/file",
                             e.what());
@@ -151,7 +151,7 @@ Project projectFromDocument(const Document& document, const std::optional<Reduct
                             const std::string& selectedViseme) {
     Project project;
     if (document.avatar.isSet()) {
-        project.avatar = {document.avatar.file, document.avatar.pattern};
+        project.avatar = {document.avatar.file, document.avatar.pattern, document.avatar.scan->addedRest};
         for (const std::string& name : visemeNames(document)) project.visemes.push_back({name, {}, {}});
     } else if (const VisemeSet* set = document.visemes.get()) {
         project.neutral.file = document.neutralFile;

@@ -1,6 +1,7 @@
 #include "core/gltf/AvatarScan.h"
 
 #include "core/gltf/Accessors.h"
+#include "core/gltf/AvatarRest.h"
 #include "core/gltf/BufferViews.h"
 #include "core/gltf/DracoDecode.h"
 #include "core/gltf/GltfDocument.h"
@@ -428,7 +429,9 @@ AvatarScan scan(const GltfDocument& doc, const AvatarSelection& selection) {
 
 AvatarScan scanAvatar(const GltfDocument& doc, const AvatarSelection& selection) {
     try {
-        return scan(doc, selection);
+        AvatarScan result = scan(doc, selection);
+        if (!selection.addedRest.empty()) addAvatarRest(result, selection.addedRest);
+        return result;
     } catch (const nlohmann::json::exception& e) { // a JSON value of a type tinygltf let through
         doc.fail("", std::string("malformed glTF JSON: ") + e.what());
     }

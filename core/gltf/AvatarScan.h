@@ -31,8 +31,9 @@ inline constexpr std::size_t kMaxAvatarVisemeBytes = std::size_t{512} << 20;
 inline constexpr double kMaxWorldCoordinate = 1e30;
 
 struct AvatarSelection {
-    std::string pattern;  // glob over target names (core/gltf/TargetNames.h); empty: the Oculus visemes
-    bool context = false; // also read the meshes without visemes (AvatarScan::context), e.g. to show them
+    std::string pattern;     // glob over target names (core/gltf/TargetNames.h); empty: the Oculus visemes
+    bool context = false;    // also read the meshes without visemes (AvatarScan::context), e.g. to show them
+    std::string addedRest{}; // non-empty: add this rest viseme, no target's (core/gltf/AvatarRest.h)
 };
 
 struct AvatarTarget {
@@ -77,6 +78,7 @@ struct AvatarScan {
     // members matching the pattern, when one is given); with original names every viseme kept its
     // target, selected as usual.
     OwnOutput own;
+    std::string addedRest; // the rest viseme added after the file's (core/gltf/AvatarRest.h), if any
 };
 
 // The key that joins a target name across meshes: its Oculus spelling, else the lower-case name.

@@ -2,6 +2,7 @@
 
 #include "core/common/Error.h"
 #include "core/gltf/AvatarReduce.h"
+#include "core/gltf/AvatarRest.h"
 #include "core/gltf/VisemeMapNames.h"
 #include "core/reduce/Weights.h"
 
@@ -39,7 +40,8 @@ FrequencySource speechFrequencies(const AvatarScan& scan, const AvatarSpeechOpti
 // geometry as the avatar's set.
 ReducedModel reducedModelOf(const GltfDocument& reduced, const AvatarScan& scan, const std::string& targets,
                             const FrequencySource& source) {
-    const AvatarScan reducedScan = scanAvatar(reduced, {targets});
+    AvatarScan reducedScan = scanAvatar(reduced, {targets});
+    if (!scan.addedRest.empty() && !avatarHasRest(reducedScan)) addAvatarRest(reducedScan, scan.addedRest);
     const OwnOutput& own = reducedScan.own;
     if (!own.recognised)
         reduced.fail("/extras/visemelab",
@@ -135,11 +137,14 @@ std::vector<MeshDrive> visemeDrives(const AvatarScan& scan, const ReducedModel& 
 
 AvatarSpeech avatarSpeech(const std::filesystem::path& avatar, const AvatarSpeechOptions& options) {
     auto doc = std::make_shared<const GltfDocument>(loadGltfDocument(avatar));
-    const AvatarScan scan = scanAvatar(*doc, {options.targets});
+    AvatarScan scan = scanAvatar(*doc, {options.targets});
     if (scan.visemes.size() < 2)
         throwInputError(doc->source, "needs at least 2 visemes to speak, found " +
                                          std::to_string(scan.visemes.size()) + " (" + scan.selection +
                                          "); see `visemelab avatar inspect`");
+    // Silence needs a viseme: one without a rest viseme speaks with one added (the base mesh, no target),
+    // so the pause is all weights 0 and an Oculus avatar fits the bundled map.
+    if (!avatarHasRest(scan)) addAvatarRest(scan, avatarRestName(scan));
     AvatarSpeech speech;
     const FrequencySource source = speechFrequencies(scan, options, speech.frequencies);
     std::vector<std::string> names = scan.visemes;

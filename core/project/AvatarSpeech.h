@@ -1,7 +1,8 @@
 #pragma once
 // An avatar speaking, without a project (`visemelab say --avatar`): the avatar's visemes as the full
 // face, its reduction as the reduced face (reduced in memory to m keys as `avatar reduce` does, or
-// read from an avatar `avatar reduce` wrote), and the document the speech animation goes on.
+// read from an avatar `avatar reduce` wrote), and the document the speech animation goes on. An
+// avatar without a rest viseme speaks with one added (core/gltf/AvatarRest.h): pauses at all weights 0.
 #include "core/gltf/AvatarScan.h"
 #include "core/gltf/GltfDocument.h"
 #include "core/project/ProjectSpeech.h"

@@ -195,6 +195,7 @@ MeshData domainFromJson(const JsonNode& node) {
 } // namespace
 
 int projectVersionFor(const Project& project) {
+    if (!project.avatar.addedRest.empty()) return 4;
     if (reductionNeedsVersion3(project.reduction)) return 3;
     return project.deformation.domain.positions.empty() ? 1 : 2;
 }

@@ -21,9 +21,9 @@ namespace vl {
 
 // The newest version this VisemeLab reads and writes; newer versions are refused. Version 2 only adds
 // /deformation/domain, version 3 the reduction's rest model (/reduction/rest, restViseme, resting
-// visemes): a project without them is still written as version 1 (or 2), so VisemeLabs that read
-// those versions keep opening it.
-constexpr int kProjectVersion = 3;
+// visemes), version 4 an avatar's added rest viseme (/avatar/addedRest): a project without them is
+// still written as the lowest version that holds it, so VisemeLabs that read it keep opening it.
+constexpr int kProjectVersion = 4;
 constexpr int kOldestProjectVersion = 0; // older versions load through a migration
 inline constexpr const char* kProjectFormat = "visemelab-project";
 
@@ -90,6 +90,9 @@ struct ProjectEditorState {
 struct ProjectAvatar {
     std::filesystem::path file; // relative to the project file's folder, or absolute; empty = none
     std::string targets;        // glob selecting the viseme targets; empty = the Oculus visemes
+    // The rest viseme added after the avatar's (sil / viseme_sil, the neutral's shape, no target:
+    // core/gltf/AvatarRest.h); empty = none. Version 4.
+    std::string addedRest{};
     bool isSet() const { return !file.empty(); }
     bool operator==(const ProjectAvatar&) const = default;
 };
@@ -117,7 +120,7 @@ struct Project {
 };
 
 // The version saveProject writes: the lowest that holds the project (2 only with a face (u,v) mesh,
-// /deformation/domain).
+// /deformation/domain; 3 with the rest model; 4 with an avatar's added rest viseme).
 int projectVersionFor(const Project& project);
 
 // Reads, migrates (older versions) and validates a project file. Every problem is an InputError

@@ -54,7 +54,7 @@ VisemeSet loadProjectVisemeSet(const Project& project) {
         AvatarScan scan;
         try {
             scan = scanAvatar(loadGltfDocument(resolveProjectFile(project, project.avatar.file)),
-                              {project.avatar.targets});
+                              {project.avatar.targets, false, project.avatar.addedRest});
         } catch (const InputError& e) {
             throwInputError(projectWhere(project, "/avatar/file"), e.what());
         }

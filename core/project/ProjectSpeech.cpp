@@ -72,8 +72,13 @@ std::vector<ErrorCurvePoint> projectErrorCurve(const Project& project, std::span
                                                const PhonemeVisemeMap* map) {
     requirePhonemeMap(project, map);
     const VisemeSet set = loadProjectVisemeSet(project);
+    // Every number of keys the project's model has: with the rest free, its rest viseme is no key.
+    std::vector<std::string> names;
+    for (const Viseme& viseme : set.visemes) names.push_back(viseme.name);
+    const int rest = restVisemeIndex(names, project.reduction.restViseme, "/reduction/restViseme");
     Project everyTarget = project;
-    everyTarget.reduction.target = static_cast<int>(set.size());
+    everyTarget.reduction.target =
+        static_cast<int>(set.size()) - (rest >= 0 && restIsFree(project.reduction.rest, rest) ? 1 : 0);
     const ReduceOutcome outcome = reduceProject(everyTarget, set, [&](double f) {
         if (progress) progress(0.5 * f);
     });

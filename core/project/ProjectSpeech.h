@@ -36,8 +36,9 @@ struct ErrorCurvePoint {
     UtteranceError error; // of the phonemes spoken by that reduction against the full set
 };
 
-// For m = 1 .. n: the optimal reduction to m keys with the project's frequencies and weights,
-// and the utterance error of `phonemes` on it. `progress` gets values in [0, 1].
+// For m = 1 .. n (n - 1 when the rest is free: the rest viseme is no key): the optimal reduction to m
+// keys with the project's frequencies, weights and rest model, and the utterance error of `phonemes`
+// on it. `progress` gets values in [0, 1].
 std::vector<ErrorCurvePoint> projectErrorCurve(const Project& project, std::span<const TimedPhoneme> phonemes,
                                                const PlaybackSettings& settings, double fps,
                                                const ProgressCallback& progress = {},

@@ -29,7 +29,7 @@ TEST(ProjectCli, NewAndCheck) {
                                 (assets / "sample").string() + "\" --phonemes \"" +
                                 (assets / "phonemes" / "en-us_frequencies.csv").string() + "\" --map \"" +
                                 (assets / "phonemes" / "map_sample_face.csv").string() +
-                                "\" --weights area --target 10 --face bundled --reduce --rest key"
+                                "\" --weights area --target 10 --face bundled --reduce"
                                 " --order sil,PP,FF,TH,DD,kk,CH,SS,nn,RR,aa,E,ih,oh,ou";
     ASSERT_EQ(runCli(newArgs, dir / "new.txt"), 0) << readFileToString(dir / "new.txt");
 
@@ -53,7 +53,7 @@ TEST(ProjectCli, NewAndCheck) {
     EXPECT_TRUE(rebaseProject(made, committed.path) == committed) << "run scripts/make-sample-project.sh";
 
     ASSERT_EQ(runCli("project check \"" + file.string() + "\"", dir / "check.txt"), 0);
-    EXPECT_NE(readFileToString(dir / "check.txt").find("valid project (version 1): 15 visemes"),
+    EXPECT_NE(readFileToString(dir / "check.txt").find("valid project (version 3): 15 visemes"),
               std::string::npos);
 
     std::string text = readFileToString(file);

@@ -249,30 +249,24 @@ TEST(CliReduce, ReducesMoreThanTwentyVisemes) {
 }
 
 TEST(CliReduce, TheRestIsFreeForTheSampleAndKeyedWithRestKey) {
-    // The sample project (a file without /reduction/rest) stores the keyed result (sil merged with
-    // PP): its own model, the keyed one, reproduces it; --rest auto (the set has sil) rests sil: it
-    // gets no key and maps to -1, the neutral face.
+    // The sample project runs the default model (auto: the set has sil, so the rest is free) and
+    // stores its result: sil rests, gets no key and maps to -1, the neutral face; its own model
+    // reproduces the stored curve. --rest key makes the rest a key like any other again.
     TempDir dir("visemelab_cli_rest");
     const fs::path project = kSample / "sample.vlproj";
-    const auto keyed =
-        test::runCli("reduce --project " + project.string() + " --out " + (dir.path / "key").string());
-    ASSERT_EQ(keyed.exitCode, 0) << keyed.output;
-    const auto stored = readJson(project)["reduction"]["result"]["curve"];
-    const auto keyedReport = readJson(dir.path / "key" / "report.json");
-    EXPECT_EQ(keyedReport["rest"]["model"], "key");
-    ASSERT_EQ(keyedReport["cost_curve"].size(), stored.size());
-    for (std::size_t p = 0; p < stored.size(); ++p)
-        EXPECT_NEAR(keyedReport["cost_curve"][p].get<double>(), stored[p]["cost"].get<double>(),
-                    1e-9 * stored[p]["cost"].get<double>())
-            << "p=" << p + 1;
-    EXPECT_NE(keyed.output.find("Rest: key"), std::string::npos) << keyed.output;
-
-    const auto free = test::runCli("reduce --project " + project.string() + " --rest auto --out " +
-                                   (dir.path / "free").string());
+    const auto free =
+        test::runCli("reduce --project " + project.string() + " --out " + (dir.path / "free").string());
     ASSERT_EQ(free.exitCode, 0) << free.output;
+    const auto stored = readJson(project)["reduction"]["result"]["curve"];
+    EXPECT_EQ(readJson(project)["reduction"]["rest"], "auto");
     const auto report = readJson(dir.path / "free" / "report.json");
     EXPECT_EQ(report["rest"]["model"], "free");
     EXPECT_EQ(report["rest"]["viseme"], "sil");
+    ASSERT_EQ(report["cost_curve"].size(), stored.size());
+    for (std::size_t p = 0; p < stored.size(); ++p)
+        EXPECT_NEAR(report["cost_curve"][p].get<double>(), stored[p]["cost"].get<double>(),
+                    1e-9 * stored[p]["cost"].get<double>())
+            << "p=" << p + 1;
     const auto resting = report["rest"]["resting"].get<std::vector<std::string>>();
     EXPECT_NE(std::find(resting.begin(), resting.end(), "sil"), resting.end());
     EXPECT_EQ(report["groups"].size(), 10u); // ten keys besides the free rest
@@ -280,9 +274,19 @@ TEST(CliReduce, TheRestIsFreeForTheSampleAndKeyedWithRestKey) {
         for (const auto& member : group) EXPECT_NE(member, "sil");
     EXPECT_EQ(readJson(dir.path / "free" / "mapping.json")["visemes"]["sil"], -1);
     EXPECT_NE(free.output.find("Rest: free"), std::string::npos) << free.output;
+
+    const auto keyed = test::runCli("reduce --project " + project.string() + " --rest key --out " +
+                                    (dir.path / "key").string());
+    ASSERT_EQ(keyed.exitCode, 0) << keyed.output;
+    const auto keyedReport = readJson(dir.path / "key" / "report.json");
+    EXPECT_EQ(keyedReport["rest"]["model"], "key");
+    EXPECT_TRUE(keyedReport["rest"]["resting"].empty()) << keyedReport["rest"];
+    EXPECT_EQ(keyedReport["groups"].size(), 10u);
+    EXPECT_GE(readJson(dir.path / "key" / "mapping.json")["visemes"]["sil"].get<int>(), 0);
+    EXPECT_NE(keyed.output.find("Rest: key"), std::string::npos) << keyed.output;
     // Resting cannot beat keying the same visemes at their mean: the keyed optimum with one key more
     // is at most the rest-free one.
-    EXPECT_LE(stored[9]["cost"].get<double>(), report["cost_curve"][8].get<double>() * (1 + 1e-9));
+    EXPECT_LE(keyedReport["cost_curve"][9].get<double>(), report["cost_curve"][8].get<double>() * (1 + 1e-9));
 
     const auto unknown = test::runCli("reduce --project " + project.string() + " --rest-viseme XX --out " +
                                       (dir.path / "bad").string());

@@ -73,6 +73,61 @@ TEST_F(SayAvatarCli, ProjectNewFromAnAvatarRoundTrips) {
     EXPECT_NE(rhubarb.output.find(" mm"), std::string::npos) << rhubarb.output;
 }
 
+// An avatar without a rest viseme (issue 29): `project new --avatar` adds viseme_sil (the base mesh,
+// no target) when the rest is free or auto, so the pause rests and the bundled en-us table applies;
+// --no-add-rest keeps the avatar's visemes, --add-rest adds it with the rest keyed too.
+TEST_F(SayAvatarCli, ProjectNewAddsTheRestAnAvatarLacks) {
+    test::AvatarFixtureOptions options;
+    options.restTarget = false;
+    writeFileAtomically(dir / "norest.glb", test::rpmLikeAvatar(options));
+    const auto r =
+        test::runCli("project new --avatar " + path("norest.glb") + " --reduce --out " + path("p.vlproj"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("15 visemes (viseme_sil added: the base mesh, no target)"), std::string::npos)
+        << r.output;
+    const Project project = loadProject(dir / "p.vlproj");
+    EXPECT_EQ(project.avatar.addedRest, "viseme_sil");
+    ASSERT_EQ(project.visemes.size(), 15u);
+    EXPECT_EQ(project.visemes.back().name, "viseme_sil");
+    ASSERT_TRUE(project.frequencies.isPhonemeBased());
+    ASSERT_NE(project.frequencies.map.visemeOf("sil"), nullptr);
+    EXPECT_EQ(*project.frequencies.map.visemeOf("sil"), "viseme_sil");
+    ASSERT_TRUE(project.reduction.result);
+    EXPECT_TRUE(project.reduction.result->restFree);
+    EXPECT_EQ(test::runCli("project check " + path("p.vlproj")).exitCode, 0);
+
+    const auto kept = test::runCli("project new --avatar " + path("norest.glb") + " --no-add-rest --out " +
+                                   path("q.vlproj"));
+    ASSERT_EQ(kept.exitCode, 0) << kept.output;
+    EXPECT_TRUE(loadProject(dir / "q.vlproj").avatar.addedRest.empty());
+    EXPECT_EQ(loadProject(dir / "q.vlproj").visemes.size(), 14u);
+    const auto keyed =
+        test::runCli("project new --avatar " + path("norest.glb") + " --rest key --out " + path("k.vlproj"));
+    ASSERT_EQ(keyed.exitCode, 0) << keyed.output;
+    EXPECT_TRUE(loadProject(dir / "k.vlproj").avatar.addedRest.empty());
+    const auto forced = test::runCli("project new --avatar " + path("norest.glb") +
+                                     " --rest key --add-rest --out " + path("f.vlproj"));
+    ASSERT_EQ(forced.exitCode, 0) << forced.output;
+    EXPECT_EQ(loadProject(dir / "f.vlproj").avatar.addedRest, "viseme_sil");
+    // An avatar with its own rest gains nothing; the flags are refused where they mean nothing.
+    ASSERT_EQ(
+        test::runCli("project new --avatar " + path("rpm.glb") + " --out " + path("own.vlproj")).exitCode, 0);
+    EXPECT_TRUE(loadProject(dir / "own.vlproj").avatar.addedRest.empty());
+    EXPECT_EQ(test::runCli("project new --avatar " + path("norest.glb") + " --add-rest --no-add-rest --out " +
+                           path("x.vlproj"))
+                  .exitCode,
+              2);
+    EXPECT_EQ(test::runCli("project new --visemes " + dir.string() + " --add-rest --out " + path("x.vlproj"))
+                  .exitCode,
+              2);
+
+    // The project speaks with the bundled table: the pauses are its rest.
+    const auto spoken = say("--project " + path("p.vlproj") + " --out " + path("t.json"));
+    if (!skipped.empty()) GTEST_SKIP() << skipped;
+    ASSERT_EQ(spoken.exitCode, 0) << spoken.output;
+    EXPECT_EQ(loadTrackJson(dir / "t.json").mouthCues.front().value, "viseme_sil");
+}
+
 TEST_F(SayAvatarCli, SaysWithAnAvatarReducedInMemoryAndWritesTheAvatarSpeaking) {
     const auto r = say("--avatar " + path("rpm.glb") + " -m 4 --out " + path("t.json") + " --glb " +
                        path("anim.glb") + " --blend linear");

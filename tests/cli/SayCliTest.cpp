@@ -75,7 +75,7 @@ TEST_F(SayCli, CorpusFileGivesTheErrorCurve) {
                      quotedPath(out) + " --blend dominance --fps 30");
     ASSERT_EQ(result.exitCode, 0) << result.output;
     const SpeechTrackFile track = loadTrackJson(out);
-    ASSERT_EQ(track.errorCurve.size(), 15u);
+    ASSERT_EQ(track.errorCurve.size(), 14u); // m = 1..n - 1: the sample's sil rests (the rest is free)
     EXPECT_EQ(track.errorCurve.back().mean, 0.0);
     EXPECT_GT(track.errorCurve.front().mean, track.errorCurve[9].mean);
     EXPECT_EQ(track.metadata.interpolation, "dominance");

@@ -135,6 +135,7 @@ Part headPart(const AvatarFixtureOptions& o) {
     for (std::size_t i = 0; i < names.size(); ++i) {
         // A little of each viseme's own, so that no two are exactly alike.
         const glm::dvec3 own(noise(rng), noise(rng), noise(rng));
+        if (i == 0 && !o.restTarget) continue;
         head.targets.emplace_back(
             names[i], field(head, [&](const glm::dvec3& p) {
                 return mouthMotion(p, kVisemeMix[i]) +
@@ -163,7 +164,7 @@ Part teethPart(const AvatarFixtureOptions& o) {
     };
     teeth.targets.emplace_back("jawOpen", field(teeth, [&](const glm::dvec3& p) { return lower(p, 1.1); }));
     const auto names = rpmVisemeNames();
-    for (std::size_t i = 0; i < names.size(); ++i)
+    for (std::size_t i = o.restTarget ? 0 : 1; i < names.size(); ++i)
         teeth.targets.emplace_back(
             names[i], field(teeth, [&](const glm::dvec3& p) { return lower(p, kVisemeMix[i].open); }));
     return teeth;
@@ -177,7 +178,8 @@ Part eyePart(const AvatarFixtureOptions& o) {
                glm::dvec3(std::cos(phi) * std::sin(theta), std::sin(phi), std::cos(phi) * std::cos(theta));
     });
     for (const std::string& name : rpmVisemeNames())
-        eye.targets.emplace_back(name, std::vector<float>(eye.positions.size(), 0.0f));
+        if (o.restTarget || name != "viseme_sil")
+            eye.targets.emplace_back(name, std::vector<float>(eye.positions.size(), 0.0f));
     eye.targets.emplace_back(
         "eyesLookUp", field(eye, [](const glm::dvec3& p) { return glm::dvec3(0, p.z * 0.2, -p.y * 0.2); }));
     return eye;

@@ -46,6 +46,26 @@ void writeEditorExport(const std::filesystem::path& dir, const std::string& stem
     vl::writeFileAtomically(dir / (stem + "_editor.glb"), vl::reducedAvatarGlb(document, groupOf, options));
 }
 
+// rpm_norest.glb (no viseme_sil) and rpm_norest_editor_<names>.glb: exported by the editor after "Add
+// rest viseme" (issue 29), the added viseme_sil resting with no target written for it.
+void writeAddedRestExports(const std::filesystem::path& dir) {
+    vl::test::AvatarFixtureOptions options;
+    options.restTarget = false;
+    vl::writeFileAtomically(dir / "rpm_norest.glb", vl::test::rpmLikeAvatar(options));
+    const vl::Document document = vl::edit::setTarget(
+        vl::edit::addAvatarRestViseme(
+            vl::documentFromAvatar(vl::loadDocumentAvatar(dir / "rpm_norest.glb", ""), {}), {}),
+        5);
+    const std::vector<int> groupOf =
+        vl::reduceProject(vl::projectFromDocument(document), *document.visemes).result.groupOf();
+    for (vl::AvatarNames names : {vl::AvatarNames::Original, vl::AvatarNames::Merged}) {
+        vl::AvatarWriteOptions write;
+        write.names = names;
+        vl::writeFileAtomically(dir / ("rpm_norest_editor_" + std::string(vl::toString(names)) + ".glb"),
+                                vl::reducedAvatarGlb(document, groupOf, write));
+    }
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -84,6 +104,7 @@ int main(int argc, char** argv) {
         }
         writeEditorExport(dir, "rpm_plain", "", 5, vl::AvatarNames::Original);
         writeEditorExport(dir, "vroid_vrm0", "Fcl_MTH_[AIUEO]", 3, vl::AvatarNames::Merged);
+        writeAddedRestExports(dir);
         // What `say --avatar ... --glb` writes: the avatar itself speaking (full track, and reduced in
         // memory, compressed inputs included; cubic keyframes and sampled dominance).
         using vl::runtime::Interpolation;

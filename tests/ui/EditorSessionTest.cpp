@@ -64,15 +64,21 @@ TEST(EditorSession, ReductionRunsInTheBackgroundAndMatchesTheCoreReference) {
     session.finishBackgroundWork();
     const ReductionResult* curve = session.reductionCurve();
     ASSERT_NE(curve, nullptr);
-    ASSERT_EQ(curve->curve.size(), session.visemeCount()); // p = 1..n for the plot
+    // The sample runs the default model: the rest is free and sil rests, so p = 1..n - 1 keys.
+    ASSERT_TRUE(curve->restFree);
+    ASSERT_EQ(curve->curve.size(), session.visemeCount() - 1); // p = 1..n - 1 for the plot
     const Grouping* grouping = session.currentGrouping();
     ASSERT_NE(grouping, nullptr);
     EXPECT_EQ(grouping->groups.size(), 10u);
-    // The cost the panel shows is the slow, obvious evaluation of the same grouping.
+    const int sil = session.visemes()->find("sil");
+    EXPECT_NE(std::find(grouping->rest.begin(), grouping->rest.end(), sil), grouping->rest.end());
+    // The cost the panel shows is the slow, obvious evaluation of the same grouping (its keys plus
+    // each resting viseme against the neutral).
     std::vector<std::vector<Vec3>> shapes;
     for (const auto& v : session.visemes()->visemes) shapes.push_back(v.positions);
     const double reference =
-        groupingCost(shapes, session.visemeFrequencies(), session.weights(), grouping->groups);
+        restFreeGroupingCost(shapes, session.visemeFrequencies(), session.weights(), grouping->groups,
+                             grouping->rest, session.visemes()->neutral.positions);
     EXPECT_NEAR(grouping->cost, reference, 1e-9 * std::max(1.0, reference));
     // Costs decrease with more groups and reach 0 at p = n.
     for (std::size_t p = 1; p < curve->curve.size(); ++p)

@@ -60,16 +60,19 @@ void EditorUi::restModelSection() {
     // A set without a rest viseme gets one: the neutral's shape, so silence maps to the rest pose.
     if (pose.viseme < 0) {
         const bool avatar = document.avatar.isSet();
-        ImGui::BeginDisabled(avatar);
         if (ctl::Button("Add rest viseme"))
-            session.attempt("Add rest viseme", [&] { session.addRestViseme(kRestVisemeNames[0]); });
-        ImGui::EndDisabled();
+            session.attempt("Add rest viseme", [&] {
+                if (avatar)
+                    session.addAvatarRestViseme();
+                else
+                    session.addRestViseme(kRestVisemeNames[0]);
+            });
         ImGui::SameLine();
-        helpMarker(avatar
-                       ? "An avatar's visemes are its targets, so none is added; with the rest free its base "
-                         "mesh is the free rest all the same."
-                       : "Adds 'sil' with the neutral's shape (it rests with the rest free), as the "
-                         "Frequencies panel's 'Add rest viseme' does.");
+        helpMarker(avatar ? "Adds 'viseme_sil' (or 'sil', as the avatar spells its visemes): the base mesh, "
+                            "no morph target. Silence maps to it and, with the rest free, it rests (all "
+                            "weights 0); the exported avatar gains no target for it."
+                          : "Adds 'sil' with the neutral's shape (it rests with the rest free), as the "
+                            "Frequencies panel's 'Add rest viseme' does.");
     }
     if (changed)
         session.attempt("Rest model", [&] { session.setRest(static_cast<RestChoice>(choice), restViseme); });

@@ -276,6 +276,14 @@ void EditorSession::setAvatarPattern(const std::string& pattern) {
     info(std::to_string(visemeCount()) + " visemes selected by " + document().avatar.scan->selection);
 }
 
+void EditorSession::addAvatarRestViseme() {
+    Document next =
+        edit::addAvatarRestViseme(document(), bundledPhonemeFrequencies(assetsDirectory(), "oculus"));
+    const std::string name = next.avatar.scan->addedRest;
+    commit("Add rest viseme " + name, std::move(next));
+    select(name);
+}
+
 std::string EditorSession::writeAvatarExport(const Document& document, const Project& snapshot,
                                              const std::filesystem::path& out, const AvatarExport& options) {
     checkAvatarOutput(document, out);

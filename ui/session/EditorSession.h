@@ -213,6 +213,8 @@ class EditorSession {
     void duplicateViseme(int index, const std::string& name);
     void moveViseme(int from, int to);
     void addRestViseme(const std::string& name);
+    // An avatar's rest viseme (edit::addAvatarRestViseme, with the bundled Oculus table).
+    void addAvatarRestViseme();
     // The sliders as a new viseme / into an existing one (preset, and mesh when the set is the face's).
     void storeSlidersAsNewViseme(const std::string& name);
     void storeSlidersInViseme(const std::string& name);
