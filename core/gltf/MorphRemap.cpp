@@ -7,7 +7,10 @@
 #include <tiny_gltf.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <cstring>
+#include <optional>
 
 namespace vl {
 namespace {
@@ -33,6 +36,66 @@ int meshOfNode(const Json& doc, const Json& node) {
     const auto& nodes = doc["nodes"];
     if (i < 0 || static_cast<std::size_t>(i) >= nodes.size()) return -1;
     return nodes[static_cast<std::size_t>(i)].value("mesh", -1);
+}
+
+// The normalised integer layout of a weights output (KHR_mesh_quantization: gltfpack stores weights
+// as normalised bytes), or none for floats.
+struct NormalisedLayout {
+    int componentType = 0;
+    double scale = 0; // the largest integer: value = integer / scale
+    double lowest = 0, highest = 0;
+    std::size_t size = 0;
+};
+
+std::optional<NormalisedLayout> normalisedLayoutOf(const Json& accessor) {
+    if (!accessor.is_object() || !accessor.value("normalized", false)) return std::nullopt;
+    switch (accessor.value("componentType", 0)) {
+    case 5120:
+        return NormalisedLayout{5120, 127, -1, 1, 1};
+    case 5121:
+        return NormalisedLayout{5121, 255, 0, 1, 1};
+    case 5122:
+        return NormalisedLayout{5122, 32767, -1, 1, 2};
+    case 5123:
+        return NormalisedLayout{5123, 65535, 0, 1, 2};
+    default:
+        return std::nullopt;
+    }
+}
+
+// The remapped weights stored as the input stored them: normalised integers on the same grid when the
+// input was quantised and every sum still fits the type's range (the members' integers add exactly),
+// floats otherwise. Floats where gltfpack had bytes made outputs 4x their animation (issue 29).
+Json weightsAccessor(GlbRepack& out, const std::vector<float>& weights, const Json& oldAccessor) {
+    const auto layout = normalisedLayoutOf(oldAccessor);
+    const bool fits = layout && std::all_of(weights.begin(), weights.end(), [&](float w) {
+                          return w >= layout->lowest - 1e-6 && w <= layout->highest + 1e-6;
+                      });
+    if (!fits) {
+        std::string bytes(weights.size() * 4, '\0');
+        std::memcpy(bytes.data(), weights.data(), bytes.size());
+        return {{"bufferView", out.addView(std::move(bytes))},
+                {"componentType", 5126},
+                {"count", weights.size()},
+                {"type", "SCALAR"}};
+    }
+    std::string bytes(weights.size() * layout->size, '\0');
+    for (std::size_t i = 0; i < weights.size(); ++i) {
+        const double clamped = std::clamp(static_cast<double>(weights[i]), layout->lowest, layout->highest);
+        const auto integer = static_cast<long>(std::lround(clamped * layout->scale));
+        if (layout->size == 1) {
+            const auto byte = static_cast<std::int8_t>(integer);
+            std::memcpy(bytes.data() + i, &byte, 1);
+        } else {
+            const auto half = static_cast<std::int16_t>(integer);
+            std::memcpy(bytes.data() + 2 * i, &half, 2);
+        }
+    }
+    return {{"bufferView", out.addView(std::move(bytes))},
+            {"componentType", layout->componentType},
+            {"normalized", true},
+            {"count", weights.size()},
+            {"type", "SCALAR"}};
 }
 
 void remapAnimations(GlbRepack& out, AccessorReader& reader, const std::map<int, std::vector<int>>& remaps) {
@@ -71,13 +134,9 @@ void remapAnimations(GlbRepack& out, AccessorReader& reader, const std::map<int,
                 for (std::size_t k = 0; k < oldTargets; ++k)
                     weights[row * targets + static_cast<std::size_t>(remap->second[k])] +=
                         old[row * oldTargets + k];
-            std::string bytes(weights.size() * 4, '\0');
-            std::memcpy(bytes.data(), weights.data(), bytes.size());
+            const Json& oldAccessor = doc["accessors"][static_cast<std::size_t>(output)];
             out.mayDrop(output);
-            copy["output"] = out.addAccessor({{"bufferView", out.addView(std::move(bytes))},
-                                              {"componentType", 5126},
-                                              {"count", weights.size()},
-                                              {"type", "SCALAR"}});
+            copy["output"] = out.addAccessor(weightsAccessor(out, weights, oldAccessor));
             int index = sampler;
             if (rewritten[static_cast<std::size_t>(
                     sampler)]) { // used by another mesh too: a sampler of its own

@@ -600,7 +600,8 @@ Json meshObject(const std::string& name, const Part& part, Json primitive) {
     return mesh;
 }
 
-int addAnimation(GlbBuilder& b, const Skeleton& s, int headMeshNode, std::size_t headTargets) {
+int addAnimation(GlbBuilder& b, const Skeleton& s, int headMeshNode, std::size_t headTargets,
+                 bool byteWeights) {
     const std::vector<float> times{0.0f, 0.5f, 1.0f};
     const int input = b.addFloats(times, "SCALAR", true, 0);
     std::vector<float> rotations;
@@ -613,7 +614,14 @@ int addAnimation(GlbBuilder& b, const Skeleton& s, int headMeshNode, std::size_t
     for (std::size_t k = 0; k < times.size(); ++k)
         for (std::size_t t = 0; t < headTargets; ++t)
             weights.push_back(k == 1 && (t == 1 || t == 12) ? 0.8f : 0.0f);
-    const int weightsOut = b.addFloats(weights, "SCALAR", false, 0);
+    int weightsOut = -1;
+    if (byteWeights) {
+        std::vector<std::uint8_t> bytes;
+        for (float w : weights) bytes.push_back(static_cast<std::uint8_t>(std::lround(w * 255)));
+        weightsOut = b.addAccessor(b.addView(bytes.data(), bytes.size()), 5121, "SCALAR", bytes.size(), true);
+    } else {
+        weightsOut = b.addFloats(weights, "SCALAR", false, 0);
+    }
     return b.add("animations",
                  {{"name", "Talk"},
                   {"samplers",
@@ -739,7 +747,7 @@ std::string rpmLikeAvatar(const AvatarFixtureOptions& o) {
                      {"scale", {eyePlacement.scale.x, eyePlacement.scale.y, eyePlacement.scale.z}}});
         }
     }
-    if (o.animation && skinned) addAnimation(b, skeleton, headNode, head.targets.size());
+    if (o.animation && skinned) addAnimation(b, skeleton, headNode, head.targets.size(), o.byteWeights);
     return b.glb();
 }
 

@@ -26,7 +26,8 @@ struct AvatarFixtureOptions {
     int teethColumns = 12, teethRows = 3;
     int eyeSegments = 8; // eye spheres: segments x segments/2 vertices
     bool animation = true;
-    bool restTarget = true; // false: no viseme_sil target on any mesh (an avatar without a rest viseme)
+    bool restTarget = true;   // false: no viseme_sil target on any mesh (an avatar without a rest viseme)
+    bool byteWeights = false; // the weights animation as normalised unsigned bytes (as gltfpack stores it)
 };
 
 std::string rpmLikeAvatar(const AvatarFixtureOptions& options = {});

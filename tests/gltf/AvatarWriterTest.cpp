@@ -276,6 +276,25 @@ TEST(AvatarWriter, MergedNamesGiveOneTargetPerKeyAndRemapWeightsAnimationsAndNam
     EXPECT_EQ(r.scanOut.visemes.size(), 5u);
 }
 
+TEST(AvatarWriter, ByteWeightsAnimationsStayBytesOnTheSameGrid) {
+    test::AvatarFixtureOptions options;
+    options.byteWeights = true; // gltfpack's layout: normalised unsigned bytes
+    const std::string input = test::rpmLikeAvatar(options);
+    const Reduced bytes = reduce(input, 5, AvatarNames::Merged);
+    const Reduced floatsIn = reduce(writerFixture(FixtureStorage::Plain), 5, AvatarNames::Merged);
+    const auto outputOf = [](const Reduced& r) {
+        return r.out.json["animations"][0]["samplers"][1]["output"].get<int>();
+    };
+    const Json& accessor = bytes.out.json["accessors"][static_cast<std::size_t>(outputOf(bytes))];
+    EXPECT_EQ(accessor["componentType"], 5121);
+    EXPECT_TRUE(accessor.value("normalized", false));
+    // The same weights as the float animation gives, to the byte grid (0.8 -> 204/255).
+    const std::size_t count = accessor["count"].get<std::size_t>();
+    const auto got = floats(bytes.out, outputOf(bytes), count);
+    const auto want = floats(floatsIn.out, outputOf(floatsIn), count);
+    for (std::size_t i = 0; i < count; ++i) EXPECT_NEAR(got[i], want[i], 0.5 / 255) << i;
+}
+
 TEST(AvatarWriter, KeysOfOneMemberReuseTheirAccessorsUnchanged) {
     const Reduced r = reduce(writerFixture(FixtureStorage::Sparse), 15, AvatarNames::Original);
     for (const AvatarMesh& mesh : r.scanIn.meshes) {
