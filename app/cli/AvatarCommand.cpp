@@ -166,9 +166,9 @@ int runAvatarReduce(const AvatarReduceOptions& o) {
     for (const std::string& line : formatAvatarKeyTargets(avatarKeyTargets(r.glb, o.out)))
         std::printf("  %s\n", line.c_str());
     for (const std::string& note : r.summary.notes) std::fprintf(stderr, "note: %s\n", note.c_str());
-    std::fprintf(stderr, "Wrote %s (%zu bytes; %zu bytes of binary data before%s, was %zu)%s%s\n", o.out.c_str(),
-                r.glb.size(), r.summary.binaryBytesAfter, o.gltfpack ? " re-compression" : "",
-                r.summary.binaryBytesBefore, o.report.empty() ? "" : "; report ", o.report.c_str());
+    std::fprintf(stderr, "Wrote %s (%zu bytes; %zu bytes of binary data before%s, was %zu)%s%s\n",
+                 o.out.c_str(), r.glb.size(), r.summary.binaryBytesAfter, o.gltfpack ? " re-compression" : "",
+                 r.summary.binaryBytesBefore, o.report.empty() ? "" : "; report ", o.report.c_str());
     return kExitOk;
 }
 

@@ -32,7 +32,7 @@ int runExport(const ExportOptions& o) {
     options.faceName = std::filesystem::path(o.project).stem().string();
     const auto written = exportModel(model, *format, o.out, options);
     std::fprintf(stderr, "exported %zu key meshes (%s) as %s:\n", model.keys.size(),
-                o.unreduced ? "unreduced" : "reduced", toString(*format));
+                 o.unreduced ? "unreduced" : "reduced", toString(*format));
     for (const auto& path : written) std::fprintf(stderr, "  %s\n", path.string().c_str());
     return kExitOk;
 }

@@ -203,8 +203,8 @@ int runFaceBuild(const FaceBuildCliOptions& o) {
     saveProject(out, project);
     if (!o.landmarksOut.empty()) writeFileAtomically(o.landmarksOut, landmarksToJsonText(built.landmarks));
     if (!o.report.empty()) writeFileAtomically(o.report, reportJson(built, suggestion.layout).dump(2) + "\n");
-    std::fprintf(stderr, "wrote %s: face '%s', %zu visemes on %zu vertices\n", o.out.c_str(), options.name.c_str(),
-                project.visemes.size(), project.neutral.embedded.positions.size());
+    std::fprintf(stderr, "wrote %s: face '%s', %zu visemes on %zu vertices\n", o.out.c_str(),
+                 options.name.c_str(), project.visemes.size(), project.neutral.embedded.positions.size());
     return kExitOk;
 }
 

@@ -125,7 +125,7 @@ int runVisemes(const VisemesOptions& o) {
     files.add("visemes.json", describe(o, cascade, set, visemes).dump(2) + "\n");
     files.commit();
     std::fprintf(stderr, "wrote neutral + %zu visemes (%zu vertices, %zu triangles) to %s\n", set.size(),
-                set.vertexCount(), set.neutral.triangles.size(), out.string().c_str());
+                 set.vertexCount(), set.neutral.triangles.size(), out.string().c_str());
     return kExitOk;
 }
 
