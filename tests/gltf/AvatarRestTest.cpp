@@ -95,8 +95,12 @@ TEST(AvatarRest, ItRestsAndTheReducedAvatarGainsNoTargetInEitherNameMode) {
             EXPECT_FALSE(namesContain(targetNames, "viseme_sil")) << mesh["name"];
             for (const Json& primitive : mesh["primitives"])
                 EXPECT_EQ(primitive["targets"].size(), targetNames.size());
-            EXPECT_FALSE(mesh["extras"]["phonemeToTarget"].contains("sil"));
         }
+        // The key table (version 2, root only) lists it among the resting visemes, on no key.
+        const Json& table = out.json.at("extras").at("visemelab");
+        EXPECT_TRUE(namesContain(table.at("resting").get<std::vector<std::string>>(), "viseme_sil"));
+        for (const Json& key : table.at("keys"))
+            EXPECT_FALSE(namesContain(key.at("members").get<std::vector<std::string>>(), "viseme_sil"));
         const AvatarScan reread = scanAvatar(out, {});
         ASSERT_TRUE(reread.own.recognised) << (reread.own.notes.empty() ? "" : reread.own.notes.front());
         EXPECT_TRUE(reread.own.isResting("viseme_sil"));
