@@ -11,6 +11,8 @@
 #include "core/project/ProjectRun.h"
 #include "tests/gltf/AvatarFixtures.h"
 
+#include "tests/document/DocumentTestSupport.h"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -19,14 +21,6 @@
 
 namespace vl {
 namespace {
-
-std::filesystem::path tempDir(const char* name) {
-    const auto dir = std::filesystem::temp_directory_path() /
-                     ("visemelab-avatar-document-" + std::string(name) + "-" + std::to_string(::getpid()));
-    std::filesystem::remove_all(dir);
-    std::filesystem::create_directories(dir);
-    return dir;
-}
 
 FrequencySource oculusTable() {
     return bundledPhonemeFrequencies(VISEMELAB_ASSETS_DIR, "oculus");
@@ -48,7 +42,7 @@ std::string readText(const std::filesystem::path& file) {
 }
 
 TEST(AvatarDocument, ImportedAvatarIsOneVisemeSetOverItsMeshesWithTheOthersShown) {
-    const auto dir = tempDir("import");
+    const auto dir = test::tempDir("avatar-document-import");
     const Document document = rpmDocument(writeRpm(dir / "rpm.glb"));
     ASSERT_TRUE(document.avatar.isSet());
     EXPECT_TRUE(document.avatar.file.is_absolute());
@@ -70,7 +64,7 @@ TEST(AvatarDocument, ImportedAvatarIsOneVisemeSetOverItsMeshesWithTheOthersShown
 }
 
 TEST(AvatarDocument, AnAvatarWithoutVisemesIsRefusedWithPatternsThatWouldMatch) {
-    const auto dir = tempDir("none");
+    const auto dir = test::tempDir("avatar-document-none");
     writeFileAtomically(dir / "vroid.vrm", test::vroidLikeAvatar());
     try {
         rpmDocument(dir / "vroid.vrm");
@@ -87,7 +81,7 @@ TEST(AvatarDocument, AnAvatarWithoutVisemesIsRefusedWithPatternsThatWouldMatch) 
 }
 
 TEST(AvatarDocument, ProjectStoresTheAvatarRelativeAndLoadsTheSameDocument) {
-    const auto dir = tempDir("project");
+    const auto dir = test::tempDir("avatar-document-project");
     const auto avatarFile = writeRpm(dir / "avatars" / "rpm.glb");
     Document document = rpmDocument(avatarFile);
     document = edit::setTarget(document, 5);
@@ -127,7 +121,7 @@ TEST(AvatarDocument, ProjectStoresTheAvatarRelativeAndLoadsTheSameDocument) {
     EXPECT_EQ(rebaseProject(again, projectFile), loadProject(projectFile));
 
     // Moved as a whole (project and avatar folders), the project still opens.
-    const auto moved = tempDir("project-moved");
+    const auto moved = test::tempDir("avatar-document-project-moved");
     std::filesystem::copy(dir, moved, std::filesystem::copy_options::recursive);
     std::filesystem::remove_all(dir);
     EXPECT_EQ(visemeNames(documentFromProject(loadProject(moved / "projects" / "me.vlproj")).document),
@@ -138,7 +132,7 @@ TEST(AvatarDocument, ProjectStoresTheAvatarRelativeAndLoadsTheSameDocument) {
 }
 
 TEST(AvatarDocument, ProjectAvatarErrorsNameTheJsonPath) {
-    const auto dir = tempDir("errors");
+    const auto dir = test::tempDir("avatar-document-errors");
     const auto avatarFile = writeRpm(dir / "rpm.glb");
     const auto projectFile = dir / "p.vlproj";
     saveProject(projectFile, projectFromDocument(rpmDocument(avatarFile)));
@@ -174,7 +168,7 @@ TEST(AvatarDocument, ProjectAvatarErrorsNameTheJsonPath) {
 }
 
 TEST(AvatarDocument, TargetPatternIsACommandThatKeepsWhatStillFits) {
-    const auto dir = tempDir("pattern");
+    const auto dir = test::tempDir("avatar-document-pattern");
     Document document = rpmDocument(writeRpm(dir / "rpm.glb"));
     document = edit::setTarget(document, 9);
     document = edit::setConstraints(document, ConstraintNames{{"viseme_aa", "viseme_PP"}, {}, {}});
@@ -206,7 +200,7 @@ TEST(AvatarDocument, TargetPatternIsACommandThatKeepsWhatStillFits) {
 }
 
 TEST(AvatarDocument, PaintedWeightsSurviveAPatternOverTheSameMeshes) {
-    const auto dir = tempDir("painted");
+    const auto dir = test::tempDir("avatar-document-painted");
     Document document = rpmDocument(writeRpm(dir / "rpm.glb"));
     std::vector<double> painted(document.visemes->vertexCount(), 0.5);
     painted[0] = 1.0;
@@ -219,7 +213,7 @@ TEST(AvatarDocument, PaintedWeightsSurviveAPatternOverTheSameMeshes) {
 }
 
 TEST(AvatarDocument, TheAvatarsVisemeSetIsEditedOnlyThroughThePattern) {
-    const auto dir = tempDir("refuse");
+    const auto dir = test::tempDir("avatar-document-refuse");
     const Document document = rpmDocument(writeRpm(dir / "rpm.glb"));
     EXPECT_THROW(edit::removeViseme(document, 0), InputError);
     EXPECT_THROW(edit::addViseme(document, "extra", document.visemes->neutral, {}), InputError);
@@ -236,7 +230,7 @@ TEST(AvatarDocument, TheAvatarsVisemeSetIsEditedOnlyThroughThePattern) {
 
 // The editor's export writes exactly what `visemelab avatar reduce` writes for the same grouping.
 TEST(AvatarDocument, ExportIsTheCoresReducedAvatar) {
-    const auto dir = tempDir("export");
+    const auto dir = test::tempDir("avatar-document-export");
     const auto file = writeRpm(dir / "rpm.glb");
     Document document = rpmDocument(file);
     document = edit::setTarget(document, 6);

@@ -13,6 +13,8 @@
 #include "core/reduce/Reduction.h"
 #include "tests/gltf/AvatarFixtures.h"
 
+#include "tests/document/DocumentTestSupport.h"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -24,10 +26,7 @@ namespace vl {
 namespace {
 
 std::filesystem::path writeNoRestAvatar(const char* name) {
-    const auto dir = std::filesystem::temp_directory_path() /
-                     ("visemelab-avatar-rest-" + std::string(name) + "-" + std::to_string(::getpid()));
-    std::filesystem::remove_all(dir);
-    std::filesystem::create_directories(dir);
+    const auto dir = test::tempDir("avatar-rest-" + std::string(name));
     test::AvatarFixtureOptions options;
     options.restTarget = false;
     writeFileAtomically(dir / "norest.glb", test::rpmLikeAvatar(options));

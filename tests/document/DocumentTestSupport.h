@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <unistd.h>
 
 namespace vl::test {
 
@@ -27,9 +28,10 @@ inline std::string refusal(const std::function<void()>& edit) {
     return "(not refused)";
 }
 
-// An empty folder under the system's temporary directory.
+// An empty folder under the system's temporary directory (the process id keeps parallel runs apart).
 inline std::filesystem::path tempDir(const std::string& name) {
-    const auto dir = std::filesystem::temp_directory_path() / ("visemelab-document-" + name);
+    const auto dir = std::filesystem::temp_directory_path() /
+                     ("visemelab-document-" + name + "-" + std::to_string(::getpid()));
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     return dir;
