@@ -91,6 +91,13 @@ void checkOutputs(const SayOptions& o) {
     }
 }
 
+// Throws InputError at `where` when the utterance is all pauses (`what`: "the text", "the line").
+void requireSpeech(const Utterance& utterance, const std::string& where, const char* what) {
+    for (const auto& p : utterance.phonemes)
+        if (p.phoneme != kSilencePhoneme) return;
+    throwInputError(where, std::string("nothing to say: ") + what + " has no words espeak-ng speaks");
+}
+
 // Speaks the inline text or the text file, streaming audio to the WAV writer when there is one.
 Utterance speak(const SayOptions& o, SpeechSynthesizer& synthesizer, WavStreamWriter* wav) {
     Utterance utterance;
@@ -107,11 +114,7 @@ Utterance speak(const SayOptions& o, SpeechSynthesizer& synthesizer, WavStreamWr
             if (fraction && total > 0) fraction(double(done) / double(total));
         });
     }
-    bool speech = false;
-    for (const auto& p : utterance.phonemes) speech = speech || p.phoneme != kSilencePhoneme;
-    if (!speech)
-        throwInputError(o.textFile.empty() ? "text" : o.textFile,
-                        "nothing to say: the text has no words espeak-ng speaks");
+    requireSpeech(utterance, o.textFile.empty() ? "text" : o.textFile, "the text");
     return utterance;
 }
 
@@ -243,11 +246,7 @@ int sayLines(const SayOptions& o, const SayFace& face, SpeechSynthesizer& synthe
             if (!isValidUtf8(line)) throwInputError("stdin:" + std::to_string(lineNumber), "not UTF-8 text");
             Utterance utterance;
             synthesizer.speak(line, utterance, [](std::span<const std::int16_t>) {});
-            bool speech = false;
-            for (const auto& p : utterance.phonemes) speech = speech || p.phoneme != kSilencePhoneme;
-            if (!speech)
-                throwInputError("stdin:" + std::to_string(lineNumber),
-                                "nothing to say: the line has no words espeak-ng speaks");
+            requireSpeech(utterance, "stdin:" + std::to_string(lineNumber), "the line");
             const SpokenTrack spoken = trackOf(o, face, utterance, interpolation, line);
             answer["track"] = nlohmann::ordered_json::parse(formatTrack(spoken.file, format, o.out));
         } catch (const InputError& e) {
