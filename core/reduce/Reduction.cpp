@@ -38,6 +38,9 @@ constexpr int kAutoDpUnits = 12;
 constexpr double kBranchAndBoundShare = 0.15;
 constexpr int kBranchAndBoundShareUnits = 16;
 constexpr double kBranchAndBoundNodesPerSecond = 2e7;
+// Past the DP's range Auto's first branch and bound gets at most this share of the time limit: real
+// sets are proved within it (ARPAbet 40, every m: 4 s), structureless ones need the LP.
+constexpr double kLpRangeBranchAndBoundShare = 0.25;
 // The heuristics' k-means++ restarts per p. Up to kFewRestartsUnits units an exact search always
 // finishes within milliseconds and the starts only seed its upper bound: 8 restarts prove the sample
 // (15 units) with the same optimum in 1.6 ms of CPU instead of 2.2 ms (bench_reduce
@@ -269,9 +272,9 @@ std::uint64_t branchAndBoundShareNodes(int units, int m) {
 // The LP by column generation for every feasible p = 1..m, one p after another (each prices in
 // parallel), from the heuristics' partitions; p the heuristics found no partition for stays unproven.
 UnitCurve solveByColumnGeneration(const GroupCostModel& model, const ConstraintUnits& units, int m,
-                                  const ReductionOptions& options, const ProgressCallback& progress) {
+                                  const ReductionOptions& options, const ProgressCallback& progress,
+                                  const UnitCurve& proven = {}) {
     const auto starts = heuristicPartitions(model, m, heuristicOptionsFor(model.size()));
-    const std::vector<double> costs = allSubsetCosts(model);
     SearchLimits limits;
     limits.cancelled = options.cancelled;
     if (options.timeLimitSeconds > 0)
@@ -279,14 +282,19 @@ UnitCurve solveByColumnGeneration(const GroupCostModel& model, const ConstraintU
                           std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                               std::chrono::duration<double>(options.timeLimitSeconds));
     UnitCurve curve(static_cast<std::size_t>(m));
-    for (int p = 1; p <= m; ++p) {
+    ColumnPool pool; // the groups of one p start the next
+    // The target m first: the caller asked for it, the smaller p fill the cost curve in the time left.
+    for (int p = m; p >= 1; --p) {
         auto& entry = curve[static_cast<std::size_t>(p - 1)];
         const auto& start = starts[static_cast<std::size_t>(p - 1)];
         if (!units.feasible(p))
             entry.optimal = true; // proven: the constraints rule p out
+        else if (static_cast<std::size_t>(p) <= proven.size() &&
+                 proven[static_cast<std::size_t>(p - 1)].optimal)
+            entry = proven[static_cast<std::size_t>(p - 1)]; // an earlier search proved it
         else if (!start.empty())
-            entry = solveByColumnGeneration(model, costs, p, start, limits);
-        if (progress) progress(static_cast<double>(p) / m);
+            entry = solveByColumnGeneration(model, p, start, limits, &pool);
+        if (progress) progress(static_cast<double>(m - p + 1) / m);
     }
     return curve;
 }
@@ -378,11 +386,6 @@ ReductionResult reduceVisemes(const ReductionProblem& problem, const ReductionOp
     ReductionResult result;
     result.method = options.method;
     result.restFree = restFree;
-    if (result.method == ReductionMethod::ColumnGeneration && count > kMaxColumnGenerationUnits)
-        throwInputError("reduction", "the LP solver takes at most " +
-                                         std::to_string(kMaxColumnGenerationUnits) +
-                                         " visemes (it prices all 2^n groups), the problem has " +
-                                         std::to_string(count) + "; use branch and bound");
     if (result.method == ReductionMethod::SubsetDp && count > kMaxSubsetDpUnits)
         throwInputError("reduction", "the subset DP takes at most " + std::to_string(kMaxSubsetDpUnits) +
                                          " visemes (2^n subsets), the problem has " + std::to_string(count) +
@@ -408,8 +411,7 @@ ReductionResult reduceVisemes(const ReductionProblem& problem, const ReductionOp
             curve = solveSubsetDp(model, solvable, progress);
             result.method = ReductionMethod::SubsetDp;
         }
-    } else if ((result.method == ReductionMethod::Auto && count > kMaxSubsetDpUnits &&
-                count <= kMaxColumnGenerationUnits) ||
+    } else if ((result.method == ReductionMethod::Auto && count > kMaxSubsetDpUnits) ||
                result.method == ReductionMethod::ColumnGeneration) {
         // Above the DP's limit: with Auto, branch and bound first gets the same share as in the DP's
         // range (structured sets are proved in milliseconds), then the LP, which proves most sets,
@@ -421,12 +423,24 @@ ReductionResult reduceVisemes(const ReductionProblem& problem, const ReductionOp
             return std::all_of(c.begin(), c.end(), [](const UnitPartition& e) { return e.optimal; });
         };
         if (automatic) {
-            curve = solveByBranchAndBound(model, units, solvable, options, progress,
-                                          branchAndBoundShareNodes(count, solvable), false, restGroups);
+            // The share grows with n, but past the DP's range it must leave the LP most of the time.
+            std::uint64_t share = branchAndBoundShareNodes(count, solvable);
+            if (options.timeLimitSeconds > 0)
+                share = std::min(
+                    share, static_cast<std::uint64_t>(kLpRangeBranchAndBoundShare * options.timeLimitSeconds *
+                                                      kBranchAndBoundNodesPerSecond));
+            curve =
+                solveByBranchAndBound(model, units, solvable, options, progress, share, false, restGroups);
             result.method = ReductionMethod::BranchAndBound;
         }
         if (!automatic || !allProven(curve)) {
-            UnitCurve lp = solveByColumnGeneration(model, units, solvable, options, progress);
+            ReductionOptions left = options; // the LP's deadline counts from the start, as the limit does
+            if (left.timeLimitSeconds > 0)
+                left.timeLimitSeconds = std::max(
+                    1e-3,
+                    left.timeLimitSeconds -
+                        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
+            UnitCurve lp = solveByColumnGeneration(model, units, solvable, left, progress, curve);
             curve = automatic ? betterOf(std::move(lp), curve) : std::move(lp);
             result.method = ReductionMethod::ColumnGeneration;
             const double spent =

@@ -33,7 +33,7 @@ enum class ReductionMethod {
     Auto,             // the subset DP for small sets, then the LP, then branch and bound
     SubsetDp,         // the paper's DP (at most 22 units)
     BranchAndBound,   // repetitive branch and bound
-    ColumnGeneration, // the set-partitioning LP by column generation (at most 26 units)
+    ColumnGeneration, // the set-partitioning LP by column generation
 };
 
 const char* toString(ReductionMethod method); // "auto", "dp", "bnb", "lp"

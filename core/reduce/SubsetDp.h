@@ -16,7 +16,7 @@ constexpr int kMaxSubsetDpUnits = 22;
 // lowerBound = cost), or no groups when none exists. `progress` gets values in [0,1] from the calling
 // thread. Requires model.size() <= kMaxSubsetDpUnits and 1 <= m <= model.size().
 // c(S) for all 2^n sets S of units (bit a = unit a), +inf for a set holding a conflicting pair, in
-// O(n 2^n). Requires model.size() <= kMaxColumnGenerationUnits (memory: 8 * 2^n bytes).
+// O(n 2^n). Requires model.size() <= kMaxSubsetDpUnits + 4 (memory: 8 * 2^n bytes).
 std::vector<double> allSubsetCosts(const GroupCostModel& model);
 
 UnitCurve solveSubsetDp(const GroupCostModel& model, int m, const std::function<void(double)>& progress = {});

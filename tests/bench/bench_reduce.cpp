@@ -87,6 +87,7 @@ void beyondTheDp(benchmark::internal::Benchmark* b) {
     b->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->Iterations(1)->Repetitions(3);
 }
 BENCHMARK_CAPTURE(BM_ReduceBy, lp, vl::ReductionMethod::ColumnGeneration)->Apply(beyondTheDp);
+
 BENCHMARK_CAPTURE(BM_ReduceBy, branch_and_bound, vl::ReductionMethod::BranchAndBound)->Apply(beyondTheDp);
 
 // Real structure: n of the 40 ARPAbet phoneme meshes of the bundled head (`visemes --set arpabet`,
@@ -100,12 +101,10 @@ const Instance& arpabetInstance(int n) {
     const vl::DeformationCascade cascade = vl::face::makeFaceCascade(vl::face::Individual::Bundled);
     const auto all = vl::bundledVisemeSet("arpabet", assets, cascade, "bench");
     // A fixed mix of vowels and consonants, so that every n holds several places of articulation.
-    const std::vector<std::string> order{"sil", "AA", "B", "IY", "F",  "UW", "S",  "OW",
-                                         "TH",  "EH", "K", "L",  "R",  "W",  "CH", "AE",
-                                         "M",   "ER", "D", "AY", "SH", "UH", "V",  "EY"};
-    // The list names 24 phonemes: n = 32 and 40 solve these 24 (reading past the list was undefined
-    // behaviour). With 32 and 40 distinct meshes this benchmark takes far longer (issue 29 in
-    // docs/performance.md).
+    const std::vector<std::string> order{"sil", "AA", "B", "IY", "F",  "UW", "S",  "OW", "TH", "EH",
+                                         "K",   "L",  "R", "W",  "CH", "AE", "M",  "ER", "D",  "AY",
+                                         "SH",  "UH", "V", "EY", "P",  "DH", "T",  "N",  "Z",  "ZH",
+                                         "JH",  "Y",  "G", "NG", "HH", "IH", "AH", "AO", "AW", "OY"};
     std::vector<vl::VisemeParameters> chosen;
     for (int i = 0; i < std::min(n, static_cast<int>(order.size())); ++i)
         for (const auto& v : all)
@@ -138,6 +137,51 @@ void BM_ReduceArpabet(benchmark::State& state, vl::ReductionMethod method) {
     }
     state.SetLabel("arpabet n=" + std::to_string(n) + " m=10" + (proved ? " proved" : " NOT proved"));
 }
+// Issue 33's certification goals, Auto with 60 s: the target m certified (label), how many p of the
+// cost curve 1..m are certified and the target's gap in %. Arg 0 = random shapes (1,500 vertices),
+// 1 = the bundled head's ARPAbet meshes (m = n - 1: every m of the curve); arg 3: 1 = rest-free model.
+void BM_Certify(benchmark::State& state) {
+    const bool arpabet = state.range(0) == 1;
+    const int n = static_cast<int>(state.range(1)), m = static_cast<int>(state.range(2));
+    const bool restFree = state.range(3) == 1;
+    const Instance& inst = arpabet ? arpabetInstance(n) : [&]() -> const Instance& {
+        static std::map<int, Instance> cache;
+        return cache.try_emplace(n, makeInstance(n, 1500)).first->second;
+    }();
+    vl::ReductionOptions options;
+    options.timeLimitSeconds = 60;
+    int curveProved = 0;
+    double gap = 0;
+    std::string method;
+    for (auto _ : state) {
+        const vl::RestPose rest{restFree, 0, inst.neutral}; // viseme 0 of the ARPAbet sets is sil
+        auto result = vl::reduceVisemes({inst.shapes, inst.frequencies, inst.weights, m, {}, rest}, options);
+        curveProved = static_cast<int>(std::count_if(result.curve.begin(), result.curve.end(),
+                                                     [](const vl::Grouping& g) { return g.optimal; }));
+        gap = std::max(gap, result.best().gap());
+        method = vl::toString(result.method);
+    }
+    state.counters["curve_proved"] = curveProved;
+    state.counters["gap_pct"] = 100 * gap;
+    state.SetLabel(std::string(arpabet ? "arpabet" : "random") + (restFree ? " rest-free" : "") +
+                   " n=" + std::to_string(n) + " m=" + std::to_string(m) +
+                   (gap == 0 ? " proved" : " NOT proved") + " by " + method);
+}
+BENCHMARK(BM_Certify)
+    ->Args({0, 30, 10, 0})
+    ->Args({0, 40, 10, 0})
+    ->Args({0, 40, 20, 0})
+    ->Args({1, 40, 20, 0})
+    ->Args({1, 40, 39, 0})
+    ->Args({1, 32, 10, 1})
+    ->Args({1, 40, 10, 1})
+    ->Args({1, 40, 38, 1})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MeasureProcessCPUTime()
+    ->Iterations(1)
+    ->Repetitions(1);
+
 BENCHMARK_CAPTURE(BM_ReduceArpabet, dp, vl::ReductionMethod::SubsetDp)
     ->Arg(16)
     ->Arg(20)

@@ -34,12 +34,11 @@ TEST(ColumnGeneration, AgreesWithTheDpAndItsCertificateHolds) {
             const int units = model.size();
             const UnitCurve exact = solveSubsetDp(model, units);
             const auto starts = heuristicPartitions(model, units);
-            const std::vector<double> costs = allSubsetCosts(model);
             for (int p = 1; p <= units; ++p) {
                 const auto& start = starts[static_cast<std::size_t>(p - 1)];
                 const UnitPartition& dp = exact[static_cast<std::size_t>(p - 1)];
                 if (start.empty() || dp.groups.empty()) continue;
-                const UnitPartition lp = solveByColumnGeneration(model, costs, p, start, SearchLimits{});
+                const UnitPartition lp = solveByColumnGeneration(model, p, start, SearchLimits{});
                 const double tol = 1e-9 * model.scale + 1e-300;
                 ++cases;
                 EXPECT_LE(lp.lowerBound, dp.cost + tol) << "n=" << n << " p=" << p;
@@ -73,7 +72,7 @@ TEST(ColumnGeneration, AnExpiredLimitReturnsTheStartWithAValidBound) {
     const auto starts = heuristicPartitions(model, 6);
     SearchLimits limits;
     limits.deadline = std::chrono::steady_clock::now() - std::chrono::seconds(1);
-    const UnitPartition lp = solveByColumnGeneration(model, allSubsetCosts(model), 6, starts[5], limits);
+    const UnitPartition lp = solveByColumnGeneration(model, 6, starts[5], limits);
     EXPECT_FALSE(lp.optimal);
     EXPECT_EQ(lp.groups, starts[5]);
     EXPECT_GE(lp.lowerBound, 0.0);
@@ -97,6 +96,38 @@ TEST(ColumnGeneration, AutoProvesAStructurelessSetBeyondTheDp) {
         EXPECT_TRUE(result.curve[p].optimal) << "p=" << p + 1;
         EXPECT_TRUE(
             test::isValidGrouping(result.curve[p].groups, kMaxSubsetDpUnits + 1, static_cast<int>(p) + 1));
+    }
+}
+
+} // namespace
+} // namespace vl
+
+namespace vl {
+namespace {
+
+TEST(ColumnGeneration, TakesSetsBeyondTheOldLimitOf26Units) {
+    // Pricing no longer lists all 2^n groups: 34 rig-like shapes by the LP alone, with a valid
+    // certificate for every p and the target proved, and the same optimum as branch and bound.
+    std::mt19937 rng(34);
+    const auto inst = test::rigInstance(rng, 34, 30, 4);
+    ReductionOptions options;
+    options.method = ReductionMethod::ColumnGeneration;
+    options.timeLimitSeconds = 120; // a safety net: the LP proves this in about a second
+    const auto lp = reduceVisemes({inst.shapes, inst.frequencies, inst.weights, 8}, options);
+    EXPECT_EQ(lp.method, ReductionMethod::ColumnGeneration);
+    EXPECT_TRUE(lp.best().optimal);
+    options.method = ReductionMethod::BranchAndBound;
+    const auto bnb = reduceVisemes({inst.shapes, inst.frequencies, inst.weights, 8}, options);
+    for (std::size_t p = 0; p < lp.curve.size(); ++p) {
+        const Grouping& g = lp.curve[p];
+        EXPECT_TRUE(test::isValidGrouping(g.groups, 34, static_cast<int>(p) + 1));
+        EXPECT_LE(g.lowerBound, g.cost);
+        if (bnb.curve[p].optimal) {
+            EXPECT_LE(g.lowerBound, bnb.curve[p].cost * (1 + 1e-9)) << "p=" << p + 1;
+            if (g.optimal) {
+                EXPECT_NEAR(g.cost, bnb.curve[p].cost, 1e-9 * g.cost) << "p=" << p + 1;
+            }
+        }
     }
 }
 

@@ -3,6 +3,7 @@
 // unchanged when the rest is not free.
 #include "BruteForce.h"
 #include "RandomShapes.h"
+#include "TestModels.h"
 
 #include "core/common/Error.h"
 #include "core/reduce/BranchAndBound.h"
@@ -26,31 +27,6 @@ std::vector<Vec3> neutralNear(const test::RandomInstance& inst, std::mt19937& rn
     std::vector<Vec3> neutral = inst.shapes.front();
     for (auto& v : neutral) v += Vec3(jitter(rng), jitter(rng), jitter(rng));
     return neutral;
-}
-
-// A rest-free model straight from a random instance and constraints, no solver in between: unit a of
-// `units`, the rest unit that of `restViseme`, rest costs f_i sum_k w_k |a_ik - neutral_k|^2 per
-// viseme. Nothing when the constraints contradict each other.
-std::optional<GroupCostModel> restFreeModel(const test::RandomInstance& inst, const ReductionConstraints& c,
-                                            int restViseme, std::span<const Vec3> neutral) {
-    const int n = static_cast<int>(inst.shapes.size());
-    ConstraintUnits units;
-    try {
-        units = constraintUnits(c, n);
-    } catch (const InputError&) {
-        return std::nullopt;
-    }
-    GroupCostModel model =
-        makeGroupCostModel(centredGram(inst.shapes, inst.frequencies, inst.weights), inst.frequencies, units);
-    std::vector<double> restCosts;
-    for (std::size_t i = 0; i < inst.shapes.size(); ++i) {
-        double sum = 0;
-        for (std::size_t k = 0; k < neutral.size(); ++k)
-            sum += inst.weights[k] * (inst.shapes[i][k] - neutral[k]).sqrnorm();
-        restCosts.push_back(inst.frequencies[i] * sum);
-    }
-    makeRestFree(model, restCosts, units, units.unitOf[static_cast<std::size_t>(restViseme)]);
-    return model;
 }
 
 // The optimum over every partition of the model's units into exactly p allowed groups (+inf: none).
@@ -92,7 +68,8 @@ std::vector<ModelCase> randomRestFreeModels(std::mt19937& rng, int minN, int max
                 trial % 4 == 3 ? inst.shapes[static_cast<std::size_t>(restViseme)] : neutralNear(inst, rng);
             const ReductionConstraints c =
                 trial % 4 == 0 ? ReductionConstraints{} : test::randomConstraints(rng, n);
-            if (auto model = restFreeModel(inst, c, restViseme, neutral)) cases.push_back({inst, *model});
+            if (auto model = test::restFreeModel(inst, c, restViseme, neutral))
+                cases.push_back({inst, *model});
         }
     return cases;
 }
