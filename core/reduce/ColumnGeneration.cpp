@@ -57,19 +57,28 @@ UnitPartition solveByColumnGeneration(const GroupCostModel& model, int p, std::s
     clp.chgRowUpper(lp.get(), rowBounds.data());
     std::vector<UnitMask> columns;
     std::unordered_set<UnitMask> known;
+    // Columns are queued and handed to CLP together: one call per round (adding them one by one
+    // copies the matrix each time, quadratic in the thousands of columns a pool holds).
     std::vector<int> rows;
-    std::vector<double> ones;
+    std::vector<double> lower, upper, objective;
+    std::vector<CoinBigIndex> starts{0};
     auto addColumn = [&](UnitMask set) {
         if (!known.insert(set).second || !model.allowed(set)) return;
-        rows.clear();
         for (UnitMask bits = set; bits; bits &= bits - 1) rows.push_back(std::countr_zero(bits));
         rows.push_back(n);
-        ones.assign(rows.size(), 1.0);
-        const double lower = 0, upper = std::numeric_limits<double>::max(),
-                     objective = model.cost(set) / unit;
-        const CoinBigIndex starts[2] = {0, static_cast<CoinBigIndex>(rows.size())};
-        clp.addColumns(lp.get(), 1, &lower, &upper, &objective, starts, rows.data(), ones.data());
+        starts.push_back(static_cast<CoinBigIndex>(rows.size()));
+        lower.push_back(0);
+        upper.push_back(std::numeric_limits<double>::max());
+        objective.push_back(model.cost(set) / unit);
         columns.push_back(set);
+    };
+    auto flushColumns = [&] {
+        if (objective.empty()) return;
+        const std::vector<double> ones(rows.size(), 1.0);
+        clp.addColumns(lp.get(), static_cast<int>(objective.size()), lower.data(), upper.data(),
+                       objective.data(), starts.data(), rows.data(), ones.data());
+        rows.clear(), lower.clear(), upper.clear(), objective.clear();
+        starts.assign(1, 0);
     };
     // First columns: the start partition (a feasible master), every unit alone, the pool's.
     for (const UnitMask g : start) addColumn(g);
@@ -85,6 +94,7 @@ UnitPartition solveByColumnGeneration(const GroupCostModel& model, int p, std::s
     std::vector<double> pi(static_cast<std::size_t>(n));
     std::vector<UnitMask> basis;
     for (int round = 0; round < kMaxRounds && !limits.expired(0); ++round) {
+        flushColumns();
         clp.primal(lp.get(), 0);                   // from the last round's basis
         if (!clp.isProvenOptimal(lp.get())) break; // numerical trouble: keep the bound reached so far
         const double* duals = clp.dualRowSolution(lp.get());

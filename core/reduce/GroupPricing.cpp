@@ -17,6 +17,12 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
+std::array<double, 64> filledWith(double value) {
+    std::array<double, 64> out;
+    out.fill(value);
+    return out;
+}
+
 UnitMask bitOf(int a) {
     return UnitMask{1} << a;
 }
@@ -241,7 +247,7 @@ class ExactSearch {
         }
         // None lowers the bound, yet groups grown by them may still beat the cutoff (the `keep` best).
         if (branch < 0 && undecided) branch = std::countr_zero(undecided);
-        return base + constant + minimum;
+        return base + constant + std::max(minimum, pairMinimum(g, undecided, distance));
     }
 
     void explore(const Partial& g, UnitMask undecided) {
@@ -263,6 +269,41 @@ class ExactSearch {
             explore(child, undecided & ~bitOf(branch) & linked_[i] & ~model_.conflicts[i]);
             undecided &= ~bitOf(branch);
         }
+    }
+
+    // The second bound (GroupPricing.h): the centre form's scatter over the points {m_I} + J is
+    //   (1/Phi) [ sum_u F_I F_u d_u^2 + sum_{u<v in J} F_u F_v d_uv^2 ],  Phi = F_I + F_J,
+    // and d_uv^2 >= (delta_u^2 + delta_v^2) / 2 with delta_u the distance to u's nearest linked unit,
+    // so each member u of J adds at least  e_u + F_u (F_I d_u^2 + delta_u^2 (F_J - F_u) / 2) / Phi.
+    // For F_J in an interval that is monotone in F_J (a Moebius function): the lower end value bounds
+    // it, and only units with F_u below the interval's top can be members. Exact for J of one unit.
+    double pairMinimum(const Partial& g, UnitMask undecided, const std::array<double, 64>& distance) const {
+        constexpr int kSteps = 8;
+        double total = 0;
+        for (UnitMask bits = undecided; bits; bits &= bits - 1) {
+            const int u = std::countr_zero(bits);
+            if (alone(u) < 0) total += model_.weight[static_cast<std::size_t>(u)];
+        }
+        double best = 0;
+        for (int k = 0; k < kSteps; ++k) {
+            const double from = total * k / kSteps, to = total * (k + 1) / kSteps;
+            double sum = 0;
+            for (UnitMask bits = undecided; bits; bits &= bits - 1) {
+                const int u = std::countr_zero(bits);
+                const auto i = static_cast<std::size_t>(u);
+                const double f = model_.weight[i], e = alone(u);
+                if (!(e < 0) || !(f > 0) || f > to * (1 + 1e-12)) continue;
+                const double d2 = distance[i] * distance[i], half = 0.5 * nearest2_[i];
+                // Without a partner, u joins alone: F_J = F_u.
+                auto scatter = [&](double fj) {
+                    return std::isfinite(half) ? (g.F * d2 + half * (fj - f)) / (g.F + fj)
+                                               : g.F * d2 / (g.F + f);
+                };
+                sum += std::min(0.0, e + f * std::min(scatter(std::max(from, f)), scatter(to)));
+            }
+            best = std::min(best, sum);
+        }
+        return best;
     }
 
     // Units whose term c_u - pi_u + F_u |m_u - z|^2 is negative for some centre z hold a ball
@@ -293,7 +334,12 @@ class ExactSearch {
                     // A relative margin: rounding must never cut a link (that would cut a column).
                     linked = d2 <= reach * reach * (1 + 1e-9) + 1e-12 * (meanNorm2_[i] + meanNorm2_[j]);
                 }
-                if (linked) linked_[i] |= bitOf(b);
+                if (!linked) continue;
+                linked_[i] |= bitOf(b);
+                if (fa > 0 && fb > 0) { // a partner that adds scatter: the nearest bounds every pair
+                    const double d2 = meanNorm2_[i] - 2 * model_.h(a, b) / (fa * fb) + meanNorm2_[j];
+                    nearest2_[i] = std::min(nearest2_[i], std::max(0.0, d2) * (1 - 1e-9));
+                }
             }
         }
     }
@@ -342,8 +388,9 @@ class ExactSearch {
     BestGroups best_;
     std::array<double, 64> spread_{}, meanNorm2_{};
     UnitMask keyable_ = 0;
-    UnitMask balls_ = 0;                // units whose term can be negative
-    std::array<UnitMask, 64> linked_{}; // their balls intersect
+    UnitMask balls_ = 0;                                 // units whose term can be negative
+    std::array<UnitMask, 64> linked_{};                  // their balls intersect
+    std::array<double, 64> nearest2_ = filledWith(kInf); // squared distance to the nearest linked unit
     std::uint64_t nodes_ = 0;
     bool stopped_ = false;
     double unexploredMinimum_ = kInf;

@@ -9,7 +9,9 @@
 // m_u the mean of unit u and c_u its own spread. With r = |z - m_I| and |m_u - z| >= (d_u - r)+,
 // d_u = |m_u - m_I|, every group grown from I by undecided units has reduced cost at least
 //   c(I) - pi(I) - mu + min_r>=0 [ F_I r^2 + sum_u min(0, c_u - pi_u + F_u (d_u - r)+^2) ],
-// a minimum over one variable, taken exactly (the sum is piecewise quadratic in r). Groups grow only
+// a minimum over one variable, taken exactly (the sum is piecewise quadratic in r). It ignores how
+// far the added units are from each other; a second bound counts those pairs (each at least as far as
+// its units' nearest linked units, GroupPricing.cpp), and the larger of the two prunes. Groups grow only
 // by units whose "balls" intersect those of every member (GroupPricing.cpp): in high dimensions, where
 // the bound above is weak, that graph is sparse. The rest group of
 // the rest-free model costs sum rest_a, linear: its bound is the sum of the negative rest_u - pi_u.

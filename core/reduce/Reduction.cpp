@@ -291,8 +291,15 @@ UnitCurve solveByColumnGeneration(const GroupCostModel& model, const ConstraintU
         else if (static_cast<std::size_t>(p) <= proven.size() &&
                  proven[static_cast<std::size_t>(p - 1)].optimal)
             entry = proven[static_cast<std::size_t>(p - 1)]; // an earlier search proved it
-        else if (!start.empty())
+        else if (!start.empty() && !limits.expired(0))
             entry = solveByColumnGeneration(model, p, start, limits, &pool);
+        else if (!start.empty()) // out of time: the start, bounded below
+            entry = {start, partitionCost(model, start), 0.0, false};
+        // OPT is non-increasing in p: the bound for p + 1 groups bounds p groups too.
+        if (p < m && !entry.optimal && !entry.groups.empty() &&
+            curve[static_cast<std::size_t>(p)].lowerBound < kInfiniteCost)
+            entry.lowerBound = std::min(
+                entry.cost, std::max(entry.lowerBound, curve[static_cast<std::size_t>(p)].lowerBound));
         if (progress) progress(static_cast<double>(m - p + 1) / m);
     }
     return curve;
