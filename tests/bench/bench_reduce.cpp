@@ -11,6 +11,7 @@
 #include "core/reduce/Reduction.h"
 #include "core/reduce/VisemeSet.h"
 #include "core/reduce/Weights.h"
+#include "tests/reduce/RandomShapes.h"
 
 #include <benchmark/benchmark.h>
 
@@ -139,14 +140,25 @@ void BM_ReduceArpabet(benchmark::State& state, vl::ReductionMethod method) {
 }
 // Issue 33's certification goals, Auto with 60 s: the target m certified (label), how many p of the
 // cost curve 1..m are certified and the target's gap in %. Arg 0 = random shapes (1,500 vertices),
-// 1 = the bundled head's ARPAbet meshes (m = n - 1: every m of the curve); arg 3: 1 = rest-free model.
+// 1 = the bundled head's ARPAbet meshes (m = n - 1: every m of the curve), 2 = phoneme-like rig shapes
+// (n = 64); arg 3: 1 = rest-free model.
 void BM_Certify(benchmark::State& state) {
     const bool arpabet = state.range(0) == 1;
     const int n = static_cast<int>(state.range(1)), m = static_cast<int>(state.range(2));
     const bool restFree = state.range(3) == 1;
     const Instance& inst = arpabet ? arpabetInstance(n) : [&]() -> const Instance& {
-        static std::map<int, Instance> cache;
-        return cache.try_emplace(n, makeInstance(n, 1500)).first->second;
+        static std::map<std::pair<int, int>, Instance> cache;
+        auto [it, fresh] = cache.try_emplace({static_cast<int>(state.range(0)), n});
+        if (fresh) {
+            if (state.range(0) == 2) { // phoneme-like: 2,000 vertices moved by 8 smooth "muscles"
+                std::mt19937 rng(64);
+                auto rig = vl::test::rigInstance(rng, n, 2000, 8);
+                it->second = {std::move(rig.shapes), std::move(rig.frequencies), std::move(rig.weights), {}};
+            } else {
+                it->second = makeInstance(n, 1500);
+            }
+        }
+        return it->second;
     }();
     vl::ReductionOptions options;
     options.timeLimitSeconds = 60;
@@ -163,7 +175,8 @@ void BM_Certify(benchmark::State& state) {
     }
     state.counters["curve_proved"] = curveProved;
     state.counters["gap_pct"] = 100 * gap;
-    state.SetLabel(std::string(arpabet ? "arpabet" : "random") + (restFree ? " rest-free" : "") +
+    const char* kinds[] = {"random", "arpabet", "rig"};
+    state.SetLabel(std::string(kinds[state.range(0)]) + (restFree ? " rest-free" : "") +
                    " n=" + std::to_string(n) + " m=" + std::to_string(m) +
                    (gap == 0 ? " proved" : " NOT proved") + " by " + method);
 }
@@ -178,6 +191,8 @@ BENCHMARK(BM_Certify)
     ->Args({1, 40, 10, 0})
     ->Args({1, 40, 10, 1})
     ->Args({1, 40, 38, 1})
+    ->Args({2, 64, 8, 0})
+    ->Args({2, 64, 16, 0})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->MeasureProcessCPUTime()
