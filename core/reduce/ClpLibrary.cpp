@@ -35,6 +35,7 @@ ClpLibrary load() {
     resolve(handle, "Clp_chgRowLower", clp.chgRowLower, missing);
     resolve(handle, "Clp_chgRowUpper", clp.chgRowUpper, missing);
     resolve(handle, "Clp_addColumns", clp.addColumns, missing);
+    resolve(handle, "Clp_chgColumnUpper", clp.chgColumnUpper, missing);
     resolve(handle, "Clp_primal", clp.primal, missing);
     resolve(handle, "Clp_isProvenOptimal", clp.isProvenOptimal, missing);
     resolve(handle, "Clp_dualRowSolution", clp.dualRowSolution, missing);

@@ -16,6 +16,7 @@ struct ClpLibrary {
     decltype(&Clp_chgRowLower) chgRowLower;
     decltype(&Clp_chgRowUpper) chgRowUpper;
     decltype(&Clp_addColumns) addColumns;
+    decltype(&Clp_chgColumnUpper) chgColumnUpper;
     decltype(&Clp_primal) primal;
     decltype(&Clp_isProvenOptimal) isProvenOptimal;
     decltype(&Clp_dualRowSolution) dualRowSolution;
