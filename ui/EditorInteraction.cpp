@@ -1,6 +1,5 @@
-// Per-frame interaction of the editor's views: the speech clock (Say and typed sequences played
-// through the runtime's keyframe evaluator, in sync with the audio), weight painting and
-// the per-vertex scalars (weights, merge errors, field influence) shown through the colour map.
+// Per-frame interaction of the editor's views: weight painting and the per-vertex scalars (weights, merge
+// errors, field influence) shown through the colour map.
 #include "ui/EditorUi.h"
 
 #include "core/inspect/VertexErrors.h"
@@ -35,62 +34,6 @@ double maxOf(const std::vector<double>& values) {
 }
 
 } // namespace
-
-void EditorUi::playSpeech(double from) {
-    const auto& clip = session.speechClip();
-    if (!clip) return;
-    say_.time = std::clamp(from, 0.0, clip->duration());
-    if (say_.time >= clip->duration()) say_.time = 0.0; // Play at the end starts again
-    say_.playing = true;
-    say_.shown = true;
-    if (say_.audio) audio_.play(say_.audio, clip->sampleRate, say_.time);
-}
-
-void EditorUi::pauseSpeech() {
-    say_.playing = false;
-    audio_.stop();
-}
-
-void EditorUi::advanceSpeech() {
-    const auto& clip = session.speechClip();
-    if (!clip) return;
-    if (clip->id != say_.clip) { // a new clip: show it from its start (or where a start option says)
-        say_.clip = clip->id;
-        say_.audio = clip->samples.empty() ? nullptr
-                                           : std::make_shared<const std::vector<std::int16_t>>(clip->samples);
-        const double start = say_.startAt.value_or(0.0);
-        say_.startAt.reset();
-        if (std::exchange(say_.startPaused, false)) {
-            pauseSpeech();
-            say_.time = std::clamp(start, 0.0, clip->duration());
-            say_.shown = true;
-        } else {
-            playSpeech(start);
-        }
-        return;
-    }
-    if (!say_.playing) return;
-    // The sound is the clock while it plays; otherwise (no device, a typed sequence) the frames.
-    if (audio_.playing())
-        say_.time = audio_.position();
-    else
-        say_.time += ImGui::GetIO().DeltaTime;
-    if (say_.time >= clip->duration()) {
-        if (clip->loops) {
-            say_.time = std::fmod(say_.time, clip->duration());
-        } else {
-            say_.time = clip->duration();
-            pauseSpeech();
-        }
-    }
-}
-
-std::vector<float> EditorUi::speechWeights(bool reduced) {
-    const SpeechPlayback* playback = session.speechPlayback();
-    if (!playback) return {};
-    const std::optional<FaceTrack>& track = reduced ? playback->reduced : playback->full;
-    return track ? track->keyWeights(say_.time) : std::vector<float>{};
-}
 
 const PaintSurface& EditorUi::paintSurface() {
     const auto& set = session.document().visemes;

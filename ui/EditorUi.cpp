@@ -109,48 +109,12 @@ bool EditorUi::selectField(const std::string& stageName) {
 }
 
 void EditorUi::startPlayback(double time, std::string sequence) {
-    say_.sequence = std::move(sequence);
-    if (session.attempt("Playback", [&] { session.playSequence(say_.sequence, say_.secondsPerKey); }))
-        say_.startAt = time;
+    speech_.playSequence(std::move(sequence), time);
 }
 
 void EditorUi::startSay(double time, bool pause) {
-    if (!session.attempt("Say", [&] { session.say(); })) return;
-    say_.startAt = time;
-    say_.startPaused = pause;
+    speech_.say(time, pause);
 }
-
-void EditorUi::requestQuit() {
-    guarded([this] { quitConfirmed_ = true; });
-}
-
-double EditorUi::millimetresPerModelUnit() const {
-    static const LengthUnit kChosen[] = {LengthUnit::Metre, LengthUnit::Centimetre, LengthUnit::Millimetre,
-                                         LengthUnit::Inch};
-    if (costView_.unit >= 1 && costView_.unit <= 4) return millimetresPer(kChosen[costView_.unit - 1]);
-    const VisemeSet* set = session.visemes();
-    return set ? guessMillimetresPerUnit(set->neutral.positions) : millimetresPer(LengthUnit::Metre);
-}
-
-namespace {
-
-// What the avatar tests check: the file, its pattern, the meshes shown and greyed.
-nlohmann::json avatarSummary(const Document& document) {
-    const DocumentAvatar& avatar = document.avatar;
-    if (!avatar.isSet()) return nullptr;
-    nlohmann::json meshes = nlohmann::json::array();
-    for (const AvatarMesh& mesh : avatar.scan->meshes)
-        meshes.push_back({{"name", mesh.name}, {"visemes", mesh.carriesVisemes}});
-    return {{"file", avatar.file.string()},
-            {"pattern", avatar.pattern},
-            {"added_rest", avatar.scan->addedRest},
-            {"visemes", visemeNames(document)},
-            {"meshes", std::move(meshes)},
-            {"viseme_vertices", document.visemes->vertexCount()},
-            {"greyed_vertices", avatar.scan->context.positions.size()}};
-}
-
-} // namespace
 
 nlohmann::json EditorUi::probeSummary() {
     static const char* const kCriteria[] = {"depth", "normals", "contour"};
@@ -175,25 +139,22 @@ nlohmann::json EditorUi::probeSummary() {
         {"visemes", document.visemeCount()},
         {"selected_viseme", session.selectedViseme},
         {"target", document.target},
-        {"reduction", reductionProbe()},
         {"constraints", document.constraints.pinned.size() + document.constraints.apart.size() +
                             document.constraints.together.size()},
         {"criterion", kCriteria[static_cast<int>(document.refinement.kind)]},
-        {"file_dialog_open", fileDialog_.isOpen()},
+        {"file_dialog_open", files_.dialog().isOpen()},
         {"brush", brush_.enabled},
         {"weight_mode", toString(document.weights.mode)},
         {"painted_mean", painted.empty() ? 0.0 : paintedSum / static_cast<double>(painted.size())},
         {"wireframe", wireframe_},
-        {"playing", say_.playing},
-        {"say", sayProbe()},
-        {"avatar", avatarSummary(document)},
-        {"avatar_mesh_report", avatarMeshReport()},
-        {"avatar_gltfpack", avatarGltfpackChosen()},
         {"face_name", document.face.cascade ? document.face.cascade->name : std::string()},
         {"own_face_step", ownFaceProbe()},
         {"face_view", faceViewProbe()}};
     summary.update(polishSummary());
-    summary.update(authoringProbe());
+    avatar_.addProbe(summary);
+    visemes_.addProbe(summary);
+    frequencies_.addProbe(summary);
+    reduction_.addProbe(summary);
     return summary;
 }
 
@@ -224,32 +185,6 @@ nlohmann::json EditorUi::faceViewProbe() const {
             {"parts", std::move(parts)}};
 }
 
-nlohmann::json EditorUi::reductionProbe() const {
-    nlohmann::json out = {{"running", session.reductionRunning()}};
-    if (const auto bound = session.reductionBound())
-        out["bound"] = {{"groups", bound->groups}, {"lower", bound->lowerBound}, {"best", bound->bestFound}};
-    if (const Grouping* grouping = session.currentGrouping(); grouping && grouping->feasible()) {
-        out["current"] = {{"optimal", grouping->optimal}, {"gap", grouping->gap()}, {"cost", grouping->cost}};
-        nlohmann::json resting = nlohmann::json::array();
-        for (const int i : grouping->rest)
-            resting.push_back(session.visemes()->visemes[static_cast<std::size_t>(i)].name);
-        out["current"]["resting"] = std::move(resting);
-        out["current"]["keys"] = grouping->groups.size();
-    }
-    const Document& document = session.document();
-    nlohmann::json rest = {{"model", toString(document.rest)}, {"rest_viseme", document.restViseme}};
-    try {
-        const RestPose pose = documentRestPose(document);
-        rest["free"] = pose.free;
-        rest["resolved"] =
-            pose.viseme >= 0 ? document.visemes->visemes[static_cast<std::size_t>(pose.viseme)].name : "";
-    } catch (const InputError&) {
-    }
-    out["rest"] = std::move(rest);
-    out["last_avatar_export"] = session.lastAvatarExport();
-    return out;
-}
-
 nlohmann::json EditorUi::polishSummary() const {
     const OrbitCamera& camera = subject_ == ViewSubject::Face ? faceCamera_ : visemeCamera_;
     nlohmann::json refine;
@@ -263,30 +198,7 @@ nlohmann::json EditorUi::polishSummary() const {
     return {{"paint", paintSummary()},
             {"refine", refine},
             {"uv_inset_offset", {uvInsetOffset_.x, uvInsetOffset_.y}},
-            {"merged_display", static_cast<int>(mergedDisplay_)},
             {"camera", {{"yaw", camera.yaw}, {"pitch", camera.pitch}, {"distance", camera.distance}}}};
-}
-
-void EditorUi::saveProject(bool askForFile, std::function<void()> then) {
-    if (!askForFile && !session.path().empty()) {
-        session.attempt("Save project", [&] { session.startSaveProject({}, std::move(then)); });
-        return;
-    }
-    fileDialog_.open(
-        "Save project as", FileDialog::Mode::SaveFile, {".vlproj"},
-        [this, then](const auto& path) {
-            session.attempt("Save project", [&] { session.startSaveProject(path, then); });
-        },
-        "project.vlproj");
-}
-
-void EditorUi::guarded(std::function<void()> action) {
-    if (!session.modified()) {
-        action();
-        return;
-    }
-    pendingGuarded_ = std::move(action);
-    openUnsavedPopup_ = true;
 }
 
 // --- GPU copies of the session's meshes ------------------------------------------------------
@@ -361,12 +273,12 @@ void EditorUi::syncGpu() {
 void EditorUi::frame() {
     session.beginFrame();
     session.poll();
-    advanceSpeech();
+    speech_.advance();
     syncGpu();
     frameNewMeshes();
-    if (glfwWindowShouldClose(window_) && !quitConfirmed_) {
+    if (glfwWindowShouldClose(window_) && !files_.quitConfirmed()) {
         glfwSetWindowShouldClose(window_, GLFW_FALSE);
-        requestQuit();
+        files_.requestQuit();
     }
     shortcuts();
 
@@ -379,8 +291,7 @@ void EditorUi::frame() {
     sidePanel(menuHeight, sideWidth, bodyHeight);
     views(sideWidth, menuHeight, std::max(1.0f, io.DisplaySize.x - sideWidth), bodyHeight);
     statusBar(statusHeight);
-    fileDialogs();
-    unsavedChangesPopup();
+    files_.draw();
 }
 
 namespace {
@@ -413,21 +324,13 @@ void EditorUi::frameAll() {
 
 void EditorUi::shortcuts() {
     const ImGuiIO& io = ImGui::GetIO();
-    if (io.WantTextInput || fileDialog_.isOpen()) return;
+    if (io.WantTextInput || files_.dialog().isOpen()) return;
     if (io.KeyCtrl) {
-        if (ImGui::IsKeyPressed(GLFW_KEY_O, false)) {
-            guarded([this] {
-                fileDialog_.open("Open project", FileDialog::Mode::OpenFile, {".vlproj", ".json"},
-                                 [this](const auto& path) {
-                                     session.attempt("Open project", [&] { session.startOpenProject(path); });
-                                 });
-            });
-        }
-        if (ImGui::IsKeyPressed(GLFW_KEY_S, false)) saveProject(io.KeyShift);
+        if (ImGui::IsKeyPressed(GLFW_KEY_O, false)) files_.openProject();
+        if (ImGui::IsKeyPressed(GLFW_KEY_S, false)) files_.saveProject(io.KeyShift);
         if (ImGui::IsKeyPressed(GLFW_KEY_Z, false)) io.KeyShift ? session.redo() : session.undo();
         if (ImGui::IsKeyPressed(GLFW_KEY_Y, false)) session.redo();
-        if (ImGui::IsKeyPressed(GLFW_KEY_L, false))
-            guarded([this] { session.attempt("Load sample", [&] { session.startLoadSample(); }); });
+        if (ImGui::IsKeyPressed(GLFW_KEY_L, false)) files_.loadSample();
     } else if (ImGui::IsKeyPressed(GLFW_KEY_F, false)) {
         frameAll();
     } else if (ImGui::IsKeyPressed(GLFW_KEY_W, false)) {
@@ -445,32 +348,20 @@ void EditorUi::shortcuts() {
 void EditorUi::menuBar() {
     if (!ImGui::BeginMainMenuBar()) return;
     if (ctl::BeginMenu("File")) {
-        if (ctl::MenuItem("New project")) guarded([this] { session.newProject(); });
-        if (ctl::MenuItem("Open project...", "Ctrl+O"))
-            guarded([this] {
-                fileDialog_.open("Open project", FileDialog::Mode::OpenFile, {".vlproj", ".json"},
-                                 [this](const auto& path) {
-                                     session.attempt("Open project", [&] { session.startOpenProject(path); });
-                                 });
-            });
-        if (ctl::MenuItem("Save project", "Ctrl+S", false, !session.path().empty())) saveProject(false);
-        if (ctl::MenuItem("Save project as...", "Ctrl+Shift+S")) saveProject(true);
+        if (ctl::MenuItem("New project")) files_.guarded([this] { session.newProject(); });
+        if (ctl::MenuItem("Open project...", "Ctrl+O")) files_.openProject();
+        if (ctl::MenuItem("Save project", "Ctrl+S", false, !session.path().empty()))
+            files_.saveProject(false);
+        if (ctl::MenuItem("Save project as...", "Ctrl+Shift+S")) files_.saveProject(true);
         ImGui::Separator();
-        if (ctl::MenuItem("Load sample face", "Ctrl+L"))
-            guarded([this] { session.attempt("Load sample", [&] { session.startLoadSample(); }); });
-        if (ctl::MenuItem("Open viseme folder..."))
-            guarded([this] {
-                fileDialog_.open(
-                    "Open viseme folder", FileDialog::Mode::OpenFolder, {}, [this](const auto& path) {
-                        session.attempt("Open folder", [&] { session.startLoadVisemeFolder(path); });
-                    });
-            });
+        if (ctl::MenuItem("Load sample face", "Ctrl+L")) files_.loadSample();
+        if (ctl::MenuItem("Open viseme folder...")) files_.openVisemeFolder();
         ImGui::Separator();
-        if (ctl::MenuItem("Import avatar...")) openAvatarImport();
+        if (ctl::MenuItem("Import avatar...")) avatar_.openImport();
         if (ctl::MenuItem("Export avatar...", nullptr, false, session.document().avatar.isSet()))
-            openAvatarExport();
+            avatar_.openExport();
         ImGui::Separator();
-        if (ctl::MenuItem("Quit")) requestQuit();
+        if (ctl::MenuItem("Quit")) files_.requestQuit();
         ImGui::EndMenu();
     }
     if (ctl::BeginMenu("Edit")) {
@@ -528,10 +419,10 @@ void EditorUi::sidePanel(float top, float width, float height) {
                 ImGui::BeginChild("##panel-body");
                 switch (panel) {
                 case Panel::Visemes:
-                    visemesPanel();
+                    visemes_.draw();
                     break;
                 case Panel::Frequencies:
-                    frequenciesPanel();
+                    frequencies_.draw();
                     break;
                 case Panel::Weights:
                     weightsPanel();
@@ -540,13 +431,13 @@ void EditorUi::sidePanel(float top, float width, float height) {
                     deformationPanel();
                     break;
                 case Panel::Refinement:
-                    refinementPanel();
+                    refinement_.draw();
                     break;
                 case Panel::Reduction:
-                    reductionPanel();
+                    reduction_.draw();
                     break;
                 case Panel::Export:
-                    exportPanel();
+                    export_.draw();
                     break;
                 case Panel::Count:
                     break;
@@ -588,35 +479,6 @@ void EditorUi::views(float left, float top, float width, float height) {
     }
     ImGui::End();
     ImGui::PopStyleVar(2);
-}
-
-void EditorUi::fileDialogs() {
-    fileDialog_.draw();
-}
-
-void EditorUi::unsavedChangesPopup() {
-    if (openUnsavedPopup_) {
-        ImGui::OpenPopup("Unsaved changes");
-        openUnsavedPopup_ = false;
-    }
-    if (!ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
-    ImGui::TextUnformatted("The project has unsaved changes.");
-    const bool hasPath = !session.path().empty();
-    if (ctl::Button(hasPath ? "Save" : "Save as...", ImVec2(110, 0))) {
-        ImGui::CloseCurrentPopup();
-        saveProject(false, std::move(pendingGuarded_));
-    }
-    ImGui::SameLine();
-    if (ctl::Button("Discard changes", ImVec2(130, 0))) {
-        ImGui::CloseCurrentPopup();
-        if (auto action = std::move(pendingGuarded_)) action();
-    }
-    ImGui::SameLine();
-    if (ctl::Button("Cancel", ImVec2(90, 0))) {
-        pendingGuarded_ = nullptr;
-        ImGui::CloseCurrentPopup();
-    }
-    ImGui::EndPopup();
 }
 
 // --- views -----------------------------------------------------------------------------------
@@ -677,7 +539,7 @@ void EditorUi::mainView(ImVec2 size) {
                 ")";
     } else {
         std::vector<float> weights =
-            speechShown() ? speechWeights(false) : visemeWeights(session.selectedViseme);
+            speech_.shown() ? speech_.weights(false) : visemeWeights(session.selectedViseme);
         if (weights.size() != session.visemeCount()) weights = visemeWeights(-1);
         style.color =
             activePanel_ == Panel::Weights && showWeightsColours_ ? ColorMode::Scalar : surfaceColours();
@@ -696,7 +558,7 @@ void EditorUi::mainView(ImVec2 size) {
         } else if (activePanel_ == Panel::Weights) {
             label = std::string("Weights: ") + toString(session.document().weights.mode);
             if (showWeightsColours_) colourLegend(events.imageMin, events.imageMax, "0", "largest weight");
-        } else if (speechShown()) {
+        } else if (speech_.shown()) {
             label = session.speechClip()->label + " (full set)";
         } else {
             const int s = session.selectedViseme;
@@ -710,13 +572,13 @@ void EditorUi::mainView(ImVec2 size) {
 
 void EditorUi::comparisonViews(ImVec2 size) {
     // With a clip shown, the timeline takes the bottom of the views.
-    const bool speech = speechShown();
+    const bool speech = speech_.shown();
     const float timelineHeight = speech ? std::min(230.0f, 0.32f * size.y) : 0.0f;
     const ImVec2 half(std::floor(size.x * 0.5f) - 1.0f, size.y - timelineHeight);
     const int selected = std::max(session.selectedViseme, 0);
     const Grouping* grouping = session.currentGrouping();
     const SpeechPlayback* playback = speech ? session.speechPlayback() : nullptr;
-    std::vector<float> before = speech ? speechWeights(false) : visemeWeights(selected);
+    std::vector<float> before = speech ? speech_.weights(false) : visemeWeights(selected);
     if (before.size() != session.visemeCount()) before = visemeWeights(-1); // no track: the neutral
     std::vector<float> after;
     std::string afterLabel = "Reduced set: waiting for the reduction";
@@ -731,12 +593,13 @@ void EditorUi::comparisonViews(ImVec2 size) {
     }
     if (grouping && session.visemes()) {
         if (speech) {
-            after = speechWeights(true);
+            after = speech_.weights(true);
             if (after.size() != grouping->groups.size()) after.assign(grouping->groups.size(), 0.0f);
             afterLabel = "Reduced set (m = " + std::to_string(grouping->groups.size()) + ")";
             if (playback && playback->error) {
                 const auto& frames = playback->error->frames;
-                const auto frame = static_cast<std::size_t>(std::lround(say_.time * playback->error->fps));
+                const auto frame =
+                    static_cast<std::size_t>(std::lround(speech_.time() * playback->error->fps));
                 char text[96];
                 std::snprintf(text, sizeof text, ", error now %.3g (mean %.3g)",
                               frames.empty() ? 0.0 : frames[std::min(frame, frames.size() - 1)],
@@ -748,11 +611,12 @@ void EditorUi::comparisonViews(ImVec2 size) {
             after.assign(grouping->groups.size(), 0.0f);
             static const char* const kShown[] = {" (error colours)", " (skin)", " on the original (cyan)"};
             if (group == kRestGroup) { // no key: every weight 0 shows the neutral
-                afterLabel = std::string("Rests: the neutral") + kShown[static_cast<int>(mergedDisplay_)];
+                afterLabel =
+                    std::string("Rests: the neutral") + kShown[static_cast<int>(reduction_.mergedDisplay())];
             } else {
                 after[static_cast<std::size_t>(group)] = 1.0f;
-                afterLabel =
-                    "Merged group " + std::to_string(group + 1) + kShown[static_cast<int>(mergedDisplay_)];
+                afterLabel = "Merged group " + std::to_string(group + 1) +
+                             kShown[static_cast<int>(reduction_.mergedDisplay())];
             }
         }
     }
@@ -760,11 +624,12 @@ void EditorUi::comparisonViews(ImVec2 size) {
     plain.wireframe = wireframe_;
     plain.color = surfaceColours();
     DrawStyle errors = plain;
-    const bool errorColours = !speech && mergedDisplay_ == MergedDisplay::ErrorColours;
+    const bool errorColours =
+        !speech && reduction_.mergedDisplay() == ReductionPanel::MergedDisplay::ErrorColours;
     if (errorColours) errors.color = ColorMode::Scalar;
     DrawStyle ghost = plain;
     ghost.ghost = true;
-    const bool overlay = !speech && mergedDisplay_ == MergedDisplay::Overlay;
+    const bool overlay = !speech && reduction_.mergedDisplay() == ReductionPanel::MergedDisplay::Overlay;
     const ViewportEvents left =
         beforeView_.show("before", half, [&](const glm::mat4& view, const glm::mat4& projection) {
             visemeMesh_.draw(shader_, before, view, projection, plain);
@@ -788,7 +653,7 @@ void EditorUi::comparisonViews(ImVec2 size) {
                      [&] {
                          char text[64];
                          std::snprintf(text, sizeof text, "%.3g mm (largest, all visemes)",
-                                       errorLegendMax_ * millimetresPerModelUnit());
+                                       errorLegendMax_ * reduction_.millimetresPerModelUnit());
                          return std::string(text);
                      }()
                          .c_str());
@@ -799,8 +664,31 @@ void EditorUi::comparisonViews(ImVec2 size) {
         afterView_.camera = beforeView_.camera;
     if (speech) {
         ImGui::SetCursorScreenPos(ImVec2(left.imageMin.x, left.imageMax.y + 2.0f));
-        sayTimeline(ImVec2(size.x, timelineHeight - 2.0f));
+        speech_.timeline(ImVec2(size.x, timelineHeight - 2.0f));
     }
+}
+
+void EditorUi::syncContextMesh() {
+    const DocumentAvatar& avatar = session.document().avatar;
+    if (avatar.scan == uploadedContext_) return;
+    uploadedContext_ = avatar.scan;
+    if (!avatar.isSet() || avatar.scan->context.positions.empty()) {
+        contextMesh_.setGeometry({}, {}, {});
+        return;
+    }
+    const MeshData& context = avatar.scan->context;
+    session.attempt("Display the avatar",
+                    [&] { contextMesh_.setGeometry(context.positions, context.triangles, {}); });
+}
+
+void EditorUi::drawContext(const glm::mat4& view, const glm::mat4& projection) const {
+    if (contextMesh_.empty()) return;
+    // Greyed: the meshes the reduction does not touch (body, hair, outfit), for orientation only.
+    DrawStyle grey;
+    grey.wireframe = false;
+    grey.color = ColorMode::Surface;
+    grey.surfaceColor = glm::vec3(0.36f, 0.37f, 0.40f);
+    contextMesh_.draw(shader_, {}, view, projection, grey);
 }
 
 } // namespace vl::ui

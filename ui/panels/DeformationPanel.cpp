@@ -6,6 +6,7 @@
 #include "core/project/BuiltinGeometry.h"
 #include "ui/EditorUi.h"
 #include "ui/panels/PanelWidgets.h"
+#include "ui/panels/ParameterSliders.h"
 #include "ui/widgets/Controls.h"
 
 #include <imgui.h>
@@ -69,7 +70,7 @@ void EditorUi::deformationPanel() {
     if (ctl::Button("Use my mesh...")) openOwnFaceMesh();
 
     sectionHeader("Parameters");
-    parameterSliders();
+    parameterSliders(session);
     storeSlidersSection();
 
     sectionHeader("Fields");
@@ -150,34 +151,8 @@ void EditorUi::deformationPanel() {
     sectionHeader("Visemes");
     ImGui::TextWrapped("Generate the face's viseme set (one mesh per viseme preset) to reduce it.");
     if (ctl::Button("Generate viseme set from face"))
-        guarded([this] { session.attempt("Generate visemes", [&] { session.generateVisemesFromFace(); }); });
-}
-
-// The face's parameters: a viseme preset, the defaults, one live slider per parameter (also in the
-// Refinement panel: the view shows the face at these values).
-void EditorUi::parameterSliders() {
-    const FaceModel& model = session.face();
-    const DeformationCascade& cascade = *model.cascade;
-    if (ctl::BeginCombo("preset", "apply a viseme...", ImGuiComboFlags_HeightLargest)) {
-        for (const VisemeParameters& preset : edit::facePresets(model))
-            if (ctl::Selectable(preset.name.c_str()))
-                session.attempt("Preset", [&] { session.applyVisemePreset(preset.name); });
-        ImGui::EndCombo();
-    }
-    ImGui::SameLine();
-    if (ctl::Button("Defaults"))
-        session.attempt("Defaults", [&] { session.setParameters(cascade.defaults(), "Reset parameters"); });
-    for (std::size_t k = 0; k < cascade.parameters.size(); ++k) {
-        const DeformParameter& p = cascade.parameters[k];
-        float value = static_cast<float>(model.parameters[k]);
-        ImGui::PushID(static_cast<int>(k));
-        ImGui::SetNextItemWidth(-130);
-        if (ctl::SliderFloat(p.name.c_str(), &value, static_cast<float>(p.min), static_cast<float>(p.max),
-                             "%.2f"))
-            session.attempt("Parameter", [&] { session.setParameter(static_cast<int>(k), value); });
-        endEditOnRelease(session);
-        ImGui::PopID();
-    }
+        files_.guarded(
+            [this] { session.attempt("Generate visemes", [&] { session.generateVisemesFromFace(); }); });
 }
 
 EditorUi::UvInsetPlace EditorUi::uvInsetPlace(ImVec2 viewMin, ImVec2 viewMax) const {

@@ -14,11 +14,11 @@
 namespace vl::ui {
 
 void EditorUi::openOwnFaceMesh() {
-    fileDialog_.open("Use my mesh (with (u,v) on the face)", FileDialog::Mode::OpenFile,
-                     {".obj", ".ply", ".wrl", ".vrml", ".glb", ".gltf"},
-                     [this](const std::filesystem::path& path) {
-                         session.attempt("Use my mesh", [&] { ownFace_ = loadOwnFaceCandidate(path); });
-                     });
+    files_.dialog().open("Use my mesh (with (u,v) on the face)", FileDialog::Mode::OpenFile,
+                         {".obj", ".ply", ".wrl", ".vrml", ".glb", ".gltf"},
+                         [this](const std::filesystem::path& path) {
+                             session.attempt("Use my mesh", [&] { ownFace_ = loadOwnFaceCandidate(path); });
+                         });
 }
 
 void EditorUi::ownFaceStep() {
