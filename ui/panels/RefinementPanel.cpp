@@ -125,4 +125,17 @@ void RefinementPanel::draw() {
     parameterSliders(session_);
 }
 
+void RefinementPanel::addProbe(nlohmann::json& summary) const {
+    // The counts of the last run, as the panel states them.
+    nlohmann::json refine;
+    if (const auto& report = session_.lastRefinement())
+        refine = {{"vertices_before", report->verticesBefore},
+                  {"vertices_at_start", report->verticesAtStart},
+                  {"from_base_mesh", report->fromBaseMesh},
+                  {"vertices_after", report->vertices},
+                  {"added", report->stats.splits},
+                  {"removed", report->stats.welds}};
+    summary["refine"] = std::move(refine);
+}
+
 } // namespace vl::ui

@@ -9,6 +9,7 @@ class RefinementPanel : public SidePanel {
   public:
     explicit RefinementPanel(const PanelContext& context) : session_(context.session) {}
     void draw() override;
+    void addProbe(nlohmann::json& summary) const override;
 
   private:
     EditorSession& session_;

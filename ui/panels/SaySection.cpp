@@ -1,6 +1,6 @@
 // The Reduction panel's Say section: text, voice and rate (document state), Say / Play / Pause, the
-// utterance error and the audio status; a typed sequence of visemes; the timeline under the views
-// and what the GUI probe reports about speech. The clip is played by EditorUi::advanceSpeech.
+// utterance error and the audio status, and a typed sequence of visemes. The clip, its timeline under
+// the views and what the GUI probe reports about it are SpeechPlayer's.
 #include "ui/panels/SaySection.h"
 
 #include "ui/SpeechPlayer.h"
