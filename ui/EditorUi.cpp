@@ -7,40 +7,9 @@
 #include <imgui.h>
 
 #include <algorithm>
-#include <cctype>
 
 namespace vl::ui {
-namespace {
-
-// Tab labels are short so all seven fit; the full names are used by --panel and the View menu.
-constexpr const char* kPanelLabels[] = {"Visemes", "Freq.",  "Weights", "Deform",
-                                        "Refine",  "Reduce", "Export"};
-constexpr const char* kPanelNames[] = {"Visemes",    "Frequencies", "Weights", "Deformation",
-                                       "Refinement", "Reduction",   "Export"};
-
-} // namespace
-
-const char* panelName(Panel panel) {
-    return kPanelNames[static_cast<int>(panel)];
-}
-
-std::optional<Panel> panelFromName(std::string_view name) {
-    for (int i = 0; i < static_cast<int>(Panel::Count); ++i) {
-        const std::string_view candidate = kPanelNames[i];
-        if (candidate.size() == name.size() &&
-            std::equal(candidate.begin(), candidate.end(), name.begin(), [](char a, char b) {
-                return std::tolower(static_cast<unsigned char>(a)) ==
-                       std::tolower(static_cast<unsigned char>(b));
-            }))
-            return static_cast<Panel>(i);
-    }
-    return std::nullopt;
-}
-
-EditorUi::EditorUi(EditorSession& editorSession, GLFWwindow* window)
-    : session_(editorSession), window_(window), shader_(shaderDirectory(), "mesh") {
-    afterView_.background = beforeView_.background = mainView_.background;
-}
+EditorUi::EditorUi(EditorSession& session, GLFWwindow* window) : session_(session), window_(window) {}
 
 void EditorUi::selectPanel(Panel panel) {
     activePanel_ = panel;
@@ -81,11 +50,8 @@ nlohmann::json EditorUi::probeSummary() {
         {"file_dialog_open", files_.dialog().isOpen()},
         {"weight_mode", toString(document.weights.mode)},
         {"painted_mean", painted.empty() ? 0.0 : paintedSum / static_cast<double>(painted.size())},
-        {"wireframe", wireframe_},
-        {"face_name", document.face.cascade ? document.face.cascade->name : std::string()},
-        {"face_view", faceViewProbe()}};
-    const OrbitCamera& camera = subject_ == ViewSubject::Face ? faceCamera_ : visemeCamera_;
-    summary["camera"] = {{"yaw", camera.yaw}, {"pitch", camera.pitch}, {"distance", camera.distance}};
+        {"face_name", document.face.cascade ? document.face.cascade->name : std::string()}};
+    views_.addProbe(summary);
     for (const SidePanel* panel : panels_) panel->addProbe(summary);
     avatar_.addProbe(summary);
     return summary;
@@ -97,8 +63,7 @@ void EditorUi::frame() {
     session_.beginFrame();
     session_.poll();
     speech_.advance();
-    syncGpu();
-    frameNewMeshes();
+    views_.update(activePanel_);
     if (glfwWindowShouldClose(window_) && !files_.quitConfirmed()) {
         glfwSetWindowShouldClose(window_, GLFW_FALSE);
         files_.requestQuit();
@@ -112,7 +77,8 @@ void EditorUi::frame() {
     const float sideWidth = std::clamp(io.DisplaySize.x * 0.36f, 480.0f, 640.0f);
     const float bodyHeight = std::max(1.0f, io.DisplaySize.y - menuHeight - statusHeight);
     sidePanel(menuHeight, sideWidth, bodyHeight);
-    views(sideWidth, menuHeight, std::max(1.0f, io.DisplaySize.x - sideWidth), bodyHeight);
+    views_.draw(activePanel_, sideWidth, menuHeight, std::max(1.0f, io.DisplaySize.x - sideWidth),
+                bodyHeight);
     statusBar(statusHeight);
     files_.draw();
 }
@@ -127,9 +93,9 @@ void EditorUi::shortcuts() {
         if (ImGui::IsKeyPressed(GLFW_KEY_Y, false)) session_.redo();
         if (ImGui::IsKeyPressed(GLFW_KEY_L, false)) files_.loadSample();
     } else if (ImGui::IsKeyPressed(GLFW_KEY_F, false)) {
-        frameAll();
+        views_.frameAll();
     } else if (ImGui::IsKeyPressed(GLFW_KEY_W, false)) {
-        wireframe_ = !wireframe_;
+        views_.wireframe = !views_.wireframe;
     } else if (activePanel_ == Panel::Weights &&
                (ImGui::IsKeyPressed(GLFW_KEY_LEFT_BRACKET) || ImGui::IsKeyPressed(GLFW_KEY_RIGHT_BRACKET))) {
         // Brush size by keyboard, as in painting programs.
@@ -164,11 +130,12 @@ void EditorUi::menuBar() {
         ImGui::EndMenu();
     }
     if (ctl::BeginMenu("View")) {
-        if (ctl::MenuItem("Frame model", "F")) frameAll();
-        ctl::MenuItem("Wireframe overlay", "W", &wireframe_);
+        if (ctl::MenuItem("Frame model", "F")) views_.frameAll();
+        ctl::MenuItem("Wireframe overlay", "W", &views_.wireframe);
         ImGui::Separator();
         for (int i = 0; i < static_cast<int>(Panel::Count); ++i)
-            if (ctl::MenuItem(kPanelNames[i], nullptr, activePanel_ == static_cast<Panel>(i)))
+            if (ctl::MenuItem(panelName(static_cast<Panel>(i)), nullptr,
+                              activePanel_ == static_cast<Panel>(i)))
                 selectPanel(static_cast<Panel>(i));
         ImGui::EndMenu();
     }
@@ -206,7 +173,7 @@ void EditorUi::sidePanel(float top, float width, float height) {
             const auto panel = static_cast<Panel>(i);
             const ImGuiTabItemFlags flags =
                 panelSelectPending_ && activePanel_ == panel ? ImGuiTabItemFlags_SetSelected : 0;
-            if (ctl::BeginTabItem(kPanelLabels[i], nullptr, flags)) {
+            if (ctl::BeginTabItem(panelLabel(panel), nullptr, flags)) {
                 if (!panelSelectPending_) activePanel_ = panel;
                 ImGui::BeginChild("##panel-body");
                 panels_[static_cast<std::size_t>(i)]->draw();

@@ -1,7 +1,7 @@
 // The editor's views: the main view (visemes; the face with its (u,v) inset; painting) and the
 // Reduction panel's side-by-side comparison, the GPU copies of the session's meshes, the cameras,
 // and the per-vertex scalars (weights, merge errors, field influence) shown through the colour map.
-#include "ui/EditorUi.h"
+#include "ui/EditorViews.h"
 
 #include "core/gltf/AvatarScan.h"
 #include "core/inspect/VertexErrors.h"
@@ -76,7 +76,7 @@ double maxOf(const std::vector<double>& values) {
 
 } // namespace
 
-nlohmann::json EditorUi::faceViewProbe() const {
+nlohmann::json EditorViews::faceViewProbe() const {
     if (shownFace_.panel == Panel::Count) return nullptr;
     // Each part's centre where the view drew it: the morph of the uploaded parts at the drawn weights.
     nlohmann::json parts = nlohmann::json::array();
@@ -103,7 +103,7 @@ nlohmann::json EditorUi::faceViewProbe() const {
             {"parts", std::move(parts)}};
 }
 
-void EditorUi::syncGpu() {
+void EditorViews::syncGpu() {
     if (uploadedGeometry_ != session_.geometryGeneration()) {
         uploadedGeometry_ = session_.geometryGeneration();
         if (const VisemeSet* set = session_.visemes()) {
@@ -177,7 +177,7 @@ bool frameOn(OrbitCamera& camera, std::span<const Vec3> positions) {
 }
 } // namespace
 
-void EditorUi::frameNewMeshes() {
+void EditorViews::frameNewMeshes() {
     // Each subject keeps its camera across tabs; a new mesh (another document) is framed once.
     if (frameVisemes_) {
         const VisemeSet* set = session_.visemes();
@@ -188,7 +188,7 @@ void EditorUi::frameNewMeshes() {
     }
 }
 
-void EditorUi::frameAll() {
+void EditorViews::frameAll() {
     if (subject_ == ViewSubject::Face) {
         if (session_.face().cascade) frameOn(faceCamera_, session_.faceSamples().rest);
     } else if (const VisemeSet* set = session_.visemes()) {
@@ -196,8 +196,9 @@ void EditorUi::frameAll() {
     }
 }
 
-void EditorUi::views(float left, float top, float width, float height) {
-    const ViewSubject subject = activePanel_ == Panel::Deformation || activePanel_ == Panel::Refinement
+void EditorViews::draw(Panel active, float left, float top, float width, float height) {
+    active_ = active;
+    const ViewSubject subject = active_ == Panel::Deformation || active_ == Panel::Refinement
                                     ? ViewSubject::Face
                                     : ViewSubject::Visemes;
     subject_ = subject;
@@ -212,45 +213,45 @@ void EditorUi::views(float left, float top, float width, float height) {
     const ImVec2 size(width, height);
     // The views show the subject's kept camera and hand back what the user did with it.
     OrbitCamera& camera = subject == ViewSubject::Face ? faceCamera_ : visemeCamera_;
-    if (activePanel_ == Panel::Reduction) {
+    if (active_ == Panel::Reduction) {
         beforeView_.camera = afterView_.camera = camera;
         comparisonViews(size);
         camera = beforeView_.camera; // the two are synchronised by now
     } else {
         mainView_.camera = camera;
-        mainView(size);
+        drawMainView(size);
         camera = mainView_.camera;
     }
     ImGui::End();
     ImGui::PopStyleVar(2);
 }
 
-ColorMode EditorUi::surfaceColours() const {
+ColorMode EditorViews::surfaceColours() const {
     return session_.document().visemeColours ? ColorMode::VertexColor : ColorMode::Surface;
 }
 
-std::vector<float> EditorUi::visemeWeights(int viseme) const {
+std::vector<float> EditorViews::visemeWeights(int viseme) const {
     std::vector<float> w(session_.visemeCount(), 0.0f);
     if (viseme >= 0 && viseme < static_cast<int>(w.size())) w[static_cast<std::size_t>(viseme)] = 1.0f;
     return w;
 }
 
-void EditorUi::mainView(ImVec2 size) {
-    const DeformationPanel::Field selected = deformation_.selectedField();
+void EditorViews::drawMainView(ImVec2 size) {
+    const DeformationPanel::Field selected = panels_.deformation.selectedField();
     DrawStyle style;
-    style.wireframe = wireframe_;
-    const bool painting = activePanel_ == Panel::Weights && weights_.painter().brush.enabled;
+    style.wireframe = wireframe;
+    const bool painting = active_ == Panel::Weights && panels_.weights.painter().brush.enabled;
     const bool orbit = !painting || ImGui::GetIO().KeyAlt;
     std::string label;
     ViewportEvents events;
     if (subject_ == ViewSubject::Face) {
         std::vector<float> q;
         for (double v : session_.face().parameters) q.push_back(static_cast<float>(v));
-        style.color =
-            deformation_.showInfluence() && selected.stage >= 0 ? ColorMode::Scalar : ColorMode::VertexColor;
+        style.color = panels_.deformation.showInfluence() && selected.stage >= 0 ? ColorMode::Scalar
+                                                                                 : ColorMode::VertexColor;
         const auto& cascade = session_.face().cascade;
         const bool inset =
-            activePanel_ == Panel::Deformation && cascade && selected.stage >= 0 &&
+            active_ == Panel::Deformation && cascade && selected.stage >= 0 &&
             selected.stage < static_cast<int>(cascade->stages.size()) &&
             selected.influence <
                 static_cast<int>(
@@ -259,20 +260,20 @@ void EditorUi::mainView(ImVec2 size) {
         // before the view is drawn: the view fills the space from the cursor.
         const ImVec2 viewMin = ImGui::GetCursorScreenPos();
         const DeformationPanel::InsetPlace place =
-            deformation_.insetPlace(viewMin, ImVec2(viewMin.x + size.x, viewMin.y + size.y));
+            panels_.deformation.insetPlace(viewMin, ImVec2(viewMin.x + size.x, viewMin.y + size.y));
         if (inset) mainView_.excludeFromDrags(place.min, place.max);
         // The skin (its influence colours when a field is selected) and the head's parts inside it,
         // in their own colours, at the same weights.
         DrawStyle partsStyle = style;
         partsStyle.color = ColorMode::VertexColor;
-        shownFace_ = {activePanel_, q, faceMesh_.triangleCount(), 0};
+        shownFace_ = {active_, q, faceMesh_.triangleCount(), 0};
         events = mainView_.show("main", size, [&](const glm::mat4& view, const glm::mat4& projection) {
             faceMesh_.draw(shader_, q, view, projection, style);
             if (faceMesh_.empty() || partsMesh_.empty()) return;
             partsMesh_.draw(shader_, q, view, projection, partsStyle);
             shownFace_.partTriangles = partsMesh_.triangleCount();
         });
-        if (inset) deformation_.inset(place);
+        if (inset) panels_.deformation.inset(place);
         if (faceMesh_.empty())
             emptyViewHint(events.imageMin, events.imageMax,
                           "No face loaded: use \"Load bundled face\" in the panel");
@@ -287,8 +288,8 @@ void EditorUi::mainView(ImVec2 size) {
             speech_.shown() ? speech_.weights(false) : visemeWeights(session_.selectedViseme);
         if (weights.size() != session_.visemeCount()) weights = visemeWeights(-1);
         style.color =
-            activePanel_ == Panel::Weights && weights_.showColours() ? ColorMode::Scalar : surfaceColours();
-        if (activePanel_ == Panel::Weights) weights.assign(weights.size(), 0.0f); // paint on the neutral
+            active_ == Panel::Weights && panels_.weights.showColours() ? ColorMode::Scalar : surfaceColours();
+        if (active_ == Panel::Weights) weights.assign(weights.size(), 0.0f); // paint on the neutral
         events = mainView_.show(
             "main", size,
             [&](const glm::mat4& view, const glm::mat4& projection) {
@@ -300,9 +301,10 @@ void EditorUi::mainView(ImVec2 size) {
             emptyViewHint(
                 events.imageMin, events.imageMax,
                 "No viseme set: File > Load sample face (Ctrl+L), or open a project or a viseme folder");
-        } else if (activePanel_ == Panel::Weights) {
+        } else if (active_ == Panel::Weights) {
             label = std::string("Weights: ") + toString(session_.document().weights.mode);
-            if (weights_.showColours()) colourLegend(events.imageMin, events.imageMax, "0", "largest weight");
+            if (panels_.weights.showColours())
+                colourLegend(events.imageMin, events.imageMax, "0", "largest weight");
         } else if (speech_.shown()) {
             label = session_.speechClip()->label + " (full set)";
         } else {
@@ -310,13 +312,13 @@ void EditorUi::mainView(ImVec2 size) {
             label = s >= 0 ? "Viseme " + session_.visemes()->visemes[static_cast<std::size_t>(s)].name
                            : "Neutral";
         }
-        if (activePanel_ == Panel::Weights)
-            weights_.painter().paint(events); // readout always, tools while painting
+        if (active_ == Panel::Weights)
+            panels_.weights.painter().paint(events); // readout always, tools while painting
     }
     if (!label.empty()) viewLabel(events.imageMin, label);
 }
 
-void EditorUi::comparisonViews(ImVec2 size) {
+void EditorViews::comparisonViews(ImVec2 size) {
     // With a clip shown, the timeline takes the bottom of the views.
     const bool speech = speech_.shown();
     const float timelineHeight = speech ? std::min(230.0f, 0.32f * size.y) : 0.0f;
@@ -357,25 +359,26 @@ void EditorUi::comparisonViews(ImVec2 size) {
             after.assign(grouping->groups.size(), 0.0f);
             static const char* const kShown[] = {" (error colours)", " (skin)", " on the original (cyan)"};
             if (group == kRestGroup) { // no key: every weight 0 shows the neutral
-                afterLabel =
-                    std::string("Rests: the neutral") + kShown[static_cast<int>(reduction_.mergedDisplay())];
+                afterLabel = std::string("Rests: the neutral") +
+                             kShown[static_cast<int>(panels_.reduction.mergedDisplay())];
             } else {
                 after[static_cast<std::size_t>(group)] = 1.0f;
                 afterLabel = "Merged group " + std::to_string(group + 1) +
-                             kShown[static_cast<int>(reduction_.mergedDisplay())];
+                             kShown[static_cast<int>(panels_.reduction.mergedDisplay())];
             }
         }
     }
     DrawStyle plain;
-    plain.wireframe = wireframe_;
+    plain.wireframe = wireframe;
     plain.color = surfaceColours();
     DrawStyle errors = plain;
     const bool errorColours =
-        !speech && reduction_.mergedDisplay() == ReductionPanel::MergedDisplay::ErrorColours;
+        !speech && panels_.reduction.mergedDisplay() == ReductionPanel::MergedDisplay::ErrorColours;
     if (errorColours) errors.color = ColorMode::Scalar;
     DrawStyle ghost = plain;
     ghost.ghost = true;
-    const bool overlay = !speech && reduction_.mergedDisplay() == ReductionPanel::MergedDisplay::Overlay;
+    const bool overlay =
+        !speech && panels_.reduction.mergedDisplay() == ReductionPanel::MergedDisplay::Overlay;
     const ViewportEvents left =
         beforeView_.show("before", half, [&](const glm::mat4& view, const glm::mat4& projection) {
             visemeMesh_.draw(shader_, before, view, projection, plain);
@@ -399,7 +402,7 @@ void EditorUi::comparisonViews(ImVec2 size) {
                      [&] {
                          char text[64];
                          std::snprintf(text, sizeof text, "%.3g mm (largest, all visemes)",
-                                       errorLegendMax_ * reduction_.millimetresPerModelUnit());
+                                       errorLegendMax_ * panels_.reduction.millimetresPerModelUnit());
                          return std::string(text);
                      }()
                          .c_str());
@@ -414,7 +417,7 @@ void EditorUi::comparisonViews(ImVec2 size) {
     }
 }
 
-void EditorUi::syncContextMesh() {
+void EditorViews::syncContextMesh() {
     const DocumentAvatar& avatar = session_.document().avatar;
     if (avatar.scan == uploadedContext_) return;
     uploadedContext_ = avatar.scan;
@@ -427,7 +430,7 @@ void EditorUi::syncContextMesh() {
                      [&] { contextMesh_.setGeometry(context.positions, context.triangles, {}); });
 }
 
-void EditorUi::drawContext(const glm::mat4& view, const glm::mat4& projection) const {
+void EditorViews::drawContext(const glm::mat4& view, const glm::mat4& projection) const {
     if (contextMesh_.empty()) return;
     // Greyed: the meshes the reduction does not touch (body, hair, outfit), for orientation only.
     DrawStyle grey;
@@ -437,11 +440,11 @@ void EditorUi::drawContext(const glm::mat4& view, const glm::mat4& projection) c
     contextMesh_.draw(shader_, {}, view, projection, grey);
 }
 
-void EditorUi::updateScalars() {
+void EditorViews::updateScalars() {
     const VisemeSet* set = session_.visemes();
     // Metric weights on the viseme mesh (the Weights panel).
-    if (set && activePanel_ == Panel::Weights) {
-        WeightPainter& painter = weights_.painter();
+    if (set && active_ == Panel::Weights) {
+        WeightPainter& painter = panels_.weights.painter();
         const std::vector<double>* stroke = painter.strokeWeights();
         const std::string key = "w" + std::to_string(session_.inputsGeneration()) + (stroke ? "s" : "");
         if (key != weightsKey_ || stroke) {
@@ -458,7 +461,7 @@ void EditorUi::updateScalars() {
     }
     // Merge error of the selected viseme on the reduced view.
     const Grouping* grouping = session_.currentGrouping();
-    if (set && grouping && activePanel_ == Panel::Reduction) {
+    if (set && grouping && active_ == Panel::Reduction) {
         const int selected = std::max(session_.selectedViseme, 0);
         const std::string key = std::to_string(selected) + ":" + std::to_string(session_.inputsGeneration()) +
                                 ":" + std::to_string(grouping->groups.size());
@@ -491,7 +494,7 @@ void EditorUi::updateScalars() {
     }
     // Influence of the selected analytic field on the face.
     const FaceModel& model = session_.face();
-    const DeformationPanel::Field selected = deformation_.selectedField();
+    const DeformationPanel::Field selected = panels_.deformation.selectedField();
     if (model.cascade && selected.stage >= 0 &&
         selected.stage < static_cast<int>(model.cascade->stages.size())) {
         const auto& influences =
@@ -508,6 +511,35 @@ void EditorUi::updateScalars() {
             influenceKey_ = key;
         }
     }
+}
+
+EditorViews::EditorViews(EditorSession& session, SpeechPlayer& speech, Panels panels)
+    : session_(session), speech_(speech), panels_(panels), shader_(shaderDirectory(), "mesh") {
+    afterView_.background = beforeView_.background = mainView_.background;
+}
+
+void EditorViews::update(Panel active) {
+    active_ = active;
+    syncGpu();
+    frameNewMeshes();
+}
+
+std::string EditorViews::statistics() const {
+    if (subject_ == ViewSubject::Face && session_.face().cascade)
+        return "Face: " + std::to_string(faceMesh_.vertexCount()) + " vertices, " +
+               std::to_string(faceMesh_.triangleCount()) + " triangles, " +
+               std::to_string(session_.face().parameters.size()) + " parameters";
+    if (const VisemeSet* set = session_.visemes())
+        return std::to_string(set->size()) + " visemes, " + std::to_string(set->vertexCount()) +
+               " vertices, " + std::to_string(set->neutral.triangles.size()) + " triangles";
+    return "No mesh";
+}
+
+void EditorViews::addProbe(nlohmann::json& summary) const {
+    summary["face_view"] = faceViewProbe();
+    summary["wireframe"] = wireframe;
+    const OrbitCamera& camera = subject_ == ViewSubject::Face ? faceCamera_ : visemeCamera_;
+    summary["camera"] = {{"yaw", camera.yaw}, {"pitch", camera.pitch}, {"distance", camera.distance}};
 }
 
 } // namespace vl::ui

@@ -38,15 +38,7 @@ std::string fitted(const std::string& text, float width, int maxLines) {
 
 float EditorUi::statusBarHeight() {
     const ImGuiIO& io = ImGui::GetIO();
-    status_.stats = "No mesh";
-    if (subject_ == ViewSubject::Face && session_.face().cascade) {
-        status_.stats = "Face: " + std::to_string(faceMesh_.vertexCount()) + " vertices, " +
-                        std::to_string(faceMesh_.triangleCount()) + " triangles, " +
-                        std::to_string(session_.face().parameters.size()) + " parameters";
-    } else if (const VisemeSet* set = session_.visemes()) {
-        status_.stats = std::to_string(set->size()) + " visemes, " + std::to_string(set->vertexCount()) +
-                        " vertices, " + std::to_string(set->neutral.triangles.size()) + " triangles";
-    }
+    status_.stats = views_.statistics();
     // The message column starts after the statistics and the progress bars shown this frame.
     float x = kPadding + ImGui::CalcTextSize(status_.stats.c_str()).x;
     for (const bool running : {session_.loading(), session_.saving(), session_.exporting()})
