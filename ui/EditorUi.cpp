@@ -1,5 +1,6 @@
 #include "ui/EditorUi.h"
 
+#include "core/adaptive/Criteria.h"
 #include "ui/widgets/Controls.h"
 
 #define GLFW_INCLUDE_NONE
@@ -22,7 +23,6 @@ void EditorUi::enableBrush(int operation) {
 }
 
 nlohmann::json EditorUi::probeSummary() {
-    static const char* const kCriteria[] = {"depth", "normals", "contour"};
     const Document& document = session_.document();
     nlohmann::json messages = nlohmann::json::array();
     for (const StatusMessage& message : session_.messages())
@@ -46,7 +46,7 @@ nlohmann::json EditorUi::probeSummary() {
         {"target", document.target},
         {"constraints", document.constraints.pinned.size() + document.constraints.apart.size() +
                             document.constraints.together.size()},
-        {"criterion", kCriteria[static_cast<int>(document.refinement.kind)]},
+        {"criterion", std::string(criterionName(document.refinement.kind))},
         {"file_dialog_open", files_.dialog().isOpen()},
         {"weight_mode", toString(document.weights.mode)},
         {"painted_mean", painted.empty() ? 0.0 : paintedSum / static_cast<double>(painted.size())},
