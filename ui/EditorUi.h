@@ -1,50 +1,31 @@
 #pragma once
-// The editor window's contents: menu bar, fixed side panel with one tab per task, the 3D views and
-// the status bar. Everything the user does goes through EditorSession; this class only draws and
-// keeps GPU copies of the session's meshes up to date.
-#include "core/paint/BrushRadius.h"
-#include "core/paint/PaintSurface.h"
-#include "core/paint/RayPick.h"
-#include "ui/audio/AudioPlayer.h"
-#include "ui/render/GlShader.h"
-#include "ui/render/GpuMesh.h"
-#include "ui/render/Viewport.h"
+// The editor window: the frame loop and its layout: menu bar and shortcuts, the side panel with one
+// tab per task, the 3D views (EditorViews), the status bar. Each tab is a panel object (ui/panels)
+// owning its view state; they share the session, the file actions and the speech player through a
+// PanelContext. Everything the user does goes through EditorSession.
+#include "ui/EditorViews.h"
+#include "ui/FileActions.h"
+#include "ui/Panel.h"
+#include "ui/SpeechPlayer.h"
+#include "ui/panels/AvatarPanel.h"
+#include "ui/panels/DeformationPanel.h"
+#include "ui/panels/ExportPanel.h"
+#include "ui/panels/FrequenciesPanel.h"
+#include "ui/panels/ReductionPanel.h"
+#include "ui/panels/RefinementPanel.h"
+#include "ui/panels/VisemesPanel.h"
+#include "ui/panels/WeightsPanel.h"
 #include "ui/session/EditorSession.h"
-#include "ui/widgets/FileDialog.h"
 #include "ui/widgets/StatusLine.h"
 
 #include <nlohmann/json.hpp>
 
-#include <memory>
-#include <optional>
+#include <array>
 #include <string>
-#include <string_view>
-#include <vector>
 
 struct GLFWwindow;
 
 namespace vl::ui {
-
-enum class Panel { Visemes, Frequencies, Weights, Deformation, Refinement, Reduction, Export, Count };
-
-const char* panelName(Panel panel);
-std::optional<Panel> panelFromName(std::string_view name); // case-insensitive
-
-// What the main view shows.
-enum class ViewSubject { Visemes, Face };
-
-struct BrushSettings {
-    BrushRadius radius;    // screen pixels or % of the head size
-    float strength = 0.5f; // per dab
-    int falloff = 1;       // index into the core's falloff kinds
-    int mode = 0;          // 0 add, 1 subtract, 2 smooth
-    bool symmetric = true;
-    bool frontFacesOnly = true; // no paint through to the back of the head (WeightBrush::eye)
-    bool enabled = false;
-};
-
-// What a left drag on the mesh does while painting is on (Weights panel).
-enum class PaintTool { Brush, FillRegion, SelectBox };
 
 class EditorUi {
   public:
@@ -52,228 +33,63 @@ class EditorUi {
 
     // Builds the whole interface for one frame (between ImGui::NewFrame and ImGui::Render).
     void frame();
+    // What a GUI test checks after a click (see GuiProbe.h): panel, undo history, messages, tasks,
+    // and each panel's part.
+    nlohmann::json probeSummary();
+    // True when the user asked to quit and either nothing is unsaved or they confirmed.
+    bool quitConfirmed() const { return files_.quitConfirmed(); }
+
+    // Start options (EditorApp).
     void selectPanel(Panel panel);
-    void setWireframe(bool on) { wireframe_ = on; }
+    void setWireframe(bool on) { views_.wireframe = on; }
     // "errors", "skin" or "overlay" (--merged); throws InputError for another name.
-    void setMergedDisplay(const std::string& name);
+    void setMergedDisplay(const std::string& name) { reduction_.setMergedDisplay(name); }
     // Turns painting on with this operation (0 add, 1 subtract, 2 smooth).
-    void enableBrush(int operation) {
-        brush_.enabled = true;
-        brush_.mode = operation;
-    }
+    void enableBrush(int operation);
     // Selects the first analytic region of the cascade stage with this name (Deformation panel).
-    bool selectField(const std::string& stageName);
+    bool selectField(const std::string& stageName) { return deformation_.selectField(stageName); }
     // Starts the phoneme-sequence playback at `time` seconds.
-    void startPlayback(double time, std::string sequence = {});
+    void startPlayback(double time, std::string sequence = {}) {
+        speech_.playSequence(std::move(sequence), time);
+    }
     // Says the document's speech text (Say button) and, once spoken, shows it at `time` seconds,
     // paused when `pause` (screenshots of a moment mid-sentence).
-    void startSay(double time = 0.0, bool pause = false);
-    Panel activePanel() const { return activePanel_; }
-    // Frames every 3D view on its model (key F).
-    void frameAll();
-    // True when the user asked to quit and either nothing is unsaved or they confirmed.
-    bool quitConfirmed() const { return quitConfirmed_; }
-    void requestQuit();
-    // What a GUI test checks after a click (see GuiProbe.h): panel, undo history, messages, tasks.
-    nlohmann::json probeSummary();
-
-    EditorSession& session;
+    void startSay(double time = 0.0, bool pause = false) { speech_.say(time, pause); }
+    // Opens the map editor's assignment from a bundled map id ("oculus", ...) or "per-phoneme".
+    void startMapFrom(const std::string& id) { frequencies_.startMapFrom(id); }
 
   private:
-    friend struct PanelAccess;
+    // --- the frame (EditorUi.cpp) ---
     void menuBar();
-    // The status bar: its height this frame (a long message wraps onto more lines), then the bar.
+    void shortcuts();
+    void sidePanel(float top, float width, float height);
+    // The status bar (StatusBar.cpp): its height this frame (a long message wraps onto more
+    // lines), then the bar.
     float statusBarHeight();
     void statusBar(float height);
-    void sidePanel(float top, float width, float height);
-    void views(float left, float top, float width, float height);
-    void shortcuts();
-    void unsavedChangesPopup();
-    void fileDialogs();
-    void syncGpu();
-    void frameNewMeshes();
 
-    void visemesPanel();
-    void frequenciesPanel();
-    void weightsPanel();
-    void deformationPanel();
-    void parameterSliders(); // the face's preset, defaults and parameter sliders (Deformation, Refinement)
-    void refinementPanel();
-    void reductionPanel();
-    void exportPanel();
-    // The (u,v) inset over the face view: a title bar that moves it and the square (u,v) domain,
-    // whose drawing is clipped to its frame. Where it sits is view state (uvInsetOffset_).
-    struct UvInsetPlace {
-        ImVec2 min, max; // the whole inset, title bar included
-        float side = 0.0f, titleHeight = 0.0f;
-        ImVec2 offsetMin, offsetMax; // the offsets that keep it inside the view
-    };
-    UvInsetPlace uvInsetPlace(ImVec2 viewMin, ImVec2 viewMax) const;
-    void uvInset(const UvInsetPlace& place, int stage, int influence);
-    void uvView(int stage, int influence, float side);
-
-    void mainView(ImVec2 size);
-    void comparisonViews(ImVec2 size);
-    std::vector<float> visemeWeights(int viseme) const;
-    ColorMode surfaceColours() const; // face colours for visemes generated from the face model
-    void paint(const ViewportEvents& events);
-    void updateScalars();
-
-    // Asks for confirmation first when there are unsaved changes.
-    void guarded(std::function<void()> action);
-    // Saves the project in the background; asks for a file first when `askForFile` or it has none.
-    // `then` runs once the save has recorded the document (used by the unsaved-changes prompt).
-    void saveProject(bool askForFile, std::function<void()> then = {});
-
+    EditorSession& session_;
     GLFWwindow* window_;
-    GlShader shader_;
-    GpuMesh visemeMesh_; // neutral + one target per viseme
-    GpuMesh mergedMesh_; // neutral + one target per merged group
-    GpuMesh faceMesh_;   // face cascade at q = 0 + one target per parameter
-    GpuMesh partsMesh_;  // the head's parts (eyeballs, teeth, tongue, cavity) in the same form
-    Viewport mainView_, beforeView_, afterView_;
-    std::uint64_t uploadedGeometry_ = 0;
-    // Caches hold what they show (shared, immutable) or its revision, never a bare address that a
-    // later allocation could reuse.
-    std::shared_ptr<const DeformationCascade> uploadedCascade_;
-    std::shared_ptr<const MeshData> uploadedDomain_;
-    std::shared_ptr<const HeadPartSamples> uploadedParts_; // what partsMesh_ holds
-    // What the face view drew in its last frame (for the probe): the panel, the weights, and the
-    // triangles of skin and parts.
-    struct ShownFace {
-        Panel panel = Panel::Count;
-        std::vector<float> weights;
-        std::size_t skinTriangles = 0, partTriangles = 0;
-    } shownFace_;
-    nlohmann::json faceViewProbe() const;
-    std::uint64_t uploadedMergedCurve_ = 0; // ReductionService::curveRevision()
-    int uploadedMergedGroups_ = 0;
-    // What each mesh's scalars currently show, to re-upload only on change.
-    std::string weightsKey_, errorKey_, influenceKey_;
-
     Panel activePanel_ = Panel::Visemes;
     bool panelSelectPending_ = true;
-    ViewSubject subject_ = ViewSubject::Visemes;
-    bool wireframe_ = true;
-    bool showWeightsColours_ = true;
-    bool showFieldInfluence_ = true;
-    int selectedStage_ = -1, selectedInfluence_ = 0;
-    BrushSettings brush_;
-    bool strokeActive_ = false;
-    std::vector<double> strokeStart_;
-    std::vector<double> strokeWeights_;
-    std::optional<Vec3> lastDab_;
-    FileDialog fileDialog_;
-    std::function<void()> pendingGuarded_;
-    bool openUnsavedPopup_ = false;
-    bool quitConfirmed_ = false;
+    FileActions files_{session_};
+    SpeechPlayer speech_{session_};
+    PanelContext context_{session_, files_, speech_};
+    AvatarPanel avatar_{context_}; // sections of the Visemes and Export panels, and the File menu's
+    VisemesPanel visemes_{context_, avatar_};
+    FrequenciesPanel frequencies_{context_};
+    // The views show what the panels below hold (bound now, used from the first frame on).
+    EditorViews views_{session_, speech_, {weights_, deformation_, reduction_}};
+    WeightsPanel weights_{context_, views_.mainView()};
+    DeformationPanel deformation_{context_};
+    RefinementPanel refinement_{context_};
+    ReductionPanel reduction_{context_};
+    ExportPanel export_{context_, avatar_};
+    // The tabs, in the order of Panel.
+    const std::array<SidePanel*, static_cast<std::size_t>(Panel::Count)> panels_{
+        &visemes_, &frequencies_, &weights_, &deformation_, &refinement_, &reduction_, &export_};
 
-    // --- own face (issue 15): Deformation > Use my mesh... and its landmark step (OwnFaceStep.cpp) ---
-    void openOwnFaceMesh();
-    void ownFaceStep();
-    nlohmann::json ownFaceProbe() const;
-    std::optional<OwnFaceCandidate> ownFace_;                  // the mesh whose landmarks await confirmation
-    std::shared_ptr<const DeformationCascade> ownFaceCascade_; // the cascade ownFaceLoaded_ was found for
-    bool ownFaceLoaded_ = false;                               // the face is built from a user's mesh
-    // How the Reduction panel shows the cost curve (view state, not saved).
-    struct CostView {
-        bool logarithmic = true;
-        bool percent = false;
-        int unit = 0; // 0 auto (guessed from the head size), then m, cm, mm, in
-    } costView_;
-    // The Reduction panel's constraint editor: the visemes chosen in its combos (view state).
-    struct ConstraintChoice {
-        int pin = 0, first = 0, second = 1;
-    } constraintChoice_;
-    void constraintsSection();
-    void restModelSection(); // the Reduction panel's model: rest free or a key (panels/RestModelSection.cpp)
-    double errorLegendMax_ = 0.0; // largest weighted distance of the error colours, model units
-    // Millimetres per model unit: the chosen unit, or the guess from the neutral mesh's size.
-    double millimetresPerModelUnit() const;
-    // --- Say (issue 11): speech played on the full and the reduced faces. The text, voice and rate
-    // are document state (session.setSpeech); what is below is view state.
-    struct SayView {
-        double time = 0.0;             // seconds into the clip
-        bool playing = false;          // the clock runs (audio or frame time)
-        bool shown = false;            // the views show the clip, not the compared viseme
-        std::uint64_t clip = 0;        // id of the clip this state belongs to
-        std::optional<double> startAt; // a new clip starts here (start options)
-        bool startPaused = false;
-        std::string draft;           // the text box; committed on Say or when the box is left
-        std::string syncedText;      // the document's text the draft was last synced with
-        float secondsPerKey = 0.18f; // typed sequences
-        std::string sequence;        // typed sequence: phonemes or viseme names
-        std::shared_ptr<const std::vector<std::int16_t>> audio; // the clip's samples for the player
-    } say_;
-    AudioPlayer audio_;
-    void saySection();             // the Reduction panel's Say controls (panels/SaySection.cpp)
-    void sayTimeline(ImVec2 size); // phonemes, both cue rows, the error plot; scrubbing
-    void advanceSpeech();          // once per frame: adopt a new clip, run the clock
-    void playSpeech(double from);
-    void pauseSpeech();
-    bool speechShown() const { return say_.shown && session.speechClip() != nullptr; }
-    // Key weights of the full (visemes) or reduced (groups) face at the playhead; empty when none.
-    std::vector<float> speechWeights(bool reduced);
-    nlohmann::json sayProbe();
-    std::string importName_;
-    std::string importError_; // the core's message for the last failed import, shown in the panel
-
-    // --- avatars (File > Import avatar..., panels/AvatarPanel.cpp) ---------------------------------
-    GpuMesh contextMesh_;                                 // the avatar's meshes without visemes, drawn greyed
-    std::shared_ptr<const AvatarScan> uploadedContext_;   // the scan contextMesh_ shows
-    std::string avatarPattern_;                           // the target pattern being typed (view state)
-    std::shared_ptr<const AvatarScan> avatarPatternScan_; // the scan avatarPattern_ was last reset from
-    int avatarNames_ = 0;                                 // export: 0 original names, 1 merged
-    bool avatarTargetNormals_ = true;                     // export: NORMAL/TANGENT displacements of the keys
-    int avatarGltfpack_ = -1;                  // export: re-compress (1), not (0), -1: as the input was
-    std::filesystem::path avatarGltfpackPath_; // found once (core/gltf/Gltfpack.h); empty: none
-    bool avatarGltfpackSearched_ = false;
-    void avatarGltfpackOption();
-    bool avatarGltfpackChosen() const;
-    int avatarMeshRow_ = -1;              // the mesh whose import report is shown
-    std::string avatarMeshReport() const; // that report (empty: none selected)
-    void openAvatarImport();
-    void openAvatarExport();
-    void avatarSection();       // Visemes panel: file, target pattern, meshes and their targets
-    void avatarExportSection(); // Export panel
-    void syncContextMesh();
-    void drawContext(const glm::mat4& view, const glm::mat4& projection) const;
-
-    // --- issue 14 polish (view state): paint tools, one camera per subject ----------------------
-    struct PaintToolState {
-        PaintTool tool = PaintTool::Brush;
-        float fillValue = 1.0f;
-        float fillTolerance = 0.05f;          // region fill: largest difference to the seed's weight
-        std::vector<std::uint32_t> selection; // selected vertices, increasing
-        std::optional<ImVec2> boxStart;       // screen corner of the box being dragged
-        std::optional<double> readout;        // weight under the cursor (last frame)
-        std::uint32_t readoutVertex = 0;      // the vertex nearest to the cursor's hit
-        double modelRadius = 0.0;             // the brush radius at the cursor, model units
-        double unitsPerPixel = 0.0;           // model units per screen pixel at the cursor
-        std::optional<Vec3> boxEye;           // the camera position of the last box selection
-    } paintTool_;
-    // For the probe: how many selected vertices the eye of the last box does not see, found by ray
-    // picking (recomputed when the selection changes).
-    struct HiddenCount {
-        std::vector<std::uint32_t> selection;
-        Vec3 eye;
-        std::size_t hidden = 0;
-    };
-    mutable std::optional<HiddenCount> selectionHidden_;
-    std::size_t selectedHidden() const;
-    std::vector<double> shownWeights_; // the metric's weights as the colours show them
-    std::shared_ptr<const VisemeSet> paintSurfaceSet_;
-    PaintSurface paintSurface_;
-    const PaintSurface& paintSurface(); // of the viseme set's neutral, rebuilt when the set changes
-    std::vector<double> paintStartWeights() const;
-    void paintBrush(const ViewportEvents& events, const std::optional<RayHit>& hit);
-    void paintBoxSelection(const ViewportEvents& events);
-    void drawSelection(const ViewportEvents& events);
-    void fillVertices(const std::vector<std::uint32_t>& vertices, const char* action);
-    nlohmann::json paintSummary() const;
-    nlohmann::json polishSummary() const;  // what the polish tests assert, merged into probeSummary()
-    nlohmann::json reductionProbe() const; // running, the bound of a branch and bound, the current proof
-    // The status bar's message (expiring, wrapped to at most kStatusLines lines) as laid out this frame.
+    // The status bar's message (expiring, wrapped to at most a few lines) as laid out this frame.
     StatusLine statusLine_;
     struct StatusLayout {
         std::string stats, message; // the message as shown: cut with "..." when it needs more lines
@@ -282,50 +98,6 @@ class EditorUi {
         int lines = 0;
     } status_;
     bool statusHovered_ = false;
-    // The camera of each subject, kept across tabs; framed when its mesh first appears.
-    OrbitCamera visemeCamera_, faceCamera_;
-    bool frameVisemes_ = true, frameFace_ = true;
-    // The (u,v) inset's top-left corner relative to the view's lower-right default place (moved by
-    // dragging its title bar; kept inside the view).
-    ImVec2 uvInsetOffset_{0.0f, 0.0f};
-    // How the Reduction panel's right view shows the merged shape.
-    enum class MergedDisplay { ErrorColours, Skin, Overlay } mergedDisplay_ = MergedDisplay::ErrorColours;
-
-    // --- viseme authoring and the phoneme map editor (ui/panels/VisemeAuthoring.cpp,
-    // StoreSlidersSection.cpp, PhonemeMapEditor.cpp); view state only, the edits are the session's.
-  public:
-    // Opens the map editor's assignment from a bundled map id ("oculus", ...) or "per-phoneme".
-    void startMapFrom(const std::string& id);
-
-  private:
-    // What the authoring tests check, merged into probeSummary(): viseme names, presets, the map.
-    nlohmann::json authoringProbe() const;
-    void visemeAuthoring(); // Visemes panel: rename, duplicate, move, delete the selected viseme
-    void deleteVisemePopup();
-    void storeSlidersSection(); // Deformation panel: the sliders as a new or existing viseme, presets
-    void phonemeMapEditor();    // Frequencies panel: start a map, one row per phoneme, by viseme
-    void mapStartSection();
-    void openMapStart(std::string title, const PhonemeVisemeMap& map);
-    void restVisemeRow(); // a viseme with the neutral's shape, e.g. "sil" for the pause
-    struct AuthoringView {
-        int nameFor = -2;               // the viseme whose name the rename field holds
-        std::uint64_t nameDocument = 0; // ... in this document state
-        bool editingName = false;       // the field had the keyboard last frame
-        std::string name;               // the rename field
-        bool openDelete = false;        // open the delete popup next frame
-        int deleteIndex = -1;           // the viseme the popup deletes
-        std::string phonemesGoTo;       // where its phonemes go
-        std::string newViseme;          // Deformation: name of a new viseme from the sliders
-        std::string storeInto;          // Deformation: the existing preset or viseme to store into
-        std::string restName = "sil";   // Frequencies: name of a rest viseme to add
-    } authoring_;
-    struct MapStartView {
-        bool open = false;
-        std::string title; // the map it starts from, for the panel and the undo step
-        FrequencyTable table;
-        PhonemeVisemeMap map;
-        std::vector<edit::MapAssignment> rows;
-    } mapStart_;
 };
 
 } // namespace vl::ui

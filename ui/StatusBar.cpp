@@ -38,24 +38,16 @@ std::string fitted(const std::string& text, float width, int maxLines) {
 
 float EditorUi::statusBarHeight() {
     const ImGuiIO& io = ImGui::GetIO();
-    status_.stats = "No mesh";
-    if (subject_ == ViewSubject::Face && session.face().cascade) {
-        status_.stats = "Face: " + std::to_string(faceMesh_.vertexCount()) + " vertices, " +
-                        std::to_string(faceMesh_.triangleCount()) + " triangles, " +
-                        std::to_string(session.face().parameters.size()) + " parameters";
-    } else if (const VisemeSet* set = session.visemes()) {
-        status_.stats = std::to_string(set->size()) + " visemes, " + std::to_string(set->vertexCount()) +
-                        " vertices, " + std::to_string(set->neutral.triangles.size()) + " triangles";
-    }
+    status_.stats = views_.statistics();
     // The message column starts after the statistics and the progress bars shown this frame.
     float x = kPadding + ImGui::CalcTextSize(status_.stats.c_str()).x;
-    for (const bool running : {session.loading(), session.saving(), session.exporting()})
+    for (const bool running : {session_.loading(), session_.saving(), session_.exporting()})
         if (running) x += kProgressGap + 200.0f;
-    if (session.refinementRunning()) x += kProgressGap + 120.0f;
-    if (session.reductionRunning()) x += kProgressGap + 160.0f;
+    if (session_.refinementRunning()) x += kProgressGap + 120.0f;
+    if (session_.reductionRunning()) x += kProgressGap + 160.0f;
     status_.messageX = std::max(x + 30.0f, io.DisplaySize.x * 0.3f);
     status_.wrapWidth = std::max(80.0f, io.DisplaySize.x - status_.messageX - kPadding);
-    const auto& messages = session.messages();
+    const auto& messages = session_.messages();
     status_.shown =
         statusLine_.update(messages.empty() ? nullptr : &messages.back(), ImGui::GetTime(), statusHovered_);
     status_.message =
@@ -74,25 +66,25 @@ void EditorUi::statusBar(float height) {
     statusHovered_ = ImGui::IsWindowHovered();
     ImGui::TextUnformatted(status_.stats.c_str());
     const float bar = ImGui::GetFrameHeight();
-    if (session.loading()) {
+    if (session_.loading()) {
         ImGui::SameLine();
         ImGui::ProgressBar(-1.0f * static_cast<float>(ImGui::GetTime()), ImVec2(200, bar),
-                           session.loadingLabel().c_str());
+                           session_.loadingLabel().c_str());
     }
     // File work runs on workers too: an indeterminate bar each while it lasts.
-    for (const auto& [running, label] : {std::pair{session.saving(), session.savingLabel()},
-                                         std::pair{session.exporting(), session.exportingLabel()}}) {
+    for (const auto& [running, label] : {std::pair{session_.saving(), session_.savingLabel()},
+                                         std::pair{session_.exporting(), session_.exportingLabel()}}) {
         if (!running) continue;
         ImGui::SameLine();
         ImGui::ProgressBar(-1.0f * static_cast<float>(ImGui::GetTime()), ImVec2(200, bar), label.c_str());
     }
-    if (session.refinementRunning()) {
+    if (session_.refinementRunning()) {
         ImGui::SameLine();
         ImGui::ProgressBar(-1.0f * static_cast<float>(ImGui::GetTime()), ImVec2(120, bar), "refining");
     }
-    if (session.reductionRunning()) {
+    if (session_.reductionRunning()) {
         ImGui::SameLine();
-        ImGui::ProgressBar(static_cast<float>(session.reductionProgress()), ImVec2(160, bar), "reducing");
+        ImGui::ProgressBar(static_cast<float>(session_.reductionProgress()), ImVec2(160, bar), "reducing");
     }
     if (status_.shown) {
         ImGui::SameLine(status_.messageX);
@@ -106,11 +98,11 @@ void EditorUi::statusBar(float height) {
         ImGui::PopStyleColor();
         probe::recordArea(status_.shown->text.c_str(), "status");
     }
-    if (statusHovered_ && !session.messages().empty()) {
+    if (statusHovered_ && !session_.messages().empty()) {
         // The history, newest last, wrapped to a readable width.
         ImGui::BeginTooltip();
         ImGui::PushTextWrapPos(std::min(io.DisplaySize.x * 0.6f, 900.0f));
-        const auto& all = session.messages();
+        const auto& all = session_.messages();
         for (std::size_t i = all.size() > 12 ? all.size() - 12 : 0; i < all.size(); ++i) {
             const bool error = all[i].kind == StatusMessage::Kind::Error;
             ImGui::PushStyleColor(ImGuiCol_Text, error ? ImVec4(1.0f, 0.55f, 0.5f, 1.0f)

@@ -2,10 +2,11 @@
 // every mesh carrying them), the Visemes panel shows the avatar's meshes and the target pattern that
 // selects the visemes, the views show the meshes without visemes greyed, and File > Export avatar...
 // writes the same avatar with its visemes reduced. The work is the core's (core/document/AvatarDocument.h).
+#include "ui/panels/AvatarPanel.h"
 #include "core/gltf/AvatarReport.h"
 #include "core/gltf/AvatarScan.h"
 #include "core/gltf/Gltfpack.h"
-#include "ui/EditorUi.h"
+#include "ui/FileActions.h"
 #include "ui/panels/PanelWidgets.h"
 #include "ui/widgets/Controls.h"
 
@@ -13,65 +14,42 @@
 
 namespace vl::ui {
 
-void EditorUi::openAvatarImport() {
-    guarded([this] {
-        fileDialog_.open("Import avatar", FileDialog::Mode::OpenFile, {".glb", ".gltf", ".vrm"},
-                         [this](const auto& path) {
-                             session.attempt("Import avatar", [&] { session.startImportAvatar(path); });
-                         });
+void AvatarPanel::openImport() {
+    files_.guarded([this] {
+        files_.dialog().open("Import avatar", FileDialog::Mode::OpenFile, {".glb", ".gltf", ".vrm"},
+                             [this](const auto& path) {
+                                 session_.attempt("Import avatar", [&] { session_.startImportAvatar(path); });
+                             });
     });
 }
 
-void EditorUi::openAvatarExport() {
-    const DocumentAvatar& avatar = session.document().avatar;
+void AvatarPanel::openExport() {
+    const DocumentAvatar& avatar = session_.document().avatar;
     if (!avatar.isSet()) {
-        session.error("Export avatar: the document has no avatar: use File > Import avatar... first");
+        session_.error("Export avatar: the document has no avatar: use File > Import avatar... first");
         return;
     }
     std::string extension = avatar.file.extension().string();
     if (extension != ".vrm") extension = ".glb";
     EditorSession::AvatarExport options;
-    options.write.names = avatarNames_ == 1 ? AvatarNames::Merged : AvatarNames::Original;
-    options.write.targetNormals = avatarTargetNormals_;
-    options.gltfpack = avatarGltfpackChosen();
-    fileDialog_.open(
+    options.write.names = names_ == 1 ? AvatarNames::Merged : AvatarNames::Original;
+    options.write.targetNormals = targetNormals_;
+    options.gltfpack = gltfpackChosen();
+    files_.dialog().open(
         "Export avatar", FileDialog::Mode::SaveFile, {".glb", ".vrm"},
         [this, options](const auto& path) {
-            session.attempt("Export avatar", [&] { session.startExportAvatar(path, options); });
+            session_.attempt("Export avatar", [&] { session_.startExportAvatar(path, options); });
         },
         avatar.file.stem().string() + "_reduced" + extension);
 }
 
-void EditorUi::syncContextMesh() {
-    const DocumentAvatar& avatar = session.document().avatar;
-    if (avatar.scan == uploadedContext_) return;
-    uploadedContext_ = avatar.scan;
-    if (!avatar.isSet() || avatar.scan->context.positions.empty()) {
-        contextMesh_.setGeometry({}, {}, {});
-        return;
-    }
-    const MeshData& context = avatar.scan->context;
-    session.attempt("Display the avatar",
-                    [&] { contextMesh_.setGeometry(context.positions, context.triangles, {}); });
-}
-
-void EditorUi::drawContext(const glm::mat4& view, const glm::mat4& projection) const {
-    if (contextMesh_.empty()) return;
-    // Greyed: the meshes the reduction does not touch (body, hair, outfit), for orientation only.
-    DrawStyle grey;
-    grey.wireframe = false;
-    grey.color = ColorMode::Surface;
-    grey.surfaceColor = glm::vec3(0.36f, 0.37f, 0.40f);
-    contextMesh_.draw(shader_, {}, view, projection, grey);
-}
-
-void EditorUi::avatarSection() {
-    const DocumentAvatar& avatar = session.document().avatar;
+void AvatarPanel::visemesSection() {
+    const DocumentAvatar& avatar = session_.document().avatar;
     const AvatarScan& scan = *avatar.scan;
-    if (avatarPatternScan_ != avatar.scan) { // a new avatar, an applied pattern, an undo
-        avatarPattern_ = avatar.pattern;
-        if (avatarPatternScan_ && avatarMeshRow_ >= static_cast<int>(scan.meshes.size())) avatarMeshRow_ = -1;
-        avatarPatternScan_ = avatar.scan;
+    if (patternScan_ != avatar.scan) { // a new avatar, an applied pattern, an undo
+        pattern_ = avatar.pattern;
+        if (patternScan_ && meshRow_ >= static_cast<int>(scan.meshes.size())) meshRow_ = -1;
+        patternScan_ = avatar.scan;
     }
     sectionHeader("Avatar");
     ImGui::TextWrapped("%s", avatar.file.filename().string().c_str());
@@ -82,11 +60,11 @@ void EditorUi::avatarSection() {
     ImGui::TextUnformatted("Viseme targets");
     ImGui::SameLine();
     ImGui::SetNextItemWidth(200);
-    const bool entered = ctl::InputTextWithHint("##avatar-pattern", "Oculus viseme names", &avatarPattern_,
+    const bool entered = ctl::InputTextWithHint("##avatar-pattern", "Oculus viseme names", &pattern_,
                                                 ImGuiInputTextFlags_EnterReturnsTrue);
     ImGui::SameLine();
     if (ctl::Button("Apply pattern") || entered)
-        session.attempt("Viseme targets", [&] { session.setAvatarPattern(avatarPattern_); });
+        session_.attempt("Viseme targets", [&] { session_.setAvatarPattern(pattern_); });
     helpMarker("A glob over the morph target names, case-insensitive: * any text, ? one character, [AIUEO] "
                "one of, e.g. Fcl_MTH_[AIUEO] for VRoid, V_* for Character Creator. Empty: the Oculus visemes "
                "(viseme_sil ... viseme_U, with or without the prefix). Other targets (ARKit, expressions) "
@@ -115,8 +93,8 @@ void EditorUi::avatarSection() {
             if (!mesh.carriesVisemes)
                 ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
             // The first column only (not spanning the row): a table clips each column on its own.
-            if (ctl::Selectable(name.c_str(), avatarMeshRow_ == static_cast<int>(row)))
-                avatarMeshRow_ = static_cast<int>(row);
+            if (ctl::Selectable(name.c_str(), meshRow_ == static_cast<int>(row)))
+                meshRow_ = static_cast<int>(row);
             if (!mesh.carriesVisemes) ImGui::PopStyleColor();
             ImGui::TableNextColumn();
             ImGui::Text("%zu", mesh.primitives.size());
@@ -129,38 +107,37 @@ void EditorUi::avatarSection() {
         }
         ImGui::EndTable();
     }
-    if (avatarMeshRow_ >= 0 && static_cast<std::size_t>(avatarMeshRow_) < scan.meshes.size())
-        ImGui::TextWrapped("%s", avatarMeshReport().c_str());
+    if (meshRow_ >= 0 && static_cast<std::size_t>(meshRow_) < scan.meshes.size())
+        ImGui::TextWrapped("%s", meshReport().c_str());
     else
         ImGui::TextDisabled("Click a mesh for its primitives and which targets are visemes (and why the "
                             "others are not).");
 }
 
-std::string EditorUi::avatarMeshReport() const {
-    const DocumentAvatar& avatar = session.document().avatar;
-    if (!avatar.isSet() || avatarMeshRow_ < 0 ||
-        static_cast<std::size_t>(avatarMeshRow_) >= avatar.scan->meshes.size())
+std::string AvatarPanel::meshReport() const {
+    const DocumentAvatar& avatar = session_.document().avatar;
+    if (!avatar.isSet() || meshRow_ < 0 || static_cast<std::size_t>(meshRow_) >= avatar.scan->meshes.size())
         return {};
-    return formatAvatarMeshReport(avatar.scan->meshes[static_cast<std::size_t>(avatarMeshRow_)]);
+    return formatAvatarMeshReport(avatar.scan->meshes[static_cast<std::size_t>(meshRow_)]);
 }
 
-void EditorUi::avatarExportSection() {
+void AvatarPanel::exportSection() {
     sectionHeader("Avatar (the same avatar, visemes reduced)");
     ImGui::TextWrapped("Every mesh, skin, material, animation and extension is kept; the viseme targets of "
                        "%s become the m keys.",
-                       session.document().avatar.file.filename().string().c_str());
+                       session_.document().avatar.file.filename().string().c_str());
     ImGui::TextUnformatted("Target names:");
     ImGui::SameLine();
-    ctl::RadioButton("original (every viseme name stays)", &avatarNames_, 0);
+    ctl::RadioButton("original (every viseme name stays)", &names_, 0);
     ImGui::SameLine();
-    ctl::RadioButton("merged (one target per key)", &avatarNames_, 1);
-    ctl::Checkbox("normals of the keys (NORMAL/TANGENT displacements)", &avatarTargetNormals_);
-    avatarGltfpackOption();
-    if (ctl::Button("Export avatar...", ImVec2(200, 0))) openAvatarExport();
+    ctl::RadioButton("merged (one target per key)", &names_, 1);
+    ctl::Checkbox("normals of the keys (NORMAL/TANGENT displacements)", &targetNormals_);
+    gltfpackOption();
+    if (ctl::Button("Export avatar...", ImVec2(200, 0))) openExport();
     ImGui::SameLine();
     noteText("a .glb (or .vrm), never the file it was read from");
     // What the last export wrote, read back from the file: a runtime drives these targets.
-    if (const auto& lines = session.lastAvatarExport(); !lines.empty()) {
+    if (const auto& lines = session_.lastAvatarExport(); !lines.empty()) {
         ImGui::TextUnformatted("Last export, which target carries which key:");
         for (const std::string& line : lines) {
             ImGui::Bullet();
@@ -172,31 +149,53 @@ void EditorUi::avatarExportSection() {
 // Re-compression offered where it can run: gltfpack found, and not a VRM (gltfpack renumbers what
 // the VRM extension addresses). Checked by default when the avatar came in compressed, so a
 // compressed avatar goes out compressed unless the designer says otherwise.
-void EditorUi::avatarGltfpackOption() {
-    const DocumentAvatar& avatar = session.document().avatar;
-    if (!avatarGltfpackSearched_) {
-        avatarGltfpackPath_ = findGltfpack();
-        avatarGltfpackSearched_ = true;
+void AvatarPanel::gltfpackOption() {
+    const DocumentAvatar& avatar = session_.document().avatar;
+    if (!gltfpackSearched_) {
+        gltfpackPath_ = findGltfpack();
+        gltfpackSearched_ = true;
     }
     const bool vrm = avatar.file.extension() == ".vrm";
-    const bool available = !avatarGltfpackPath_.empty() && !vrm;
-    bool chosen = avatarGltfpackChosen();
+    const bool available = !gltfpackPath_.empty() && !vrm;
+    bool chosen = gltfpackChosen();
     ImGui::BeginDisabled(!available);
     if (ctl::Checkbox("re-compress with gltfpack (meshopt + quantised, like real exporters)", &chosen))
-        avatarGltfpack_ = chosen ? 1 : 0;
+        gltfpack_ = chosen ? 1 : 0;
     ImGui::EndDisabled();
     if (vrm)
         noteText("not for a VRM: gltfpack renumbers the nodes and meshes its extension refers to");
-    else if (avatarGltfpackPath_.empty())
+    else if (gltfpackPath_.empty())
         noteText((std::string("gltfpack not found: ") + kGltfpackHint).c_str());
     else if (avatarStoredCompressed(*avatar.scan))
         noteText("the avatar was read compressed; without this its keys are written as plain floats");
 }
 
-bool EditorUi::avatarGltfpackChosen() const {
-    const DocumentAvatar& avatar = session.document().avatar;
-    if (!avatar.isSet() || avatarGltfpackPath_.empty() || avatar.file.extension() == ".vrm") return false;
-    return avatarGltfpack_ < 0 ? avatarStoredCompressed(*avatar.scan) : avatarGltfpack_ == 1;
+bool AvatarPanel::gltfpackChosen() const {
+    const DocumentAvatar& avatar = session_.document().avatar;
+    if (!avatar.isSet() || gltfpackPath_.empty() || avatar.file.extension() == ".vrm") return false;
+    return gltfpack_ < 0 ? avatarStoredCompressed(*avatar.scan) : gltfpack_ == 1;
+}
+
+void AvatarPanel::addProbe(nlohmann::json& summary) const {
+    // The file, its pattern, the meshes shown and greyed.
+    const Document& document = session_.document();
+    const DocumentAvatar& avatar = document.avatar;
+    nlohmann::json shown = nullptr;
+    if (avatar.isSet()) {
+        nlohmann::json meshes = nlohmann::json::array();
+        for (const AvatarMesh& mesh : avatar.scan->meshes)
+            meshes.push_back({{"name", mesh.name}, {"visemes", mesh.carriesVisemes}});
+        shown = {{"file", avatar.file.string()},
+                 {"pattern", avatar.pattern},
+                 {"added_rest", avatar.scan->addedRest},
+                 {"visemes", visemeNames(document)},
+                 {"meshes", std::move(meshes)},
+                 {"viseme_vertices", document.visemes->vertexCount()},
+                 {"greyed_vertices", avatar.scan->context.positions.size()}};
+    }
+    summary["avatar"] = std::move(shown);
+    summary["avatar_mesh_report"] = meshReport();
+    summary["avatar_gltfpack"] = gltfpackChosen();
 }
 
 } // namespace vl::ui

@@ -1,7 +1,8 @@
 // The Reduction panel's constraints: visemes pinned as their own key (PP, so the lips close for p, b,
 // m), pairs kept apart, pairs kept together. Every change is one undoable edit of the document; the
 // core checks it (known names, no contradiction) and the reduction honours it exactly.
-#include "ui/EditorUi.h"
+#include "ui/panels/ConstraintsSection.h"
+
 #include "ui/panels/PanelWidgets.h"
 #include "ui/widgets/Controls.h"
 
@@ -32,19 +33,19 @@ bool visemeCombo(const char* label, const VisemeSet& set, int& choice) {
 
 } // namespace
 
-void EditorUi::constraintsSection() {
-    const VisemeSet* set = session.visemes();
+void ConstraintsSection::draw() {
+    const VisemeSet* set = session_.visemes();
     if (!set || set->size() < 2) return;
     sectionHeader("Constraints");
-    ConstraintNames constraints = session.document().constraints;
+    ConstraintNames constraints = session_.document().constraints;
     bool changed = false;
     const auto nameOf = [&](int i) { return set->visemes[static_cast<std::size_t>(i)].name; };
 
     ImGui::SetNextItemWidth(110);
-    visemeCombo("##pinned viseme", *set, constraintChoice_.pin);
+    visemeCombo("##pinned viseme", *set, pin_);
     ImGui::SameLine();
     if (ctl::Button("Pin as its own key")) {
-        const std::string name = nameOf(constraintChoice_.pin);
+        const std::string name = nameOf(pin_);
         if (std::find(constraints.pinned.begin(), constraints.pinned.end(), name) ==
             constraints.pinned.end()) {
             constraints.pinned.push_back(name);
@@ -54,13 +55,12 @@ void EditorUi::constraintsSection() {
     helpMarker("A pinned viseme is never merged with another (e.g. PP, so the lips close for p, b, m).");
 
     ImGui::SetNextItemWidth(110);
-    visemeCombo("##first of pair", *set, constraintChoice_.first);
+    visemeCombo("##first of pair", *set, first_);
     ImGui::SameLine();
     ImGui::SetNextItemWidth(110);
-    visemeCombo("##second of pair", *set, constraintChoice_.second);
+    visemeCombo("##second of pair", *set, second_);
     ImGui::SameLine();
-    const std::pair<std::string, std::string> pair{nameOf(constraintChoice_.first),
-                                                   nameOf(constraintChoice_.second)};
+    const std::pair<std::string, std::string> pair{nameOf(first_), nameOf(second_)};
     if (ctl::Button("Keep apart")) {
         constraints.apart.push_back(pair);
         changed = true;
@@ -102,7 +102,7 @@ void EditorUi::constraintsSection() {
             break;
         }
     if (constraints.empty()) ImGui::TextDisabled("No constraints: the optimum over all groupings.");
-    if (changed) session.attempt("Constraints", [&] { session.setConstraints(std::move(constraints)); });
+    if (changed) session_.attempt("Constraints", [&] { session_.setConstraints(std::move(constraints)); });
 }
 
 } // namespace vl::ui

@@ -1,11 +1,14 @@
 // Deformation panel: one live slider per cascade parameter, viseme presets (stored from the sliders
 // in StoreSlidersSection.cpp), the base geometry (retargeting) and editing of the analytic influence
 // regions, drawn on the face and in (u,v).
+#include "ui/panels/DeformationPanel.h"
+
 #include "core/deform/Visemes.h"
 #include "core/document/VisemeCommands.h"
 #include "core/project/BuiltinGeometry.h"
-#include "ui/EditorUi.h"
+#include "ui/FileActions.h"
 #include "ui/panels/PanelWidgets.h"
+#include "ui/panels/ParameterSliders.h"
 #include "ui/widgets/Controls.h"
 
 #include <imgui.h>
@@ -27,20 +30,20 @@ bool dragVec2(const char* label, Vec2& v, float speed, float lo, float hi) {
 
 } // namespace
 
-void EditorUi::deformationPanel() {
-    const FaceModel& model = session.face();
+void DeformationPanel::draw() {
+    const FaceModel& model = session_.face();
     if (!model.cascade) {
         ImGui::TextWrapped(
             "The deformable face is a cascade of vector fields on the (u,v) square: a base geometry "
             "plus one field per muscle parameter.");
-        if (ctl::Button("Load bundled face")) session.attempt("Load face", [&] { session.loadFace(); });
+        if (ctl::Button("Load bundled face")) session_.attempt("Load face", [&] { session_.loadFace(); });
         ImGui::SameLine();
-        if (ctl::Button("Use my mesh...")) openOwnFaceMesh();
-        if (ownFace_) ownFaceStep();
+        if (ctl::Button("Use my mesh...")) ownFace_.open();
+        if (ownFace_.active()) ownFace_.draw();
         return;
     }
-    if (ownFace_) {
-        ownFaceStep();
+    if (ownFace_.active()) {
+        ownFace_.draw();
         return;
     }
     const DeformationCascade& cascade = *model.cascade;
@@ -55,25 +58,25 @@ void EditorUi::deformationPanel() {
     if (ownFaceLoaded_) {
         ImGui::TextWrapped("Your face: %s", cascade.name.c_str());
         if (ctl::Button("Back to the bundled face"))
-            session.attempt("Load face", [&] { session.loadFace(); });
+            session_.attempt("Load face", [&] { session_.loadFace(); });
     } else {
         int individual = static_cast<int>(model.individual);
         bool retargeted = ctl::RadioButton("bundled", &individual, 0);
         ImGui::SameLine();
         retargeted |= ctl::RadioButton("retarget (2nd individual)", &individual, 1);
         if (retargeted)
-            session.attempt("Retarget",
-                            [&] { session.setIndividual(static_cast<face::Individual>(individual)); });
+            session_.attempt("Retarget",
+                             [&] { session_.setIndividual(static_cast<face::Individual>(individual)); });
     }
     ImGui::SameLine();
-    if (ctl::Button("Use my mesh...")) openOwnFaceMesh();
+    if (ctl::Button("Use my mesh...")) ownFace_.open();
 
     sectionHeader("Parameters");
-    parameterSliders();
-    storeSlidersSection();
+    parameterSliders(session_);
+    storeSliders_.draw();
 
     sectionHeader("Fields");
-    ctl::Checkbox("Show influence on the face", &showFieldInfluence_);
+    ctl::Checkbox("Show influence on the face", &showInfluence_);
     if (ImGui::BeginListBox("##stages", ImVec2(-1, 6.5f * ImGui::GetTextLineHeightWithSpacing()))) {
         for (std::size_t s = 0; s < cascade.stages.size(); ++s) {
             const DeformationStage& stage = cascade.stages[s];
@@ -83,37 +86,37 @@ void EditorUi::deformationPanel() {
                 if (stage.kind == StageKind::AddVector)
                     label += "  <- " + cascade.parameters[stage.parameter].name;
                 const bool selected =
-                    selectedStage_ == static_cast<int>(s) && selectedInfluence_ == static_cast<int>(r);
+                    selected_.stage == static_cast<int>(s) && selected_.influence == static_cast<int>(r);
                 ImGui::PushID(static_cast<int>(s * 1000 + r));
                 if (ctl::Selectable(label.c_str(), selected)) {
-                    selectedStage_ = static_cast<int>(s);
-                    selectedInfluence_ = static_cast<int>(r);
+                    selected_.stage = static_cast<int>(s);
+                    selected_.influence = static_cast<int>(r);
                 }
                 ImGui::PopID();
             }
         }
         ImGui::EndListBox();
     }
-    if (selectedStage_ < 0 || selectedStage_ >= static_cast<int>(cascade.stages.size())) {
+    if (selected_.stage < 0 || selected_.stage >= static_cast<int>(cascade.stages.size())) {
         ImGui::TextDisabled("Select an analytic field to edit it.");
     } else {
-        const auto& influences = cascade.stages[static_cast<std::size_t>(selectedStage_)].field.influences;
-        if (selectedInfluence_ < static_cast<int>(influences.size())) {
-            InfluenceField field = influences[static_cast<std::size_t>(selectedInfluence_)];
+        const auto& influences = cascade.stages[static_cast<std::size_t>(selected_.stage)].field.influences;
+        if (selected_.influence < static_cast<int>(influences.size())) {
+            InfluenceField field = influences[static_cast<std::size_t>(selected_.influence)];
             bool changed = false;
             ImGui::PushItemWidth(-110);
             changed |= dragVec2("centre (u,v)", field.centre, 0.002f, 0.0f, 1.0f);
-            endEditOnRelease(session);
+            endEditOnRelease(session_);
             changed |= dragVec2("radii", field.radii, 0.002f, 0.005f, 1.0f);
-            endEditOnRelease(session);
+            endEditOnRelease(session_);
             changed |= dragVec2("plateau", field.plateau, 0.002f, 0.0f, 1.0f);
-            endEditOnRelease(session);
+            endEditOnRelease(session_);
             float degrees = static_cast<float>(field.rotation * 180.0 / M_PI);
             if (ctl::SliderFloat("rotation", &degrees, -180.0f, 180.0f, "%.0f deg")) {
                 field.rotation = degrees * M_PI / 180.0;
                 changed = true;
             }
-            endEditOnRelease(session);
+            endEditOnRelease(session_);
             float direction[3] = {static_cast<float>(field.direction[0]),
                                   static_cast<float>(field.direction[1]),
                                   static_cast<float>(field.direction[2])};
@@ -121,13 +124,13 @@ void EditorUi::deformationPanel() {
                 field.direction = Vec3(direction[0], direction[1], direction[2]);
                 changed = true;
             }
-            endEditOnRelease(session);
+            endEditOnRelease(session_);
             float magnitude = static_cast<float>(field.magnitude);
             if (ctl::DragFloat("magnitude", &magnitude, 0.01f, -10.0f, 10.0f, "%.3f")) {
                 field.magnitude = magnitude;
                 changed = true;
             }
-            endEditOnRelease(session);
+            endEditOnRelease(session_);
             int falloff = static_cast<int>(field.falloff);
             const std::string current(falloffName(field.falloff));
             if (ctl::BeginCombo("falloff", current.c_str())) {
@@ -141,8 +144,8 @@ void EditorUi::deformationPanel() {
             }
             ImGui::PopItemWidth();
             if (changed)
-                session.attempt("Field",
-                                [&] { session.setInfluence(selectedStage_, selectedInfluence_, field); });
+                session_.attempt("Field",
+                                 [&] { session_.setInfluence(selected_.stage, selected_.influence, field); });
             ImGui::TextDisabled("The region is drawn on the face and in the (u,v) inset of the view.");
         }
     }
@@ -150,38 +153,12 @@ void EditorUi::deformationPanel() {
     sectionHeader("Visemes");
     ImGui::TextWrapped("Generate the face's viseme set (one mesh per viseme preset) to reduce it.");
     if (ctl::Button("Generate viseme set from face"))
-        guarded([this] { session.attempt("Generate visemes", [&] { session.generateVisemesFromFace(); }); });
+        files_.guarded(
+            [this] { session_.attempt("Generate visemes", [&] { session_.generateVisemesFromFace(); }); });
 }
 
-// The face's parameters: a viseme preset, the defaults, one live slider per parameter (also in the
-// Refinement panel: the view shows the face at these values).
-void EditorUi::parameterSliders() {
-    const FaceModel& model = session.face();
-    const DeformationCascade& cascade = *model.cascade;
-    if (ctl::BeginCombo("preset", "apply a viseme...", ImGuiComboFlags_HeightLargest)) {
-        for (const VisemeParameters& preset : edit::facePresets(model))
-            if (ctl::Selectable(preset.name.c_str()))
-                session.attempt("Preset", [&] { session.applyVisemePreset(preset.name); });
-        ImGui::EndCombo();
-    }
-    ImGui::SameLine();
-    if (ctl::Button("Defaults"))
-        session.attempt("Defaults", [&] { session.setParameters(cascade.defaults(), "Reset parameters"); });
-    for (std::size_t k = 0; k < cascade.parameters.size(); ++k) {
-        const DeformParameter& p = cascade.parameters[k];
-        float value = static_cast<float>(model.parameters[k]);
-        ImGui::PushID(static_cast<int>(k));
-        ImGui::SetNextItemWidth(-130);
-        if (ctl::SliderFloat(p.name.c_str(), &value, static_cast<float>(p.min), static_cast<float>(p.max),
-                             "%.2f"))
-            session.attempt("Parameter", [&] { session.setParameter(static_cast<int>(k), value); });
-        endEditOnRelease(session);
-        ImGui::PopID();
-    }
-}
-
-EditorUi::UvInsetPlace EditorUi::uvInsetPlace(ImVec2 viewMin, ImVec2 viewMax) const {
-    UvInsetPlace place;
+DeformationPanel::InsetPlace DeformationPanel::insetPlace(ImVec2 viewMin, ImVec2 viewMax) const {
+    InsetPlace place;
     const float margin = 16.0f;
     place.titleHeight = ImGui::GetTextLineHeight() + 6.0f;
     place.side = std::max(40.0f, std::min(300.0f, 0.35f * (viewMax.y - viewMin.y)));
@@ -191,21 +168,21 @@ EditorUi::UvInsetPlace EditorUi::uvInsetPlace(ImVec2 viewMin, ImVec2 viewMax) co
     place.offsetMin = ImVec2(viewMin.x - home.x, viewMin.y - home.y);
     place.offsetMax = ImVec2(std::max(place.offsetMin.x, viewMax.x - extent.x - home.x),
                              std::max(place.offsetMin.y, viewMax.y - extent.y - home.y));
-    place.min = ImVec2(home.x + std::clamp(uvInsetOffset_.x, place.offsetMin.x, place.offsetMax.x),
-                       home.y + std::clamp(uvInsetOffset_.y, place.offsetMin.y, place.offsetMax.y));
+    place.min = ImVec2(home.x + std::clamp(insetOffset_.x, place.offsetMin.x, place.offsetMax.x),
+                       home.y + std::clamp(insetOffset_.y, place.offsetMin.y, place.offsetMax.y));
     place.max = ImVec2(place.min.x + extent.x, place.min.y + extent.y);
     return place;
 }
 
-void EditorUi::uvInset(const UvInsetPlace& place, int stage, int influence) {
+void DeformationPanel::inset(const InsetPlace& place) {
     ImGui::SetCursorScreenPos(place.min);
     ctl::InvisibleButton("##uv-title", ImVec2(place.side, place.titleHeight));
     const bool moving = ImGui::IsItemActive();
     if (moving) {
         // Kept inside the view as it moves, so a drag past the edge does not have to be undone.
         const ImVec2 delta = ImGui::GetIO().MouseDelta;
-        uvInsetOffset_ = ImVec2(std::clamp(uvInsetOffset_.x + delta.x, place.offsetMin.x, place.offsetMax.x),
-                                std::clamp(uvInsetOffset_.y + delta.y, place.offsetMin.y, place.offsetMax.y));
+        insetOffset_ = ImVec2(std::clamp(insetOffset_.x + delta.x, place.offsetMin.x, place.offsetMax.x),
+                              std::clamp(insetOffset_.y + delta.y, place.offsetMin.y, place.offsetMax.y));
     }
     ImDrawList* draw = ImGui::GetWindowDrawList();
     draw->AddRectFilled(place.min, ImVec2(place.max.x, place.min.y + place.titleHeight),
@@ -216,11 +193,12 @@ void EditorUi::uvInset(const UvInsetPlace& place, int stage, int influence) {
                   "(u,v)   drag this bar to move it");
     draw->PopClipRect();
     ImGui::SetCursorScreenPos(ImVec2(place.min.x, place.min.y + place.titleHeight));
-    uvView(stage, influence, place.side);
+    uvView(place.side);
 }
 
-void EditorUi::uvView(int stage, int influence, float side) {
-    const FaceModel& model = session.face();
+void DeformationPanel::uvView(float side) {
+    const int stage = selected_.stage, influence = selected_.influence;
+    const FaceModel& model = session_.face();
     const InfluenceField& field = model.cascade->stages[static_cast<std::size_t>(stage)]
                                       .field.influences[static_cast<std::size_t>(influence)];
     const ImVec2 origin = ImGui::GetCursorScreenPos();
@@ -266,9 +244,26 @@ void EditorUi::uvView(int stage, int influence, float side) {
         InfluenceField moved = field;
         moved.centre = Vec2(std::clamp((mouse.x - origin.x) / side, 0.0f, 1.0f),
                             std::clamp(1.0f - (mouse.y - origin.y) / side, 0.0f, 1.0f));
-        session.attempt("Field", [&] { session.setInfluence(stage, influence, moved); });
+        session_.attempt("Field", [&] { session_.setInfluence(stage, influence, moved); });
     }
-    if (ImGui::IsItemDeactivated()) session.endEdit();
+    if (ImGui::IsItemDeactivated()) session_.endEdit();
+}
+
+bool DeformationPanel::selectField(const std::string& stageName) {
+    const auto& cascade = session_.face().cascade;
+    if (!cascade) return false;
+    for (std::size_t s = 0; s < cascade->stages.size(); ++s)
+        if (cascade->stages[s].name == stageName && !cascade->stages[s].field.influences.empty()) {
+            selected_.stage = static_cast<int>(s);
+            selected_.influence = 0;
+            return true;
+        }
+    return false;
+}
+
+void DeformationPanel::addProbe(nlohmann::json& summary) const {
+    summary["own_face_step"] = ownFace_.probe();
+    summary["uv_inset_offset"] = {insetOffset_.x, insetOffset_.y};
 }
 
 } // namespace vl::ui

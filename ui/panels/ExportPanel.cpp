@@ -1,5 +1,6 @@
 // Export panel: project save/load and the runtime exports of the core.
-#include "ui/EditorUi.h"
+#include "ui/panels/ExportPanel.h"
+#include "ui/FileActions.h"
 #include "ui/panels/PanelWidgets.h"
 #include "ui/widgets/Controls.h"
 
@@ -7,32 +8,26 @@
 
 namespace vl::ui {
 
-void EditorUi::exportPanel() {
+void ExportPanel::draw() {
     sectionHeader("Project");
-    const std::filesystem::path& file = session.path();
+    const std::filesystem::path& file = session_.path();
     ImGui::TextWrapped("File: %s", file.empty() ? "(not saved yet)" : file.string().c_str());
-    if (session.modified()) ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.4f, 1.0f), "Unsaved changes");
-    if (ctl::Button("Open project..."))
-        guarded([this] {
-            fileDialog_.open("Open project", FileDialog::Mode::OpenFile, {".vlproj", ".json"},
-                             [this](const auto& path) {
-                                 session.attempt("Open project", [&] { session.startOpenProject(path); });
-                             });
-        });
+    if (session_.modified()) ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.4f, 1.0f), "Unsaved changes");
+    if (ctl::Button("Open project...")) files_.openProject();
     ImGui::SameLine();
-    if (ctl::Button("Save")) saveProject(false);
+    if (ctl::Button("Save")) files_.saveProject(false);
     ImGui::SameLine();
-    if (ctl::Button("Save as...")) saveProject(true);
+    if (ctl::Button("Save as...")) files_.saveProject(true);
 
     sectionHeader("Runtime export (the reduced set)");
-    const Grouping* grouping = session.currentGrouping();
-    if (!session.visemes()) {
+    const Grouping* grouping = session_.currentGrouping();
+    if (!session_.visemes()) {
         ImGui::TextDisabled("Load a viseme set first.");
         return;
     }
     if (grouping)
-        ImGui::Text("%zu visemes -> %zu keys (m = %d)", session.visemeCount(), grouping->groups.size(),
-                    session.document().target);
+        ImGui::Text("%zu visemes -> %zu keys (m = %d)", session_.visemeCount(), grouping->groups.size(),
+                    session_.document().target);
     else
         ImGui::TextDisabled("No current reduction: the export runs it with the project's settings.");
     struct Target {
@@ -55,32 +50,26 @@ void EditorUi::exportPanel() {
         if (ctl::Button(target.label, ImVec2(200, 0))) {
             const ExportFormat format = target.format;
             auto run = [this, format](const std::filesystem::path& out) {
-                session.attempt("Export", [&] { session.startExport(format, out); });
+                session_.attempt("Export", [&] { session_.startExport(format, out); });
             };
             if (target.folder)
-                fileDialog_.open(std::string("Export ") + target.label + ": choose a folder",
-                                 FileDialog::Mode::OpenFolder, {}, run);
+                files_.dialog().open(std::string("Export ") + target.label + ": choose a folder",
+                                     FileDialog::Mode::OpenFolder, {}, run);
             else
-                fileDialog_.open(std::string("Export ") + target.label, FileDialog::Mode::SaveFile, {}, run,
-                                 target.defaultName);
+                files_.dialog().open(std::string("Export ") + target.label, FileDialog::Mode::SaveFile, {},
+                                     run, target.defaultName);
         }
         ImGui::SameLine();
         noteText(target.help);
     }
 
-    if (session.document().avatar.isSet()) avatarExportSection();
+    if (session_.document().avatar.isSet()) avatar_.exportSection();
 
     sectionHeader("Import");
-    if (ctl::Button("Import glTF morph targets...", ImVec2(200, 0)))
-        guarded([this] {
-            fileDialog_.open("Import glTF", FileDialog::Mode::OpenFile, {".glb", ".gltf"},
-                             [this](const auto& path) {
-                                 session.attempt("Import glTF", [&] { session.importGltf(path); });
-                             });
-        });
+    if (ctl::Button("Import glTF morph targets...", ImVec2(200, 0))) files_.importGltf("Import glTF");
     ImGui::SameLine();
     noteText("the targets become the visemes");
-    if (ctl::Button("Import avatar...", ImVec2(200, 0))) openAvatarImport();
+    if (ctl::Button("Import avatar...", ImVec2(200, 0))) avatar_.openImport();
     ImGui::SameLine();
     noteText("visemes of every mesh; export writes the same avatar back");
 }

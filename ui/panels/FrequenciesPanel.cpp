@@ -1,8 +1,10 @@
 // Frequencies panel: the phoneme -> viseme map editor (PhonemeMapEditor.cpp) or direct viseme
 // frequencies, the resulting viseme frequencies live, CSV/JSON load and CSV save.
+#include "ui/panels/FrequenciesPanel.h"
+
 #include "core/phonetics/PhonemeMaps.h"
 #include "core/phonetics/PhonemeTableIO.h"
-#include "ui/EditorUi.h"
+#include "ui/FileActions.h"
 #include "ui/panels/PanelWidgets.h"
 #include "ui/widgets/Controls.h"
 #include "ui/widgets/FrequencyHistogram.h"
@@ -13,24 +15,24 @@
 
 namespace vl::ui {
 
-void EditorUi::frequenciesPanel() {
-    const VisemeSet* set = session.visemes();
+void FrequenciesPanel::draw() {
+    const VisemeSet* set = session_.visemes();
     if (!set) {
         ImGui::TextWrapped("Load a viseme set first.");
         return;
     }
     if (ctl::Button("Load table..."))
-        fileDialog_.open("Load frequencies", FileDialog::Mode::OpenFile, {".csv", ".json"},
-                         [this](const auto& path) {
-                             session.attempt("Load frequencies", [&] { session.loadFrequencies(path); });
-                         });
+        files_.dialog().open(
+            "Load frequencies", FileDialog::Mode::OpenFile, {".csv", ".json"}, [this](const auto& path) {
+                session_.attempt("Load frequencies", [&] { session_.loadFrequencies(path); });
+            });
     ImGui::SameLine();
     if (ctl::Button("Save as CSV..."))
-        fileDialog_.open(
+        files_.dialog().open(
             "Save frequencies", FileDialog::Mode::SaveFile, {".csv"},
             [this](const auto& path) {
-                if (session.attempt("Save frequencies", [&] { session.saveFrequenciesCsv(path); }))
-                    session.info("Saved " + path.string());
+                if (session_.attempt("Save frequencies", [&] { session_.saveFrequenciesCsv(path); }))
+                    session_.info("Saved " + path.string());
             },
             "frequencies.csv");
     helpMarker(
@@ -39,23 +41,23 @@ void EditorUi::frequenciesPanel() {
 
     // Decided before the section draws: applying closes it mid-frame, and the editor below would then
     // draw its controls a second time in this frame.
-    const bool assigning = mapStart_.open;
-    mapStartSection();
-    const bool counting = session.phonemeCountRunning();
+    const bool assigning = mapEditor_.assigning();
+    mapEditor_.startSection();
+    const bool counting = session_.phonemeCountRunning();
     if (counting) ImGui::BeginDisabled();
     if (ctl::Button("Count phonemes in a text file..."))
-        fileDialog_.open("Text corpus (espeak-ng, en-us)", FileDialog::Mode::OpenFile, {".txt", ".md", ""},
-                         [this](const auto& path) {
-                             session.attempt("Phoneme count", [&] { session.startPhonemeCount(path); });
-                         });
+        files_.dialog().open("Text corpus (espeak-ng, en-us)", FileDialog::Mode::OpenFile,
+                             {".txt", ".md", ""}, [this](const auto& path) {
+                                 session_.attempt("Phoneme count", [&] { session_.startPhonemeCount(path); });
+                             });
     if (counting) {
         ImGui::EndDisabled();
-        ImGui::ProgressBar(static_cast<float>(session.phonemeCountProgress()), ImVec2(-1, 0),
+        ImGui::ProgressBar(static_cast<float>(session_.phonemeCountProgress()), ImVec2(-1, 0),
                            "transcribing...");
     }
 
     std::vector<double> frequencies;
-    const bool ok = session.attempt("Frequencies", [&] { frequencies = session.visemeFrequencies(); });
+    const bool ok = session_.attempt("Frequencies", [&] { frequencies = session_.visemeFrequencies(); });
     sectionHeader("Viseme frequencies (normalised)");
     if (ok) {
         std::vector<std::string> names;
@@ -63,9 +65,9 @@ void EditorUi::frequenciesPanel() {
         frequencyHistogram("##viseme-frequencies", frequencies, names, 80.0f);
     }
 
-    const FrequencySource& source = session.document().frequencies;
+    const FrequencySource& source = session_.document().frequencies;
     if (source.isPhonemeBased() && !assigning) {
-        phonemeMapEditor();
+        mapEditor_.editor();
     } else if (!source.isPhonemeBased()) {
         sectionHeader("Viseme frequencies (direct)");
         if (ImGui::BeginTable("##direct", 2,
@@ -87,8 +89,9 @@ void EditorUi::frequenciesPanel() {
                 float f = value ? static_cast<float>(*value) : 0.0f;
                 ImGui::SetNextItemWidth(-1);
                 if (ctl::DragFloat("##f", &f, 0.01f, 0.0f, 1e9f, "%.3f"))
-                    session.attempt("Frequency", [&] { session.setVisemeFrequency(static_cast<int>(i), f); });
-                endEditOnRelease(session);
+                    session_.attempt("Frequency",
+                                     [&] { session_.setVisemeFrequency(static_cast<int>(i), f); });
+                endEditOnRelease(session_);
                 ImGui::PopID();
             }
             ImGui::EndTable();

@@ -2,7 +2,9 @@
 // each landmark with where it came from and how sure the finder is, lets the user move any of them
 // in the mesh's (u,v), and builds the face only when they confirm (one undoable command,
 // edit::useOwnFace). Until then the document is untouched.
-#include "ui/EditorUi.h"
+#include "ui/panels/OwnFaceStep.h"
+
+#include "ui/FileActions.h"
 #include "ui/panels/PanelWidgets.h"
 #include "ui/widgets/Controls.h"
 
@@ -13,16 +15,16 @@
 
 namespace vl::ui {
 
-void EditorUi::openOwnFaceMesh() {
-    fileDialog_.open("Use my mesh (with (u,v) on the face)", FileDialog::Mode::OpenFile,
-                     {".obj", ".ply", ".wrl", ".vrml", ".glb", ".gltf"},
-                     [this](const std::filesystem::path& path) {
-                         session.attempt("Use my mesh", [&] { ownFace_ = loadOwnFaceCandidate(path); });
-                     });
+void OwnFaceStep::open() {
+    files_.dialog().open(
+        "Use my mesh (with (u,v) on the face)", FileDialog::Mode::OpenFile,
+        {".obj", ".ply", ".wrl", ".vrml", ".glb", ".gltf"}, [this](const std::filesystem::path& path) {
+            session_.attempt("Use my mesh", [&] { candidate_ = loadOwnFaceCandidate(path); });
+        });
 }
 
-void EditorUi::ownFaceStep() {
-    OwnFaceCandidate& candidate = *ownFace_;
+void OwnFaceStep::draw() {
+    OwnFaceCandidate& candidate = *candidate_;
     sectionHeader("Use my mesh: confirm the landmarks");
     ImGui::TextWrapped("%s: %zu vertices, %zu triangles with (u,v), %zu UV islands", candidate.name.c_str(),
                        candidate.mesh->positions.size(), candidate.mesh->triangles.size(),
@@ -52,7 +54,7 @@ void EditorUi::ownFaceStep() {
             }
         }
         if (moved)
-            session.attempt("Place landmark", [&] { candidate = placeLandmark(candidate, landmark, uv); });
+            session_.attempt("Place landmark", [&] { candidate = placeLandmark(candidate, landmark, uv); });
         ImGui::SameLine();
         if (!found.found())
             ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.35f, 1.0f), "%s",
@@ -66,24 +68,24 @@ void EditorUi::ownFaceStep() {
     const std::string missing = candidate.missingRequired();
     if (!missing.empty()) ImGui::TextWrapped("Still missing: %s", missing.c_str());
     if (ctl::Button("Build face from these landmarks"))
-        session.attempt("Use my mesh", [&] {
-            session.useOwnFace(candidate);
-            ownFace_.reset();
+        session_.attempt("Use my mesh", [&] {
+            session_.useOwnFace(candidate);
+            candidate_.reset();
         });
     ImGui::SameLine();
-    if (ctl::Button("Cancel##ownface")) ownFace_.reset();
+    if (ctl::Button("Cancel##ownface")) candidate_.reset();
 }
 
-nlohmann::json EditorUi::ownFaceProbe() const {
-    if (!ownFace_) return nullptr;
+nlohmann::json OwnFaceStep::probe() const {
+    if (!candidate_) return nullptr;
     nlohmann::json landmarks = nlohmann::json::object();
     for (const face::Landmark landmark : face::allLandmarks()) {
-        const face::FoundLandmark& found = ownFace_->landmarks()[landmark];
+        const face::FoundLandmark& found = candidate_->landmarks()[landmark];
         landmarks[std::string(face::landmarkName(landmark))] = {
             {"source", face::sourceName(found.source)}, {"u", found.uv[0]}, {"v", found.uv[1]}};
     }
-    return {{"file", ownFace_->file.string()},
-            {"missing", ownFace_->missingRequired()},
+    return {{"file", candidate_->file.string()},
+            {"missing", candidate_->missingRequired()},
             {"landmarks", landmarks}};
 }
 

@@ -3,16 +3,18 @@
 // visemes with any names (e.g. the ICT FaceKit mouth shapes) get phoneme-derived frequencies. Then
 // one row per phoneme (frequency, share, viseme) and one row per viseme (its phonemes, their share,
 // move them all); visemes no phoneme maps to are listed in colour.
+#include "ui/panels/PhonemeMapEditor.h"
 #include "core/common/Error.h"
 #include "core/document/PhonemeMapCommands.h"
 #include "core/phonetics/PhonemeMaps.h"
 #include "core/phonetics/PhonemeTableIO.h"
-#include "ui/EditorUi.h"
+#include "ui/FileActions.h"
 #include "ui/panels/PanelWidgets.h"
 #include "ui/widgets/Controls.h"
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cstdio>
 
 namespace vl::ui {
@@ -49,15 +51,15 @@ bool visemeNameCombo(const char* label, const VisemeSet& set, std::string& curre
 
 } // namespace
 
-void EditorUi::restVisemeRow() {
+void PhonemeMapEditor::restVisemeRow() {
     ImGui::SetNextItemWidth(120);
-    ctl::InputTextWithHint("##rest-name", "name", &authoring_.restName);
+    ctl::InputTextWithHint("##rest-name", "name", &restName_);
     ImGui::SameLine();
     if (ctl::Button("Add rest viseme") &&
-        session.attempt("Rest viseme", [&] { session.addRestViseme(authoring_.restName); }) &&
-        mapStart_.open) {
+        session_.attempt("Rest viseme", [&] { session_.addRestViseme(restName_); }) && mapStart_.open) {
         // A map being assigned: rows still unassigned take the new viseme when it fits their name.
-        const auto suggested = edit::suggestMapAssignment(session.document(), mapStart_.table, mapStart_.map);
+        const auto suggested =
+            edit::suggestMapAssignment(session_.document(), mapStart_.table, mapStart_.map);
         for (edit::MapAssignment& row : mapStart_.rows)
             for (const edit::MapAssignment& suggestion : suggested)
                 if (row.to.empty() && suggestion.from == row.from) row.to = suggestion.to;
@@ -65,18 +67,18 @@ void EditorUi::restVisemeRow() {
     helpMarker("A viseme with the neutral's shape, for the pause 'sil' when your set has no mouth at rest.");
 }
 
-void EditorUi::openMapStart(std::string title, const PhonemeVisemeMap& map) {
-    mapStart_.table = session.startingPhonemeTable();
+void PhonemeMapEditor::openMapStart(std::string title, const PhonemeVisemeMap& map) {
+    mapStart_.table = session_.startingPhonemeTable();
     mapStart_.map = map;
-    mapStart_.rows = edit::suggestMapAssignment(session.document(), mapStart_.table, map);
+    mapStart_.rows = edit::suggestMapAssignment(session_.document(), mapStart_.table, map);
     mapStart_.title = std::move(title);
     mapStart_.open = true;
 }
 
-void EditorUi::startMapFrom(const std::string& id) {
-    if (!session.visemes()) throwInputError("phoneme map", "load a viseme set first");
+void PhonemeMapEditor::startFrom(const std::string& id) {
+    if (!session_.visemes()) throwInputError("phoneme map", "load a viseme set first");
     if (id == kPerPhoneme) {
-        openMapStart("one viseme per phoneme", edit::phonemePerVisemeMap(session.startingPhonemeTable()));
+        openMapStart("one viseme per phoneme", edit::phonemePerVisemeMap(session_.startingPhonemeTable()));
         return;
     }
     for (const BundledPhonemeMap& map : bundledPhonemeMaps(EditorSession::assetsDirectory()))
@@ -84,44 +86,44 @@ void EditorUi::startMapFrom(const std::string& id) {
     throwInputError("phoneme map", "no bundled map '" + id + "' (or " + kPerPhoneme + ")");
 }
 
-void EditorUi::mapStartSection() {
+void PhonemeMapEditor::startSection() {
     sectionHeader("Phoneme map");
     ImGui::SetNextItemWidth(std::min(260.0f, ImGui::GetContentRegionAvail().x * 0.55f));
     if (ctl::BeginCombo("##map-start", "Start a map from...", ImGuiComboFlags_HeightLargest)) {
         for (const BundledPhonemeMap& map : bundledPhonemeMaps(EditorSession::assetsDirectory()))
             if (ctl::Selectable(map.title.c_str()))
-                session.attempt("Phoneme map", [&] { startMapFrom(map.id); });
+                session_.attempt("Phoneme map", [&] { startFrom(map.id); });
         if (ctl::Selectable("One viseme per phoneme (ARPAbet)"))
-            session.attempt("Phoneme map", [&] { startMapFrom(kPerPhoneme); });
+            session_.attempt("Phoneme map", [&] { startFrom(kPerPhoneme); });
         if (ctl::Selectable("A map file..."))
-            fileDialog_.open("Phoneme map file (CSV phoneme,viseme or JSON)", FileDialog::Mode::OpenFile,
-                             {".csv", ".json"}, [this](const auto& path) {
-                                 session.attempt("Phoneme map", [&] {
-                                     openMapStart(path.filename().string(), loadPhonemeMapFile(path));
+            files_.dialog().open("Phoneme map file (CSV phoneme,viseme or JSON)", FileDialog::Mode::OpenFile,
+                                 {".csv", ".json"}, [this](const auto& path) {
+                                     session_.attempt("Phoneme map", [&] {
+                                         openMapStart(path.filename().string(), loadPhonemeMapFile(path));
+                                     });
                                  });
-                             });
         ImGui::EndCombo();
     }
     helpMarker(
         "The phoneme table is the current one (or the bundled American English table). Each viseme "
         "of the map you start from is assigned to one of yours; then edit the map phoneme by phoneme.");
-    const bool phonemeBased = session.document().frequencies.isPhonemeBased();
+    const bool phonemeBased = session_.document().frequencies.isPhonemeBased();
     if (!phonemeBased) ImGui::BeginDisabled();
     if (ctl::Button("Save map...", ImVec2(0, 0)))
-        fileDialog_.open(
+        files_.dialog().open(
             "Save phoneme map", FileDialog::Mode::SaveFile, {".csv", ".json"},
             [this](const auto& path) {
-                if (session.attempt("Save map", [&] { session.savePhonemeMap(path); }))
-                    session.info("Saved " + path.string());
+                if (session_.attempt("Save map", [&] { session_.savePhonemeMap(path); }))
+                    session_.info("Saved " + path.string());
             },
             "phoneme-map.csv");
     ImGui::SameLine();
     if (ctl::Button("Use direct frequencies"))
-        session.attempt("Direct frequencies", [&] { session.useDirectFrequencies(); });
+        session_.attempt("Direct frequencies", [&] { session_.useDirectFrequencies(); });
     if (!phonemeBased) ImGui::EndDisabled();
 
     if (!mapStart_.open) return;
-    const VisemeSet& set = *session.visemes();
+    const VisemeSet& set = *session_.visemes();
     ImGui::Spacing();
     ImGui::TextColored(ImVec4(0.55f, 0.75f, 1.0f, 1.0f), "Assign the visemes of %s to yours",
                        mapStart_.title.c_str());
@@ -169,8 +171,8 @@ void EditorUi::mapStartSection() {
     }
     if (unassigned > 0) ImGui::BeginDisabled();
     if (ctl::Button("Apply map"))
-        if (session.attempt("Phoneme map", [&] {
-                session.startPhonemeMap(mapStart_.table, mapStart_.map, mapStart_.rows, mapStart_.title);
+        if (session_.attempt("Phoneme map", [&] {
+                session_.startPhonemeMap(mapStart_.table, mapStart_.map, mapStart_.rows, mapStart_.title);
             }))
             mapStart_.open = false;
     if (unassigned > 0) ImGui::EndDisabled();
@@ -178,10 +180,10 @@ void EditorUi::mapStartSection() {
     if (ctl::Button("Cancel##map-start")) mapStart_.open = false;
 }
 
-void EditorUi::phonemeMapEditor() {
-    const VisemeSet& set = *session.visemes();
-    const FrequencySource& source = session.document().frequencies;
-    const edit::MapCoverage coverage = edit::mapCoverage(session.document());
+void PhonemeMapEditor::editor() {
+    const VisemeSet& set = *session_.visemes();
+    const FrequencySource& source = session_.document().frequencies;
+    const edit::MapCoverage coverage = edit::mapCoverage(session_.document());
 
     // Visemes no phoneme maps to have frequency 0: say so before the table.
     if (!coverage.visemesWithoutPhoneme.empty()) {
@@ -219,9 +221,9 @@ void EditorUi::phonemeMapEditor() {
             ImGui::SetNextItemWidth(-1);
             const std::string frequencyLabel = "##freq-" + phoneme;
             if (ctl::DragFloat(frequencyLabel.c_str(), &f, 1.0f, 0.0f, 1e9f, "%.6g"))
-                session.attempt("Phoneme frequency",
-                                [&] { session.setPhonemeFrequency(static_cast<int>(i), f); });
-            endEditOnRelease(session);
+                session_.attempt("Phoneme frequency",
+                                 [&] { session_.setPhonemeFrequency(static_cast<int>(i), f); });
+            endEditOnRelease(session_);
             ImGui::TableNextColumn();
             ImGui::AlignTextToFramePadding();
             ImGui::TextUnformatted(percent(total > 0.0 ? value / total : 0.0).c_str());
@@ -232,8 +234,8 @@ void EditorUi::phonemeMapEditor() {
             const std::string mapLabel = "##map-" + phoneme;
             if (visemeNameCombo(mapLabel.c_str(), set, choice, "(unmapped)") &&
                 (!mapped || choice != *mapped))
-                session.attempt("Phoneme map",
-                                [&] { session.setPhonemeViseme(static_cast<int>(i), choice); });
+                session_.attempt("Phoneme map",
+                                 [&] { session_.setPhonemeViseme(static_cast<int>(i), choice); });
             ImGui::PopID();
         }
         ImGui::EndTable();
@@ -266,12 +268,18 @@ void EditorUi::phonemeMapEditor() {
                 ImGui::SetNextItemWidth(-1);
                 const std::string label = "##move-" + name;
                 if (visemeNameCombo(label.c_str(), set, to, "move to...") && to != name)
-                    session.attempt("Move phonemes", [&] { session.movePhonemes(name, to); });
+                    session_.attempt("Move phonemes", [&] { session_.movePhonemes(name, to); });
             }
             ImGui::PopID();
         }
         ImGui::EndTable();
     }
+}
+
+void PhonemeMapEditor::addProbe(nlohmann::json& summary) const {
+    summary["map_start_open"] = mapStart_.open;
+    summary["map_start_unassigned"] = std::count_if(mapStart_.rows.begin(), mapStart_.rows.end(),
+                                                    [](const auto& r) { return r.to.empty(); });
 }
 
 } // namespace vl::ui

@@ -1,9 +1,12 @@
 // Reduction panel: target m, the optimal cost for every p with m marked, the groups, the compared
 // viseme, and Say (panels/SaySection.cpp): speech on the full and the reduced set side by side.
+#include "ui/panels/ReductionPanel.h"
+
 #include "core/common/Error.h"
 #include "core/inspect/DistanceUnits.h"
-#include "ui/EditorUi.h"
+#include "ui/SpeechPlayer.h"
 #include "ui/panels/PanelWidgets.h"
+#include "ui/panels/RestModelSection.h"
 #include "ui/widgets/Controls.h"
 #include "ui/widgets/CostPlot.h"
 
@@ -16,34 +19,35 @@
 
 namespace vl::ui {
 
-void EditorUi::reductionPanel() {
-    const VisemeSet* set = session.visemes();
+void ReductionPanel::draw() {
+    const VisemeSet* set = session_.visemes();
     if (!set) {
         ImGui::TextWrapped("Load a viseme set first (Visemes panel or File > Load sample face).");
         return;
     }
     const int n = static_cast<int>(set->size());
-    int m = session.document().target;
+    int m = session_.document().target;
     // With a free rest the rest viseme is no key: the slider stops at the keys the model allows.
     RestPose rest;
-    session.attempt("Rest viseme", [&] { rest = documentRestPose(session.document()); });
+    session_.attempt("Rest viseme", [&] { rest = documentRestPose(session_.document()); });
     const int maxKeys = rest.free && rest.viseme >= 0 ? std::max(1, n - 1) : n;
     sectionHeader("Target");
     ImGui::SetNextItemWidth(-90);
-    if (ctl::SliderInt("groups m", &m, 1, maxKeys)) session.attempt("Target", [&] { session.setTarget(m); });
-    endEditOnRelease(session);
-    ctl::Checkbox("Re-run automatically", &session.autoReduce);
+    if (ctl::SliderInt("groups m", &m, 1, maxKeys))
+        session_.attempt("Target", [&] { session_.setTarget(m); });
+    endEditOnRelease(session_);
+    ctl::Checkbox("Re-run automatically", &session_.autoReduce);
     ImGui::SameLine();
-    if (ctl::Button("Run now")) session.attempt("Reduction", [&] { session.startReduction(); });
-    if (session.reductionRunning()) {
-        ImGui::ProgressBar(static_cast<float>(session.reductionProgress()), ImVec2(-80, 0), "reducing...");
+    if (ctl::Button("Run now")) session_.attempt("Reduction", [&] { session_.startReduction(); });
+    if (session_.reductionRunning()) {
+        ImGui::ProgressBar(static_cast<float>(session_.reductionProgress()), ImVec2(-80, 0), "reducing...");
         ImGui::SameLine();
-        if (ctl::Button("Cancel")) session.stopReduction();
+        if (ctl::Button("Cancel")) session_.stopReduction();
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("Stops the search. A large set keeps the best groupings found so far, "
                               "each with its proven gap.");
         // Branch and bound: how far the proven lower bound has come towards the best grouping found.
-        if (const auto bound = session.reductionBound()) {
+        if (const auto bound = session_.reductionBound()) {
             const double share = bound->bestFound > 0.0 ? bound->lowerBound / bound->bestFound : 1.0;
             char text[96];
             std::snprintf(text, sizeof text, "m = %d: bound %.0f %% of best found (gap %.1f %%)",
@@ -52,15 +56,15 @@ void EditorUi::reductionPanel() {
         }
     }
 
-    restModelSection();
-    constraintsSection();
+    restModelSection(session_);
+    constraints_.draw();
 
-    const ReductionResult* curve = session.reductionCurve();
-    const Grouping* grouping = session.currentGrouping();
+    const ReductionResult* curve = session_.reductionCurve();
+    const Grouping* grouping = session_.currentGrouping();
     if (!curve) {
         ImGui::TextDisabled(n > kMaxReductionVisemes ? "The reduction handles at most 64 visemes."
                                                      : "No result for the current inputs yet.");
-        saySection();
+        say_.draw();
         return;
     }
 
@@ -76,7 +80,7 @@ void EditorUi::reductionPanel() {
                "shape of its group, averaged by frequency. 'auto' guesses the model's length unit from "
                "the size of the head (0.05 to 1 m across).");
     std::vector<double> weights;
-    session.attempt("Weights", [&] { weights = session.weights(); });
+    session_.attempt("Weights", [&] { weights = session_.weights(); });
     double weightSum = 0.0;
     for (const double w : weights) weightSum += w;
     const double millimetres = millimetresPerModelUnit();
@@ -91,9 +95,9 @@ void EditorUi::reductionPanel() {
     options.marked = m;
     if (curve->restFree) options.axis = "keys p (+ free rest)";
     if (const int picked = costPlot("##cost", distances, options, ImVec2(0, 170)); picked > 0 && picked != m)
-        session.attempt("Target", [&] {
-            session.setTarget(picked);
-            session.endEdit();
+        session_.attempt("Target", [&] {
+            session_.setTarget(picked);
+            session_.endEdit();
         });
     if (grouping && grouping->feasible()) {
         // What is proven about this grouping: optimal, or the best found with its gap to the bound.
@@ -116,12 +120,12 @@ void EditorUi::reductionPanel() {
                         : 0.0);
 
     if (!grouping) {
-        saySection();
+        say_.draw();
         return;
     }
     sectionHeader("Groups");
     std::vector<double> frequencies;
-    session.attempt("Frequencies", [&] { frequencies = session.visemeFrequencies(); });
+    session_.attempt("Frequencies", [&] { frequencies = session_.visemeFrequencies(); });
     if (ImGui::BeginTable("##groups", 3,
                           ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV |
                               ImGuiTableFlags_SizingStretchProp)) {
@@ -147,7 +151,7 @@ void EditorUi::reductionPanel() {
                     ImGui::SameLine(0.0f, 6.0f);
                 first = false;
                 ImGui::PushID(member);
-                if (ctl::SmallButton(name.c_str())) session.selectedViseme = member;
+                if (ctl::SmallButton(name.c_str())) session_.selectedViseme = member;
                 ImGui::PopID();
                 if (static_cast<std::size_t>(member) < frequencies.size())
                     total += frequencies[static_cast<std::size_t>(member)];
@@ -167,7 +171,7 @@ void EditorUi::reductionPanel() {
                 if (k > 0) ImGui::SameLine(0.0f, 6.0f);
                 ImGui::PushID(1000 + member);
                 if (ctl::SmallButton(set->visemes[static_cast<std::size_t>(member)].name.c_str()))
-                    session.selectedViseme = member;
+                    session_.selectedViseme = member;
                 ImGui::PopID();
                 if (static_cast<std::size_t>(member) < frequencies.size())
                     total += frequencies[static_cast<std::size_t>(member)];
@@ -181,13 +185,12 @@ void EditorUi::reductionPanel() {
         ImGui::TextDisabled("Resting visemes have no key: the mouth stays at the neutral (all weights 0).");
 
     sectionHeader("Compare");
-    const int selected = std::max(session.selectedViseme, 0);
+    const int selected = std::max(session_.selectedViseme, 0);
     if (ctl::BeginCombo("viseme", set->visemes[static_cast<std::size_t>(selected)].name.c_str())) {
         for (int i = 0; i < n; ++i)
             if (ctl::Selectable(set->visemes[static_cast<std::size_t>(i)].name.c_str(), i == selected)) {
-                session.selectedViseme = i;
-                say_.shown = false; // the views compare this viseme again
-                pauseSpeech();
+                session_.selectedViseme = i;
+                speech_.hide(); // the views compare this viseme again
             }
         ImGui::EndCombo();
     }
@@ -209,10 +212,10 @@ void EditorUi::reductionPanel() {
                "shape as the face will look. Overlay: the merged shape in skin with the original drawn "
                "over it as a cyan film; plain skin shows where the merged shape stands out in front.");
 
-    saySection();
+    say_.draw();
 }
 
-void EditorUi::setMergedDisplay(const std::string& name) {
+void ReductionPanel::setMergedDisplay(const std::string& name) {
     const char* const names[] = {"errors", "skin", "overlay"};
     for (int i = 0; i < 3; ++i)
         if (name == names[i]) {
@@ -220,6 +223,46 @@ void EditorUi::setMergedDisplay(const std::string& name) {
             return;
         }
     throwInputError("--merged", "expected errors, skin or overlay, got '" + name + "'");
+}
+
+double ReductionPanel::millimetresPerModelUnit() const {
+    static const LengthUnit kChosen[] = {LengthUnit::Metre, LengthUnit::Centimetre, LengthUnit::Millimetre,
+                                         LengthUnit::Inch};
+    if (costView_.unit >= 1 && costView_.unit <= 4) return millimetresPer(kChosen[costView_.unit - 1]);
+    const VisemeSet* set = session_.visemes();
+    return set ? guessMillimetresPerUnit(set->neutral.positions) : millimetresPer(LengthUnit::Metre);
+}
+
+nlohmann::json ReductionPanel::reductionProbe() const {
+    nlohmann::json out = {{"running", session_.reductionRunning()}};
+    if (const auto bound = session_.reductionBound())
+        out["bound"] = {{"groups", bound->groups}, {"lower", bound->lowerBound}, {"best", bound->bestFound}};
+    if (const Grouping* grouping = session_.currentGrouping(); grouping && grouping->feasible()) {
+        out["current"] = {{"optimal", grouping->optimal}, {"gap", grouping->gap()}, {"cost", grouping->cost}};
+        nlohmann::json resting = nlohmann::json::array();
+        for (const int i : grouping->rest)
+            resting.push_back(session_.visemes()->visemes[static_cast<std::size_t>(i)].name);
+        out["current"]["resting"] = std::move(resting);
+        out["current"]["keys"] = grouping->groups.size();
+    }
+    const Document& document = session_.document();
+    nlohmann::json rest = {{"model", toString(document.rest)}, {"rest_viseme", document.restViseme}};
+    try {
+        const RestPose pose = documentRestPose(document);
+        rest["free"] = pose.free;
+        rest["resolved"] =
+            pose.viseme >= 0 ? document.visemes->visemes[static_cast<std::size_t>(pose.viseme)].name : "";
+    } catch (const InputError&) {
+    }
+    out["rest"] = std::move(rest);
+    out["last_avatar_export"] = session_.lastAvatarExport();
+    return out;
+}
+
+void ReductionPanel::addProbe(nlohmann::json& summary) const {
+    summary["reduction"] = reductionProbe();
+    summary["merged_display"] = static_cast<int>(mergedDisplay_);
+    say_.addProbe(summary);
 }
 
 } // namespace vl::ui

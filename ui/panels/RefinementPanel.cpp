@@ -1,22 +1,24 @@
 // Refinement panel: the adaptive mesh's criterion and thresholds, refine / simplify / re-adapt
 // buttons running on a worker thread, live counts and timing, the automatic mode, and the face's
 // parameter sliders (the same as the Deformation panel's: the view shows the face at them).
-#include "ui/EditorUi.h"
+#include "ui/panels/RefinementPanel.h"
+
 #include "ui/panels/PanelWidgets.h"
+#include "ui/panels/ParameterSliders.h"
 #include "ui/widgets/Controls.h"
 
 #include <imgui.h>
 
 namespace vl::ui {
 
-void EditorUi::refinementPanel() {
-    const FaceModel& model = session.face();
+void RefinementPanel::draw() {
+    const FaceModel& model = session_.face();
     if (!model.cascade) {
         ImGui::TextWrapped("Adaptive refinement works on the deformable face.");
-        if (ctl::Button("Load bundled face")) session.attempt("Load face", [&] { session.loadFace(); });
+        if (ctl::Button("Load bundled face")) session_.attempt("Load face", [&] { session_.loadFace(); });
         return;
     }
-    CriterionSettings settings = session.document().refinement;
+    CriterionSettings settings = session_.document().refinement;
     bool changed = false;
     sectionHeader("Criterion");
     int kind = static_cast<int>(settings.kind);
@@ -29,11 +31,11 @@ void EditorUi::refinementPanel() {
     settings.kind = static_cast<CriterionKind>(kind);
     ImGui::PushItemWidth(-150);
     changed |= ctl::SliderInt("max depth", &settings.maxDepth, 0, 16);
-    endEditOnRelease(session);
+    endEditOnRelease(session_);
     switch (settings.kind) {
     case CriterionKind::Depth:
         changed |= ctl::SliderInt("uniform depth", &settings.depth.depth, 0, 12);
-        endEditOnRelease(session);
+        endEditOnRelease(session_);
         break;
     case CriterionKind::Normals: {
         float dihedral = static_cast<float>(settings.normals.dihedralAngleDeg);
@@ -42,12 +44,12 @@ void EditorUi::refinementPanel() {
             settings.normals.dihedralAngleDeg = dihedral;
             changed = true;
         }
-        endEditOnRelease(session);
+        endEditOnRelease(session_);
         if (ctl::SliderFloat("normal angle", &normal, 1.0f, 90.0f, "%.1f deg")) {
             settings.normals.normalAngleDeg = normal;
             changed = true;
         }
-        endEditOnRelease(session);
+        endEditOnRelease(session_);
         break;
     }
     case CriterionKind::Contour: {
@@ -57,47 +59,47 @@ void EditorUi::refinementPanel() {
             settings.contour.averageError = average;
             changed = true;
         }
-        endEditOnRelease(session);
+        endEditOnRelease(session_);
         if (ctl::SliderFloat("maximum error", &maximum, 0.001f, 2.0f, "%.4f", ImGuiSliderFlags_Logarithmic)) {
             settings.contour.maximumError = maximum;
             changed = true;
         }
-        endEditOnRelease(session);
+        endEditOnRelease(session_);
         changed |= ctl::SliderInt("samples per side", &settings.contour.samplesPerSide, 1, 16);
-        endEditOnRelease(session);
+        endEditOnRelease(session_);
         break;
     }
     }
     ImGui::PopItemWidth();
-    if (changed) session.attempt("Thresholds", [&] { session.setRefinementSettings(settings); });
-    if (criterionChanged) session.endEdit(); // a criterion switch is its own undo step
+    if (changed) session_.attempt("Thresholds", [&] { session_.setRefinementSettings(settings); });
+    if (criterionChanged) session_.endEdit(); // a criterion switch is its own undo step
 
     sectionHeader("Adapt the face mesh");
-    const bool busy = session.refinementRunning();
+    const bool busy = session_.refinementRunning();
     if (busy) ImGui::BeginDisabled();
     if (ctl::Button("Refine"))
-        session.attempt("Refine", [&] { session.startRefinement(RefineAction::Refine); });
+        session_.attempt("Refine", [&] { session_.startRefinement(RefineAction::Refine); });
     ImGui::SameLine();
     if (ctl::Button("Simplify"))
-        session.attempt("Simplify", [&] { session.startRefinement(RefineAction::Simplify); });
+        session_.attempt("Simplify", [&] { session_.startRefinement(RefineAction::Simplify); });
     ImGui::SameLine();
     if (ctl::Button("Re-adapt"))
-        session.attempt("Re-adapt", [&] { session.startRefinement(RefineAction::Adapt); });
+        session_.attempt("Re-adapt", [&] { session_.startRefinement(RefineAction::Adapt); });
     ImGui::SameLine();
     if (ctl::Button("For all visemes"))
-        session.attempt("Refine", [&] { session.startRefinement(RefineAction::AllVisemes); });
+        session_.attempt("Refine", [&] { session_.startRefinement(RefineAction::AllVisemes); });
     if (busy) ImGui::EndDisabled();
     helpMarker(
         "Refine splits edges where the criterion asks (for the current slider values); Simplify welds "
         "where it allows; Re-adapt does both after a change. 'For all visemes' refines one mesh for "
         "every viseme pose: Generate viseme set (Deformation panel) then gives an interpolable set on it.");
-    ctl::Checkbox("Automatic: re-adapt after every slider or threshold change", &session.autoRefine);
+    ctl::Checkbox("Automatic: re-adapt after every slider or threshold change", &session_.autoRefine);
     if (busy) ImGui::ProgressBar(-1.0f * static_cast<float>(ImGui::GetTime()), ImVec2(-1, 0), "refining...");
 
     sectionHeader("Current mesh");
     ImGui::Text("%zu vertices, %zu triangles", model.domain->positions.size(),
                 model.domain->triangles.size());
-    if (const auto& report = session.lastRefinement()) {
+    if (const auto& report = session_.lastRefinement()) {
         ImGui::Text("Last run: %s in %.1f ms", report->action.c_str(), report->milliseconds);
         // The counts a designer asks about: how big the mesh was and is, and what each way did. An
         // edge split adds one vertex, a weld removes one.
@@ -120,7 +122,20 @@ void EditorUi::refinementPanel() {
     sectionHeader("Parameters");
     noteText("The view shows the refined skin and, inside it, the head's parts (eyeballs, teeth, tongue, "
              "mouth cavity) at these values.");
-    parameterSliders();
+    parameterSliders(session_);
+}
+
+void RefinementPanel::addProbe(nlohmann::json& summary) const {
+    // The counts of the last run, as the panel states them.
+    nlohmann::json refine;
+    if (const auto& report = session_.lastRefinement())
+        refine = {{"vertices_before", report->verticesBefore},
+                  {"vertices_at_start", report->verticesAtStart},
+                  {"from_base_mesh", report->fromBaseMesh},
+                  {"vertices_after", report->vertices},
+                  {"added", report->stats.splits},
+                  {"removed", report->stats.welds}};
+    summary["refine"] = std::move(refine);
 }
 
 } // namespace vl::ui

@@ -2,7 +2,8 @@
 // neutral at all weights 0, so the rest viseme and visemes close to the neutral rest at no key) or
 // the rest is a key like any other (projects before version 3). One undoable edit each
 // (edit::setRest); the core decides which viseme rests.
-#include "ui/EditorUi.h"
+#include "ui/panels/RestModelSection.h"
+
 #include "ui/panels/PanelWidgets.h"
 #include "ui/widgets/Controls.h"
 
@@ -12,7 +13,7 @@
 
 namespace vl::ui {
 
-void EditorUi::restModelSection() {
+void restModelSection(EditorSession& session) {
     const VisemeSet* set = session.visemes();
     if (!set || set->size() < 2) return;
     const Document& document = session.document();

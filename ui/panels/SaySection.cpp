@@ -1,10 +1,11 @@
 // The Reduction panel's Say section: text, voice and rate (document state), Say / Play / Pause, the
-// utterance error and the audio status; a typed sequence of visemes; the timeline under the views
-// and what the GUI probe reports about speech. The clip is played by EditorUi::advanceSpeech.
-#include "ui/EditorUi.h"
+// utterance error and the audio status, and a typed sequence of visemes. The clip, its timeline under
+// the views and what the GUI probe reports about it are SpeechPlayer's.
+#include "ui/panels/SaySection.h"
+
+#include "ui/SpeechPlayer.h"
 #include "ui/panels/PanelWidgets.h"
 #include "ui/widgets/Controls.h"
-#include "ui/widgets/SpeechTimeline.h"
 
 #include <imgui.h>
 
@@ -19,40 +20,25 @@ namespace {
 // English espeak-ng voices offered in the combo (any other English voice works from a project).
 constexpr const char* kVoices[] = {"en-us", "en-gb", "en-gb-scotland", "en-gb-x-rp", "en-029", "en-us-nyc"};
 
-// The item of `items` (contiguous, from 0) playing at `t`.
-template <class Item> const Item* itemAt(const std::vector<Item>& items, double t) {
-    const auto it = std::upper_bound(items.begin(), items.end(), t,
-                                     [](double time, const Item& item) { return time < item.end; });
-    return it == items.end() ? (items.empty() ? nullptr : &items.back()) : &*it;
-}
-
-// Name of the key with the largest weight in `weights` ("neutral" when all are small).
-std::string strongestKey(const std::vector<float>& weights, const ReducedModel& model) {
-    const auto it = std::max_element(weights.begin(), weights.end());
-    if (it == weights.end() || *it < 0.5f) return "neutral";
-    return model.keys[static_cast<std::size_t>(it - weights.begin())].name;
-}
-
 } // namespace
 
-void EditorUi::saySection() {
+void SaySection::draw() {
     sectionHeader("Say");
-    const SpeechSettings& speech = session.document().speech;
+    const SpeechSettings& speech = session_.document().speech;
     // The box edits a draft; the document takes it (one undo step) on Say or when the box is left.
     // An undo or a loaded project changes the document's text: the draft follows.
-    if (speech.text != say_.syncedText) say_.draft = say_.syncedText = speech.text;
+    if (speech.text != syncedText_) draft_ = syncedText_ = speech.text;
     const auto commitDraft = [&] {
-        if (say_.draft == speech.text) return true;
+        if (draft_ == speech.text) return true;
         SpeechSettings next = speech;
-        next.text = say_.draft;
-        const bool ok = session.attempt("Say text", [&] { session.setSpeech(next); });
-        if (ok) say_.syncedText = say_.draft;
+        next.text = draft_;
+        const bool ok = session_.attempt("Say text", [&] { session_.setSpeech(next); });
+        if (ok) syncedText_ = draft_;
         return ok;
     };
-    ctl::InputTextMultiline("##say text", &say_.draft,
-                            ImVec2(-1, 3.4f * ImGui::GetTextLineHeightWithSpacing()));
+    ctl::InputTextMultiline("##say text", &draft_, ImVec2(-1, 3.4f * ImGui::GetTextLineHeightWithSpacing()));
     if (ImGui::IsItemDeactivatedAfterEdit()) commitDraft();
-    if (say_.draft.empty() && !ImGui::IsItemActive()) {
+    if (draft_.empty() && !ImGui::IsItemActive()) {
         const ImVec2 at = ImGui::GetItemRectMin();
         ImGui::GetWindowDrawList()->AddText(ImVec2(at.x + 6, at.y + 4),
                                             ImGui::GetColorU32(ImGuiCol_TextDisabled),
@@ -65,7 +51,7 @@ void EditorUi::saySection() {
             if (ctl::Selectable(voice, speech.voice == voice)) {
                 SpeechSettings next = speech;
                 next.voice = voice;
-                session.attempt("Voice", [&] { session.setSpeech(next); });
+                session_.attempt("Voice", [&] { session_.setSpeech(next); });
             }
         ImGui::EndCombo();
     }
@@ -75,32 +61,29 @@ void EditorUi::saySection() {
     if (ctl::SliderInt("words/min", &rate, kMinWordsPerMinute, kMaxWordsPerMinute)) {
         SpeechSettings next = speech;
         next.wordsPerMinute = rate;
-        session.attempt("Speaking rate", [&] { session.setSpeech(next); });
+        session_.attempt("Speaking rate", [&] { session_.setSpeech(next); });
     }
-    endEditOnRelease(session);
+    endEditOnRelease(session_);
 
-    if (ctl::Button("Say", ImVec2(70, 0)) && commitDraft()) startSay();
-    const auto& clip = session.speechClip();
+    if (ctl::Button("Say", ImVec2(70, 0)) && commitDraft()) speech_.say();
+    const auto& clip = session_.speechClip();
     ImGui::SameLine();
     if (!clip) ImGui::BeginDisabled();
-    if (ctl::Button(say_.playing ? "Pause" : "Play", ImVec2(70, 0))) {
-        if (say_.playing)
-            pauseSpeech();
+    if (ctl::Button(speech_.playing() ? "Pause" : "Play", ImVec2(70, 0))) {
+        if (speech_.playing())
+            speech_.pause();
         else
-            playSpeech(say_.time);
+            speech_.play(speech_.time());
     }
     ImGui::SameLine();
-    if (ctl::Button("Hide", ImVec2(60, 0))) {
-        pauseSpeech();
-        say_.shown = false;
-    }
+    if (ctl::Button("Hide", ImVec2(60, 0))) speech_.hide();
     if (!clip) ImGui::EndDisabled();
-    if (session.speaking()) {
+    if (session_.speaking()) {
         ImGui::SameLine();
         ImGui::ProgressBar(-1.0f * static_cast<float>(ImGui::GetTime()), ImVec2(-1, 0), "speaking...");
     }
     // Audio is there or it is not; either way the designer knows.
-    const std::string& audio = audio_.status();
+    const std::string& audio = speech_.audio().status();
     ImGui::TextDisabled("%s", audio.empty() ? "audio: the output device is opened by the first Say"
                                             : audio.c_str());
 
@@ -109,7 +92,7 @@ void EditorUi::saySection() {
         ImGui::Text("Shown: %s", clip->label.c_str());
         ImGui::PopTextWrapPos();
     }
-    if (const SpeechPlayback* playback = clip ? session.speechPlayback() : nullptr) {
+    if (const SpeechPlayback* playback = clip ? session_.speechPlayback() : nullptr) {
         if (!playback->problem.empty()) {
             ImGui::PushTextWrapPos(0.0f);
             ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", playback->problem.c_str());
@@ -141,80 +124,20 @@ void EditorUi::saySection() {
     if (ctl::TreeNode("Typed sequence")) {
         ImGui::SetNextItemWidth(-1);
         ctl::InputTextWithHint("##sequence", "phonemes or visemes, e.g. PP aa E RR (empty: all visemes)",
-                               &say_.sequence);
+                               &speech_.sequence);
         ImGui::SetNextItemWidth(160);
-        ctl::SliderFloat("s per key", &say_.secondsPerKey, 0.05f, 1.0f, "%.2f");
+        ctl::SliderFloat("s per key", &speech_.secondsPerKey, 0.05f, 1.0f, "%.2f");
         ImGui::SameLine();
-        if (ctl::Button("Play sequence"))
-            session.attempt("Playback", [&] { session.playSequence(say_.sequence, say_.secondsPerKey); });
+        if (ctl::Button("Play sequence")) speech_.playSequence(speech_.sequence);
         ImGui::TreePop();
     }
 }
 
-void EditorUi::sayTimeline(ImVec2 size) {
-    const SpeechPlayback* playback = session.speechPlayback();
-    if (!playback) return;
-    SpeechTimelineData data;
-    data.duration = playback->clip->duration();
-    data.time = say_.time;
-    data.phonemes = playback->clip->phonemes;
-    if (playback->full) data.fullCues = playback->full->cues();
-    if (playback->reduced) {
-        data.reducedCues = playback->reduced->cues();
-        data.reducedName = "m = " + std::to_string(playback->groups);
-        // Rest-free: phonemes of resting visemes show the neutral, besides the m keys.
-        if (!playback->reduced->model().resting.empty()) data.reducedName += " + rest";
-    }
-    if (playback->error) {
-        data.error = playback->error->frames;
-        data.errorFps = playback->error->fps;
-        data.errorMean = playback->error->mean;
-    }
-    if (const auto t = speechTimeline("##say timeline", data, size)) {
-        if (say_.playing) pauseSpeech(); // scrubbing holds the playhead where the mouse is
-        say_.time = *t;
-    }
-}
-
-nlohmann::json EditorUi::sayProbe() {
-    const SpeechSettings& speech = session.document().speech;
-    nlohmann::json json = {{"text", speech.text},
-                           {"voice", speech.voice},
-                           {"rate", speech.wordsPerMinute},
-                           {"draft", say_.draft},
-                           {"speaking", session.speaking()},
-                           {"time", say_.time},
-                           {"playing", say_.playing},
-                           {"shown", speechShown()},
-                           {"audio", audio_.status()},
-                           {"audio_playing", audio_.playing()}};
-    const auto& clip = session.speechClip();
-    if (!clip) return json;
-    json["clip"] = clip->label;
-    json["clip_id"] = clip->id;
-    json["duration"] = clip->duration();
-    json["phonemes"] = clip->phonemes.size();
-    if (const TimedPhoneme* p = itemAt(clip->phonemes, say_.time)) json["phoneme"] = p->phoneme;
-    const SpeechPlayback* playback = session.speechPlayback();
-    json["problem"] = playback->problem;
-    if (playback->full) {
-        if (const Cue* cue = itemAt(playback->full->cues(), say_.time)) json["full_cue"] = cue->value;
-        json["full_key"] = strongestKey(playback->full->keyWeights(say_.time), playback->full->model());
-    }
-    if (playback->reduced) {
-        if (const Cue* cue = itemAt(playback->reduced->cues(), say_.time)) json["reduced_cue"] = cue->value;
-        json["reduced_key"] =
-            strongestKey(playback->reduced->keyWeights(say_.time), playback->reduced->model());
-        json["groups"] = playback->groups;
-    }
-    if (playback->error) {
-        const auto& frames = playback->error->frames;
-        const auto frame = static_cast<std::size_t>(std::lround(say_.time * playback->error->fps));
-        json["error_mean"] = playback->error->mean;
-        json["error_max"] = playback->error->max;
-        json["error_now"] = frames[std::min(frame, frames.size() - 1)];
-    }
-    return json;
+void SaySection::addProbe(nlohmann::json& summary) const {
+    nlohmann::json say = speech_.probe();
+    say["draft"] = draft_;
+    summary["say"] = std::move(say);
+    summary["playing"] = speech_.playing();
 }
 
 } // namespace vl::ui

@@ -1,9 +1,10 @@
 // Visemes panel, under the list: rename, duplicate, move and delete the selected viseme. A delete
 // that would leave phonemes unmapped asks where they go (a popup listing them) instead of failing.
+#include "ui/panels/VisemeAuthoring.h"
+
 #include "core/common/Error.h"
 #include "core/document/PhonemeMapCommands.h"
 #include "core/document/VisemeCommands.h"
-#include "ui/EditorUi.h"
 #include "ui/panels/PanelWidgets.h"
 #include "ui/widgets/Controls.h"
 
@@ -30,8 +31,8 @@ std::string copyName(const Document& document, const std::string& name) {
 
 } // namespace
 
-nlohmann::json EditorUi::authoringProbe() const {
-    const Document& document = session.document();
+void VisemeAuthoring::addProbe(nlohmann::json& summary) const {
+    const Document& document = session_.document();
     nlohmann::json presets = nlohmann::json::object();
     if (document.face.cascade)
         for (const VisemeParameters& preset : edit::facePresets(document.face)) {
@@ -57,107 +58,101 @@ nlohmann::json EditorUi::authoringProbe() const {
         for (std::size_t i = 0; i < names.size() && i < values.size(); ++i) frequencies[names[i]] = values[i];
     } catch (const InputError&) {
     }
-    return {{"viseme_names", names},
-            {"viseme_frequencies", std::move(frequencies)},
-            {"presets", std::move(presets)},
-            {"parameters", std::move(parameters)},
-            {"phoneme_frequencies", std::move(phonemes)},
-            {"phoneme_based", document.frequencies.isPhonemeBased()},
-            {"phoneme_map", std::move(map)},
-            {"direct_frequencies", std::move(direct)},
-            {"map_start_open", mapStart_.open},
-            {"map_start_unassigned", std::count_if(mapStart_.rows.begin(), mapStart_.rows.end(),
-                                                   [](const auto& r) { return r.to.empty(); })}};
+    summary.update({{"viseme_names", names},
+                    {"viseme_frequencies", std::move(frequencies)},
+                    {"presets", std::move(presets)},
+                    {"parameters", std::move(parameters)},
+                    {"phoneme_frequencies", std::move(phonemes)},
+                    {"phoneme_based", document.frequencies.isPhonemeBased()},
+                    {"phoneme_map", std::move(map)},
+                    {"direct_frequencies", std::move(direct)}});
 }
 
-void EditorUi::visemeAuthoring() {
-    const VisemeSet* set = session.visemes();
-    const int selected = session.selectedViseme;
+void VisemeAuthoring::draw() {
+    const VisemeSet* set = session_.visemes();
+    const int selected = session_.selectedViseme;
     const bool has = set && selected >= 0 && selected < static_cast<int>(set->size());
     // The field shows the selected viseme's name unless the user is typing a new one.
-    if (!authoring_.editingName &&
-        (authoring_.nameFor != selected || authoring_.nameDocument != session.documentId())) {
-        authoring_.nameFor = selected;
-        authoring_.nameDocument = session.documentId();
-        authoring_.name = has ? set->visemes[static_cast<std::size_t>(selected)].name : std::string();
+    if (!editingName_ && (nameFor_ != selected || nameDocument_ != session_.documentId())) {
+        nameFor_ = selected;
+        nameDocument_ = session_.documentId();
+        name_ = has ? set->visemes[static_cast<std::size_t>(selected)].name : std::string();
     }
     if (!has) ImGui::BeginDisabled();
     ImGui::SetNextItemWidth(std::min(200.0f, ImGui::GetContentRegionAvail().x * 0.4f));
-    const bool entered = ctl::InputTextWithHint("##viseme-name", "select a viseme", &authoring_.name,
+    const bool entered = ctl::InputTextWithHint("##viseme-name", "select a viseme", &name_,
                                                 ImGuiInputTextFlags_EnterReturnsTrue);
-    authoring_.editingName = ImGui::IsItemActive();
+    editingName_ = ImGui::IsItemActive();
     ImGui::SameLine();
     if ((ctl::Button("Rename") || entered) && has)
-        session.attempt("Rename", [&] { session.renameViseme(selected, authoring_.name); });
+        session_.attempt("Rename", [&] { session_.renameViseme(selected, name_); });
     ImGui::SameLine();
     if (ctl::Button("Duplicate") && has)
-        session.attempt("Duplicate", [&] {
+        session_.attempt("Duplicate", [&] {
             const std::string& name = set->visemes[static_cast<std::size_t>(selected)].name;
-            session.duplicateViseme(selected, copyName(session.document(), name));
+            session_.duplicateViseme(selected, copyName(session_.document(), name));
         });
     ImGui::SameLine();
     if (ctl::Button("Delete...") && has) {
         // Phonemes mapped to it need a new viseme: ask. Otherwise delete (Ctrl+Z brings it back).
-        if (edit::phonemesMappedTo(session.document().frequencies,
+        if (edit::phonemesMappedTo(session_.document().frequencies,
                                    set->visemes[static_cast<std::size_t>(selected)].name)
                 .empty()) {
-            session.attempt("Delete viseme", [&] { session.removeViseme(selected); });
+            session_.attempt("Delete viseme", [&] { session_.removeViseme(selected); });
         } else {
-            authoring_.openDelete = true;
-            authoring_.deleteIndex = selected;
-            authoring_.phonemesGoTo.clear();
+            openDelete_ = true;
+            deleteIndex_ = selected;
+            phonemesGoTo_.clear();
         }
     }
     const int last = has ? static_cast<int>(set->size()) - 1 : 0;
     if (has && selected == 0) ImGui::BeginDisabled();
     if (ctl::Button("Move up"))
-        session.attempt("Move viseme", [&] { session.moveViseme(selected, selected - 1); });
+        session_.attempt("Move viseme", [&] { session_.moveViseme(selected, selected - 1); });
     if (has && selected == 0) ImGui::EndDisabled();
     ImGui::SameLine();
     if (has && selected == last) ImGui::BeginDisabled();
     if (ctl::Button("Move down"))
-        session.attempt("Move viseme", [&] { session.moveViseme(selected, selected + 1); });
+        session_.attempt("Move viseme", [&] { session_.moveViseme(selected, selected + 1); });
     if (has && selected == last) ImGui::EndDisabled();
     if (!has) ImGui::EndDisabled();
     helpMarker("Renames, copies and deletes keep the phoneme map, the frequencies, the constraints and the "
                "face's preset of the viseme in step. Every change is one undo step (Ctrl+Z).");
-    deleteVisemePopup();
+    deletePopup();
 }
 
-void EditorUi::deleteVisemePopup() {
-    if (authoring_.openDelete) {
+void VisemeAuthoring::deletePopup() {
+    if (openDelete_) {
         ImGui::OpenPopup(kDeletePopup);
-        authoring_.openDelete = false;
+        openDelete_ = false;
     }
     if (!ImGui::BeginPopupModal(kDeletePopup, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
-    const VisemeSet* set = session.visemes();
-    const int index = authoring_.deleteIndex;
+    const VisemeSet* set = session_.visemes();
+    const int index = deleteIndex_;
     if (!set || index < 0 || index >= static_cast<int>(set->size())) {
         ImGui::CloseCurrentPopup();
         ImGui::EndPopup();
         return;
     }
     const std::string& name = set->visemes[static_cast<std::size_t>(index)].name;
-    const FrequencySource& frequencies = session.document().frequencies;
+    const FrequencySource& frequencies = session_.document().frequencies;
     const std::string phonemes = edit::phonemeList(frequencies, edit::phonemesMappedTo(frequencies, name));
     ImGui::PushTextWrapPos(ImGui::GetFontSize() * 28.0f);
     ImGui::Text("Phonemes %s map to %s.", phonemes.c_str(), name.c_str());
     ImGui::TextUnformatted("Choose the viseme they map to once it is deleted:");
     ImGui::PopTextWrapPos();
     ImGui::SetNextItemWidth(200);
-    if (ctl::BeginCombo("##phonemes-go-to",
-                        authoring_.phonemesGoTo.empty() ? "(choose)" : authoring_.phonemesGoTo.c_str(),
+    if (ctl::BeginCombo("##phonemes-go-to", phonemesGoTo_.empty() ? "(choose)" : phonemesGoTo_.c_str(),
                         ImGuiComboFlags_HeightLargest)) {
         for (const Viseme& viseme : set->visemes)
-            if (viseme.name != name &&
-                ctl::Selectable(viseme.name.c_str(), viseme.name == authoring_.phonemesGoTo))
-                authoring_.phonemesGoTo = viseme.name;
+            if (viseme.name != name && ctl::Selectable(viseme.name.c_str(), viseme.name == phonemesGoTo_))
+                phonemesGoTo_ = viseme.name;
         ImGui::EndCombo();
     }
-    const bool chosen = !authoring_.phonemesGoTo.empty();
+    const bool chosen = !phonemesGoTo_.empty();
     if (!chosen) ImGui::BeginDisabled();
     if (ctl::Button("Delete and move the phonemes")) {
-        session.attempt("Delete viseme", [&] { session.removeViseme(index, authoring_.phonemesGoTo); });
+        session_.attempt("Delete viseme", [&] { session_.removeViseme(index, phonemesGoTo_); });
         ImGui::CloseCurrentPopup();
     }
     if (!chosen) ImGui::EndDisabled();

@@ -1,7 +1,10 @@
 // Visemes panel: the viseme list (frequency, group after reduction), preview on click, loading and
 // importing meshes with the core's interpolability errors shown; under the list, authoring of the
 // selected viseme (VisemeAuthoring.cpp).
-#include "ui/EditorUi.h"
+#include "ui/panels/VisemesPanel.h"
+
+#include "ui/FileActions.h"
+#include "ui/SpeechPlayer.h"
 #include "ui/panels/PanelWidgets.h"
 #include "ui/widgets/Controls.h"
 
@@ -13,22 +16,15 @@
 
 namespace vl::ui {
 
-void EditorUi::visemesPanel() {
-    if (ctl::Button("Load sample face"))
-        guarded([this] { session.attempt("Load sample", [&] { session.startLoadSample(); }); });
+void VisemesPanel::draw() {
+    if (ctl::Button("Load sample face")) files_.loadSample();
     ImGui::SameLine();
-    if (ctl::Button("Open viseme folder..."))
-        guarded([this] {
-            fileDialog_.open("Open viseme folder", FileDialog::Mode::OpenFolder, {},
-                             [this](const auto& path) {
-                                 session.attempt("Open folder", [&] { session.startLoadVisemeFolder(path); });
-                             });
-        });
+    if (ctl::Button("Open viseme folder...")) files_.openVisemeFolder();
 
     ImGui::SameLine();
-    if (ctl::Button("Import avatar...")) openAvatarImport();
+    if (ctl::Button("Import avatar...")) avatar_.openImport();
 
-    const VisemeSet* set = session.visemes();
+    const VisemeSet* set = session_.visemes();
     if (!set) {
         ImGui::Spacing();
         ImGui::TextWrapped("No viseme set yet. Load the sample face, open a project (Ctrl+O), a folder of "
@@ -38,51 +34,15 @@ void EditorUi::visemesPanel() {
     }
 
     // An avatar's visemes are its morph targets (chosen by the pattern); other sets take meshes.
-    const auto importSection = [&] {
-        sectionHeader("Import a viseme mesh");
-        ImGui::SetNextItemWidth(150);
-        ctl::InputTextWithHint("##import-name", "name", &importName_);
-        ImGui::SameLine();
-        if (ctl::Button("Choose file...")) {
-            if (importName_.empty()) {
-                session.error("Import: type a name for the new viseme first");
-            } else {
-                fileDialog_.open(
-                    "Import viseme " + importName_, FileDialog::Mode::OpenFile,
-                    {".obj", ".ply", ".wrl", ".vrml"}, [this](const auto& path) {
-                        importError_.clear();
-                        if (session.attempt("Import", [&] { session.importViseme(importName_, path); }))
-                            importName_.clear();
-                        else
-                            importError_ = session.messages().back().text;
-                    });
-            }
-        }
-        ImGui::SameLine();
-        if (ctl::Button("glTF..."))
-            guarded([this] {
-                fileDialog_.open("Import glTF morph targets", FileDialog::Mode::OpenFile, {".glb", ".gltf"},
-                                 [this](const auto& path) {
-                                     session.attempt("Import glTF", [&] { session.importGltf(path); });
-                                 });
-            });
-        if (!importError_.empty()) {
-            ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
-            ImGui::TextWrapped("%s", importError_.c_str());
-            ImGui::PopStyleColor();
-        }
-        helpMarker("The mesh must have the neutral's vertex count and triangles (same order); otherwise the "
-                   "core's error names the first mismatch and nothing changes.");
-    };
-    if (session.document().avatar.isSet())
-        avatarSection();
+    if (session_.document().avatar.isSet())
+        avatar_.visemesSection();
     else
         importSection();
 
     std::vector<double> frequencies;
     const bool frequenciesOk =
-        session.attempt("Frequencies", [&] { frequencies = session.visemeFrequencies(); });
-    const Grouping* grouping = session.currentGrouping();
+        session_.attempt("Frequencies", [&] { frequencies = session_.visemeFrequencies(); });
+    const Grouping* grouping = session_.currentGrouping();
     std::vector<int> groupOf(set->size(), -2); // -2: no grouping yet
     if (grouping && grouping->feasible()) groupOf = grouping->groupOf();
 
@@ -103,16 +63,16 @@ void EditorUi::visemesPanel() {
         ImGui::TableHeadersRow();
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
-        if (ctl::Selectable("(neutral)", session.selectedViseme < 0, ImGuiSelectableFlags_SpanAllColumns))
-            session.selectedViseme = -1;
+        if (ctl::Selectable("(neutral)", session_.selectedViseme < 0, ImGuiSelectableFlags_SpanAllColumns))
+            session_.selectedViseme = -1;
         for (std::size_t i = 0; i < set->size(); ++i) {
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
             ImGui::PushID(static_cast<int>(i));
             ImGui::AlignTextToFramePadding();
-            if (ctl::Selectable(set->visemes[i].name.c_str(), session.selectedViseme == static_cast<int>(i),
+            if (ctl::Selectable(set->visemes[i].name.c_str(), session_.selectedViseme == static_cast<int>(i),
                                 ImGuiSelectableFlags_SpanAllColumns))
-                session.selectedViseme = static_cast<int>(i);
+                session_.selectedViseme = static_cast<int>(i);
             ImGui::TableNextColumn();
             if (frequenciesOk) {
                 const float f = static_cast<float>(frequencies[i]);
@@ -136,22 +96,50 @@ void EditorUi::visemesPanel() {
         ImGui::EndTable();
     }
     // An avatar's visemes are its morph targets, selected by the pattern: no per-viseme authoring.
-    if (session.document().avatar.isSet())
+    if (session_.document().avatar.isSet())
         ImGui::TextDisabled("Visemes of the avatar: the target pattern selects them.");
     else
-        visemeAuthoring();
+        authoring_.draw();
     ImGui::SameLine();
-    const auto& clip = session.speechClip();
-    bool playAll = speechShown() && say_.playing && clip->loops && clip->sequence.empty();
+    const auto& clip = session_.speechClip();
+    bool playAll = speech_.shown() && speech_.playing() && clip->loops && clip->sequence.empty();
     if (ctl::Checkbox("Play all", &playAll)) {
-        if (playAll) {
-            say_.sequence.clear();
-            session.attempt("Playback", [&] { session.playSequence({}, say_.secondsPerKey); });
+        if (playAll)
+            speech_.playSequence({});
+        else
+            speech_.hide();
+    }
+}
+
+void VisemesPanel::importSection() {
+    sectionHeader("Import a viseme mesh");
+    ImGui::SetNextItemWidth(150);
+    ctl::InputTextWithHint("##import-name", "name", &importName_);
+    ImGui::SameLine();
+    if (ctl::Button("Choose file...")) {
+        if (importName_.empty()) {
+            session_.error("Import: type a name for the new viseme first");
         } else {
-            pauseSpeech();
-            say_.shown = false;
+            files_.dialog().open(
+                "Import viseme " + importName_, FileDialog::Mode::OpenFile, {".obj", ".ply", ".wrl", ".vrml"},
+                [this](const auto& path) {
+                    importError_.clear();
+                    if (session_.attempt("Import", [&] { session_.importViseme(importName_, path); }))
+                        importName_.clear();
+                    else
+                        importError_ = session_.messages().back().text;
+                });
         }
     }
+    ImGui::SameLine();
+    if (ctl::Button("glTF...")) files_.importGltf("Import glTF morph targets");
+    if (!importError_.empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
+        ImGui::TextWrapped("%s", importError_.c_str());
+        ImGui::PopStyleColor();
+    }
+    helpMarker("The mesh must have the neutral's vertex count and triangles (same order); otherwise the "
+               "core's error names the first mismatch and nothing changes.");
 }
 
 } // namespace vl::ui

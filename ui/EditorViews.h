@@ -1,0 +1,98 @@
+#pragma once
+// The editor's 3D views: the main view (the visemes, or the face with the (u,v) inset of the
+// Deformation panel; the Weights panel paints in it) and the Reduction panel's side-by-side
+// comparison with the Say timeline under it. Owns the GPU copies of the session's meshes, the
+// cameras (one per subject, kept across tabs) and the per-vertex scalars they show; asks the
+// panels what to show.
+#include "ui/Panel.h"
+#include "ui/SpeechPlayer.h"
+#include "ui/panels/DeformationPanel.h"
+#include "ui/panels/ReductionPanel.h"
+#include "ui/panels/WeightsPanel.h"
+#include "ui/render/GlShader.h"
+#include "ui/render/GpuMesh.h"
+#include "ui/render/Viewport.h"
+#include "ui/session/EditorSession.h"
+
+#include <nlohmann/json.hpp>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace vl::ui {
+
+// What the main view shows.
+enum class ViewSubject { Visemes, Face };
+
+class EditorViews {
+  public:
+    // The panels whose state the views show (they may be constructed after the views).
+    struct Panels {
+        WeightsPanel& weights;
+        DeformationPanel& deformation;
+        ReductionPanel& reduction;
+    };
+    EditorViews(EditorSession& session, SpeechPlayer& speech, Panels panels);
+
+    // Once per frame before drawing: the GPU copies of what changed, new meshes framed.
+    void update(Panel active);
+    void draw(Panel active, float left, float top, float width, float height);
+    void frameAll(); // every view on its model (key F)
+    const Viewport& mainView() const { return mainView_; }
+    // The status bar's statistics of what the views show.
+    std::string statistics() const;
+    // The face view's last frame, the camera and the wireframe, for the GUI probe.
+    void addProbe(nlohmann::json& summary) const;
+
+    bool wireframe = true;
+
+  private:
+    void drawMainView(ImVec2 size);
+    void comparisonViews(ImVec2 size);
+    void frameNewMeshes();
+    void syncGpu();
+    void syncContextMesh();
+    void updateScalars();
+    void drawContext(const glm::mat4& view, const glm::mat4& projection) const;
+    std::vector<float> visemeWeights(int viseme) const;
+    ColorMode surfaceColours() const; // face colours for visemes generated from the face model
+    nlohmann::json faceViewProbe() const;
+
+    EditorSession& session_;
+    SpeechPlayer& speech_;
+    Panels panels_;
+    Panel active_ = Panel::Visemes;
+    ViewSubject subject_ = ViewSubject::Visemes;
+    GlShader shader_;
+    GpuMesh visemeMesh_;  // neutral + one target per viseme
+    GpuMesh mergedMesh_;  // neutral + one target per merged group
+    GpuMesh faceMesh_;    // face cascade at q = 0 + one target per parameter
+    GpuMesh partsMesh_;   // the head's parts (eyeballs, teeth, tongue, cavity) in the same form
+    GpuMesh contextMesh_; // an avatar's meshes without visemes, drawn greyed
+    Viewport mainView_, beforeView_, afterView_;
+    std::uint64_t uploadedGeometry_ = 0;
+    // Caches hold what they show (shared, immutable) or its revision, never a bare address that a
+    // later allocation could reuse.
+    std::shared_ptr<const DeformationCascade> uploadedCascade_;
+    std::shared_ptr<const MeshData> uploadedDomain_;
+    std::shared_ptr<const HeadPartSamples> uploadedParts_; // what partsMesh_ holds
+    std::shared_ptr<const AvatarScan> uploadedContext_;    // the scan contextMesh_ shows
+    std::uint64_t uploadedMergedCurve_ = 0;                // ReductionService::curveRevision()
+    int uploadedMergedGroups_ = 0;
+    // What each mesh's scalars currently show, to re-upload only on change.
+    std::string weightsKey_, errorKey_, influenceKey_;
+    double errorLegendMax_ = 0.0; // largest weighted distance of the error colours, model units
+    // What the face view drew in its last frame (for the probe): the panel, the weights, and the
+    // triangles of skin and parts.
+    struct ShownFace {
+        Panel panel = Panel::Count;
+        std::vector<float> weights;
+        std::size_t skinTriangles = 0, partTriangles = 0;
+    } shownFace_;
+    // The camera of each subject, kept across tabs; framed when its mesh first appears.
+    OrbitCamera visemeCamera_, faceCamera_;
+    bool frameVisemes_ = true, frameFace_ = true;
+};
+
+} // namespace vl::ui
