@@ -53,7 +53,7 @@ Document documentOfSet(std::shared_ptr<const VisemeSet> set, std::filesystem::pa
 
 } // namespace
 
-EditorSession::EditorSession() : history_(Document{}) {
+EditorSession::EditorSession() : history_(Document{}), inputs_(history_.currentShared()) {
     reduction_.track(document(), true);
 }
 
@@ -70,6 +70,7 @@ void EditorSession::retireCurrent() {
 
 // Views and services follow the document that is current now.
 void EditorSession::noteChange(const Document& before) {
+    inputs_.update(history_.currentShared(), changedParts(before, document()));
     reduction_.track(document());
     if (before.visemes != document().visemes) {
         ++geometryGeneration_;
@@ -143,6 +144,7 @@ void EditorSession::adopt(Loaded loaded) {
     path_ = std::move(loaded.path);
     reduction_.track(document(), true); // a new document never reuses an old curve
     noteChange(before);
+    inputs_.reset(history_.currentShared());
     ++geometryGeneration_;
     // The result the file recorded is shown until a fresh reduction replaces it.
     // (Only a result of the document's rest model: a file may record one of the other.)
@@ -288,12 +290,9 @@ std::string EditorSession::writeAvatarExport(const Document& document, const Pro
                                              const std::filesystem::path& out, const AvatarExport& options) {
     checkAvatarOutput(document, out);
     // The grouping shown (recorded in the snapshot), else a fresh reduction with the document's settings.
-    const auto& stored = snapshot.reduction.result;
-    const std::vector<int> groupOf =
-        stored && static_cast<int>(stored->curve.size()) == snapshot.reduction.target &&
-                stored->restFree == documentRestPose(document).free
-            ? stored->groupOf()
-            : reduceProject(snapshot, *document.visemes).result.groupOf();
+    const ReduceInputs inputs = projectReduceInputs(snapshot, document.visemes);
+    const std::vector<int> groupOf = reducedGrouping(
+        inputs, recordedGrouping(inputs, snapshot.reduction.result), ReductionService::policy());
     AvatarWriteSummary summary;
     std::string glb = reducedAvatarGlb(document, groupOf, options.write, &summary);
     if (options.gltfpack) {
@@ -301,9 +300,7 @@ std::string EditorSession::writeAvatarExport(const Document& document, const Pro
         if (gltfpack.empty())
             throwInputError("gltfpack", std::string("not found, so the avatar cannot be re-compressed; ") +
                                             kGltfpackHint);
-        Recompressed packed = recompressWithGltfpack(glb, gltfpack, {document.avatar.pattern});
-        glb = std::move(packed.glb);
-        summary.notes.insert(summary.notes.end(), packed.notes.begin(), packed.notes.end());
+        recompressInPlace(glb, summary.notes, gltfpack, {document.avatar.pattern});
     }
     writeFileAtomically(out, glb);
     int keys = 0;
@@ -421,7 +418,8 @@ std::vector<std::filesystem::path> EditorSession::writeExport(const Document& do
                                                               const Project& snapshot, ExportFormat format,
                                                               const std::filesystem::path& out) {
     // The meshes shown (the document's, in memory), never re-read from their files.
-    return exportModel(projectReducedModel(snapshot, *document.visemes), format, out);
+    return exportModel(projectReducedModel(snapshot, *document.visemes, false, ReductionService::policy()),
+                       format, out);
 }
 
 std::vector<std::filesystem::path> EditorSession::exportProject(ExportFormat format,

@@ -28,8 +28,7 @@ const ReducedModel* ReductionService::reducedModel(const Document& document) {
     if (!model_ || modelRevision_ != revision_ || modelCurve_ != curve_.serial ||
         modelGroups_ != document.target) {
         model_.reset();
-        model_ = buildReducedModel(*document.visemes, documentFrequencies(document), groups->groupOf(),
-                                   document.frequencies);
+        model_ = vl::reducedModel({document.visemes, document.frequencies, {}}, groups, policy());
         modelRevision_ = revision_;
         modelCurve_ = curve_.serial;
         modelGroups_ = document.target;
@@ -56,7 +55,7 @@ void ReductionService::start(const Document& document) {
     // Large sets: branch and bound reports the best grouping found and its proven gap when the time
     // is up, instead of keeping the designer waiting.
     ReductionOptions options;
-    if (n > kMaxExactVisemes) options.timeLimitSeconds = kLargeSetSeconds;
+    options.timeLimitSeconds = policy().timeLimitFor(document.visemeCount());
     // The bound of the target's search, for the progress bar, and a stop that keeps what was found.
     auto watch = std::make_shared<BoundWatch>(std::clamp(document.target, 1, groups));
     auto stop = std::make_shared<std::atomic<bool>>(false);

@@ -4,6 +4,7 @@
 // weights): the service numbers those inputs with a revision that changes whenever they change,
 // and keeps the curve and the reduced model for the revision they were computed for.
 #include "core/document/Document.h"
+#include "core/project/ReduceInputs.h"
 #include "core/reduce/ReducedModel.h"
 #include "ui/session/BackgroundTask.h"
 
@@ -65,9 +66,9 @@ class ReductionService {
     // Entries of a full curve: p = 1..n, or up to the most keys the constraints and the rest model
     // allow (documentMaxKeys).
     static std::size_t curveLength(const Document& document);
-    // Time a reduction of more than kMaxExactVisemes visemes may take before it reports the best
-    // grouping found with its gap.
-    static constexpr double kLargeSetSeconds = 10.0;
+    // How long a reduction may search before it reports the best grouping found with its gap (sets
+    // of more than kMaxExactVisemes visemes): the editor's, which its exports use too.
+    static ReducePolicy policy() { return ReducePolicy::interactive(); }
     // The grouping into m groups from the current curve, or null.
     const Grouping* grouping(int m) const;
     // The reduced model of grouping(document.target): merged keys (frequency-weighted means, eq. 19)
