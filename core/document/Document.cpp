@@ -75,9 +75,10 @@ DocumentParts changedParts(const Document& before, const Document& after) {
     if (before.face.cascade != after.face.cascade || before.face.individual != after.face.individual ||
         before.face.domain != after.face.domain || before.face.presets != after.face.presets)
         parts |= kFacePart;
-    if (before.target != after.target || before.constraints != after.constraints ||
-        before.rest != after.rest || before.restViseme != after.restViseme)
+    if (before.constraints != after.constraints || before.rest != after.rest ||
+        before.restViseme != after.restViseme)
         parts |= kReductionPart;
+    if (before.target != after.target) parts |= kTargetPart;
     if (before.refinement != after.refinement || before.speech != after.speech) parts |= kOtherPart;
     // A field the tags above do not know yet (added later): everything may have changed.
     if (parts == 0 && !(before == after)) parts = kAllDocumentParts;
@@ -91,7 +92,8 @@ std::uint64_t reductionInputValidations() {
 void validateDocument(const Document& document, DocumentParts changed) {
     if (document.face.cascade && (changed & (kFaceParameterPart | kFacePart)))
         checkParameterValues(*document.face.cascade, document.face.parameters);
-    constexpr DocumentParts reductionInputs = kVisemePart | kFrequencyPart | kWeightPart | kReductionPart;
+    constexpr DocumentParts reductionInputs =
+        kVisemePart | kFrequencyPart | kWeightPart | kReductionPart | kTargetPart;
     if (!document.visemes || !(changed & reductionInputs)) return;
     ++inputValidations;
     if (document.visemeFiles.size() != document.visemes->size())

@@ -97,9 +97,10 @@ enum DocumentPart : unsigned {
     kWeightPart = 1u << 2,        // weight mode and painted weights
     kFaceParameterPart = 1u << 3, // the face's slider values
     kFacePart = 1u << 4,          // the rest of the face: cascade, individual, (u,v) mesh, presets
-    kReductionPart = 1u << 5,     // target, constraints, rest model and rest viseme
-    kOtherPart = 1u << 6,         // refinement thresholds, speech settings
-    kAllDocumentParts = (1u << 7) - 1,
+    kReductionPart = 1u << 5,     // constraints, rest model and rest viseme (the curve's settings)
+    kTargetPart = 1u << 6,        // m: which grouping of the curve, not the curve
+    kOtherPart = 1u << 7,         // refinement thresholds, speech settings
+    kAllDocumentParts = (1u << 8) - 1,
 };
 using DocumentParts = unsigned;
 

@@ -25,8 +25,8 @@ class DocumentInputs {
     // The current document after an edit, undo or redo that changed `changed` (changedParts).
     void update(DocumentPtr document, DocumentParts changed);
 
-    // Numbers the reduction inputs (meshes, frequencies, weights, target, constraints, rest model):
-    // equal revisions, equal inputs.
+    // Numbers the reduction curve's inputs (meshes, frequencies, weights, constraints, rest model;
+    // not the target, which picks a grouping of the curve): equal revisions, equal inputs.
     std::uint64_t revision() const { return revision_; }
     // documentWeights / documentFrequencies of the current document (throw InputError when invalid).
     const std::vector<double>& weights() const;

@@ -13,7 +13,7 @@ TEST(DocumentParts, EachEditIsTaggedWithWhatItChanged) {
     const Document document = test::faceDocument();
     EXPECT_EQ(changedParts(document, document), 0u);
     EXPECT_EQ(changedParts(document, edit::setParameter(document, 0, 0.25)), kFaceParameterPart);
-    EXPECT_EQ(changedParts(document, edit::setTarget(document, 2)), kReductionPart);
+    EXPECT_EQ(changedParts(document, edit::setTarget(document, 2)), kTargetPart);
     EXPECT_EQ(changedParts(document, edit::setWeightMode(document, WeightMode::Area)), kWeightPart);
     EXPECT_EQ(changedParts(document, edit::setVisemeFrequency(document, 0, 2.0)), kFrequencyPart);
 }

@@ -4,7 +4,6 @@
 
 #include "core/common/AtomicFile.h"
 #include "core/common/Error.h"
-#include "core/common/TextParsing.h"
 #include "core/deform/FaceDomain.h"
 #include "core/deform/Visemes.h"
 #include "core/document/AvatarDocument.h"
@@ -54,7 +53,7 @@ Document documentOfSet(std::shared_ptr<const VisemeSet> set, std::filesystem::pa
 } // namespace
 
 EditorSession::EditorSession() : history_(Document{}), inputs_(history_.currentShared()) {
-    reduction_.track(document(), true);
+    reduction_.track(inputs_.revision());
 }
 
 EditorSession::~EditorSession() {
@@ -71,7 +70,7 @@ void EditorSession::retireCurrent() {
 // Views and services follow the document that is current now.
 void EditorSession::noteChange(const Document& before) {
     inputs_.update(history_.currentShared(), changedParts(before, document()));
-    reduction_.track(document());
+    reduction_.track(inputs_.revision());
     if (before.visemes != document().visemes) {
         ++geometryGeneration_;
         if (selectedViseme >= static_cast<int>(visemeCount())) selectedViseme = -1;
@@ -142,9 +141,9 @@ void EditorSession::adopt(Loaded loaded) {
     history_.reset(std::move(loaded.project.document));
     if (loaded.unsaved) history_.markUnsaved();
     path_ = std::move(loaded.path);
-    reduction_.track(document(), true); // a new document never reuses an old curve
     noteChange(before);
-    inputs_.reset(history_.currentShared());
+    inputs_.reset(history_.currentShared()); // a new revision: a new document never reuses an old curve
+    reduction_.track(inputs_.revision());
     ++geometryGeneration_;
     // The result the file recorded is shown until a fresh reduction replaces it.
     // (Only a result of the document's rest model: a file may record one of the other.)
@@ -509,20 +508,7 @@ void EditorSession::startPhonemeCount(const std::filesystem::path& corpus, const
 }
 
 void EditorSession::saveFrequenciesCsv(const std::filesystem::path& file) const {
-    const FrequencySource& source = document().frequencies;
-    std::string text;
-    if (source.isPhonemeBased()) {
-        text = "phoneme,frequency,viseme\n";
-        for (const auto& [phoneme, f] : source.phonemes.entries) {
-            const std::string* viseme = source.map.visemeOf(phoneme);
-            text += phoneme + "," + formatDouble(f) + "," + (viseme ? *viseme : std::string()) + "\n";
-        }
-    } else {
-        text = "viseme,frequency\n";
-        for (const auto& [name, f] : source.visemeFrequencies.entries)
-            text += name + "," + formatDouble(f) + "\n";
-    }
-    writeFileAtomically(file, text);
+    writeFileAtomically(file, formatFrequencyCsv(document().frequencies));
 }
 
 // --- weights ---------------------------------------------------------------------------------

@@ -192,7 +192,7 @@ class EditorSession {
     // The reduction model and rest viseme (edit::setRest), one undo step.
     void setRest(RestChoice rest, const std::string& restViseme);
     // Starts the reduction of the current inputs on a worker thread (no-op when already current).
-    void startReduction() { reduction_.start(document()); }
+    void startReduction() { reduction_.start(document(), inputs_); }
     bool reductionRunning() const { return reduction_.running(); }
     // Drops a running reduction (the searches stop within one progress poll); "Run now" restarts it.
     void cancelReduction() { reduction_.cancel(); }

@@ -7,11 +7,6 @@
 
 namespace vl::ui {
 
-void ReductionService::track(const Document& document, bool fresh) {
-    if (fresh || !sameReductionInputs(tracked_, document)) ++revision_;
-    tracked_ = document;
-}
-
 const ReductionResult* ReductionService::curve() const {
     return curve_.result && curve_.revision == revision_ ? curve_.result.get() : nullptr;
 }
@@ -40,9 +35,9 @@ std::size_t ReductionService::curveLength(const Document& document) {
     return static_cast<std::size_t>(std::max(1, documentMaxKeys(document)));
 }
 
-void ReductionService::start(const Document& document) {
+void ReductionService::start(const Document& document, const DocumentInputs& inputs) {
     if (document.visemeCount() < 2) throwInputError("reduction", "load a viseme set with at least 2 visemes");
-    track(document);
+    track(inputs.revision());
     if (complete(document)) return;
     if (task_.running() && runningRevision_ == revision_) return;
     const int n = static_cast<int>(document.visemeCount());
@@ -66,8 +61,8 @@ void ReductionService::start(const Document& document) {
     // The worker holds the document's immutable meshes (viewed, not copied) and its own copies of
     // the rest.
     auto set = document.visemes;
-    auto frequencies = std::make_shared<std::vector<double>>(documentFrequencies(document));
-    auto weights = std::make_shared<std::vector<double>>(documentWeights(document));
+    auto frequencies = std::make_shared<std::vector<double>>(inputs.frequencies());
+    auto weights = std::make_shared<std::vector<double>>(inputs.weights());
     const RestPose rest = documentRestPose(document); // views set's neutral, which the worker holds
     runningRevision_ = revision_;
     runningLarge_ = n > kMaxExactVisemes;
