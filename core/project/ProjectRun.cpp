@@ -150,4 +150,11 @@ ReducedModel projectReducedModel(const Project& project, const VisemeSet& set, b
     return reducedModel(inputs, recordedGrouping(inputs, project.reduction.result), policy);
 }
 
+ProjectExport exportProjectModel(const Project& project, const VisemeSet& set, ExportFormat format,
+                                 const std::filesystem::path& out, const ExportOptions& options,
+                                 bool unreduced, const ReducePolicy& policy) {
+    const ReducedModel model = projectReducedModel(project, set, unreduced, policy);
+    return {model.keys.size(), exportModel(model, format, out, options)};
+}
+
 } // namespace vl

@@ -1,6 +1,7 @@
 #pragma once
 // Turning a project into work: loading the meshes it references and running its reduction, so the
 // CLI (`visemelab reduce --project`) and the editor do exactly the same thing.
+#include "core/export/Export.h"
 #include "core/project/Project.h"
 #include "core/project/ReduceInputs.h"
 #include "core/reduce/ReduceRun.h"
@@ -42,6 +43,16 @@ ReducedModel projectReducedModel(const Project& project, bool unreduced = false,
 // The same with the project's meshes already loaded (loadProjectVisemeSet).
 ReducedModel projectReducedModel(const Project& project, const VisemeSet& set, bool unreduced = false,
                                  const ReducePolicy& policy = ReducePolicy::batch());
+
+// Exports the project's reduced model (projectReducedModel; every viseme its own key with
+// `unreduced`) in `format` to `out`: `visemelab export` and the editor's Export.
+struct ProjectExport {
+    std::size_t keys = 0;                     // key meshes exported
+    std::vector<std::filesystem::path> files; // written
+};
+ProjectExport exportProjectModel(const Project& project, const VisemeSet& set, ExportFormat format,
+                                 const std::filesystem::path& out, const ExportOptions& options = {},
+                                 bool unreduced = false, const ReducePolicy& policy = ReducePolicy::batch());
 
 // Stores the outcome as the project's last result.
 void storeReductionResult(Project& project, const ReduceOutcome& outcome);

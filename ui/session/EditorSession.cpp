@@ -417,8 +417,8 @@ std::vector<std::filesystem::path> EditorSession::writeExport(const Document& do
                                                               const Project& snapshot, ExportFormat format,
                                                               const std::filesystem::path& out) {
     // The meshes shown (the document's, in memory), never re-read from their files.
-    return exportModel(projectReducedModel(snapshot, *document.visemes, false, ReductionService::policy()),
-                       format, out);
+    return exportProjectModel(snapshot, *document.visemes, format, out, {}, false, ReductionService::policy())
+        .files;
 }
 
 std::vector<std::filesystem::path> EditorSession::exportProject(ExportFormat format,
