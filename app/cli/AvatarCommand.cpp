@@ -14,6 +14,7 @@
 #include "core/gltf/Gltfpack.h"
 #include "core/gltf/TargetNames.h"
 #include "core/phonetics/PhonemeMaps.h"
+#include "core/project/ReduceInputs.h"
 
 #include <chrono>
 #include <cstdio>
@@ -76,15 +77,10 @@ FrequencySource avatarFrequencies(const AvatarReduceOptions& o, const AvatarScan
             source = loadFrequencyFile(defaultPhonemeTablePath(assets));
             chosen = "bundled en-us phoneme table";
         }
-        if (!source.isPhonemeBased()) { // the table holds phoneme frequencies
-            source.phonemes = std::move(source.visemeFrequencies);
-            source.visemeFrequencies = {};
-        }
-        source.map = loadPhonemeMapFile(o.mapFile);
+        source = withPhonemeMap(std::move(source), loadPhonemeMapFile(o.mapFile));
         chosen += " + map " + o.mapFile;
     }
-    if (source.isPhonemeBased() && source.map.entries.empty())
-        throwInputError(o.freqFile, "a phoneme frequency table needs a phoneme -> viseme map (--map FILE)");
+    requirePhonemeMap(source, o.freqFile);
     return source;
 }
 
@@ -125,14 +121,14 @@ int runAvatarReduce(const AvatarReduceOptions& o) {
 
     const auto t1 = std::chrono::steady_clock::now();
     ProgressLine progress("reducing");
-    AvatarReduction r = reduceAvatar(doc, scan, frequencies, settings, write, progress.callback());
+    AvatarReduction r =
+        reduceAvatar(doc, scan, frequencies, withPolicy(settings, ReducePolicy::batch(), scan.visemes.size()),
+                     write, progress.callback());
     progress.finish();
     timings.reduceMs = avatarMillisecondsSince(t1);
     const auto t2 = std::chrono::steady_clock::now();
     if (o.gltfpack) {
-        Recompressed packed = recompressWithGltfpack(r.glb, findGltfpack(), {o.targets});
-        r.glb = std::move(packed.glb);
-        r.summary.notes.insert(r.summary.notes.end(), packed.notes.begin(), packed.notes.end());
+        recompressInPlace(r.glb, r.summary.notes, findGltfpack(), {o.targets});
     } else if (avatarStoredCompressed(scan)) {
         const std::filesystem::path gltfpack = findGltfpack();
         r.summary.notes.push_back(

@@ -26,14 +26,14 @@ int runExport(const ExportOptions& o) {
     if (o.quantise && *format != ExportFormat::Runtime)
         throwInputError("--quantise", "only the runtime package can be quantised");
     const Project project = loadProject(o.project);
-    const ReducedModel model = projectReducedModel(project, o.unreduced);
     vl::ExportOptions options;
     options.quantise = o.quantise;
     options.faceName = std::filesystem::path(o.project).stem().string();
-    const auto written = exportModel(model, *format, o.out, options);
-    std::fprintf(stderr, "exported %zu key meshes (%s) as %s:\n", model.keys.size(),
+    const ProjectExport exported =
+        exportProjectModel(project, loadProjectVisemeSet(project), *format, o.out, options, o.unreduced);
+    std::fprintf(stderr, "exported %zu key meshes (%s) as %s:\n", exported.keys,
                  o.unreduced ? "unreduced" : "reduced", toString(*format));
-    for (const auto& path : written) std::fprintf(stderr, "  %s\n", path.string().c_str());
+    for (const auto& path : exported.files) std::fprintf(stderr, "  %s\n", path.string().c_str());
     return kExitOk;
 }
 

@@ -12,6 +12,7 @@
 #include "core/export/Xface.h"
 #include "core/inspect/DistanceUnits.h"
 #include "core/project/ProjectRun.h"
+#include "core/project/ReduceInputs.h"
 #include "core/reduce/ReduceRun.h"
 
 #include <algorithm>
@@ -40,7 +41,7 @@ struct ReduceOptions {
     std::string report;
     ConstraintOptions constraints;
     std::string method = "auto";
-    double timeLimit = 60;
+    double timeLimit = kBatchReduceSeconds;
     std::vector<std::string> compareMaps; // phoneme -> viseme maps costed as groupings
     std::string rest;                     // auto, free or key (ReduceRun.h RestChoice); empty: not given
     std::string restViseme;
@@ -83,14 +84,7 @@ FrequencySource loadFrequencies(const ReduceOptions& o, const VisemeSet& set, co
                      "visemelab: no frequencies given (--freq-file / --freq): using equal frequencies\n");
         for (const auto& v : set.visemes) source.visemeFrequencies.entries.emplace_back(v.name, 1.0);
     }
-    if (!o.mapFile.empty()) {
-        // With a map, the table holds phoneme frequencies.
-        if (!source.isPhonemeBased()) {
-            source.phonemes = std::move(source.visemeFrequencies);
-            source.visemeFrequencies = {};
-        }
-        source.map = loadPhonemeMapFile(o.mapFile);
-    }
+    if (!o.mapFile.empty()) source = withPhonemeMap(std::move(source), loadPhonemeMapFile(o.mapFile));
     // An Xface face's .dic maps a phoneme table given without --map (a table that names only the
     // face's visemes stays a viseme table); the phonemes it shows with the neutral (pauses) are not
     // visemes and leave the table.
@@ -100,20 +94,15 @@ FrequencySource loadFrequencies(const ReduceOptions& o, const VisemeSet& set, co
             std::all_of(source.visemeFrequencies.entries.begin(), source.visemeFrequencies.entries.end(),
                         [&](const auto& entry) { return set.find(entry.first) >= 0; });
         if (!visemeTable) {
-            if (!source.isPhonemeBased()) {
-                source.phonemes = std::move(source.visemeFrequencies);
-                source.visemeFrequencies = {};
-            }
-            if (source.map.entries.empty()) source.map = xface.dictionary;
+            PhonemeVisemeMap map = source.map.entries.empty() ? xface.dictionary : source.map;
+            source = withPhonemeMap(std::move(source), std::move(map));
             std::erase_if(source.phonemes.entries, [&](const auto& entry) {
                 return std::find(xface.restPhonemes.begin(), xface.restPhonemes.end(), entry.first) !=
                        xface.restPhonemes.end();
             });
         }
     }
-    if (source.isPhonemeBased() && source.map.entries.empty())
-        throwInputError("--freq-file",
-                        "a phoneme frequency table needs a phoneme -> viseme map (--map FILE)");
+    requirePhonemeMap(source, "--freq-file");
     return source;
 }
 
@@ -127,13 +116,6 @@ ReduceSettings loadSettings(const ReduceOptions& o) {
 double millisecondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
-
-// Everything a run needs, from a project file (flags given alongside override it) or from flags.
-struct ReduceInputs {
-    VisemeSet set;
-    FrequencySource frequencies;
-    ReduceSettings settings;
-};
 
 RestChoice restChoiceFlag(const std::string& text) {
     if (const auto choice = restChoiceFromString(text)) return *choice;
@@ -174,7 +156,6 @@ void applySolverFlags(const ReduceOptions& o, ReduceSettings& settings) {
         settings.constraints = combineConstraints(settings.constraints, flags);
     }
     settings.options.method = reductionMethodFromString(o.method, "--method");
-    settings.options.timeLimitSeconds = o.timeLimit;
     // A project's rest model holds unless a flag says otherwise; without a project: auto.
     if (!o.rest.empty())
         settings.rest = restChoiceFlag(o.rest);
@@ -189,22 +170,23 @@ void applySolverFlags(const ReduceOptions& o, ReduceSettings& settings) {
     for (const auto& file : o.compareMaps) settings.compareMaps.push_back(loadPhonemeMapFile(file));
 }
 
+// Everything a run needs, from a project file (flags given alongside override it) or from flags.
 ReduceInputs loadInputs(const ReduceOptions& o, bool weightsGiven) {
     checkFlagCombinations(o);
     ReduceInputs in;
     if (o.project.empty()) {
         XfaceFace xface;
-        in.set = loadSet(o, xface);
-        in.frequencies = loadFrequencies(o, in.set, xface);
+        in.set = std::make_shared<const VisemeSet>(loadSet(o, xface));
+        in.frequencies = loadFrequencies(o, *in.set, xface);
         in.settings = loadSettings(o);
         applySolverFlags(o, in.settings);
-        in.settings.millimetresPerUnit = guessMillimetresPerUnit(in.set.neutral.positions);
+        in.settings.millimetresPerUnit = guessMillimetresPerUnit(in.set->neutral.positions);
         return in;
     }
     const Project project = loadProject(o.project);
-    in.set = loadProjectVisemeSet(project);
+    in.set = std::make_shared<const VisemeSet>(loadProjectVisemeSet(project));
     in.frequencies =
-        (o.freqFile.empty() && o.freqs.empty()) ? project.frequencies : loadFrequencies(o, in.set);
+        (o.freqFile.empty() && o.freqs.empty()) ? project.frequencies : loadFrequencies(o, *in.set);
     in.settings = weightsGiven ? loadSettings(o) : projectReduceSettings(project);
     in.settings.target = o.target != kTargetNotGiven ? o.target : project.reduction.target;
     if (weightsGiven) { // the project's constraints apply whatever the weights
@@ -216,19 +198,21 @@ ReduceInputs loadInputs(const ReduceOptions& o, bool weightsGiven) {
         in.settings.restVisemeSource = fromProject.restVisemeSource;
     }
     applySolverFlags(o, in.settings);
-    in.settings.millimetresPerUnit = guessMillimetresPerUnit(in.set.neutral.positions);
+    in.settings.millimetresPerUnit = guessMillimetresPerUnit(in.set->neutral.positions);
     return in;
 }
 
 int runReduce(const ReduceOptions& o, bool weightsGiven) {
     const auto t0 = std::chrono::steady_clock::now();
-    const auto [set, frequencies, settings] = loadInputs(o, weightsGiven);
+    const ReduceInputs inputs = loadInputs(o, weightsGiven);
+    const VisemeSet& set = *inputs.set;
+    const ReduceSettings& settings = inputs.settings;
     ReduceTimings timings;
     timings.loadMs = millisecondsSince(t0);
 
     const auto t1 = std::chrono::steady_clock::now();
     ProgressLine progress("reducing");
-    const ReduceOutcome outcome = runReduction(set, frequencies, settings, progress.callback());
+    const ReduceOutcome outcome = reduce(inputs, ReducePolicy::batch(o.timeLimit), progress.callback());
     progress.finish();
     timings.reduceMs = millisecondsSince(t1);
 

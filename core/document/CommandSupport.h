@@ -16,6 +16,13 @@ inline Document checked(Document next) {
     return next;
 }
 
+// The same for an edit of `before`: only the checks that depend on what it changed (a slider tick
+// checks the parameter values, not the frequencies and weights it left alone).
+inline Document checkedChange(const Document& before, Document next) {
+    validateDocument(next, changedParts(before, next));
+    return next;
+}
+
 inline void requireSet(const Document& document, std::string_view what) {
     if (!document.visemes) throwInputError(what, "load a viseme set first");
 }

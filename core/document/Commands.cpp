@@ -20,6 +20,7 @@ namespace vl::edit {
 namespace {
 
 using detail::checked;
+using detail::checkedChange;
 using detail::checkedIndex;
 using detail::refuseAvatar;
 using detail::requireFace;
@@ -173,7 +174,7 @@ Document setParameters(const Document& document, std::vector<double> values) {
     checkParameterValues(*document.face.cascade, values);
     Document next = document;
     next.face.parameters = std::move(values);
-    return checked(std::move(next));
+    return checkedChange(document, std::move(next));
 }
 
 Document setParameter(const Document& document, int parameter, double value) {

@@ -8,6 +8,8 @@
 #include "core/project/FaceProject.h"
 #include "core/project/ProjectRun.h"
 
+#include <atomic>
+
 namespace vl {
 
 const std::vector<double>& DocumentWeights::paintedOrEmpty() const {
@@ -57,9 +59,43 @@ std::vector<double> documentFrequencies(const Document& document) {
     return visemeFrequencies(document.frequencies, visemeNames(document));
 }
 
-void validateDocument(const Document& document) {
-    if (document.face.cascade) checkParameterValues(*document.face.cascade, document.face.parameters);
-    if (!document.visemes) return;
+namespace {
+std::atomic<std::uint64_t> inputValidations{0};
+} // namespace
+
+DocumentParts changedParts(const Document& before, const Document& after) {
+    DocumentParts parts = 0;
+    if (before.visemes != after.visemes || before.neutralFile != after.neutralFile ||
+        before.visemeFiles != after.visemeFiles || before.visemeColours != after.visemeColours ||
+        before.avatar != after.avatar)
+        parts |= kVisemePart;
+    if (before.frequencies != after.frequencies) parts |= kFrequencyPart;
+    if (before.weights != after.weights) parts |= kWeightPart;
+    if (before.face.parameters != after.face.parameters) parts |= kFaceParameterPart;
+    if (before.face.cascade != after.face.cascade || before.face.individual != after.face.individual ||
+        before.face.domain != after.face.domain || before.face.presets != after.face.presets)
+        parts |= kFacePart;
+    if (before.constraints != after.constraints || before.rest != after.rest ||
+        before.restViseme != after.restViseme)
+        parts |= kReductionPart;
+    if (before.target != after.target) parts |= kTargetPart;
+    if (before.refinement != after.refinement || before.speech != after.speech) parts |= kOtherPart;
+    // A field the tags above do not know yet (added later): everything may have changed.
+    if (parts == 0 && !(before == after)) parts = kAllDocumentParts;
+    return parts;
+}
+
+std::uint64_t reductionInputValidations() {
+    return inputValidations.load();
+}
+
+void validateDocument(const Document& document, DocumentParts changed) {
+    if (document.face.cascade && (changed & (kFaceParameterPart | kFacePart)))
+        checkParameterValues(*document.face.cascade, document.face.parameters);
+    constexpr DocumentParts reductionInputs =
+        kVisemePart | kFrequencyPart | kWeightPart | kReductionPart | kTargetPart;
+    if (!document.visemes || !(changed & reductionInputs)) return;
+    ++inputValidations;
     if (document.visemeFiles.size() != document.visemes->size())
         throwInputError("document", "one mesh source per viseme expected");
     documentFrequencies(document);

@@ -20,6 +20,7 @@
 #include "core/reduce/VisemeSet.h"
 #include "core/reduce/Weights.h"
 
+#include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -87,9 +88,32 @@ bool sameReductionInputs(const Document& a, const Document& b);
 // Viseme names in set order (empty without a set).
 std::vector<std::string> visemeNames(const Document& document);
 
+// The parts of a document an edit can change. Validation and derived data (DocumentInputs) are
+// tagged with what changed and re-evaluate only what depends on it, as Blender's depsgraph does: a
+// slider tick changes only FaceParameters and validates only the parameter values.
+enum DocumentPart : unsigned {
+    kVisemePart = 1u << 0,        // the set, its mesh sources and preview colours, the avatar
+    kFrequencyPart = 1u << 1,     // the frequency table and phoneme map
+    kWeightPart = 1u << 2,        // weight mode and painted weights
+    kFaceParameterPart = 1u << 3, // the face's slider values
+    kFacePart = 1u << 4,          // the rest of the face: cascade, individual, (u,v) mesh, presets
+    kReductionPart = 1u << 5,     // constraints, rest model and rest viseme (the curve's settings)
+    kTargetPart = 1u << 6,        // m: which grouping of the curve, not the curve
+    kOtherPart = 1u << 7,         // refinement thresholds, speech settings
+    kAllDocumentParts = (1u << 8) - 1,
+};
+using DocumentParts = unsigned;
+
+// The parts in which `after` differs from `before` (shared parts compared by identity).
+DocumentParts changedParts(const Document& before, const Document& after);
+
 // Checks what the reduction needs (frequencies resolve for every viseme, weights valid); throws
 // InputError naming the culprit. Every command runs it, so no edit can break the reduction.
-void validateDocument(const Document& document);
+// `changed` limits the checks to those that depend on the changed parts (the others held before).
+void validateDocument(const Document& document, DocumentParts changed = kAllDocumentParts);
+// How many validations so far checked the reduction's inputs (frequencies, weights, constraints,
+// target): the document-wide part a slider tick must not run (tests count it).
+std::uint64_t reductionInputValidations();
 
 // The per-vertex weights of the metric (throws InputError when invalid; empty without a set).
 std::vector<double> documentWeights(const Document& document);

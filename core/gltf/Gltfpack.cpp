@@ -225,4 +225,11 @@ Recompressed recompressWithGltfpack(const std::string& glb, const std::filesyste
     return result;
 }
 
+void recompressInPlace(std::string& glb, std::vector<std::string>& notes,
+                       const std::filesystem::path& gltfpack, const AvatarSelection& selection) {
+    Recompressed packed = recompressWithGltfpack(glb, gltfpack, selection);
+    glb = std::move(packed.glb);
+    notes.insert(notes.end(), packed.notes.begin(), packed.notes.end());
+}
+
 } // namespace vl

@@ -39,4 +39,9 @@ struct Recompressed {
 Recompressed recompressWithGltfpack(const std::string& glb, const std::filesystem::path& gltfpack,
                                     const AvatarSelection& selection);
 
+// `glb` replaced by its re-compression, gltfpack's notes appended to `notes`: what `avatar reduce
+// --gltfpack` and the editor's avatar export do before they write the avatar.
+void recompressInPlace(std::string& glb, std::vector<std::string>& notes,
+                       const std::filesystem::path& gltfpack, const AvatarSelection& selection);
+
 } // namespace vl

@@ -4,6 +4,7 @@
 #include "core/gltf/AvatarReduce.h"
 #include "core/gltf/AvatarRest.h"
 #include "core/gltf/VisemeMapNames.h"
+#include "core/project/ReduceInputs.h"
 #include "core/reduce/Weights.h"
 
 #include <algorithm>
@@ -155,7 +156,8 @@ AvatarSpeech avatarSpeech(const std::filesystem::path& avatar, const AvatarSpeec
         settings.constraints = options.constraints;
         settings.maxErrorMm = options.maxErrorMm;
         settings.closure = options.closure;
-        AvatarReduction r = reduceAvatar(*doc, scan, source, settings, {});
+        AvatarReduction r = reduceAvatar(
+            *doc, scan, source, withPolicy(settings, ReducePolicy::batch(), scan.visemes.size()), {});
         speech.faces.reduced = std::move(r.outcome.model);
         speech.animated = std::make_shared<const GltfDocument>(
             parseGltfDocument(std::move(r.glb), doc->source + " (reduced)", {}));

@@ -112,48 +112,49 @@ ReduceSettings projectReduceSettings(const Project& project) {
     return settings;
 }
 
-ReduceOutcome reduceProject(const Project& project, const VisemeSet& set, const ProgressCallback& progress) {
-    if (set.size() < 2)
+ReduceInputs projectReduceInputs(const Project& project, std::shared_ptr<const VisemeSet> set) {
+    if (set->size() < 2)
         throwInputError(projectWhere(project, "/visemes"),
-                        "a reduction needs at least 2 visemes, found " + std::to_string(set.size()));
-    if (project.reduction.target < 1 || static_cast<std::size_t>(project.reduction.target) > set.size())
+                        "a reduction needs at least 2 visemes, found " + std::to_string(set->size()));
+    if (project.reduction.target < 1 || static_cast<std::size_t>(project.reduction.target) > set->size())
         throwInputError(projectWhere(project, "/reduction/target"), std::to_string(project.reduction.target) +
                                                                         " is outside the allowed range 1.." +
-                                                                        std::to_string(set.size()));
-    if (project.weights.mode == WeightMode::Painted && project.weights.painted.size() != set.vertexCount())
+                                                                        std::to_string(set->size()));
+    if (project.weights.mode == WeightMode::Painted && project.weights.painted.size() != set->vertexCount())
         throwInputError(projectWhere(project, "/weights/painted"),
-                        "expected " + std::to_string(set.vertexCount()) +
+                        "expected " + std::to_string(set->vertexCount()) +
                             " weights (one per vertex), found " +
                             std::to_string(project.weights.painted.size()));
-    return runReduction(set, project.frequencies, projectReduceSettings(project), progress);
+    return {std::move(set), project.frequencies, projectReduceSettings(project)};
+}
+
+ReduceOutcome reduceProject(const Project& project, const VisemeSet& set, const ProgressCallback& progress,
+                            const ReducePolicy& policy) {
+    // Viewed, not copied: the caller keeps the set alive for the run.
+    return reduce(projectReduceInputs(project, viewedSet(set)), policy, progress);
 }
 
 void storeReductionResult(Project& project, const ReduceOutcome& outcome) {
     project.reduction.result = outcome.result;
 }
 
-ReducedModel projectReducedModel(const Project& project, bool unreduced) {
-    return projectReducedModel(project, loadProjectVisemeSet(project), unreduced);
+ReducedModel projectReducedModel(const Project& project, bool unreduced, const ReducePolicy& policy) {
+    return projectReducedModel(project, loadProjectVisemeSet(project), unreduced, policy);
 }
 
-ReducedModel projectReducedModel(const Project& project, const VisemeSet& set, bool unreduced) {
-    std::vector<std::string> names;
-    for (const Viseme& v : set.visemes) names.push_back(v.name);
+ReducedModel projectReducedModel(const Project& project, const VisemeSet& set, bool unreduced,
+                                 const ReducePolicy& policy) {
     if (unreduced)
-        return unreducedModel(set, visemeFrequencies(project.frequencies, names), project.frequencies);
-    const auto& stored = project.reduction.result;
-    // A stored result of the other rest model (the choice changed since) is not the project's.
-    const bool restFree =
-        restIsFree(project.reduction.rest, restVisemeIndex(names, project.reduction.restViseme,
-                                                           projectWhere(project, "/reduction/restViseme")));
-    if (stored && !stored->curve.empty() && stored->restFree == restFree &&
-        static_cast<int>(stored->curve.size()) == project.reduction.target) {
-        const std::vector<int> groupOf = stored->groupOf();
-        if (groupOf.size() == set.size())
-            return buildReducedModel(set, visemeFrequencies(project.frequencies, names), groupOf,
-                                     project.frequencies);
-    }
-    return reduceProject(project, set).model;
+        return unreducedModelOf({viewedSet(set), project.frequencies, projectReduceSettings(project)});
+    const ReduceInputs inputs = projectReduceInputs(project, viewedSet(set));
+    return reducedModel(inputs, recordedGrouping(inputs, project.reduction.result), policy);
+}
+
+ProjectExport exportProjectModel(const Project& project, const VisemeSet& set, ExportFormat format,
+                                 const std::filesystem::path& out, const ExportOptions& options,
+                                 bool unreduced, const ReducePolicy& policy) {
+    const ReducedModel model = projectReducedModel(project, set, unreduced, policy);
+    return {model.keys.size(), exportModel(model, format, out, options)};
 }
 
 } // namespace vl

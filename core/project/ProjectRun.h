@@ -1,7 +1,9 @@
 #pragma once
 // Turning a project into work: loading the meshes it references and running its reduction, so the
 // CLI (`visemelab reduce --project`) and the editor do exactly the same thing.
+#include "core/export/Export.h"
 #include "core/project/Project.h"
+#include "core/project/ReduceInputs.h"
 #include "core/reduce/ReduceRun.h"
 #include "core/reduce/VisemeSet.h"
 
@@ -21,17 +23,36 @@ void checkAvatarVisemeNames(const Project& project, const std::vector<std::strin
 // model and rest viseme).
 ReduceSettings projectReduceSettings(const Project& project);
 
-// Runs the exact reduction of `set` (normally loadProjectVisemeSet(project)) with the project's
-// frequencies, weights and target. Errors name the project's JSON paths where they can.
+// The project's reduction inputs over its loaded meshes (loadProjectVisemeSet). Throws InputError
+// naming the project's JSON paths: fewer than 2 visemes, a target outside 1..n, painted weights of
+// another size.
+ReduceInputs projectReduceInputs(const Project& project, std::shared_ptr<const VisemeSet> set);
+
+// Runs the reduction of `set` (normally loadProjectVisemeSet(project)) with the project's
+// frequencies, weights and target under `policy`. Errors name the project's JSON paths where they can.
 ReduceOutcome reduceProject(const Project& project, const VisemeSet& set,
-                            const ProgressCallback& progress = {});
+                            const ProgressCallback& progress = {},
+                            const ReducePolicy& policy = ReducePolicy::batch());
 
 // The project's reduced model (buildReducedModel): its meshes, frequencies and phoneme map, grouped
-// by the stored last result when it matches the viseme count, target and rest model, else by a fresh exact
-// reduction with the project's settings. `unreduced` makes every original viseme its own key instead.
-ReducedModel projectReducedModel(const Project& project, bool unreduced = false);
+// by the stored last result when it matches the viseme count, target and rest model
+// (recordedGrouping), else by a fresh reduction with the project's settings under `policy`.
+// `unreduced` makes every original viseme its own key instead.
+ReducedModel projectReducedModel(const Project& project, bool unreduced = false,
+                                 const ReducePolicy& policy = ReducePolicy::batch());
 // The same with the project's meshes already loaded (loadProjectVisemeSet).
-ReducedModel projectReducedModel(const Project& project, const VisemeSet& set, bool unreduced = false);
+ReducedModel projectReducedModel(const Project& project, const VisemeSet& set, bool unreduced = false,
+                                 const ReducePolicy& policy = ReducePolicy::batch());
+
+// Exports the project's reduced model (projectReducedModel; every viseme its own key with
+// `unreduced`) in `format` to `out`: `visemelab export` and the editor's Export.
+struct ProjectExport {
+    std::size_t keys = 0;                     // key meshes exported
+    std::vector<std::filesystem::path> files; // written
+};
+ProjectExport exportProjectModel(const Project& project, const VisemeSet& set, ExportFormat format,
+                                 const std::filesystem::path& out, const ExportOptions& options = {},
+                                 bool unreduced = false, const ReducePolicy& policy = ReducePolicy::batch());
 
 // Stores the outcome as the project's last result.
 void storeReductionResult(Project& project, const ReduceOutcome& outcome);

@@ -256,4 +256,20 @@ std::vector<double> visemeFrequencies(const FrequencySource& source,
     return freq;
 }
 
+std::string formatFrequencyCsv(const FrequencySource& source) {
+    std::string text;
+    if (source.isPhonemeBased()) {
+        text = "phoneme,frequency,viseme\n";
+        for (const auto& [phoneme, f] : source.phonemes.entries) {
+            const std::string* viseme = source.map.visemeOf(phoneme);
+            text += phoneme + "," + formatDouble(f) + "," + (viseme ? *viseme : std::string()) + "\n";
+        }
+    } else {
+        text = "viseme,frequency\n";
+        for (const auto& [name, f] : source.visemeFrequencies.entries)
+            text += name + "," + formatDouble(f) + "\n";
+    }
+    return text;
+}
+
 } // namespace vl

@@ -44,6 +44,10 @@ FrequencySource loadFrequencyFile(const std::filesystem::path& path);
 FrequencyTable parseFrequencyCsv(std::string_view text, std::string_view source);
 PhonemeVisemeMap loadPhonemeMapFile(const std::filesystem::path& path); // CSV "phoneme,viseme" or JSON object
 
+// The table as CSV: "viseme,frequency" lines, or for a phoneme table "phoneme,frequency,viseme"
+// (the map's viseme, empty when unmapped), under a header line.
+std::string formatFrequencyCsv(const FrequencySource& source);
+
 // Frequencies per viseme of `visemeNames` (same order). Direct: every viseme must be listed and
 // unknown names are errors. Phoneme-based: every phoneme must be mapped to a known viseme (the
 // error lists all unmapped phonemes); visemes no phoneme maps to get 0. All must be >= 0 and not

@@ -4,7 +4,6 @@
 
 #include "core/common/AtomicFile.h"
 #include "core/common/Error.h"
-#include "core/common/TextParsing.h"
 #include "core/deform/FaceDomain.h"
 #include "core/deform/Visemes.h"
 #include "core/document/AvatarDocument.h"
@@ -53,8 +52,8 @@ Document documentOfSet(std::shared_ptr<const VisemeSet> set, std::filesystem::pa
 
 } // namespace
 
-EditorSession::EditorSession() : history_(Document{}) {
-    reduction_.track(document(), true);
+EditorSession::EditorSession() : history_(Document{}), inputs_(history_.currentShared()) {
+    reduction_.track(inputs_.revision());
 }
 
 EditorSession::~EditorSession() {
@@ -70,7 +69,8 @@ void EditorSession::retireCurrent() {
 
 // Views and services follow the document that is current now.
 void EditorSession::noteChange(const Document& before) {
-    reduction_.track(document());
+    inputs_.update(history_.currentShared(), changedParts(before, document()));
+    reduction_.track(inputs_.revision());
     if (before.visemes != document().visemes) {
         ++geometryGeneration_;
         if (selectedViseme >= static_cast<int>(visemeCount())) selectedViseme = -1;
@@ -141,8 +141,9 @@ void EditorSession::adopt(Loaded loaded) {
     history_.reset(std::move(loaded.project.document));
     if (loaded.unsaved) history_.markUnsaved();
     path_ = std::move(loaded.path);
-    reduction_.track(document(), true); // a new document never reuses an old curve
     noteChange(before);
+    inputs_.reset(history_.currentShared()); // a new revision: a new document never reuses an old curve
+    reduction_.track(inputs_.revision());
     ++geometryGeneration_;
     // The result the file recorded is shown until a fresh reduction replaces it.
     // (Only a result of the document's rest model: a file may record one of the other.)
@@ -288,12 +289,9 @@ std::string EditorSession::writeAvatarExport(const Document& document, const Pro
                                              const std::filesystem::path& out, const AvatarExport& options) {
     checkAvatarOutput(document, out);
     // The grouping shown (recorded in the snapshot), else a fresh reduction with the document's settings.
-    const auto& stored = snapshot.reduction.result;
-    const std::vector<int> groupOf =
-        stored && static_cast<int>(stored->curve.size()) == snapshot.reduction.target &&
-                stored->restFree == documentRestPose(document).free
-            ? stored->groupOf()
-            : reduceProject(snapshot, *document.visemes).result.groupOf();
+    const ReduceInputs inputs = projectReduceInputs(snapshot, document.visemes);
+    const std::vector<int> groupOf = reducedGrouping(
+        inputs, recordedGrouping(inputs, snapshot.reduction.result), ReductionService::policy());
     AvatarWriteSummary summary;
     std::string glb = reducedAvatarGlb(document, groupOf, options.write, &summary);
     if (options.gltfpack) {
@@ -301,9 +299,7 @@ std::string EditorSession::writeAvatarExport(const Document& document, const Pro
         if (gltfpack.empty())
             throwInputError("gltfpack", std::string("not found, so the avatar cannot be re-compressed; ") +
                                             kGltfpackHint);
-        Recompressed packed = recompressWithGltfpack(glb, gltfpack, {document.avatar.pattern});
-        glb = std::move(packed.glb);
-        summary.notes.insert(summary.notes.end(), packed.notes.begin(), packed.notes.end());
+        recompressInPlace(glb, summary.notes, gltfpack, {document.avatar.pattern});
     }
     writeFileAtomically(out, glb);
     int keys = 0;
@@ -421,7 +417,8 @@ std::vector<std::filesystem::path> EditorSession::writeExport(const Document& do
                                                               const Project& snapshot, ExportFormat format,
                                                               const std::filesystem::path& out) {
     // The meshes shown (the document's, in memory), never re-read from their files.
-    return exportModel(projectReducedModel(snapshot, *document.visemes), format, out);
+    return exportProjectModel(snapshot, *document.visemes, format, out, {}, false, ReductionService::policy())
+        .files;
 }
 
 std::vector<std::filesystem::path> EditorSession::exportProject(ExportFormat format,
@@ -511,20 +508,7 @@ void EditorSession::startPhonemeCount(const std::filesystem::path& corpus, const
 }
 
 void EditorSession::saveFrequenciesCsv(const std::filesystem::path& file) const {
-    const FrequencySource& source = document().frequencies;
-    std::string text;
-    if (source.isPhonemeBased()) {
-        text = "phoneme,frequency,viseme\n";
-        for (const auto& [phoneme, f] : source.phonemes.entries) {
-            const std::string* viseme = source.map.visemeOf(phoneme);
-            text += phoneme + "," + formatDouble(f) + "," + (viseme ? *viseme : std::string()) + "\n";
-        }
-    } else {
-        text = "viseme,frequency\n";
-        for (const auto& [name, f] : source.visemeFrequencies.entries)
-            text += name + "," + formatDouble(f) + "\n";
-    }
-    writeFileAtomically(file, text);
+    writeFileAtomically(file, formatFrequencyCsv(document().frequencies));
 }
 
 // --- weights ---------------------------------------------------------------------------------

@@ -5,6 +5,7 @@
 // do the tests. Each edit is a validated command of the core (core/document/Commands.h) committed
 // as one undo step only when it applied, so bad input changes nothing.
 #include "core/document/Document.h"
+#include "core/document/DocumentInputs.h"
 #include "core/document/OwnFace.h"
 #include "core/document/PhonemeMapCommands.h"
 #include "core/export/Export.h"
@@ -119,9 +120,12 @@ class EditorSession {
     // The same on a worker thread from a snapshot taken now; the result is a message in poll().
     void startExportAvatar(const std::filesystem::path& out, const AvatarExport& options);
 
+    // The memoized weights and frequencies of the current document (a slider drag evaluates none).
+    const DocumentInputs& documentInputs() const { return inputs_; }
+
     // --- frequencies -------------------------------------------------------------------------
     // Normalised viseme frequencies from the current table (throws InputError when invalid).
-    std::vector<double> visemeFrequencies() const { return documentFrequencies(document()); }
+    std::vector<double> visemeFrequencies() const { return inputs_.frequencies(); }
     void setVisemeFrequency(int viseme, double value);   // direct mode
     void setPhonemeFrequency(int phoneme, double value); // phoneme mode
     void setPhonemeViseme(int phoneme, const std::string& viseme);
@@ -139,7 +143,7 @@ class EditorSession {
 
     // --- weights -----------------------------------------------------------------------------
     void setWeightMode(WeightMode mode);
-    std::vector<double> weights() const { return documentWeights(document()); } // throws when invalid
+    std::vector<double> weights() const { return inputs_.weights(); } // throws when invalid
     void setPaintedWeights(std::vector<double> painted, const std::string& actionName);
 
     // --- deformable face ---------------------------------------------------------------------
@@ -188,7 +192,7 @@ class EditorSession {
     // The reduction model and rest viseme (edit::setRest), one undo step.
     void setRest(RestChoice rest, const std::string& restViseme);
     // Starts the reduction of the current inputs on a worker thread (no-op when already current).
-    void startReduction() { reduction_.start(document()); }
+    void startReduction() { reduction_.start(document(), inputs_); }
     bool reductionRunning() const { return reduction_.running(); }
     // Drops a running reduction (the searches stop within one progress poll); "Run now" restarts it.
     void cancelReduction() { reduction_.cancel(); }
@@ -243,7 +247,8 @@ class EditorSession {
     const std::shared_ptr<const SpeechClip>& speechClip() const { return speech_.clip(); }
     // The current clip on the full set and the current reduction, with its utterance error.
     const SpeechPlayback* speechPlayback() {
-        return speech_.playback(document(), reduction_.inputsRevision(), currentGrouping());
+        return speech_.playback(document(), reduction_.inputsRevision(), reduction_.curveRevision(),
+                                currentGrouping());
     }
 
     // --- frame loop --------------------------------------------------------------------------
@@ -322,6 +327,9 @@ class EditorSession {
     void retireCurrent();
 
     CommandHistory<Document> history_;
+    // Weights and frequencies of the current document, re-evaluated only when an edit changed what
+    // they depend on (a slider tick keeps them).
+    DocumentInputs inputs_;
     std::filesystem::path path_;
     std::vector<DocumentPtr> frameDocuments_; // documents replaced this frame
     std::deque<StatusMessage> messages_;

@@ -7,11 +7,6 @@
 
 namespace vl::ui {
 
-void ReductionService::track(const Document& document, bool fresh) {
-    if (fresh || !sameReductionInputs(tracked_, document)) ++revision_;
-    tracked_ = document;
-}
-
 const ReductionResult* ReductionService::curve() const {
     return curve_.result && curve_.revision == revision_ ? curve_.result.get() : nullptr;
 }
@@ -28,8 +23,7 @@ const ReducedModel* ReductionService::reducedModel(const Document& document) {
     if (!model_ || modelRevision_ != revision_ || modelCurve_ != curve_.serial ||
         modelGroups_ != document.target) {
         model_.reset();
-        model_ = buildReducedModel(*document.visemes, documentFrequencies(document), groups->groupOf(),
-                                   document.frequencies);
+        model_ = vl::reducedModel({document.visemes, document.frequencies, {}}, groups, policy());
         modelRevision_ = revision_;
         modelCurve_ = curve_.serial;
         modelGroups_ = document.target;
@@ -41,9 +35,9 @@ std::size_t ReductionService::curveLength(const Document& document) {
     return static_cast<std::size_t>(std::max(1, documentMaxKeys(document)));
 }
 
-void ReductionService::start(const Document& document) {
+void ReductionService::start(const Document& document, const DocumentInputs& inputs) {
     if (document.visemeCount() < 2) throwInputError("reduction", "load a viseme set with at least 2 visemes");
-    track(document);
+    track(inputs.revision());
     if (complete(document)) return;
     if (task_.running() && runningRevision_ == revision_) return;
     const int n = static_cast<int>(document.visemeCount());
@@ -56,7 +50,7 @@ void ReductionService::start(const Document& document) {
     // Large sets: branch and bound reports the best grouping found and its proven gap when the time
     // is up, instead of keeping the designer waiting.
     ReductionOptions options;
-    if (n > kMaxExactVisemes) options.timeLimitSeconds = kLargeSetSeconds;
+    options.timeLimitSeconds = policy().timeLimitFor(document.visemeCount());
     // The bound of the target's search, for the progress bar, and a stop that keeps what was found.
     auto watch = std::make_shared<BoundWatch>(std::clamp(document.target, 1, groups));
     auto stop = std::make_shared<std::atomic<bool>>(false);
@@ -67,8 +61,8 @@ void ReductionService::start(const Document& document) {
     // The worker holds the document's immutable meshes (viewed, not copied) and its own copies of
     // the rest.
     auto set = document.visemes;
-    auto frequencies = std::make_shared<std::vector<double>>(documentFrequencies(document));
-    auto weights = std::make_shared<std::vector<double>>(documentWeights(document));
+    auto frequencies = std::make_shared<std::vector<double>>(inputs.frequencies());
+    auto weights = std::make_shared<std::vector<double>>(inputs.weights());
     const RestPose rest = documentRestPose(document); // views set's neutral, which the worker holds
     runningRevision_ = revision_;
     runningLarge_ = n > kMaxExactVisemes;

@@ -4,6 +4,8 @@
 // weights): the service numbers those inputs with a revision that changes whenever they change,
 // and keeps the curve and the reduced model for the revision they were computed for.
 #include "core/document/Document.h"
+#include "core/document/DocumentInputs.h"
+#include "core/project/ReduceInputs.h"
 #include "core/reduce/ReducedModel.h"
 #include "ui/session/BackgroundTask.h"
 
@@ -20,9 +22,9 @@ class ReductionService {
   public:
     ~ReductionService() { task_.cancel(); }
 
-    // Tells the service the current document; the inputs revision changes when its reduction
-    // inputs differ from the last one seen. `fresh` = a new document (never reuses a curve).
-    void track(const Document& document, bool fresh = false);
+    // Tells the service the revision of the current document's reduction inputs
+    // (DocumentInputs::revision): a curve of another revision is not current.
+    void track(std::uint64_t inputsRevision) { revision_ = inputsRevision; }
     std::uint64_t inputsRevision() const { return revision_; }
 
     // A curve known for the current inputs (e.g. the result a project file recorded).
@@ -30,9 +32,10 @@ class ReductionService {
         curve_ = {std::move(curve), revision_, ++curves_};
     }
 
-    // Starts the reduction of the tracked document on a worker thread (no-op when the curve is
-    // current or already being computed). Throws InputError when the document cannot be reduced.
-    void start(const Document& document);
+    // Starts the reduction of the document on a worker thread (no-op when the curve is current or
+    // already being computed), with its memoized weights and frequencies. Throws InputError when the
+    // document cannot be reduced.
+    void start(const Document& document, const DocumentInputs& inputs);
     bool running() const { return task_.running(); }
     double progress() const { return task_.progress(); }
     // True when the last run on the current inputs failed (an automatic re-run would fail again).
@@ -65,9 +68,9 @@ class ReductionService {
     // Entries of a full curve: p = 1..n, or up to the most keys the constraints and the rest model
     // allow (documentMaxKeys).
     static std::size_t curveLength(const Document& document);
-    // Time a reduction of more than kMaxExactVisemes visemes may take before it reports the best
-    // grouping found with its gap.
-    static constexpr double kLargeSetSeconds = 10.0;
+    // How long a reduction may search before it reports the best grouping found with its gap (sets
+    // of more than kMaxExactVisemes visemes): the editor's, which its exports use too.
+    static ReducePolicy policy() { return ReducePolicy::interactive(); }
     // The grouping into m groups from the current curve, or null.
     const Grouping* grouping(int m) const;
     // The reduced model of grouping(document.target): merged keys (frequency-weighted means, eq. 19)
@@ -82,7 +85,6 @@ class ReductionService {
         std::uint64_t revision = 0;
         std::uint64_t serial = 0;
     };
-    Document tracked_;
     std::uint64_t revision_ = 1;
     Curve curve_;
     std::uint64_t curves_ = 0; // curves held so far (the last one's serial)

@@ -2,6 +2,7 @@
 
 #include "core/common/Error.h"
 #include "core/phonetics/EspeakSynthesizer.h"
+#include "core/project/ReduceInputs.h"
 #include "core/reduce/ReducedModel.h"
 
 #include <algorithm>
@@ -103,14 +104,16 @@ void SpeechService::playSequence(const Document& document, const std::string& se
 }
 
 const SpeechPlayback* SpeechService::playback(const Document& document, std::uint64_t inputsRevision,
-                                              const Grouping* grouping) {
+                                              std::uint64_t curveRevision, const Grouping* grouping) {
     if (!clip_) return nullptr;
-    if (builtClip_ == clip_->id && builtRevision_ == inputsRevision && builtGrouping_ == grouping &&
-        builtTarget_ == document.target)
+    const bool hasGrouping = grouping != nullptr;
+    if (builtClip_ == clip_->id && builtRevision_ == inputsRevision && builtCurve_ == curveRevision &&
+        builtGrouping_ == hasGrouping && builtTarget_ == document.target)
         return &playback_;
     builtClip_ = clip_->id;
     builtRevision_ = inputsRevision;
-    builtGrouping_ = grouping;
+    builtCurve_ = curveRevision;
+    builtGrouping_ = hasGrouping;
     builtTarget_ = document.target;
     playback_ = SpeechPlayback();
     playback_.clip = clip_;
@@ -123,13 +126,12 @@ const SpeechPlayback* SpeechService::playback(const Document& document, std::uin
         if (clip_->visemes.empty() && !document.frequencies.isPhonemeBased())
             throwInputError("Say", "speech needs a phoneme -> viseme map; the frequencies are per viseme "
                                    "(Frequencies panel: use a phoneme table and a map)");
-        const std::vector<double> frequencies = documentFrequencies(document);
-        playback_.full.emplace(
-            trackOf(unreducedModel(*set, frequencies, document.frequencies), *clip_, "full viseme set"));
+        // The faces every front end gets (core/project/ReduceInputs.h): the grouping is known here.
+        const ReduceInputs inputs{document.visemes, document.frequencies, {}};
+        playback_.full.emplace(trackOf(unreducedModelOf(inputs), *clip_, "full viseme set"));
         if (grouping && grouping->feasible()) {
             playback_.reduced.emplace(
-                trackOf(buildReducedModel(*set, frequencies, grouping->groupOf(), document.frequencies),
-                        *clip_, "reduced set"));
+                trackOf(reducedModel(inputs, grouping, ReducePolicy::interactive()), *clip_, "reduced set"));
             playback_.groups = static_cast<int>(grouping->groups.size());
             const std::vector<double> weights = documentWeights(document);
             playback_.error =

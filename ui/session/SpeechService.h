@@ -67,18 +67,20 @@ class SpeechService {
     const std::shared_ptr<const SpeechClip>& clip() const { return clip_; }
 
     // The clip's tracks on the document's faces; `grouping` (may be null) is the current
-    // reduction into document.target groups, `inputsRevision` numbers its inputs. Null without a clip.
+    // reduction into document.target groups, `inputsRevision` numbers its inputs and `curveRevision`
+    // the curve it is from (ReductionService): the tracks are kept while the clip and these are.
+    // Null without a clip.
     const SpeechPlayback* playback(const Document& document, std::uint64_t inputsRevision,
-                                   const Grouping* grouping);
+                                   std::uint64_t curveRevision, const Grouping* grouping);
 
   private:
     BackgroundTask<SpeechClip> task_;
     std::shared_ptr<const SpeechClip> clip_;
     std::uint64_t nextId_ = 1;
-    // playback() cache and what it was built for.
+    // playback() cache and what it was built for (revisions, never addresses).
     SpeechPlayback playback_;
-    std::uint64_t builtClip_ = 0, builtRevision_ = 0;
-    const Grouping* builtGrouping_ = nullptr;
+    std::uint64_t builtClip_ = 0, builtRevision_ = 0, builtCurve_ = 0;
+    bool builtGrouping_ = false;
     int builtTarget_ = 0;
 };
 
