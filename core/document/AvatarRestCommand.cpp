@@ -11,10 +11,11 @@
 
 namespace vl::edit {
 
-Document addAvatarRestViseme(const Document& document, const FrequencySource& oculusTable) {
+Document addAvatarRestViseme(const Document& document, const FrequencySource& oculusTable,
+                             const std::string& requestedName) {
     if (!document.avatar.isSet()) throwInputError("rest viseme", "the document has no avatar");
     const AvatarScan& before = *document.avatar.scan;
-    const std::string name = avatarRestName(before);
+    const std::string name = requestedName.empty() ? avatarRestName(before) : requestedName;
     auto scan = std::make_shared<AvatarScan>(before);
     addAvatarRest(*scan, name);
     Document next = document;

@@ -74,8 +74,10 @@ Document setAvatarPattern(const Document& document, const std::string& pattern,
 // visemes use that prefix, else "sil", with the base mesh's shape and no target. Frequencies still
 // at the avatar's defaults become the defaults with it (an Oculus avatar: `oculusTable`, whose pause
 // maps to it); a phoneme map of the designer's sends the silence phoneme to it; a direct table gives
-// it frequency 1. Refused (InputError) without an avatar or when the visemes have a rest viseme.
-Document addAvatarRestViseme(const Document& document, const FrequencySource& oculusTable);
+// it frequency 1. A `name` given (one of kRestVisemeNames) replaces that choice. Refused (InputError)
+// without an avatar, when the visemes have a rest viseme, or for another name.
+Document addAvatarRestViseme(const Document& document, const FrequencySource& oculusTable,
+                             const std::string& name = {});
 // --- own face (issue 15) ------------------------------------------------------------------------
 // The face built from the user's mesh and confirmed landmarks (face::buildFace) replaces the
 // document's face: the bundled fields carried over to it, parameters at their defaults, presets and

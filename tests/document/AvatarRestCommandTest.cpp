@@ -92,6 +92,19 @@ TEST(AvatarRestCommand, TheDesignersMapSendsThePauseToItAndADirectTableGivesItOn
     std::filesystem::remove_all(file.parent_path());
 }
 
+TEST(AvatarRestCommand, ANameTheDesignerTypesIsARestVisemesName) {
+    // The Frequencies panel's "Add rest viseme" sends the name typed: "sil" is taken on a viseme_*
+    // avatar, any other name is refused with the names that are allowed.
+    const auto file = writeNoRestAvatar("named");
+    const Document start = documentFromAvatar(loadDocumentAvatar(file, ""), bundledOculus());
+    const Document named = edit::addAvatarRestViseme(start, bundledOculus(), "sil");
+    EXPECT_EQ(visemeNames(named).back(), "sil");
+    EXPECT_EQ(named.avatar.scan->addedRest, "sil");
+    EXPECT_TRUE(documentRestPose(named).free);
+    EXPECT_THROW(edit::addAvatarRestViseme(start, bundledOculus(), "pause"), InputError);
+    std::filesystem::remove_all(file.parent_path());
+}
+
 TEST(AvatarRestCommand, TheProjectKeepsItAndEditorAndProjectRunReadItBack) {
     const auto file = writeNoRestAvatar("project");
     const Document document = edit::addAvatarRestViseme(

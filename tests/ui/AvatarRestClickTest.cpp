@@ -1,7 +1,7 @@
 // "Add rest viseme" on an avatar project whose visemes lack one (issue 29), driven with real clicks
 // (xdotool on a private Xvfb, see GuiDriver.h): the Reduction panel's Model section adds viseme_sil
 // (the base mesh, no target) in one undoable step, it rests with the rest free, and the saved project
-// records it.
+// records it; the Frequencies panel's rest row adds it under the name typed.
 #include "GuiDriver.h"
 #include "core/common/AtomicFile.h"
 #include "core/document/AvatarDocument.h"
@@ -85,6 +85,41 @@ TEST(AvatarRestClicks, AddRestVisemeGivesAnAvatarWithoutOneTheBaseMeshAsItsRest)
     EXPECT_EQ(gui.document()["visemes"].get<int>(), 14);
     EXPECT_EQ(gui.document()["avatar"]["added_rest"], "");
     EXPECT_FALSE(hasError(gui)) << gui.document()["messages"].dump();
+}
+
+TEST(AvatarRestClicks, TheFrequencyPanelsRestRowNamesTheAvatarsRest) {
+    // Starting a phoneme map on the avatar, the designer types "sil" and adds it: the avatar gains its
+    // rest under that name (no target), and the pause row of the map takes it.
+    REQUIRE_GUI_TOOLS();
+    const NoRestProject files;
+    GuiDriver gui({"--project", files.project.string(), "--panel", "Frequencies", "--map-start", "oculus"});
+    gui.waitIdle();
+    ASSERT_EQ(gui.document()["visemes"].get<int>(), 14) << gui.document()["messages"].dump();
+    ASSERT_TRUE(gui.document()["map_start_open"].get<bool>());
+    const int unassigned = gui.document()["map_start_unassigned"].get<int>();
+
+    gui.click(gui.reveal("##rest-name", "text"));
+    gui.key("ctrl+a");
+    gui.type("sil");
+    gui.click(gui.reveal("Add rest viseme", "button"));
+    gui.waitIdle();
+    EXPECT_ALIVE(gui);
+    EXPECT_FALSE(hasError(gui)) << gui.document()["messages"].dump();
+    EXPECT_EQ(gui.document()["visemes"].get<int>(), 15);
+    EXPECT_EQ(gui.document()["undo"], "Add rest viseme sil");
+    EXPECT_EQ(gui.document()["avatar"]["added_rest"], "sil");
+    EXPECT_LT(gui.document()["map_start_unassigned"].get<int>(), unassigned); // the pause row took it
+
+    // Another name is refused with the names allowed, and nothing changes.
+    gui.key("ctrl+z");
+    gui.waitIdle();
+    gui.click(gui.reveal("##rest-name", "text"));
+    gui.key("ctrl+a");
+    gui.type("pause");
+    gui.click(gui.reveal("Add rest viseme", "button"));
+    gui.waitIdle();
+    EXPECT_TRUE(hasError(gui));
+    EXPECT_EQ(gui.document()["visemes"].get<int>(), 14);
 }
 
 } // namespace

@@ -56,7 +56,15 @@ void PhonemeMapEditor::restVisemeRow() {
     ctl::InputTextWithHint("##rest-name", "name", &restName_);
     ImGui::SameLine();
     if (ctl::Button("Add rest viseme") &&
-        session_.attempt("Rest viseme", [&] { session_.addRestViseme(restName_); }) && mapStart_.open) {
+        session_.attempt("Rest viseme",
+                         [&] {
+                             // An avatar's rest is its base mesh, carried by no target (AvatarRest.h).
+                             if (session_.document().avatar.isSet())
+                                 session_.addAvatarRestViseme(restName_);
+                             else
+                                 session_.addRestViseme(restName_);
+                         }) &&
+        mapStart_.open) {
         // A map being assigned: rows still unassigned take the new viseme when it fits their name.
         const auto suggested =
             edit::suggestMapAssignment(session_.document(), mapStart_.table, mapStart_.map);

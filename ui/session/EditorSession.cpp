@@ -277,9 +277,9 @@ void EditorSession::setAvatarPattern(const std::string& pattern) {
     info(std::to_string(visemeCount()) + " visemes selected by " + document().avatar.scan->selection);
 }
 
-void EditorSession::addAvatarRestViseme() {
-    Document next =
-        edit::addAvatarRestViseme(document(), bundledPhonemeFrequencies(assetsDirectory(), "oculus"));
+void EditorSession::addAvatarRestViseme(const std::string& requestedName) {
+    Document next = edit::addAvatarRestViseme(
+        document(), bundledPhonemeFrequencies(assetsDirectory(), "oculus"), requestedName);
     const std::string name = next.avatar.scan->addedRest;
     commit("Add rest viseme " + name, std::move(next));
     select(name);

@@ -218,7 +218,8 @@ class EditorSession {
     void moveViseme(int from, int to);
     void addRestViseme(const std::string& name);
     // An avatar's rest viseme (edit::addAvatarRestViseme, with the bundled Oculus table).
-    void addAvatarRestViseme();
+    // `name`: one of kRestVisemeNames; empty: the one the avatar's naming suggests.
+    void addAvatarRestViseme(const std::string& name = {});
     // The sliders as a new viseme / into an existing one (preset, and mesh when the set is the face's).
     void storeSlidersAsNewViseme(const std::string& name);
     void storeSlidersInViseme(const std::string& name);
