@@ -43,7 +43,8 @@ namespace {
 
 MeshData readMeshFile(const std::filesystem::path& path, CornerTexCoords* corners) {
     const MeshFormat format = meshFormatFromPath(path);
-    const std::string bytes = readFileToString(path);
+    const FileBytes file = readFileBytes(path); // not zero-filled first
+    const std::string_view bytes = file.view();
     const std::string source = path.string();
     try {
         switch (format) {
@@ -95,7 +96,8 @@ namespace {
 std::optional<MeshLike> readPlyPositionsLike(const std::filesystem::path& path,
                                              const ReferenceMesh& reference) {
     if (!reference.mesh.uvs.empty()) return std::nullopt; // the fast path reads no (u,v)
-    const std::string bytes = readFileToString(path);
+    const FileBytes file = readFileBytes(path);
+    const std::string_view bytes = file.view();
     try {
         if (auto positions =
                 meshio::parsePlyPositionsMatching(bytes, path.string(), reference.mesh.triangles))
