@@ -38,6 +38,7 @@ struct ReduceOptions {
     std::string weights = "uniform";
     int target = kTargetNotGiven;
     std::string outDir = "reduced";
+    std::string format = "auto"; // key mesh files: ReductionOutputs.h keyMeshFormatsFromString
     std::string report;
     ConstraintOptions constraints;
     std::string method = "auto";
@@ -143,6 +144,8 @@ void checkFlagCombinations(const ReduceOptions& o) {
         throwUsage("--method must be auto, dp, bnb or lp, got '" + o.method + "'");
     if (!(o.timeLimit >= 0)) throwUsage("--time-limit must be >= 0 seconds (0: no limit)");
     if (!o.rest.empty()) restChoiceFlag(o.rest);
+    if (!keyMeshFormatsFromString(o.format, 0))
+        throwUsage("--format must be auto, obj+wrl, obj, wrl or ply, got '" + o.format + "'");
     o.constraints.names(); // A,B syntax
 }
 
@@ -223,7 +226,8 @@ int runReduce(const ReduceOptions& o, bool weightsGiven) {
     refuseOverwritingInput(reportPath, "--report"); // before any output changes
     // The meshes, mapping.json and the default report replace the last run's as one set.
     OutputSet files(outDir, "reduce");
-    auto outputs = writeReductionOutputs(files, outcome);
+    const KeyMeshFormats formats = *keyMeshFormatsFromString(o.format, set.vertexCount());
+    auto outputs = writeReductionOutputs(files, outcome, formats);
     timings.writeMs = millisecondsSince(t2);
     const std::string report = reductionReportJson(outcome, settings.weightMode, timings, outputs);
     if (o.report.empty()) files.add("report.json", report);
@@ -265,7 +269,9 @@ int runReduce(const ReduceOptions& o, bool weightsGiven) {
         }
         std::printf("\n");
     }
-    std::fprintf(stderr, "Merged meshes (OBJ + VRML) and mapping.json in %s\nReport: %s\n",
+    const std::string written = std::string(formats.obj ? " OBJ" : "") + (formats.wrl ? " VRML" : "") +
+                                (formats.ply ? " binary-PLY" : "");
+    std::fprintf(stderr, "Merged meshes (%s) and mapping.json in %s\nReport: %s\n", written.c_str() + 1,
                  outDir.string().c_str(), reportPath.string().c_str());
     return kExitOk;
 }
@@ -295,6 +301,12 @@ void addReduceCommand(CLI::App& app, CommandRunner& run) {
     cmd->add_option("--target,-m", options->target,
                     "Number of merged meshes m (1..n); required without --project");
     cmd->add_option("--out", options->outDir, "Output folder")->capture_default_str();
+    cmd->add_option(
+           "--format", options->format,
+           "Key mesh files: obj+wrl (text, XfaceEd), obj, wrl, ply (binary, float32 positions) or auto "
+           "(obj+wrl up to " +
+               std::to_string(kBinaryKeyMeshVertices) + " vertices, ply above)")
+        ->capture_default_str();
     cmd->add_option("--report", options->report, "JSON report path (default OUT/report.json)");
     addConstraintOptions(*cmd, options->constraints, "none");
     cmd->add_option("--method", options->method,

@@ -15,7 +15,11 @@
 
 namespace vl {
 
-std::string readFileToString(const std::filesystem::path& path) {
+namespace {
+
+// Opens, checks and reads `path` into the buffer `allocate(size)` returns; returns the bytes read
+// (fewer when the file shrank since it was measured).
+template <class Allocate> std::size_t readWholeFile(const std::filesystem::path& path, Allocate allocate) {
     std::error_code ec;
     const auto status = std::filesystem::status(path, ec);
     if (!std::filesystem::exists(status)) throwInputError(path.string(), "file not found");
@@ -36,25 +40,42 @@ std::string readFileToString(const std::filesystem::path& path) {
     if (size > limits::kMaxInputFileBytes)
         throwInputError(path.string(), "file too large (" + std::to_string(size) + " bytes; the limit is " +
                                            std::to_string(limits::kMaxInputFileBytes) + ")");
-    std::string data;
+    char* data = nullptr;
     try {
-        data.resize(static_cast<std::size_t>(size));
+        data = allocate(static_cast<std::size_t>(size));
     } catch (const std::bad_alloc&) {
         throwInputError(path.string(), "not enough memory to read the file");
     }
     std::size_t done = 0;
-    while (done < data.size()) {
-        const ssize_t got = ::read(fd, data.data() + done, data.size() - done);
+    while (done < size) {
+        const ssize_t got = ::read(fd, data + done, size - done);
         if (got < 0 && errno == EINTR) continue;
         if (got < 0) throwInputError(path.string(), "read error");
-        if (got == 0) { // shorter than when it was measured: keep what is there
-            data.resize(done);
-            break;
-        }
+        if (got == 0) break; // shorter than when it was measured: keep what is there
         done += static_cast<std::size_t>(got);
     }
     noteInputFile(path);
+    return done;
+}
+
+} // namespace
+
+std::string readFileToString(const std::filesystem::path& path) {
+    std::string data;
+    data.resize(readWholeFile(path, [&](std::size_t size) {
+        data.resize(size);
+        return data.data();
+    }));
     return data;
+}
+
+FileBytes readFileBytes(const std::filesystem::path& path) {
+    FileBytes bytes;
+    bytes.size = readWholeFile(path, [&](std::size_t size) {
+        bytes.data = std::make_unique_for_overwrite<char[]>(size);
+        return bytes.data.get();
+    });
+    return bytes;
 }
 
 void writeFileAtomically(const std::filesystem::path& path, std::string_view contents) {

@@ -1,6 +1,7 @@
 #pragma once
 // File reading and atomic writing shared by every loader and saver.
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <string_view>
 
@@ -10,6 +11,15 @@ namespace vl {
 // run (core/common/InputRegistry.h); throws InputError naming the file when it is missing,
 // unreadable, not a regular file or too large.
 std::string readFileToString(const std::filesystem::path& path);
+
+// The same bytes in a buffer that is not zero-filled before the read overwrites it (a std::string
+// clears every byte first: 8.6 % of reading a large binary mesh, issue 33).
+struct FileBytes {
+    std::unique_ptr<char[]> data;
+    std::size_t size = 0;
+    std::string_view view() const { return {data.get(), size}; }
+};
+FileBytes readFileBytes(const std::filesystem::path& path);
 
 // Writes `contents` to a temporary file beside `path`, fsyncs it, renames it over `path` and fsyncs
 // the folder, so a crash, kill -9 or a full disk never leaves a half-written file where the old one

@@ -31,8 +31,15 @@ inline constexpr std::size_t kVrmlMinUseExpansionBudget = std::size_t{1} << 22; 
 // exact only up to a few dozen).
 inline constexpr std::size_t kMaxVisemes = 4096;
 
-// A viseme set (neutral plus visemes) holds at most this many vertex positions in total, however
-// often a project, an .fdp or a viseme file names the same mesh: 16.7 M positions, 400 MB.
+// Embedded per-vertex arrays (a project's deformable face (u,v)) hold at most this many entries.
 inline constexpr std::size_t kMaxVisemeSetPositions = std::size_t{1} << 24;
+
+// A viseme set (neutral plus visemes) holds at most this many vertex positions in total, however
+// often a project, an .fdp or a viseme file names the same mesh: as many as half the machine's
+// physical memory holds at 24 bytes a position (the set's doubles; the other half is for the file
+// being read, the outputs and the rest of the process). 24 GiB: 536 M positions. Not a fixed 2^24,
+// which refused 1,000,000 vertices x 16 visemes (issue 33).
+inline constexpr std::size_t kVisemeSetBytesPerPosition = 24;
+std::size_t maxVisemeSetPositions();
 
 } // namespace vl::limits

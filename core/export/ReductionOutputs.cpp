@@ -4,6 +4,7 @@
 #include "core/export/MappingJson.h"
 #include "core/gltf/AvatarReport.h"
 #include "core/io/MeshIO.h"
+#include "core/io/PlyKeyWriter.h"
 
 #include <nlohmann/json.hpp>
 
@@ -13,9 +14,21 @@
 
 namespace vl {
 
-std::vector<std::string> writeReductionOutputs(OutputSet& outputs, const ReduceOutcome& outcome) {
-    const ReducedModel& model = outcome.model;
-    std::vector<std::string> written;
+std::optional<KeyMeshFormats> keyMeshFormatsFromString(std::string_view text, std::size_t vertexCount) {
+    if (text == "auto")
+        return vertexCount > kBinaryKeyMeshVertices ? KeyMeshFormats{false, false, true} : KeyMeshFormats{};
+    if (text == "obj+wrl") return KeyMeshFormats{};
+    if (text == "obj") return KeyMeshFormats{true, false, false};
+    if (text == "wrl") return KeyMeshFormats{false, true, false};
+    if (text == "ply") return KeyMeshFormats{false, false, true};
+    return std::nullopt;
+}
+
+namespace {
+
+// The text pair: each key's positions formatted once for its OBJ and VRML.
+void writeTextKeys(OutputSet& outputs, const ReducedModel& model, KeyMeshFormats formats,
+                   std::vector<std::string>& written) {
     // The keys share the neutral mesh's topology: its faces and (u,v) are formatted once per format.
     // Positions as float32, what every consumer of key meshes stores (MeshIO.h, docs/export.md), each
     // key's formatted once for its OBJ and VRML; coordinates a key shares with the neutral (most of a
@@ -23,19 +36,45 @@ std::vector<std::string> writeReductionOutputs(OutputSet& outputs, const ReduceO
     constexpr PositionPrecision kPrecision = PositionPrecision::Float32;
     const MeshTextFormatter obj("key.obj", model.neutral, kPrecision),
         wrl("key.wrl", model.neutral, kPrecision);
+    std::vector<const MeshTextFormatter*> formatters;
+    if (formats.obj) formatters.push_back(&obj);
+    if (formats.wrl) formatters.push_back(&wrl);
     const PositionText neutral(model.neutral.positions, kPrecision);
     PositionText positions;
     std::string text; // every file's positions; its faces and (u,v) are written from the formatter's text
     for (std::size_t k = 0; k < model.keys.size(); ++k) {
         positions.assign(model.keys[k].positions, kPrecision, &neutral);
-        for (const MeshTextFormatter* formatter : {&obj, &wrl}) {
+        for (const MeshTextFormatter* formatter : formatters) {
             written.push_back(keyFileName(model, k, formatter == &obj ? ".obj" : ".wrl"));
             const MeshTextFormatter::Parts file = formatter->parts(positions, text);
             outputs.add(written.back(), {file.head, file.middle, file.tail});
         }
     }
+}
+
+void writePlyKeys(OutputSet& outputs, const ReducedModel& model, std::vector<std::string>& written) {
+    const PlyKeyWriter ply(model.neutral);
+    std::string bytes; // one key's positions at a time
+    for (std::size_t k = 0; k < model.keys.size(); ++k) {
+        written.push_back(keyFileName(model, k, ".ply"));
+        outputs.add(written.back(), {ply.head(), ply.positions(model.keys[k].positions, bytes), ply.faces()});
+    }
+}
+
+} // namespace
+
+std::vector<std::string> writeReductionOutputs(OutputSet& outputs, const ReduceOutcome& outcome,
+                                               KeyMeshFormats formats) {
+    const ReducedModel& model = outcome.model;
+    std::vector<std::string> written;
+    if (formats.obj || formats.wrl) writeTextKeys(outputs, model, formats, written);
+    if (formats.ply) writePlyKeys(outputs, model, written);
+    std::vector<KeyFileField> fields;
+    if (formats.obj) fields.push_back({"obj", ".obj"});
+    if (formats.wrl) fields.push_back({"wrl", ".wrl"});
+    if (formats.ply) fields.push_back({"ply", ".ply"});
     written.emplace_back("mapping.json");
-    outputs.add(written.back(), formatMappingJson(model, {{"obj", ".obj"}, {"wrl", ".wrl"}}));
+    outputs.add(written.back(), formatMappingJson(model, fields));
     return written;
 }
 

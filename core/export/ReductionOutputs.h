@@ -6,7 +6,9 @@
 #include "core/gltf/AvatarReduce.h"
 #include "core/reduce/ReduceRun.h"
 
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace vl {
@@ -15,11 +17,24 @@ struct ReduceTimings {
     double loadMs = 0, reduceMs = 0, writeMs = 0;
 };
 
+// Which files each key mesh gets: OBJ and VRML text (XfaceEd, Blender) and/or binary PLY (float32
+// positions: 12 bytes a vertex, no formatting; for large meshes, docs/performance.md issue 33).
+struct KeyMeshFormats {
+    bool obj = true, wrl = true, ply = false;
+};
+// Above this many vertices `reduce --format auto` writes binary PLY only: the text pair costs about
+// 60 bytes and two float formattings a vertex per key.
+inline constexpr std::size_t kBinaryKeyMeshVertices = 200'000;
+// "obj+wrl", "obj", "wrl", "ply", or "auto" (obj+wrl up to kBinaryKeyMeshVertices vertices, ply above);
+// nothing for any other text.
+std::optional<KeyMeshFormats> keyMeshFormatsFromString(std::string_view text, std::size_t vertexCount);
+
 // Stages in `outputs` (an OutputSet of the output folder; the caller commits it, with the report):
-// reduced_<k>_<name>.obj and .wrl per key of the outcome's model (core/export/KeyMeshFiles.h names)
-// and mapping.json (core/export/MappingJson.h, each key's "obj" and "wrl"). Returns the staged file
-// names (relative to the folder).
-std::vector<std::string> writeReductionOutputs(OutputSet& outputs, const ReduceOutcome& outcome);
+// reduced_<k>_<name>.obj / .wrl / .ply per key of the outcome's model as `formats` asks
+// (core/export/KeyMeshFiles.h names) and mapping.json (core/export/MappingJson.h, each key's "obj",
+// "wrl" and "ply" as written). Returns the staged file names (relative to the folder).
+std::vector<std::string> writeReductionOutputs(OutputSet& outputs, const ReduceOutcome& outcome,
+                                               KeyMeshFormats formats = {});
 
 // How far one viseme moves after the reduction (the largest vertex displacement from the neutral,
 // in mm for a glTF avatar in metres), against before: its key's shape, or nothing when it rests.

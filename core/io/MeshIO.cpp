@@ -4,6 +4,7 @@
 #include "core/common/AtomicFile.h"
 #include "core/common/Error.h"
 #include "core/io/MeshIOSupport.h"
+#include "core/io/PlyFastPath.h"
 
 #include <algorithm>
 #include <bit>
@@ -42,7 +43,8 @@ namespace {
 
 MeshData readMeshFile(const std::filesystem::path& path, CornerTexCoords* corners) {
     const MeshFormat format = meshFormatFromPath(path);
-    const std::string bytes = readFileToString(path);
+    const FileBytes file = readFileBytes(path); // not zero-filled first
+    const std::string_view bytes = file.view();
     const std::string source = path.string();
     try {
         switch (format) {
@@ -88,7 +90,30 @@ ReferenceMesh readReferenceMesh(const std::filesystem::path& path) {
     }
 }
 
+namespace {
+
+// A binary PLY viseme of its neutral's layout: its positions, its faces compared and dropped.
+std::optional<MeshLike> readPlyPositionsLike(const std::filesystem::path& path,
+                                             const ReferenceMesh& reference) {
+    if (!reference.mesh.uvs.empty()) return std::nullopt; // the fast path reads no (u,v)
+    const FileBytes file = readFileBytes(path);
+    const std::string_view bytes = file.view();
+    try {
+        if (auto positions =
+                meshio::parsePlyPositionsMatching(bytes, path.string(), reference.mesh.triangles))
+            return MeshLike{{std::move(*positions), {}, {}}, true};
+        return MeshLike{parsePly(bytes, path.string())};
+    } catch (const std::bad_alloc&) {
+        throwInputError(path.string(),
+                        "not enough memory to read this mesh (" + std::to_string(bytes.size()) + " bytes)");
+    }
+}
+
+} // namespace
+
 MeshLike readPositionsLike(const std::filesystem::path& path, const ReferenceMesh& reference) {
+    if (meshFormatFromPath(path) == MeshFormat::Ply)
+        if (auto read = readPlyPositionsLike(path, reference)) return std::move(*read);
     if (reference.objStructure.empty() || meshFormatFromPath(path) != MeshFormat::Obj)
         return {readMesh(path)};
     const std::string bytes = readFileToString(path);

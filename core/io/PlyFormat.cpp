@@ -4,6 +4,7 @@
 #include "core/common/Error.h"
 #include "core/io/MeshIO.h"
 #include "core/io/MeshIOSupport.h"
+#include "core/io/PlyFastPath.h"
 #include "core/io/PlyHeader.h"
 
 #include <algorithm>
@@ -282,6 +283,7 @@ MeshData parsePly(std::string_view bytes, std::string_view source) {
     const PlyElement* faces = header.find("face");
     if (!vertices || vertices->count == 0) throwInputError(source, "no vertices");
     if (!faces || faces->count == 0) throwInputError(source, "no faces");
+    if (auto fast = meshio::readPlyFast(bytes, header)) return std::move(*fast);
     MeshData mesh;
     if (header.encoding == PlyEncoding::Ascii) {
         AsciiPlyReader reader(bytes, header, source);
@@ -292,6 +294,15 @@ MeshData parsePly(std::string_view bytes, std::string_view source) {
     }
     meshio::requireVerticesAndFaces(mesh, source);
     return mesh;
+}
+
+std::optional<std::vector<Vec3>> meshio::parsePlyPositionsMatching(std::string_view bytes,
+                                                                   std::string_view source,
+                                                                   const std::vector<Triangle>& triangles) {
+    meshio::requireNotBlank(bytes, source);
+    auto fast = meshio::readPlyFast(bytes, meshio::parsePlyHeader(bytes, source), &triangles);
+    if (!fast) return std::nullopt;
+    return std::move(fast->positions);
 }
 
 std::string formatPly(const MeshData& mesh) {

@@ -55,12 +55,15 @@ void checkVisemeSetSize(std::size_t visemeCount, std::size_t vertexCount, std::s
     if (visemeCount > limits::kMaxVisemes)
         throwInputError(where, "too many visemes: " + std::to_string(visemeCount) + " (at most " +
                                    std::to_string(limits::kMaxVisemes) + ")");
-    const std::size_t limit = limits::kMaxVisemeSetPositions;
+    const std::size_t limit = limits::maxVisemeSetPositions();
     if (vertexCount > limit || visemeCount + 1 > limit / std::max<std::size_t>(vertexCount, 1))
         throwInputError(where, "too large: " + std::to_string(visemeCount) + " visemes of " +
                                    std::to_string(vertexCount) +
                                    " vertices (plus the neutral) exceed the limit of " +
-                                   std::to_string(limit) + " vertex positions in one viseme set");
+                                   std::to_string(limit) +
+                                   " vertex positions in one viseme set (half this machine's physical "
+                                   "memory at " +
+                                   std::to_string(limits::kVisemeSetBytesPerPosition) + " bytes a position)");
 }
 
 namespace {

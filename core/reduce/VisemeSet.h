@@ -35,8 +35,8 @@ void checkInterpolable(const MeshData& reference, std::string_view referenceSour
                        std::string_view otherSource);
 
 // Throws InputError at `where` when a neutral and `visemeCount` visemes of `vertexCount` vertices
-// each would hold more than limits::kMaxVisemeSetPositions positions. Loaders call it before
-// reading the visemes, so a file naming one mesh many times cannot exhaust memory.
+// each would hold more than limits::maxVisemeSetPositions() positions (from physical memory). Loaders call it
+// before reading the visemes, so a file naming one mesh many times cannot exhaust memory.
 void checkVisemeSetSize(std::size_t visemeCount, std::size_t vertexCount, std::string_view where);
 
 // Coordinates beyond +-1e30 are refused: squared distances between them would overflow to infinity

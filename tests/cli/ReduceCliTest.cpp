@@ -69,6 +69,27 @@ TEST(CliReduce, ReducesSmallSetAndWritesEverything) {
     EXPECT_TRUE(fs::exists(out / "reduced_1_c.wrl"));
 }
 
+// --format writes the key files asked for (binary PLY: float32 positions) and names them in the mapping;
+// auto keeps OBJ + VRML for small sets (large ones: docs/performance.md, issue 33).
+TEST(CliReduce, FormatChoosesTheKeyMeshFiles) {
+    TempDir dir("visemelab_cli_format");
+    writeSmallSet(dir.path);
+    const auto out = dir.path / "out";
+    const std::string args =
+        "reduce --visemes " + dir.path.string() + " --freq a=1 --freq b=1 --freq c=2 -m 2";
+    auto r = test::runCli(args + " --format ply --out " + out.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_FALSE(fs::exists(out / "reduced_0_a+b.obj"));
+    EXPECT_FLOAT_EQ(static_cast<float>(readMesh(out / "reduced_0_a+b.ply").positions[2][2]), 0.15f);
+    EXPECT_EQ(readJson(out / "mapping.json")["reduced"][0]["ply"], "reduced_0_a+b.ply");
+    r = test::runCli(args + " --format obj --out " + out.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_TRUE(fs::exists(out / "reduced_0_a+b.obj"));
+    EXPECT_FALSE(fs::exists(out / "reduced_0_a+b.wrl") || fs::exists(out / "reduced_0_a+b.ply"));
+    r = test::runCli(args + " --format stl --out " + out.string());
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+}
+
 TEST(CliReduce, PhonemeTableWithMapGivesPhonemeMapping) {
     TempDir dir("visemelab_cli_phonemes");
     writeSmallSet(dir.path);

@@ -10,6 +10,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <functional>
 #include <initializer_list>
 #include <numeric>
@@ -88,6 +89,14 @@ inline void expectSameFloat32Positions(const std::vector<Vec3>& written, const s
                 << "vertex " << i << " coordinate " << k << ": " << written[i][k] << " written, "
                 << readBack[i][k] << " read back";
         }
+}
+
+// Appends `value` to `out` in big- or little-endian byte order (binary PLY data).
+template <class T> void put(std::string& out, T value, bool bigEndian) {
+    char raw[sizeof(T)];
+    std::memcpy(raw, &value, sizeof(T));
+    if (bigEndian != (std::endian::native == std::endian::big)) std::reverse(raw, raw + sizeof(T));
+    out.append(raw, sizeof(T));
 }
 
 // Runs `action`, which must throw InputError whose message contains every one of `parts`.

@@ -12,13 +12,7 @@ namespace {
 using test::expectIdenticalMesh;
 using test::expectInputError;
 
-// Appends `value` to `out` in big- or little-endian byte order.
-template <class T> void put(std::string& out, T value, bool bigEndian) {
-    char raw[sizeof(T)];
-    std::memcpy(raw, &value, sizeof(T));
-    if (bigEndian != (std::endian::native == std::endian::big)) std::reverse(raw, raw + sizeof(T));
-    out.append(raw, sizeof(T));
-}
+using test::put;
 
 const std::string kAsciiQuads = "ply\r\n"
                                 "format ascii 1.0\r\n"
