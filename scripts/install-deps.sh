@@ -6,6 +6,8 @@ packages=(g++ make cmake pkg-config ninja-build libglfw3-dev libimgui-dev libstb
   libbenchmark-dev libtbb-dev libcli11-dev libtinygltf-dev libepoxy-dev xvfb xauth
   libgl1-mesa-dri fonts-dejavu-core libtinyxml2-dev clang libclang-rt-dev libmeshoptimizer-dev libdraco-dev xdotool clang-format ccache
   portaudio19-dev coinor-libclp-dev chromium espeak-ng)
+# libxxhash-dev: XXH3, compiled in (core/common/ContentHash.cpp), checks the speech cache's inputs.
+packages+=(libxxhash-dev)
 # espeak-ng (the command): the say benchmarks measure its own synthesis as their floor.
 # chromium: the say --html page test takes screenshots of it headless.
 # npm runs the Khronos glTF validator in the tests; a nodejs that bundles npm already provides it.

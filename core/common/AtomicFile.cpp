@@ -54,7 +54,7 @@ template <class Allocate> std::size_t readWholeFile(const std::filesystem::path&
         if (got == 0) break; // shorter than when it was measured: keep what is there
         done += static_cast<std::size_t>(got);
     }
-    noteInputFile(path);
+    noteInputFile(path, std::string_view(data, done));
     return done;
 }
 

@@ -1,5 +1,7 @@
 #include "core/common/InputRegistry.h"
 
+#include "core/common/ContentHash.h"
+
 #include <algorithm>
 #include <cassert>
 #include <map>
@@ -8,6 +10,10 @@
 #include <utility>
 
 namespace vl {
+
+// Adds `file` to every live InputWatch (the friend InputRegistry.h declares): read (with the hash of
+// *bytes when given) or referenced.
+void noteWatched(const std::filesystem::path& file, const std::string_view* bytes, bool read);
 
 namespace {
 
@@ -21,6 +27,7 @@ struct Registry {
     std::map<FileId, std::filesystem::path> references; // named by an input, maybe not read
     // Where every noted file is (absolute, symlinks resolved): a folder output may not hold one.
     std::map<std::filesystem::path, std::filesystem::path> locations; // location -> as noted
+    std::vector<InputWatch*> watches;
 };
 
 std::filesystem::path locationOf(const std::filesystem::path& path) {
@@ -74,6 +81,55 @@ std::filesystem::path recordedAs(const std::filesystem::path& path, Kind kind) {
 
 } // namespace
 
+void noteWatched(const std::filesystem::path& file, const std::string_view* bytes, bool read) {
+    Registry& r = registry();
+    {
+        std::lock_guard lock(r.mutex);
+        if (r.watches.empty()) return;
+    }
+    std::error_code ec;
+    const std::filesystem::path absolute = std::filesystem::absolute(file, ec).lexically_normal();
+    if (ec) return;
+    const InputWatch::Read entry{absolute, bytes ? contentHash(*bytes) : 0, bytes != nullptr};
+    std::lock_guard lock(r.mutex);
+    for (InputWatch* watch : r.watches) {
+        if (!read) {
+            auto& list = watch->referenced_;
+            if (std::find(list.begin(), list.end(), absolute) == list.end()) list.push_back(absolute);
+        } else {
+            auto& list = watch->read_;
+            const auto it = std::find_if(list.begin(), list.end(),
+                                         [&](const InputWatch::Read& e) { return e.file == absolute; });
+            if (it == list.end())
+                list.push_back(entry);
+            else if (!it->hashed)
+                *it = entry; // noted first without its bytes (named as an input before it was read)
+        }
+    }
+}
+
+InputWatch::InputWatch() {
+    Registry& r = registry();
+    std::lock_guard lock(r.mutex);
+    r.watches.push_back(this);
+}
+
+InputWatch::~InputWatch() {
+    Registry& r = registry();
+    std::lock_guard lock(r.mutex);
+    std::erase(r.watches, this);
+}
+
+std::vector<InputWatch::Read> InputWatch::read() const {
+    std::lock_guard lock(registry().mutex);
+    return read_;
+}
+
+std::vector<std::filesystem::path> InputWatch::referenced() const {
+    std::lock_guard lock(registry().mutex);
+    return referenced_;
+}
+
 InputRecording::InputRecording() {
     Registry& r = registry();
     std::lock_guard lock(r.mutex);
@@ -92,6 +148,12 @@ InputRecording::~InputRecording() {
 }
 
 void noteInputFile(const std::filesystem::path& file) {
+    noteWatched(file, nullptr, true);
+    note(file, Kind::File);
+}
+
+void noteInputFile(const std::filesystem::path& file, std::string_view bytes) {
+    noteWatched(file, &bytes, true);
     note(file, Kind::File);
 }
 
@@ -100,6 +162,7 @@ void noteInputFolder(const std::filesystem::path& folder) {
 }
 
 void noteReferencedFile(const std::filesystem::path& file) {
+    noteWatched(file, nullptr, false);
     note(file, Kind::Reference);
 }
 

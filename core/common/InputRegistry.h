@@ -9,7 +9,10 @@
 // project it opened) nothing is remembered and nothing is refused.
 #include "core/common/Error.h"
 
+#include <cstdint>
 #include <filesystem>
+#include <string_view>
+#include <vector>
 
 namespace vl {
 
@@ -36,8 +39,36 @@ class InputRecording {
     InputRecording& operator=(const InputRecording&) = delete;
 };
 
-// Called by the readers for every file they read; no-op without a recording. Thread-safe.
+// Collects, while alive, every file noted as read (noteInputFile) or referenced (noteReferencedFile)
+// by any thread, with or without a recording: what a cached result depends on
+// (core/project/SpeechCache.h). Watches may overlap (concurrent batch jobs); each then sees a superset
+// of its own work's files, which only makes a cache stricter.
+class InputWatch {
+  public:
+    InputWatch();
+    ~InputWatch();
+    InputWatch(const InputWatch&) = delete;
+    InputWatch& operator=(const InputWatch&) = delete;
+    struct Read {
+        std::filesystem::path file; // absolute
+        std::uint64_t hash = 0;     // contentHash of the bytes read (core/common/ContentHash.h)
+        bool hashed = false;        // false: noted without its bytes
+        bool operator==(const Read&) const = default;
+    };
+    // Each file once (with the hash of its first read), in the order first noted.
+    std::vector<Read> read() const;
+    std::vector<std::filesystem::path> referenced() const; // absolute
+
+  private:
+    friend void noteWatched(const std::filesystem::path&, const std::string_view*, bool);
+    std::vector<Read> read_;                        // guarded by the registry's mutex
+    std::vector<std::filesystem::path> referenced_; // likewise
+};
+
+// Called by the readers for every file they read, with the bytes read when they have them (for
+// InputWatch); no-op without a recording or a watch. Thread-safe.
 void noteInputFile(const std::filesystem::path& file);
+void noteInputFile(const std::filesystem::path& file, std::string_view bytes);
 // A folder whose listing was an input (reduce --visemes DIR): outputs may not go into it.
 void noteInputFolder(const std::filesystem::path& folder);
 

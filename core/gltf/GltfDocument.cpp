@@ -204,7 +204,7 @@ std::string GltfDocument::readExternal(const std::string& uri, std::string_view 
     std::string bytes(wanted, '\0');
     std::ifstream in(path, std::ios::binary);
     if (!in.read(bytes.data(), static_cast<std::streamsize>(wanted))) fail(element, "cannot read " + quoted);
-    noteInputFile(path); // an output of the run may not overwrite a buffer it read
+    noteInputFile(path, bytes); // an output of the run may not overwrite a buffer it read
     return bytes;
 }
 
