@@ -36,3 +36,46 @@ ratio = statistics.median(results["say"]) / statistics.median(results["freq"])
 print("say / freq (median): %.2f; goal say <= 0.3 s: %s"
       % (ratio, "met" if statistics.median(results["say"]) <= 0.3 else "NOT met"))
 PY
+
+# Issue 33's fixed cost per call: a 10-word sentence against espeak-ng's own synthesis of it
+# (`espeak-ng -q --pho`, goal <= 1.5x), with the speech cache warm (core/project/SpeechCache.h) and
+# without it (VISEMELAB_CACHE_DIR=off); and `say --stdin` per sentence after the first (20 sentences
+# minus 1, against espeak-ng reading the same lines from a file: goal <= 1.2x).
+python3 - "$runs" "$cli" "$out" <<'PY'
+import os, statistics, sys
+runs, cli, out = int(sys.argv[1]), sys.argv[2], sys.argv[3]
+sys.path.insert(0, "scripts")
+from process_cpu import cpu_seconds
+
+sentence = "The quick brown fox jumps over the lazy dog again today"
+lines = ["Sentence %d: the quick brown fox jumps over the lazy dog" % i for i in range(20)]
+open(out + "/one.txt", "w").write(lines[0] + "\n")
+open(out + "/many.txt", "w").write("\n".join(lines) + "\n")
+project = ["--project", "assets/sample/sample.vlproj"]
+warm = dict(os.environ, VISEMELAB_CACHE_DIR=out + "/cache")
+cold = dict(os.environ, VISEMELAB_CACHE_DIR="off")
+say = [cli, "say", sentence] + project + ["--out", out + "/ten.json", "--quiet"]
+serve = [cli, "say", "--stdin"] + project + ["--out", out + "/lines.jsonl"]
+cpu_seconds(say, env=warm)  # fills the cache
+r = {k: [] for k in ("espeak", "say cached", "say uncached", "stdin per sentence", "espeak per sentence")}
+for _ in range(runs):  # interleaved, so all see the same machine load
+    r["espeak"].append(cpu_seconds(["espeak-ng", "-q", "--pho", sentence]))
+    r["say cached"].append(cpu_seconds(say, env=warm))
+    r["say uncached"].append(cpu_seconds(say, env=cold))
+    many = cpu_seconds(serve, env=warm, stdin="\n".join(lines).encode() + b"\n")
+    one = cpu_seconds(serve, env=warm, stdin=lines[0].encode() + b"\n")
+    r["stdin per sentence"].append((many - one) / (len(lines) - 1))
+    many = cpu_seconds(["espeak-ng", "-q", "--pho", "-f", out + "/many.txt"])
+    one = cpu_seconds(["espeak-ng", "-q", "--pho", "-f", out + "/one.txt"])
+    r["espeak per sentence"].append((many - one) / (len(lines) - 1))
+for name, times in r.items():
+    print("%-19s 10 words: CPU min %.1f ms, median %.1f ms, max %.1f ms (%d runs)"
+          % (name, 1e3 * min(times), 1e3 * statistics.median(times), 1e3 * max(times), runs))
+med = {k: statistics.median(v) for k, v in r.items()}
+for name, goal in (("say cached", 1.5), ("say uncached", 1.5)):
+    ratio = med[name] / med["espeak"]
+    print("%s / espeak-ng (median): %.2f; goal <= %.1f: %s" % (name, ratio, goal, "met" if ratio <= goal else "NOT met"))
+ratio = med["stdin per sentence"] / med["espeak per sentence"]
+print("say --stdin / espeak-ng per sentence after the first (median): %.2f; goal <= 1.2: %s"
+      % (ratio, "met" if ratio <= 1.2 else "NOT met"))
+PY

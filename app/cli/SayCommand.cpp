@@ -20,6 +20,7 @@
 #include "core/project/AvatarSpeechGlb.h"
 #include "core/project/Project.h"
 #include "core/project/ProjectSpeech.h"
+#include "core/project/SpeechCache.h"
 #include "core/speech/DisplacementError.h"
 #include "core/speech/SpeechGltf.h"
 #include "core/speech/SpeechPage.h"
@@ -295,19 +296,20 @@ int runSay(const SayOptions& o) {
     if (!o.map.empty()) map = loadPhonemeMapFile(o.map);
     std::optional<AvatarSpeech> avatar;
     Project project;
+    ProjectSpeechFaces cached;
     if (!o.avatar.empty())
         avatar = avatarFaces(o, map);
     else
-        project = loadProject(o.project);
+        cached = cachedProjectSpeechFaces(o.project, map ? &*map : nullptr);
+    if (!avatar && (o.curve || !o.textFile.empty())) project = loadProject(o.project); // the error curve
     const std::string where = avatar ? o.avatar : o.project;
     // Moved, not copied, into the face below: an avatar's keys are the size of its meshes.
-    SpeechFaces faces =
-        avatar ? std::move(avatar->faces) : projectSpeechFaces(project, map ? &*map : nullptr);
+    SpeechFaces faces = avatar ? std::move(avatar->faces) : std::move(cached.faces);
     // glTF lengths are metres; a project of mesh files has no unit.
-    const SayFace face{
-        std::make_shared<const ReducedModel>(std::move(faces.full)),
-        std::make_shared<const ReducedModel>(std::move(faces.reduced)), std::move(faces.weights),
-        avatar || project.avatar.isSet() ? millimetresFromMetres() : DisplacementUnit{}, where};
+    const SayFace face{std::make_shared<const ReducedModel>(std::move(faces.full)),
+                       std::make_shared<const ReducedModel>(std::move(faces.reduced)),
+                       std::move(faces.weights),
+                       avatar || cached.metres ? millimetresFromMetres() : DisplacementUnit{}, where};
     auto synthesizer = makeEspeakSynthesizer({o.voice, o.rate});
     if (o.lines) return sayLines(o, face, *synthesizer, *interpolation, *format);
     std::optional<WavStreamWriter> wav;

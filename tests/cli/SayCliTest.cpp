@@ -210,3 +210,44 @@ TEST_F(SayCli, StdinServesOneJsonLinePerSentenceAsSayWould) {
     EXPECT_EQ(test::runCli("say hi --stdin --project " + sampleProject() + " --out -").exitCode, 2);
     EXPECT_EQ(test::runCli("say --stdin --wav x.wav --project " + sampleProject() + " --out -").exitCode, 2);
 }
+
+// The speech cache (core/project/SpeechCache.h): the second call reads the faces from the cache and
+// writes the same bytes as a call without it; a mesh edited between calls is seen at once.
+TEST_F(SayCli, TheSpeechCacheChangesNoByteAndSeesAnEditedMesh) {
+    std::filesystem::copy(std::filesystem::path(VISEMELAB_ASSETS_DIR) / "sample", dir / "sample",
+                          std::filesystem::copy_options::recursive);
+    // `cache`: the cache folder, or "off".
+    const auto sayWith = [&](const std::string& cache, const std::string& name) {
+        const auto result = test::runCliWith("VISEMELAB_CACHE_DIR=" + quotedPath(cache) + " ",
+                                             "say 'Paper birds move in the wind.' --project " +
+                                                 quotedPath(dir / "sample" / "sample.vlproj") + " --out " +
+                                                 quotedPath(dir / (name + ".json")) + " --glb " +
+                                                 quotedPath(dir / (name + ".glb")) + " --quiet");
+        EXPECT_EQ(result.exitCode, 0) << result.output;
+    };
+    const auto expectSameOutputs = [&](const std::string& name, const std::string& expected) {
+        EXPECT_TRUE(readFileToString(dir / (name + ".glb")) == readFileToString(dir / (expected + ".glb")))
+            << name;
+        // The track names its own file: compared without the metadata.
+        auto track = nlohmann::json::parse(readFileToString(dir / (name + ".json")));
+        auto reference = nlohmann::json::parse(readFileToString(dir / (expected + ".json")));
+        track.erase("metadata");
+        reference.erase("metadata");
+        EXPECT_EQ(track, reference) << name;
+    };
+    const std::string cache = (dir / "cache").string();
+    sayWith(cache, "first");
+    sayWith(cache, "second");
+    sayWith("off", "uncached");
+    EXPECT_FALSE(std::filesystem::is_empty(dir / "cache" / "speech"));
+    expectSameOutputs("first", "uncached");
+    expectSameOutputs("second", "uncached");
+
+    // aa given oh's shape: both the cached call and a call without the cache show it.
+    std::filesystem::copy_file(dir / "sample" / "oh.obj", dir / "sample" / "aa.obj",
+                               std::filesystem::copy_options::overwrite_existing);
+    sayWith(cache, "edited");
+    sayWith("off", "edited-uncached");
+    expectSameOutputs("edited", "edited-uncached");
+    EXPECT_TRUE(readFileToString(dir / "edited.glb") != readFileToString(dir / "first.glb"));
+}
