@@ -24,6 +24,8 @@ void EditorUi::enableBrush(int operation) {
 
 nlohmann::json EditorUi::probeSummary() {
     const Document& document = session_.document();
+    nlohmann::json jobs = nlohmann::json::array(); // what the status bar shows with a Cancel
+    for (const EditorSession::JobStatus& job : session_.runningJobs()) jobs.push_back(job.label);
     nlohmann::json messages = nlohmann::json::array();
     for (const StatusMessage& message : session_.messages())
         messages.push_back({{"error", message.kind == StatusMessage::Kind::Error}, {"text", message.text}});
@@ -41,6 +43,7 @@ nlohmann::json EditorUi::probeSummary() {
         {"busy", session_.loading() || session_.saving() || session_.exporting() ||
                      session_.refinementRunning() || session_.reductionRunning() ||
                      session_.phonemeCountRunning() || session_.speaking()},
+        {"jobs", jobs},
         {"visemes", document.visemeCount()},
         {"selected_viseme", session_.selectedViseme},
         {"target", document.target},

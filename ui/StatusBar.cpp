@@ -3,6 +3,7 @@
 // off the window; the full history is in its tooltip.
 #include "ui/EditorUi.h"
 #include "ui/widgets/GuiProbe.h"
+#include "ui/widgets/JobProgress.h"
 
 #include <imgui.h>
 
@@ -12,8 +13,9 @@ namespace vl::ui {
 namespace {
 
 constexpr int kMaxLines = 3;
-constexpr float kPadding = 8.0f;     // window padding, left and right
-constexpr float kProgressGap = 8.0f; // ImGui's item spacing before each progress bar
+constexpr float kPadding = 8.0f;       // window padding, left and right
+constexpr float kProgressGap = 8.0f;   // ImGui's item spacing before each progress bar
+constexpr float kJobBarWidth = 260.0f; // a job's bar (label, percentage, time left), then its Cancel
 
 int lineCount(const std::string& text, float width) {
     const float height = ImGui::CalcTextSize(text.c_str(), nullptr, false, width).y;
@@ -41,10 +43,10 @@ float EditorUi::statusBarHeight() {
     status_.stats = views_.statistics();
     // The message column starts after the statistics and the progress bars shown this frame.
     float x = kPadding + ImGui::CalcTextSize(status_.stats.c_str()).x;
-    for (const bool running : {session_.loading(), session_.saving(), session_.exporting()})
+    for (const bool running : {session_.saving(), session_.exporting()})
         if (running) x += kProgressGap + 200.0f;
-    if (session_.refinementRunning()) x += kProgressGap + 120.0f;
-    if (session_.reductionRunning()) x += kProgressGap + 160.0f;
+    const float cancel = ImGui::CalcTextSize("Cancel").x + 2 * ImGui::GetStyle().FramePadding.x;
+    x += static_cast<float>(session_.runningJobs().size()) * (2 * kProgressGap + kJobBarWidth + cancel);
     status_.messageX = std::max(x + 30.0f, io.DisplaySize.x * 0.3f);
     status_.wrapWidth = std::max(80.0f, io.DisplaySize.x - status_.messageX - kPadding);
     const auto& messages = session_.messages();
@@ -66,10 +68,12 @@ void EditorUi::statusBar(float height) {
     statusHovered_ = ImGui::IsWindowHovered();
     ImGui::TextUnformatted(status_.stats.c_str());
     const float bar = ImGui::GetFrameHeight();
-    if (session_.loading()) {
+    // Every job that can be cancelled: its progress, time left and Cancel (one list, EditorSession).
+    for (const EditorSession::JobStatus& job : session_.runningJobs()) {
         ImGui::SameLine();
-        ImGui::ProgressBar(-1.0f * static_cast<float>(ImGui::GetTime()), ImVec2(200, bar),
-                           session_.loadingLabel().c_str());
+        const std::string cancel = "Cancel##job" + std::to_string(static_cast<int>(job.job));
+        if (jobProgress(job.label, job.fraction, job.secondsLeft, cancel.c_str(), kJobBarWidth))
+            session_.cancelJob(job.job);
     }
     // File work runs on workers too: an indeterminate bar each while it lasts.
     for (const auto& [running, label] : {std::pair{session_.saving(), session_.savingLabel()},
@@ -77,14 +81,6 @@ void EditorUi::statusBar(float height) {
         if (!running) continue;
         ImGui::SameLine();
         ImGui::ProgressBar(-1.0f * static_cast<float>(ImGui::GetTime()), ImVec2(200, bar), label.c_str());
-    }
-    if (session_.refinementRunning()) {
-        ImGui::SameLine();
-        ImGui::ProgressBar(-1.0f * static_cast<float>(ImGui::GetTime()), ImVec2(120, bar), "refining");
-    }
-    if (session_.reductionRunning()) {
-        ImGui::SameLine();
-        ImGui::ProgressBar(static_cast<float>(session_.reductionProgress()), ImVec2(160, bar), "reducing");
     }
     if (status_.shown) {
         ImGui::SameLine(status_.messageX);

@@ -7,6 +7,7 @@
 #include "core/deform/CascadeAtPose.h"
 #include "core/deform/DeformationCascade.h"
 
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -38,13 +39,16 @@ class CascadeSurface : public Surface {
 // Refines `mesh` until the criterion holds under every parameter vector of `poses` (refining for each
 // in turn, repeated until a whole round splits nothing), so that one (u,v) mesh serves them all: the
 // viseme meshes generated on it form an interpolable set. Leaves the surface at the last pose.
+// `progress` gets an estimate in [0, 1) after every pose (the number of rounds is not known ahead: the
+// first round is counted as 80 %); it may throw to cancel.
 AdaptStats refineForPoses(AdaptiveMesh& mesh, CascadeSurface& surface, const Criterion& criterion,
-                          std::span<const std::vector<double>> poses);
+                          std::span<const std::vector<double>> poses,
+                          const std::function<void(double)>& progress = {});
 
 // One call for the tools: the face domain's base mesh (face::faceBaseDomain(baseResolution)) refined
 // under `settings` for every pose. Returns the mesh with (u,v); positions are those of the last pose.
 MeshData refineFaceMesh(const DeformationCascade& cascade, int baseResolution,
                         const CriterionSettings& settings, std::span<const std::vector<double>> poses,
-                        AdaptStats* stats = nullptr);
+                        AdaptStats* stats = nullptr, const std::function<void(double)>& progress = {});
 
 } // namespace vl

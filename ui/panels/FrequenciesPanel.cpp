@@ -8,6 +8,7 @@
 #include "ui/panels/PanelWidgets.h"
 #include "ui/widgets/Controls.h"
 #include "ui/widgets/FrequencyHistogram.h"
+#include "ui/widgets/JobProgress.h"
 
 #include <imgui.h>
 
@@ -52,8 +53,10 @@ void FrequenciesPanel::draw() {
                              });
     if (counting) {
         ImGui::EndDisabled();
-        ImGui::ProgressBar(static_cast<float>(session_.phonemeCountProgress()), ImVec2(-1, 0),
-                           "transcribing...");
+        for (const auto& job : session_.runningJobs())
+            if (job.job == EditorSession::Job::PhonemeCount &&
+                jobProgress(job.label, job.fraction, job.secondsLeft, "Cancel##transcription", -1))
+                session_.cancelJob(job.job);
     }
 
     std::vector<double> frequencies;

@@ -6,6 +6,7 @@
 #include "ui/panels/PanelWidgets.h"
 #include "ui/panels/ParameterSliders.h"
 #include "ui/widgets/Controls.h"
+#include "ui/widgets/JobProgress.h"
 
 #include <imgui.h>
 
@@ -94,7 +95,11 @@ void RefinementPanel::draw() {
         "where it allows; Re-adapt does both after a change. 'For all visemes' refines one mesh for "
         "every viseme pose: Generate viseme set (Deformation panel) then gives an interpolable set on it.");
     ctl::Checkbox("Automatic: re-adapt after every slider or threshold change", &session_.autoRefine);
-    if (busy) ImGui::ProgressBar(-1.0f * static_cast<float>(ImGui::GetTime()), ImVec2(-1, 0), "refining...");
+    if (busy)
+        for (const auto& job : session_.runningJobs())
+            if (job.job == EditorSession::Job::Refinement &&
+                jobProgress(job.label, job.fraction, job.secondsLeft, "Cancel##refinement", -1))
+                session_.cancelJob(job.job);
 
     sectionHeader("Current mesh");
     ImGui::Text("%zu vertices, %zu triangles", model.domain->positions.size(),

@@ -3,6 +3,7 @@
 // freezes. The UI thread polls progress and collects the result or the error message; cancelling
 // makes the progress callback throw, which unwinds the worker.
 #include <atomic>
+#include <chrono>
 #include <functional>
 #include <mutex>
 #include <optional>
@@ -30,6 +31,7 @@ template <class Result> class BackgroundTask {
         cancel();
         label_ = std::move(label);
         progress_ = 0.0;
+        started_ = std::chrono::steady_clock::now();
         {
             std::lock_guard lock(mutex_);
             outcome_.reset();
@@ -50,17 +52,30 @@ template <class Result> class BackgroundTask {
             }
             {
                 std::lock_guard lock(mutex_);
+                // A run cancelled without waiting (requestCancel) finished after all: nobody wants it.
+                if (stop.stop_requested()) outcome.reset();
                 outcome_ = std::move(outcome);
             }
             running_ = false;
         });
     }
 
+    // Cancels and waits for the worker to end.
     void cancel() {
         if (thread_.joinable()) {
             thread_.request_stop();
             thread_.join();
         }
+        running_ = false;
+    }
+
+    // Cancels without waiting (the Cancel buttons): running() is false at once and the outcome is
+    // dropped; the worker ends at its next progress call (or when its work ends, for work that never
+    // reports progress) and is joined by the next start(), cancel() or the destructor.
+    void requestCancel() {
+        if (thread_.joinable()) thread_.request_stop();
+        std::lock_guard lock(mutex_); // an outcome that arrived just before the click is dropped too
+        outcome_.reset();
         running_ = false;
     }
 
@@ -71,6 +86,14 @@ template <class Result> class BackgroundTask {
 
     bool running() const { return running_; }
     double progress() const { return progress_; }
+    // The time left, estimated from the progress so far (none before 2 % or for work without progress).
+    std::optional<double> secondsLeft() const {
+        const double p = progress_;
+        if (!running_ || !(p >= 0.02 && p < 1.0)) return std::nullopt;
+        const double elapsed =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
+        return elapsed * (1.0 - p) / p;
+    }
     const std::string& label() const { return label_; }
 
     // The outcome of a finished run, once; empty while running, after a cancel, or when taken.
@@ -84,6 +107,7 @@ template <class Result> class BackgroundTask {
     std::string label_;
     std::atomic<double> progress_{0.0};
     std::atomic<bool> running_{false};
+    std::chrono::steady_clock::time_point started_{};
     std::mutex mutex_;
     std::optional<Outcome> outcome_;
     std::jthread thread_; // last member: joined before the others are destroyed

@@ -507,6 +507,50 @@ void EditorSession::startPhonemeCount(const std::filesystem::path& corpus, const
     });
 }
 
+// --- background jobs ---------------------------------------------------------------------------
+
+std::vector<EditorSession::JobStatus> EditorSession::runningJobs() const {
+    std::vector<JobStatus> jobs;
+    if (loading()) jobs.push_back({Job::Loading, loadingLabel(), std::nullopt, std::nullopt});
+    if (refinement_.running()) {
+        const double p = refinement_.progress();
+        jobs.push_back({Job::Refinement, "Refining", p > 0 ? std::optional(p) : std::nullopt,
+                        refinement_.secondsLeft()});
+    }
+    if (reduction_.running())
+        jobs.push_back({Job::Reduction, "Reducing", reduction_.progress(), reduction_.secondsLeft()});
+    if (countTask_.running())
+        jobs.push_back({Job::PhonemeCount, "Transcribing", countTask_.progress(), countTask_.secondsLeft()});
+    return jobs;
+}
+
+void EditorSession::cancelJob(Job job) {
+    const char* what = "";
+    switch (job) {
+    case Job::Loading:
+        if (!loading()) return;
+        files_.cancelLoad();
+        what = "Loading cancelled: the document is unchanged";
+        break;
+    case Job::Refinement:
+        if (!refinement_.running()) return;
+        refinement_.cancel();
+        what = "Refinement cancelled: the face keeps its mesh";
+        break;
+    case Job::Reduction:
+        if (!reduction_.running()) return;
+        reduction_.stop();
+        what = "Reduction stopped";
+        break;
+    case Job::PhonemeCount:
+        if (!countTask_.running()) return;
+        countTask_.requestCancel();
+        what = "Phoneme count cancelled: the frequencies are unchanged";
+        break;
+    }
+    info(what);
+}
+
 void EditorSession::saveFrequenciesCsv(const std::filesystem::path& file) const {
     writeFileAtomically(file, formatFrequencyCsv(document().frequencies));
 }

@@ -185,6 +185,19 @@ class EditorSession {
     // Re-adapt in the background after every parameter, field or threshold change.
     bool autoRefine = false;
 
+    // --- background jobs: one list for progress and Cancel --------------------------------------
+    enum class Job { Loading, Refinement, Reduction, PhonemeCount };
+    struct JobStatus {
+        Job job;
+        std::string label;
+        std::optional<double> fraction;    // none: the job reports no progress
+        std::optional<double> secondsLeft; // estimated from the progress so far
+    };
+    std::vector<JobStatus> runningJobs() const;
+    // Stops `job` at once and leaves the document as it was. A reduction keeps its best groupings with
+    // their proven gaps (stopReduction); the others' results are dropped.
+    void cancelJob(Job job);
+
     // --- reduction ---------------------------------------------------------------------------
     void setTarget(int m);
     // Pins, apart and together pairs by viseme name (validated; saved in the project).

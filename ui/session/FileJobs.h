@@ -46,6 +46,8 @@ class FileJobs {
     void exportAvatar(std::string label, std::function<std::string()> write);
 
     bool loading() const { return load_.running(); }
+    // Drops a load (open, import, folder) at once: its result is never applied.
+    void cancelLoad() { load_.requestCancel(); }
     std::string loadingLabel() const { return load_.label(); }
     bool saving() const { return save_.running(); }
     std::string savingLabel() const { return save_.label(); }

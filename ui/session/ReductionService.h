@@ -37,6 +37,7 @@ class ReductionService {
     // document cannot be reduced.
     void start(const Document& document, const DocumentInputs& inputs);
     bool running() const { return task_.running(); }
+    std::optional<double> secondsLeft() const { return task_.secondsLeft(); }
     double progress() const { return task_.progress(); }
     // True when the last run on the current inputs failed (an automatic re-run would fail again).
     bool failedOnCurrentInputs() const { return runningRevision_ == revision_ && !task_.running(); }

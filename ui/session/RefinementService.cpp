@@ -60,7 +60,7 @@ void RefinementService::start(const Document& document, RefineAction action, boo
         autoSettings_ = settings;
     }
     task_.start("Refining", [work = work_, cascade, q, settings, poses, action, automatic, verticesBefore,
-                             trianglesBefore](const auto&) {
+                             trianglesBefore](const auto& progress) {
         const auto start = std::chrono::steady_clock::now();
         const std::unique_ptr<Criterion> criterion = makeCriterion(settings);
         Finished outcome;
@@ -69,7 +69,8 @@ void RefinementService::start(const Document& document, RefineAction action, boo
         outcome.report.trianglesBefore = trianglesBefore;
         MeshData result;
         if (action == RefineAction::AllVisemes) {
-            result = refineFaceMesh(*cascade, kBaseResolution, settings, poses, &outcome.report.stats);
+            result =
+                refineFaceMesh(*cascade, kBaseResolution, settings, poses, &outcome.report.stats, progress);
             outcome.report.action = "refined for all visemes";
         } else {
             if (work->cascade != cascade || !work->mesh) {

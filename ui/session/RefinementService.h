@@ -50,6 +50,11 @@ class RefinementService {
     void start(const Document& document, RefineAction action, bool automatic);
     bool running() const { return task_.running(); }
     void wait() { task_.wait(); }
+    // "For all visemes" reports progress (and so stops within one pose's refinement); the others are
+    // dropped when they end. The document keeps the mesh it had.
+    void cancel() { task_.requestCancel(); }
+    double progress() const { return task_.progress(); }
+    std::optional<double> secondsLeft() const { return task_.secondsLeft(); }
 
     struct Finished {
         std::shared_ptr<const MeshData> domain;            // the refined (u,v) mesh

@@ -1,0 +1,132 @@
+// Cancel on the editor's background jobs (issue 32): a cancelled job leaves the document as it was,
+// the UI is idle at once, and the worker ends within a second.
+#include "ui/session/BackgroundTask.h"
+#include "ui/session/EditorSession.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <thread>
+
+namespace vl::ui {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// Waits (30 s at most) until `job` has reported some progress.
+bool waitForProgress(EditorSession& session, EditorSession::Job job) {
+    const auto deadline = Clock::now() + std::chrono::seconds(30);
+    while (Clock::now() < deadline) {
+        for (const auto& status : session.runningJobs())
+            if (status.job == job && status.fraction && *status.fraction > 0) return true;
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    return false;
+}
+
+TEST(BackgroundTask, ACancelWithoutWaitingDropsTheOutcomeEvenOfWorkWithoutProgress) {
+    BackgroundTask<int> task;
+    std::atomic<bool> release{false};
+    task.start("work", [&](const auto&) {
+        while (!release) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        return 7;
+    });
+    EXPECT_TRUE(task.running());
+    task.requestCancel();
+    EXPECT_FALSE(task.running()); // at once, though the worker still runs
+    release = true;
+    task.wait();
+    EXPECT_FALSE(task.take().has_value());
+}
+
+TEST(BackgroundTask, TheTimeLeftFollowsTheProgress) {
+    BackgroundTask<int> task;
+    std::atomic<bool> release{false};
+    task.start("work", [&](const auto& progress) {
+        progress(0.01);
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        progress(0.5);
+        while (!release) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        return 1;
+    });
+    while (task.progress() < 0.5) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    const auto left = task.secondsLeft();
+    ASSERT_TRUE(left.has_value());
+    EXPECT_GT(*left, 0.015); // about the 20 ms elapsed: half done
+    EXPECT_LT(*left, 5.0);
+    release = true;
+    task.wait();
+    EXPECT_FALSE(task.secondsLeft().has_value());
+    EXPECT_EQ(std::get<0>(*task.take()), 1);
+}
+
+TEST(JobCancel, RefiningForAllVisemesStopsWithinASecondAndTheFaceKeepsItsMesh) {
+    EditorSession session;
+    session.loadFace();
+    const auto domain = session.face().domain;
+    const auto revision = session.documentId();
+    const std::string undo = session.undoName();
+    session.startRefinement(RefineAction::AllVisemes);
+    ASSERT_TRUE(waitForProgress(session, EditorSession::Job::Refinement));
+    session.cancelJob(EditorSession::Job::Refinement);
+    EXPECT_TRUE(session.runningJobs().empty());
+    const auto cancelled = Clock::now();
+    session.finishBackgroundWork(); // joins the worker
+    EXPECT_LT(secondsSince(cancelled), 1.0);
+    EXPECT_EQ(session.face().domain, domain);
+    EXPECT_FALSE(session.lastRefinement().has_value());
+    EXPECT_EQ(session.documentId(), revision);
+    EXPECT_EQ(session.undoName(), undo); // no step was added
+    // And it runs again afterwards.
+    session.startRefinement(RefineAction::Refine);
+    session.finishBackgroundWork();
+    EXPECT_TRUE(session.lastRefinement().has_value());
+}
+
+TEST(JobCancel, TranscribingACorpusStopsWithinASecondAndTheFrequenciesStay) {
+    const auto dir = std::filesystem::temp_directory_path() / "visemelab_job_cancel_corpus";
+    std::filesystem::create_directories(dir);
+    {
+        std::ofstream corpus(dir / "corpus.txt");
+        for (int i = 0; i < 20000; ++i)
+            corpus << "Four score and seven years ago our fathers brought forth on this continent a new "
+                      "nation.\n";
+    }
+    EditorSession session;
+    session.openProject(std::filesystem::path(EditorSession::assetsDirectory()) / "sample" / "sample.vlproj");
+    const FrequencySource before = session.document().frequencies;
+    const std::string undo = session.undoName();
+    session.startPhonemeCount(dir / "corpus.txt");
+    ASSERT_TRUE(waitForProgress(session, EditorSession::Job::PhonemeCount));
+    session.cancelJob(EditorSession::Job::PhonemeCount);
+    EXPECT_TRUE(session.runningJobs().empty());
+    const auto cancelled = Clock::now();
+    session.finishBackgroundWork();
+    EXPECT_LT(secondsSince(cancelled), 1.0);
+    EXPECT_EQ(session.document().frequencies, before);
+    EXPECT_EQ(session.undoName(), undo);
+    std::filesystem::remove_all(dir);
+}
+
+TEST(JobCancel, ACancelledOpenLeavesTheDocumentAsItWas) {
+    EditorSession session;
+    const auto revision = session.documentId();
+    session.startOpenProject(std::filesystem::path(EditorSession::assetsDirectory()) / "sample" /
+                             "sample.vlproj");
+    ASSERT_FALSE(session.runningJobs().empty());
+    session.cancelJob(EditorSession::Job::Loading);
+    EXPECT_TRUE(session.runningJobs().empty());
+    session.finishBackgroundWork();
+    EXPECT_EQ(session.documentId(), revision);
+    EXPECT_TRUE(session.path().empty());
+    EXPECT_EQ(session.visemes(), nullptr);
+}
+
+} // namespace
+} // namespace vl::ui
