@@ -189,6 +189,55 @@ Document addRestViseme(const Document& document, const std::string& name) {
     return checked(std::move(next));
 }
 
+Document setVisemeShape(const Document& document, int index, std::vector<Vec3> positions) {
+    requireSet(document, "sculpt viseme");
+    refuseAvatar(document, "sculpt viseme");
+    const std::size_t i = checkedIndex(index, document.visemeCount(), "sculpt viseme");
+    const std::string where = "sculpt " + document.visemes->visemes[i].name;
+    if (positions.size() != document.visemes->vertexCount())
+        throwInputError(where, "the shape has " + std::to_string(positions.size()) +
+                                   " vertices, the neutral " +
+                                   std::to_string(document.visemes->vertexCount()));
+    for (const Vec3& p : positions)
+        if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+            throwInputError(where, "the shape has a position that is not a finite number");
+    Document next = document;
+    auto set = std::make_shared<VisemeSet>(*next.visemes);
+    set->visemes[i].positions = std::move(positions);
+    set->visemes[i].source.clear();
+    next.visemes = std::move(set);
+    next.visemeFiles[i].clear(); // embedded: the file no longer holds this shape
+    return checked(std::move(next));
+}
+
+Document addBlendedViseme(const Document& document, const std::string& name,
+                          const std::vector<std::pair<int, double>>& mix) {
+    requireSet(document, "blend visemes");
+    refuseAvatar(document, "blend visemes");
+    checkNewVisemeName(document, name, "blend visemes");
+    if (mix.empty()) throwInputError("blend visemes", "select at least one viseme to blend");
+    const VisemeSet& set = *document.visemes;
+    std::vector<Vec3> positions = set.neutral.positions;
+    std::size_t last = 0;
+    for (const auto& [index, weight] : mix) {
+        const std::size_t i = checkedIndex(index, set.size(), "blend visemes");
+        if (!std::isfinite(weight))
+            throwInputError("blend visemes",
+                            "the weight of " + set.visemes[i].name + " is not a finite number");
+        for (std::size_t v = 0; v < positions.size(); ++v)
+            positions[v] += weight * (set.visemes[i].positions[v] - set.neutral.positions[v]);
+        last = std::max(last, i);
+    }
+    Document next = document;
+    insertViseme(next, last + 1, Viseme{name, {}, std::move(positions)}, {});
+    if (!next.frequencies.isPhonemeBased()) {
+        auto& entries = next.frequencies.visemeFrequencies.entries;
+        entries.emplace_back(name, 1.0);
+        followSetOrder(entries, *next.visemes, [](const auto& entry) { return entry.first; });
+    }
+    return checked(std::move(next));
+}
+
 std::vector<VisemeParameters> facePresets(const FaceModel& face) {
     return face.presets.empty() ? oculusVisemes() : face.presets;
 }

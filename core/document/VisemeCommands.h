@@ -28,6 +28,16 @@ Document duplicateViseme(const Document& document, int index, const std::string&
 Document moveViseme(const Document& document, int from, int to);
 // A viseme with the neutral's shape (the mouth at rest), e.g. for the pause "sil" of a phoneme map.
 Document addRestViseme(const Document& document, const std::string& name);
+// Viseme `index` takes the shape `positions` (a sculpt stroke, core/paint/SculptBrush.h): embedded from
+// now on (no longer the file it came from); its name, frequency, phonemes and preset stay (regenerating
+// it from the preset would drop the sculpting). Refused for avatars, for a count other than the
+// neutral's and for non-finite positions.
+Document setVisemeShape(const Document& document, int index, std::vector<Vec3> positions);
+// A new viseme `name` mixing others, Blender's "new shape from mix": neutral + sum_i w_i (viseme_i -
+// neutral), inserted after the last viseme mixed; frequency 1 in a direct table, no phoneme maps to it.
+// Refused for avatars, an empty mix, unknown indices and non-finite weights.
+Document addBlendedViseme(const Document& document, const std::string& name,
+                          const std::vector<std::pair<int, double>>& mix);
 
 // The face's presets: its own, or the Oculus presets (oculusVisemes()) when it has none.
 std::vector<VisemeParameters> facePresets(const FaceModel& face);

@@ -260,3 +260,54 @@ TEST(VisemeCommands, AuthoredDocumentSurvivesTheProjectFile) {
 
 } // namespace
 } // namespace vl
+
+namespace vl {
+namespace {
+
+using test::faceDocument;
+using test::refusal;
+
+TEST(VisemeCommands, ASculptedShapeReplacesTheVisemeAndIsEmbedded) {
+    const Document document = faceDocument();
+    std::vector<Vec3> shape = document.visemes->visemes[3].positions;
+    shape[7] += Vec3(0.0, 0.0, 0.25);
+    const Document sculpted = edit::setVisemeShape(document, 3, shape);
+    EXPECT_EQ(sculpted.visemes->visemes[3].positions, shape);
+    EXPECT_EQ(sculpted.visemes->visemes[3].name, document.visemes->visemes[3].name);
+    EXPECT_TRUE(sculpted.visemeFiles[3].empty());
+    EXPECT_TRUE(sculpted.visemes->visemes[3].source.empty());
+    EXPECT_EQ(document.visemes->visemes[3].positions[7], faceDocument().visemes->visemes[3].positions[7]);
+    EXPECT_NE(refusal([&] { edit::setVisemeShape(document, 3, {}); }).find("vertices"), std::string::npos);
+    shape[2][1] = std::nan("");
+    EXPECT_NE(refusal([&] { edit::setVisemeShape(document, 3, shape); }).find("finite"), std::string::npos);
+    EXPECT_FALSE(
+        refusal([&] { edit::setVisemeShape(document, 99, document.visemes->neutral.positions); }).empty());
+}
+
+TEST(VisemeCommands, ABlendIsTheNeutralPlusTheWeightedDisplacements) {
+    const Document document = faceDocument();
+    const VisemeSet& set = *document.visemes;
+    EXPECT_FALSE(refusal([&] { edit::addBlendedViseme(document, "bad+name", {{1, 1.0}}); }).empty());
+    const Document mix = edit::addBlendedViseme(document, "aa ou mix", {{10, 0.5}, {14, 0.25}});
+    ASSERT_EQ(mix.visemeCount(), set.size() + 1);
+    const Viseme& added = mix.visemes->visemes[15]; // after the last one mixed (14)
+    EXPECT_EQ(added.name, "aa ou mix");
+    for (std::size_t v = 0; v < set.vertexCount(); ++v) {
+        const Vec3 expected = set.neutral.positions[v] +
+                              0.5 * (set.visemes[10].positions[v] - set.neutral.positions[v]) +
+                              0.25 * (set.visemes[14].positions[v] - set.neutral.positions[v]);
+        EXPECT_NEAR((added.positions[v] - expected).norm(), 0.0, 1e-12) << v;
+    }
+    // One viseme at weight 1 is a copy of its shape.
+    const Document copy = edit::addBlendedViseme(document, "aa again", {{10, 1.0}});
+    EXPECT_EQ(copy.visemes->visemes[11].positions, set.visemes[10].positions);
+    EXPECT_NE(refusal([&] { edit::addBlendedViseme(document, "none", {}); }).find("at least one"),
+              std::string::npos);
+    EXPECT_NE(refusal([&] {
+                  edit::addBlendedViseme(document, "nan", {{1, std::nan("")}});
+              }).find("finite"),
+              std::string::npos);
+}
+
+} // namespace
+} // namespace vl
