@@ -19,6 +19,7 @@ shot() { # shot NAME ARGS... : one picture at 1280x800
 }
 
 shot visemes --frames 8 --screenshot-bits 6 --panel Visemes --viseme ou --no-wireframe
+shot sculpt --frames 20 --screenshot-bits 6 --panel Visemes --viseme ou --sculpt grab --drag 900 520 915 500 --no-wireframe
 shot frequencies --frames 8 --screenshot-bits 6 --panel Frequencies --no-wireframe
 shot phoneme-map --frames 8 --screenshot-bits 6 --panel Frequencies --map-start mpeg4 --no-wireframe
 shot weights --screenshot-bits 6 --panel Weights --weights uniform --brush subtract --drag 760 380 1010 410 --frames 20 --no-wireframe

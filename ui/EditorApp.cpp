@@ -124,6 +124,13 @@ void applyStartOptions(const EditorOptions& options, EditorSession& session, Edi
             throwInputError("--brush", "expected add, subtract or smooth, got '" + options.brush + "'");
         ui.enableBrush(static_cast<int>(it - std::begin(modes)));
     });
+    step(!options.sculpt.empty(), [&] {
+        for (const SculptTool tool :
+             {SculptTool::Grab, SculptTool::Smooth, SculptTool::Inflate, SculptTool::Deflate})
+            if (sculptToolName(tool) == options.sculpt) return ui.enableSculpt(tool);
+        throwInputError("--sculpt",
+                        "expected grab, smooth, inflate or deflate, got '" + options.sculpt + "'");
+    });
     step(!options.merged.empty(), [&] { ui.setMergedDisplay(options.merged); });
     if (options.play >= 0.0) ui.startPlayback(options.play, options.sequence);
     step(!options.mapStart.empty(), [&] { ui.startMapFrom(options.mapStart); });

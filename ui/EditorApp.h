@@ -26,6 +26,7 @@ struct EditorOptions {
     std::string say;             // text the Reduction panel's Say speaks at start
     double sayAt = -1.0;         // >= 0: show the speech paused at this time (seconds)
     std::string brush;           // add, subtract or smooth: paint in the Weights panel
+    std::string sculpt;          // grab, smooth, inflate or deflate: sculpt in the Visemes panel
     std::string weights;         // uniform, area or painted: the weight mode set after loading
     std::vector<float> drag;     // x0 y0 x1 y1: a left-button drag over the frames (window pixels)
     bool wireframe = true;       // wireframe overlay at start

@@ -46,6 +46,11 @@ class EditorUi {
     void setMergedDisplay(const std::string& name) { reduction_.setMergedDisplay(name); }
     // Turns painting on with this operation (0 add, 1 subtract, 2 smooth).
     void enableBrush(int operation);
+    // Turns sculpting on with this tool (Visemes panel).
+    void enableSculpt(SculptTool tool) {
+        visemes_.sculptor().settings.enabled = true;
+        visemes_.sculptor().settings.tool = tool;
+    }
     // Selects the first analytic region of the cascade stage with this name (Deformation panel).
     bool selectField(const std::string& stageName) { return deformation_.selectField(stageName); }
     // Starts the phoneme-sequence playback at `time` seconds.
@@ -76,10 +81,10 @@ class EditorUi {
     SpeechPlayer speech_{session_};
     PanelContext context_{session_, files_, speech_};
     AvatarPanel avatar_{context_}; // sections of the Visemes and Export panels, and the File menu's
-    VisemesPanel visemes_{context_, avatar_};
     FrequenciesPanel frequencies_{context_};
     // The views show what the panels below hold (bound now, used from the first frame on).
-    EditorViews views_{session_, speech_, {weights_, deformation_, reduction_}};
+    EditorViews views_{session_, speech_, {visemes_, weights_, deformation_, reduction_}};
+    VisemesPanel visemes_{context_, avatar_, views_.mainView()};
     WeightsPanel weights_{context_, views_.mainView()};
     DeformationPanel deformation_{context_};
     RefinementPanel refinement_{context_};

@@ -118,7 +118,13 @@ void EditorViews::syncGpu() {
         }
         uploadedMergedCurve_ = 0;
         weightsKey_.clear(), errorKey_.clear(), influenceKey_.clear();
-        frameVisemes_ = true;
+        // Another set is framed once; an edit of a viseme (a sculpt stroke, an undo) keeps the camera.
+        const VisemeSet* set = session_.visemes();
+        std::vector<Vec3> neutral = set ? set->neutral.positions : std::vector<Vec3>();
+        if (neutral != framedNeutral_) {
+            framedNeutral_ = std::move(neutral);
+            frameVisemes_ = true;
+        }
     }
     const FaceModel& model = session_.face();
     if (uploadedCascade_ != model.cascade || uploadedDomain_ != model.domain) {
@@ -240,7 +246,8 @@ void EditorViews::drawMainView(ImVec2 size) {
     const DeformationPanel::Field selected = panels_.deformation.selectedField();
     DrawStyle style;
     style.wireframe = wireframe;
-    const bool painting = active_ == Panel::Weights && panels_.weights.painter().brush.enabled;
+    const bool painting = (active_ == Panel::Weights && panels_.weights.painter().brush.enabled) ||
+                          (active_ == Panel::Visemes && panels_.visemes.sculptor().active());
     const bool orbit = !painting || ImGui::GetIO().KeyAlt;
     std::string label;
     ViewportEvents events;
@@ -314,6 +321,7 @@ void EditorViews::drawMainView(ImVec2 size) {
         }
         if (active_ == Panel::Weights)
             panels_.weights.painter().paint(events); // readout always, tools while painting
+        if (active_ == Panel::Visemes && !speech_.shown()) panels_.visemes.sculptor().sculpt(events);
     }
     if (!label.empty()) viewLabel(events.imageMin, label);
 }

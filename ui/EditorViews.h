@@ -8,6 +8,7 @@
 #include "ui/SpeechPlayer.h"
 #include "ui/panels/DeformationPanel.h"
 #include "ui/panels/ReductionPanel.h"
+#include "ui/panels/VisemesPanel.h"
 #include "ui/panels/WeightsPanel.h"
 #include "ui/render/GlShader.h"
 #include "ui/render/GpuMesh.h"
@@ -29,6 +30,7 @@ class EditorViews {
   public:
     // The panels whose state the views show (they may be constructed after the views).
     struct Panels {
+        VisemesPanel& visemes;
         WeightsPanel& weights;
         DeformationPanel& deformation;
         ReductionPanel& reduction;
@@ -92,6 +94,7 @@ class EditorViews {
     } shownFace_;
     // The camera of each subject, kept across tabs; framed when its mesh first appears.
     OrbitCamera visemeCamera_, faceCamera_;
+    std::vector<Vec3> framedNeutral_; // the neutral the viseme camera was last framed on
     bool frameVisemes_ = true, frameFace_ = true;
 };
 

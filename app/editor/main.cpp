@@ -28,6 +28,8 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(1, 8));
     app.add_option("--weights", options.weights, "Weight mode to set once loaded: uniform, area or painted");
     app.add_option("--brush", options.brush, "Paint in the Weights panel: add, subtract or smooth");
+    app.add_option("--sculpt", options.sculpt,
+                   "Sculpt the selected viseme (Visemes panel): grab, smooth, inflate or deflate");
     app.add_option(
         "--merged", options.merged,
         "How the Reduction panel shows the merged shape: errors, skin or overlay (on the original)");

@@ -53,7 +53,7 @@ void VisemesPanel::draw() {
                           ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_ScrollY |
                               ImGuiTableFlags_SizingStretchProp,
                           ImVec2(0, ImGui::GetContentRegionAvail().y -
-                                        2.0f * ImGui::GetFrameHeightWithSpacing() -
+                                        4.0f * ImGui::GetFrameHeightWithSpacing() -
                                         ImGui::GetStyle().ItemSpacing.y))) {
         ImGui::TableSetupScrollFreeze(0, 1);
         ImGui::TableSetupColumn("Name", ImGuiTableColumnFlags_WidthStretch, 2.0f);
@@ -109,6 +109,7 @@ void VisemesPanel::draw() {
         else
             speech_.hide();
     }
+    sculptor_.controls(); // one row: the sculpt brush and Blend...
 }
 
 void VisemesPanel::importSection() {

@@ -4,6 +4,7 @@
 #include "ui/panels/AvatarPanel.h"
 #include "ui/panels/PanelContext.h"
 #include "ui/panels/VisemeAuthoring.h"
+#include "ui/panels/VisemeSculptor.h"
 
 #include <string>
 
@@ -11,11 +12,16 @@ namespace vl::ui {
 
 class VisemesPanel : public SidePanel {
   public:
-    VisemesPanel(const PanelContext& context, AvatarPanel& avatar)
+    // `view`: the view the sculptor works in (its camera aims the brush).
+    VisemesPanel(const PanelContext& context, AvatarPanel& avatar, const Viewport& view)
         : session_(context.session), files_(context.files), speech_(context.speech), avatar_(avatar),
-          authoring_(context) {}
+          authoring_(context), sculptor_(context.session, view) {}
     void draw() override;
-    void addProbe(nlohmann::json& summary) const override { authoring_.addProbe(summary); }
+    void addProbe(nlohmann::json& summary) const override {
+        authoring_.addProbe(summary);
+        summary["sculpt"] = sculptor_.probe();
+    }
+    VisemeSculptor& sculptor() { return sculptor_; }
 
   private:
     void importSection(); // a mesh as a new viseme, or glTF morph targets as the visemes
@@ -25,6 +31,7 @@ class VisemesPanel : public SidePanel {
     SpeechPlayer& speech_;
     AvatarPanel& avatar_;
     VisemeAuthoring authoring_;
+    VisemeSculptor sculptor_;
     std::string importName_;
     std::string importError_; // the core's message for the last failed import
 };

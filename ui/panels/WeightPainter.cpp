@@ -1,5 +1,7 @@
 #include "ui/panels/WeightPainter.h"
 
+#include "ui/panels/BrushCursor.h"
+
 #include "core/paint/PaintRegions.h"
 #include "core/paint/VertexVisibility.h"
 #include "core/paint/WeightBrush.h"
@@ -94,25 +96,13 @@ void WeightPainter::paint(const ViewportEvents& events) {
     }
     if (hit) {
         // The radius in model units at the hit point: screen pixels scale with its depth.
-        const glm::vec3 centre(static_cast<float>(hit->point[0]), static_cast<float>(hit->point[1]),
-                               static_cast<float>(hit->point[2]));
-        const glm::vec3 forward = glm::normalize(camera.target - camera.eye());
-        const double depth = std::max(1e-6, static_cast<double>(glm::dot(centre - camera.eye(), forward)));
-        const double imageHeight = std::max(1.0f, events.imageMax.y - events.imageMin.y);
         session_.attempt("Brush", [&] {
-            const double perPixel = modelUnitsPerPixel(depth, camera.fovY, imageHeight);
+            const double perPixel = unitsPerPixelAt(camera, events, hit->point);
             tools.modelRadius = modelRadius(brush.radius, surface.size(), perPixel);
             tools.unitsPerPixel = perPixel;
-            if (events.hovered && brush.enabled && tools.tool == PaintTool::Brush) {
-                const glm::mat4 viewProjection = camera.projection(events.aspect) * camera.view();
-                const glm::vec4 clip = viewProjection * glm::vec4(centre, 1.0f);
-                const ImVec2 c(events.imageMin.x +
-                                   (clip.x / clip.w * 0.5f + 0.5f) * (events.imageMax.x - events.imageMin.x),
-                               events.imageMin.y +
-                                   (0.5f - clip.y / clip.w * 0.5f) * (events.imageMax.y - events.imageMin.y));
-                ImGui::GetWindowDrawList()->AddCircle(c, static_cast<float>(tools.modelRadius / perPixel),
-                                                      IM_COL32(255, 255, 255, 200), 48, 1.5f);
-            }
+            if (events.hovered && brush.enabled && tools.tool == PaintTool::Brush)
+                drawBrushCircle(camera, events, hit->point, tools.modelRadius, perPixel,
+                                IM_COL32(255, 255, 255, 200));
         });
     }
     if (!painting || boxing) return;

@@ -33,6 +33,19 @@ void EditorSession::duplicateViseme(int index, const std::string& name) {
     select(name);
 }
 
+void EditorSession::sculptViseme(int index, std::vector<Vec3> positions, SculptTool tool) {
+    Document next = edit::setVisemeShape(document(), index, std::move(positions));
+    const std::string& name = visemes()->visemes[static_cast<std::size_t>(index)].name;
+    commit("Sculpt " + name + " (" + std::string(sculptToolName(tool)) + ")", std::move(next),
+           "sculpt:" + name);
+}
+
+void EditorSession::addBlendedViseme(const std::string& name,
+                                     const std::vector<std::pair<int, double>>& mix) {
+    commit("Blend " + name, edit::addBlendedViseme(document(), name, mix));
+    select(name);
+}
+
 void EditorSession::moveViseme(int from, int to) {
     Document next = edit::moveViseme(document(), from, to);
     const std::string name = visemes()->visemes[static_cast<std::size_t>(from)].name;

@@ -10,6 +10,7 @@
 #include "core/document/PhonemeMapCommands.h"
 #include "core/export/Export.h"
 #include "core/gltf/AvatarWriter.h"
+#include "core/paint/SculptBrush.h"
 #include "core/phonetics/PhonemeCounting.h"
 #include "core/project/Project.h"
 #include "core/reduce/Reduction.h"
@@ -230,6 +231,11 @@ class EditorSession {
     void duplicateViseme(int index, const std::string& name);
     void moveViseme(int from, int to);
     void addRestViseme(const std::string& name);
+    // A sculpt stroke's shape of viseme `index` (edit::setVisemeShape): the calls of one stroke merge
+    // into one undo step named after the tool; endEdit() at the stroke's end closes it.
+    void sculptViseme(int index, std::vector<Vec3> positions, SculptTool tool);
+    // A new viseme mixed from others (edit::addBlendedViseme); it becomes the selection.
+    void addBlendedViseme(const std::string& name, const std::vector<std::pair<int, double>>& mix);
     // An avatar's rest viseme (edit::addAvatarRestViseme, with the bundled Oculus table).
     // `name`: one of kRestVisemeNames; empty: the one the avatar's naming suggests.
     void addAvatarRestViseme(const std::string& name = {});
