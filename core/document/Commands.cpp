@@ -227,7 +227,7 @@ Document setFaceDomain(const Document& document, std::shared_ptr<const MeshData>
     return checked(std::move(next));
 }
 
-Document generateVisemesFromFace(const Document& document) {
+Document generateVisemesFromFace(const Document& document, const FrequencySource* phonemeTable) {
     requireFace(document, "generate visemes");
     const std::vector<VisemeParameters> presets =
         document.face.presets.empty() ? oculusVisemes() : document.face.presets;
@@ -246,10 +246,20 @@ Document generateVisemesFromFace(const Document& document) {
         std::make_shared<const std::vector<Vec3>>(face::faceColours(document.face.domain->uvs));
     next.visemes = std::move(set);
     next = checked(std::move(next));
+    if (phonemeTable && !document.visemes) {
+        // Spoken frequencies rather than equal ones for a first set: the reduction's weights.
+        Document spoken = next;
+        spoken.frequencies = *phonemeTable;
+        try {
+            next = checked(std::move(spoken));
+        } catch (const InputError&) {
+            // The map names visemes the face's presets lack: equal frequencies.
+        }
+    }
     // Keep the frequency table, weight mode and target when they still fit the new set (the visemes
     // keep their names; painted weights do not survive a new mesh).
     Document kept = next;
-    kept.frequencies = document.frequencies;
+    if (document.visemes) kept.frequencies = document.frequencies;
     if (document.weights.mode != WeightMode::Painted) kept.weights.mode = document.weights.mode;
     if (document.visemes && document.target <= static_cast<int>(next.visemes->size()))
         kept.target = document.target;

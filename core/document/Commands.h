@@ -44,8 +44,10 @@ Document retarget(const Document& document, face::Individual individual);
 // The face's display mesh (e.g. a refined (u,v) mesh); the visemes are not regenerated.
 Document setFaceDomain(const Document& document, std::shared_ptr<const MeshData> domain);
 // The face's visemes generated on its (u,v) mesh become the viseme set (embedded meshes); the
-// frequency table, weight mode and target are kept when they still fit.
-Document generateVisemesFromFace(const Document& document);
+// frequency table, weight mode and target are kept when they still fit. A document without a viseme
+// set before takes `phonemeTable` (e.g. the bundled en-us table with the Oculus map) when its map
+// names only visemes of the new set, else equal frequencies.
+Document generateVisemesFromFace(const Document& document, const FrequencySource* phonemeTable = nullptr);
 
 // --- refinement and reduction -----------------------------------------------------------------
 Document setRefinementSettings(const Document& document, const CriterionSettings& settings);

@@ -311,3 +311,32 @@ TEST(VisemeCommands, ABlendIsTheNeutralPlusTheWeightedDisplacements) {
 
 } // namespace
 } // namespace vl
+
+namespace vl {
+namespace {
+
+// Issue 32: a face's first generated set is weighted by how often its visemes are spoken.
+TEST(GenerateVisemes, AFirstSetTakesTheSpokenTableWhenItsMapFits) {
+    const std::filesystem::path assets = VISEMELAB_ASSETS_DIR;
+    const FrequencySource table =
+        loadPhonemeFrequencySource(defaultPhonemeTablePath(assets), assets / "phonemes" / "map_oculus.csv");
+    Document face;
+    face.face = makeFaceModel(face::Individual::Bundled, 12);
+    const Document spoken = edit::generateVisemesFromFace(face, &table);
+    EXPECT_TRUE(spoken.frequencies.isPhonemeBased());
+    const std::vector<double> f = documentFrequencies(spoken);
+    EXPECT_NE(*std::max_element(f.begin(), f.end()), *std::min_element(f.begin(), f.end())); // not equal
+    // Without a table, or with a map naming visemes the presets lack: equal frequencies.
+    EXPECT_FALSE(edit::generateVisemesFromFace(face).frequencies.isPhonemeBased());
+    FrequencySource foreign = table;
+    for (auto& [phoneme, viseme] : foreign.map.entries) viseme = "viseme_" + viseme;
+    EXPECT_FALSE(edit::generateVisemesFromFace(face, &foreign).frequencies.isPhonemeBased());
+    // A set that exists keeps its table: the user's choice wins over the bundled one.
+    const Document direct = edit::setVisemeFrequency(edit::generateVisemesFromFace(face), 3, 5.0);
+    const Document again = edit::generateVisemesFromFace(direct, &table);
+    EXPECT_FALSE(again.frequencies.isPhonemeBased());
+    EXPECT_EQ(again.frequencies, direct.frequencies);
+}
+
+} // namespace
+} // namespace vl

@@ -32,10 +32,13 @@ std::filesystem::path tempDir(const char* name) {
     return dir;
 }
 
-// The face's own viseme set, with direct (uniform) viseme frequencies.
+// The face's own viseme set (spoken frequencies: the bundled table), switched to direct viseme
+// frequencies that the tests edit.
 void loadGeneratedSet(EditorSession& session) {
     session.loadFace();
     session.generateVisemesFromFace();
+    ASSERT_TRUE(session.document().frequencies.isPhonemeBased());
+    session.useDirectFrequencies();
     ASSERT_FALSE(session.document().frequencies.isPhonemeBased());
 }
 
@@ -855,6 +858,7 @@ TEST(EditorSession, EveryCommandUndoesAndRedoesToTheExactDocument) {
     session.autoReduce = false;
     session.loadFace(face::Individual::Bundled, 12);
     session.generateVisemesFromFace();
+    session.useDirectFrequencies(); // "viseme frequency" below edits them
     writeMesh(dir / "extra.obj", session.visemes()->meshOf(3));
     const std::vector<std::pair<std::string, std::function<void()>>> commands = {
         {"target", [&] { session.setTarget(4); }},

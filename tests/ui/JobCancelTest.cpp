@@ -19,13 +19,18 @@ double secondsSince(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// Waits (30 s at most) until `job` has reported some progress.
+// Waits (30 s at most) until `job` has reported some progress; false when it ended first.
 bool waitForProgress(EditorSession& session, EditorSession::Job job) {
     const auto deadline = Clock::now() + std::chrono::seconds(30);
     while (Clock::now() < deadline) {
-        for (const auto& status : session.runningJobs())
-            if (status.job == job && status.fraction && *status.fraction > 0) return true;
-        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        bool running = false;
+        for (const auto& status : session.runningJobs()) {
+            if (status.job != job) continue;
+            running = true;
+            if (status.fraction && *status.fraction > 0) return true;
+        }
+        if (!running) return false;
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
     }
     return false;
 }
@@ -69,6 +74,13 @@ TEST(BackgroundTask, TheTimeLeftFollowsTheProgress) {
 TEST(JobCancel, RefiningForAllVisemesStopsWithinASecondAndTheFaceKeepsItsMesh) {
     EditorSession session;
     session.loadFace();
+    // The finest contour thresholds: refining for all 15 visemes then takes seconds, not milliseconds.
+    CriterionSettings fine = session.document().refinement;
+    fine.kind = CriterionKind::Contour;
+    fine.maxDepth = 12;
+    fine.contour.averageError *= 0.05;
+    fine.contour.maximumError *= 0.05;
+    session.setRefinementSettings(fine);
     const auto domain = session.face().domain;
     const auto revision = session.documentId();
     const std::string undo = session.undoName();

@@ -36,6 +36,7 @@ TEST(SliderTick, AnEditOfTheInputsValidatesAndReevaluatesWhatDependsOnIt) {
     session.autoReduce = false;
     session.loadFace();
     session.generateVisemesFromFace();
+    session.useDirectFrequencies(); // the per-viseme frequencies edited below
     session.weights();
     session.visemeFrequencies();
     const std::uint64_t validations = reductionInputValidations();

@@ -611,12 +611,24 @@ void EditorSession::useOwnFace(const OwnFaceCandidate& candidate) {
                        std::to_string(report.holes.size()) + " holes filled, " +
                        std::to_string(static_cast<int>(100.0 * report.domainCoverage + 0.5)) +
                        "% of the face domain covered";
-    for (const auto& warning : report.warnings) text += "; " + warning;
     info(std::move(text));
+    // Warnings (low coverage, folds) stand out and stay in the history, as the CLI's do on stderr.
+    for (const auto& warning : report.warnings) error("Face '" + candidate.name + "': warning: " + warning);
+}
+
+// The bundled American English phoneme table with the Oculus map (generated sets, phoneme counts).
+static FrequencySource bundledOculusTable() {
+    const std::filesystem::path dir = EditorSession::assetsDirectory();
+    for (const BundledPhonemeMap& map : bundledPhonemeMaps(dir))
+        if (map.id == "oculus") return loadPhonemeFrequencySource(defaultPhonemeTablePath(dir), map.file);
+    throwInputError("phoneme table", "the bundled Oculus map is missing from " + dir.string());
 }
 
 void EditorSession::generateVisemesFromFace() {
-    commit("Generate visemes from face", edit::generateVisemesFromFace(document()));
+    FrequencySource table;
+    const bool spoken = attempt("Bundled phoneme table", [&] { table = bundledOculusTable(); });
+    commit("Generate visemes from face",
+           edit::generateVisemesFromFace(document(), spoken ? &table : nullptr));
     info("Generated " + std::to_string(visemeCount()) + " visemes from the face");
 }
 
@@ -738,15 +750,8 @@ void EditorSession::poll() {
             attempt("Phoneme frequencies", [&] {
                 FrequencySource source;
                 source.phonemes = counted.counts;
-                if (document().frequencies.isPhonemeBased()) {
-                    source.map = document().frequencies.map;
-                } else {
-                    for (const BundledPhonemeMap& map : bundledPhonemeMaps(assetsDirectory()))
-                        if (map.id == "oculus")
-                            source.map = loadPhonemeFrequencySource(
-                                             defaultPhonemeTablePath(assetsDirectory()), map.file)
-                                             .map;
-                }
+                source.map = document().frequencies.isPhonemeBased() ? document().frequencies.map
+                                                                     : bundledOculusTable().map;
                 setFrequencySource(std::move(source),
                                    "Phoneme frequencies from " + countCorpus_.filename().string());
                 info("Counted " + std::to_string(counted.phonemeTotal) + " phonemes");
