@@ -112,12 +112,19 @@ void ReductionPanel::draw() {
     } else if (grouping) {
         ImGui::TextDisabled("m = %d: no grouping satisfies the constraints", m);
     }
-    if (grouping && grouping->feasible())
-        ImGui::Text("m = %d: RMS %.3g mm (%.1f%% of p = 1); click the plot to choose m", m,
-                    rmsDistance(grouping->cost, 1.0, weightSum) * millimetres,
-                    curve->curve.front().cost > 0.0
-                        ? 100.0 * std::sqrt(grouping->cost / curve->curve.front().cost)
-                        : 0.0);
+    if (grouping && grouping->feasible()) {
+        // Relative to the fewest keys that have a grouping (p = 1 may be ruled out by a pin).
+        const Grouping* fewest = nullptr;
+        for (const Grouping& g : curve->curve)
+            if (!fewest && g.feasible() && std::isfinite(g.cost) && g.cost > 0.0) fewest = &g;
+        const double rms = rmsDistance(grouping->cost, 1.0, weightSum) * millimetres;
+        if (fewest)
+            ImGui::Text("m = %d: RMS %.3g mm (%.1f%% of p = %zu); click the plot to choose m", m, rms,
+                        100.0 * std::sqrt(grouping->cost / fewest->cost),
+                        static_cast<std::size_t>(fewest - curve->curve.data()) + 1);
+        else
+            ImGui::Text("m = %d: RMS %.3g mm; click the plot to choose m", m, rms);
+    }
 
     if (!grouping) {
         say_.draw();
@@ -126,6 +133,20 @@ void ReductionPanel::draw() {
     sectionHeader("Groups");
     std::vector<double> frequencies;
     session_.attempt("Frequencies", [&] { frequencies = session_.visemeFrequencies(); });
+    // A viseme no phoneme is spoken with weighs nothing: wherever it is merged costs 0, so its place
+    // says nothing. Said here, where the groups are read.
+    std::string unweighted;
+    for (std::size_t i = 0; i < frequencies.size(); ++i)
+        if (frequencies[i] == 0.0 && i < session_.visemeCount())
+            unweighted += (unweighted.empty() ? "" : ", ") + session_.visemes()->visemes[i].name;
+    if (!unweighted.empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.8f, 0.4f, 1.0f));
+        ImGui::TextWrapped("Frequency 0 %%: %s. No phoneme maps to it, so it costs nothing in any group and "
+                           "its group is arbitrary; map phonemes to it (Frequencies) to weigh it.",
+                           unweighted.c_str());
+        ImGui::PopStyleColor();
+        probe::recordArea(("Frequency 0 %: " + unweighted).c_str(), "warning");
+    }
     if (ImGui::BeginTable("##groups", 3,
                           ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV |
                               ImGuiTableFlags_SizingStretchProp)) {
