@@ -29,6 +29,9 @@ shot reduction --frames 8 --screenshot-bits 6 --panel Reduction --viseme E --no-
 shot reduction-overlay --frames 8 --screenshot-bits 6 --panel Reduction --viseme E --merged overlay --no-wireframe
 shot playback --frames 8 --screenshot-bits 6 --panel Reduction --play 1.3 --sequence 'HH EH L OW W ER L D' --no-wireframe
 shot export --frames 8 --screenshot-bits 6 --panel Export --no-wireframe
+# The View menu, opened by a scripted press on its title (x 100, y 10 in the menu bar).
+shot view-menu --frames 10 --screenshot-bits 6 --panel Visemes --viseme aa --no-wireframe --drag 100 10 100 10
+shot view-right --frames 8 --screenshot-bits 6 --panel Visemes --viseme aa --view right --orthographic
 
 # docs/avatars.md: the generated Ready Player Me-like avatar (tests/gltf/AvatarFixtures.h) in the
 # Reduction panel's before/after views, its body greyed.

@@ -4,6 +4,8 @@
 #include "core/common/Error.h"
 #include "core/reduce/Weights.h"
 #include "ui/EditorUi.h"
+#include "ui/KeyPresses.h"
+#include "ui/UiScale.h"
 #include "ui/session/EditorSession.h"
 #include "ui/widgets/GuiProbe.h"
 
@@ -18,10 +20,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <functional>
 #include <stdexcept>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace vl::ui {
@@ -33,20 +37,43 @@ void onGlfwError(int, const char* description) {
     lastGlfwError = description ? description : "unknown error";
 }
 
-void setupFontsAndStyle() {
+// The interface's scale: the window's content scale (HiDPI), or VISEMELAB_UI_SCALE when set (a
+// forced scale, for testing under Xvfb where it is 1).
+float contentScale(GLFWwindow* window) {
+    if (const char* forced = std::getenv("VISEMELAB_UI_SCALE")) {
+        char* end = nullptr;
+        const float value = std::strtof(forced, &end);
+        if (end != forced && value >= 0.5f && value <= 4.0f) return value;
+    }
+    float x = 1.0f, y = 1.0f;
+    glfwGetWindowContentScale(window, &x, &y);
+    return std::clamp(std::max(x, y), 0.5f, 4.0f);
+}
+
+// Fonts and style at `scale`; again whenever the window moves to a screen of another scale (the
+// font atlas is rebuilt: a scaled bitmap font would be blurred).
+void setupFontsAndStyle(float scale) {
+    uiScaleSetting() = scale;
     ImGuiIO& io = ImGui::GetIO();
     io.IniFilename = nullptr; // fixed layout: nothing to remember
-    // DejaVu Sans covers IPA (phoneme symbols); ImGui's default font is Latin-1 only.
-    static const ImWchar ranges[] = {0x0020, 0x00FF, 0x0250, 0x02FF, 0x0300, 0x036F, 0x1D00, 0x1DBF, 0};
+    io.Fonts->Clear();
+    // DejaVu Sans covers IPA (phoneme symbols: ŋ is Latin Extended-A, θ Greek) and the arrows and
+    // dashes of messages; ImGui's default font is Latin-1 only.
+    static const ImWchar ranges[] = {0x0020, 0x00FF, 0x0100, 0x017F, 0x0180, 0x024F, 0x0250,
+                                     0x02FF, 0x0300, 0x036F, 0x0370, 0x03FF, 0x1D00, 0x1DBF,
+                                     0x2000, 0x206F, 0x2190, 0x21FF, 0x2500, 0x25FF, 0};
     const char* font = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
     if (std::FILE* f = std::fopen(font, "rb")) {
         std::fclose(f);
-        io.Fonts->AddFontFromFileTTF(font, 15.0f, nullptr, ranges);
+        io.Fonts->AddFontFromFileTTF(font, kBaseFontSize * scale, nullptr, ranges);
     } else {
-        io.Fonts->AddFontDefault();
+        ImFontConfig config;
+        config.SizePixels = 13.0f * scale;
+        io.Fonts->AddFontDefault(&config);
     }
-    ImGui::StyleColorsDark();
     ImGuiStyle& style = ImGui::GetStyle();
+    style = ImGuiStyle();
+    ImGui::StyleColorsDark();
     style.WindowRounding = 0.0f;
     style.FrameRounding = 4.0f;
     style.GrabRounding = 4.0f;
@@ -55,6 +82,13 @@ void setupFontsAndStyle() {
     style.ItemSpacing = ImVec2(8, 6);
     style.Colors[ImGuiCol_WindowBg] = ImVec4(0.11f, 0.12f, 0.14f, 1.0f);
     style.Colors[ImGuiCol_MenuBarBg] = ImVec4(0.09f, 0.10f, 0.12f, 1.0f);
+    style.ScaleAllSizes(scale);
+}
+
+bool contentScaleChanged = false;
+
+void onContentScale(GLFWwindow*, float, float) {
+    contentScaleChanged = true;
 }
 
 // Applies the start options in order, each on its own: a bad one is passed to `failed` (which may
@@ -111,6 +145,13 @@ void applyStartOptions(const EditorOptions& options, EditorSession& session, Edi
             throwInputError("--field", "no analytic field named '" + options.field + "'");
     });
     ui.setWireframe(options.wireframe);
+    step(!options.view.empty() || options.orthographic, [&] {
+        const auto view = options.view.empty() ? StandardView::Front : standardViewFromName(options.view);
+        if (!view)
+            throwInputError("--view",
+                            "expected front, back, right, left, top or bottom, got '" + options.view + "'");
+        ui.setStartView(*view, options.orthographic);
+    });
     step(!options.weights.empty(), [&] {
         const auto mode = weightModeFromString(options.weights);
         if (!mode)
@@ -208,7 +249,10 @@ int runEditor(const EditorOptions& options) {
 
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
-    setupFontsAndStyle();
+    float scale = contentScale(window);
+    setupFontsAndStyle(scale);
+    installKeyPresses(window); // before the backend, which chains its callback to this one
+    glfwSetWindowContentScaleCallback(window, onContentScale);
     ImGui_ImplGlfw_InitForOpenGL(window, true);
     ImGui_ImplOpenGL3_Init("#version 330 core");
 
@@ -224,6 +268,7 @@ int runEditor(const EditorOptions& options) {
                 if (screenshotMode) throw e;
                 session.error(std::string("Start options: ") + e.what());
             });
+            ui.startOptionsApplied();
             std::string shownTitle;
             for (int frame = 0; !glfwWindowShouldClose(window) || !ui.quitConfirmed(); ++frame) {
                 const double frameStart = glfwGetTime();
@@ -234,6 +279,12 @@ int runEditor(const EditorOptions& options) {
                     shownTitle = title;
                 }
                 if (screenshotMode) session.finishBackgroundWork(); // deterministic pictures
+                if (std::exchange(contentScaleChanged, false) && contentScale(window) != scale) {
+                    scale = contentScale(window);
+                    setupFontsAndStyle(scale);
+                    ImGui_ImplOpenGL3_DestroyFontsTexture();
+                    ImGui_ImplOpenGL3_CreateFontsTexture();
+                }
                 ImGui_ImplOpenGL3_NewFrame();
                 ImGui_ImplGlfw_NewFrame();
                 if (options.drag.size() == 4) scriptedDrag(options, frame);
@@ -247,6 +298,8 @@ int runEditor(const EditorOptions& options) {
                 glClearColor(0.08f, 0.08f, 0.1f, 1.0f);
                 glClear(GL_COLOR_BUFFER_BIT);
                 ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+                if (const auto shot = probe::takeScreenshotRequest())
+                    saveBackBufferPng(*shot, width, height); // a GUI test's picture of this frame
                 if (screenshotMode && frame + 1 >= options.frames) {
                     saveBackBufferPng(options.screenshot, width, height, options.screenshotBits);
                     std::printf("%s\n", options.screenshot.string().c_str());

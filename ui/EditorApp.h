@@ -30,6 +30,8 @@ struct EditorOptions {
     std::string weights;         // uniform, area or painted: the weight mode set after loading
     std::vector<float> drag;     // x0 y0 x1 y1: a left-button drag over the frames (window pixels)
     bool wireframe = true;       // wireframe overlay at start
+    std::string view;            // standard view at start: front, back, right, left, top, bottom
+    bool orthographic = false;   // orthographic projection at start
     std::string merged;          // errors, skin or overlay: how the Reduction view shows the merged shape
     std::string refine;          // run a refinement with this criterion (depth, normals, contour)
     std::string mapStart;        // open the map editor's assignment from this bundled map id

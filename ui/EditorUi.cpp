@@ -1,6 +1,8 @@
 #include "ui/EditorUi.h"
 
 #include "core/adaptive/Criteria.h"
+#include "ui/KeyPresses.h"
+#include "ui/UiScale.h"
 #include "ui/widgets/Controls.h"
 
 #define GLFW_INCLUDE_NONE
@@ -8,6 +10,8 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <utility>
+#include <vector>
 
 namespace vl::ui {
 EditorUi::EditorUi(EditorSession& session, GLFWwindow* window) : session_(session), window_(window) {}
@@ -55,6 +59,13 @@ nlohmann::json EditorUi::probeSummary() {
         {"painted_mean", painted.empty() ? 0.0 : paintedSum / static_cast<double>(painted.size())},
         {"face_name", document.face.cascade ? document.face.cascade->name : std::string()}};
     views_.addProbe(summary);
+    // Whether the font has the phoneme symbols the tables show (not '?'): IPA, Latin Extended-A, Greek.
+    bool ipa = true;
+    for (const ImWchar c : {0x014B, 0x03B8, 0x00F0, 0x0283, 0x0292, 0x0279})
+        ipa = ipa && ImGui::GetFont()->FindGlyphNoFallback(c) != nullptr;
+    summary["font_has_ipa"] = ipa;
+    summary["font_size"] = ImGui::GetFontSize();
+    summary["key_presses"] = keyPressCount();
     for (const SidePanel* panel : panels_) panel->addProbe(summary);
     avatar_.addProbe(summary);
     return summary;
@@ -65,6 +76,7 @@ nlohmann::json EditorUi::probeSummary() {
 void EditorUi::frame() {
     session_.beginFrame();
     session_.poll();
+    if (session_.documentEpoch() != documentEpoch_) documentReplaced();
     speech_.advance();
     views_.update(activePanel_);
     if (glfwWindowShouldClose(window_) && !files_.quitConfirmed()) {
@@ -77,7 +89,7 @@ void EditorUi::frame() {
     menuBar();
     const float menuHeight = ImGui::GetFrameHeight();
     const float statusHeight = statusBarHeight();
-    const float sideWidth = std::clamp(io.DisplaySize.x * 0.36f, 480.0f, 640.0f);
+    const float sideWidth = std::clamp(io.DisplaySize.x * 0.36f, scaled(480.0f), scaled(640.0f));
     const float bodyHeight = std::max(1.0f, io.DisplaySize.y - menuHeight - statusHeight);
     sidePanel(menuHeight, sideWidth, bodyHeight);
     views_.draw(activePanel_, sideWidth, menuHeight, std::max(1.0f, io.DisplaySize.x - sideWidth),
@@ -86,23 +98,79 @@ void EditorUi::frame() {
     files_.draw();
 }
 
+void EditorUi::documentReplaced() {
+    documentEpoch_ = session_.documentEpoch();
+    speech_.reset();
+    views_.documentReplaced();
+    for (SidePanel* panel : panels_) panel->documentReplaced();
+}
+
 void EditorUi::shortcuts() {
-    const ImGuiIO& io = ImGui::GetIO();
-    if (io.WantTextInput || files_.dialog().isOpen()) return;
-    if (io.KeyCtrl) {
-        if (ImGui::IsKeyPressed(GLFW_KEY_O, false)) files_.openProject();
-        if (ImGui::IsKeyPressed(GLFW_KEY_S, false)) files_.saveProject(io.KeyShift);
-        if (ImGui::IsKeyPressed(GLFW_KEY_Z, false)) io.KeyShift ? session_.redo() : session_.undo();
-        if (ImGui::IsKeyPressed(GLFW_KEY_Y, false)) session_.redo();
-        if (ImGui::IsKeyPressed(GLFW_KEY_L, false)) files_.loadSample();
-    } else if (ImGui::IsKeyPressed(GLFW_KEY_F, false)) {
-        views_.frameAll();
-    } else if (ImGui::IsKeyPressed(GLFW_KEY_W, false)) {
-        views_.wireframe = !views_.wireframe;
-    } else if (activePanel_ == Panel::Weights &&
-               (ImGui::IsKeyPressed(GLFW_KEY_LEFT_BRACKET) || ImGui::IsKeyPressed(GLFW_KEY_RIGHT_BRACKET))) {
-        // Brush size by keyboard, as in painting programs.
-        weights_.painter().resizeBrush(ImGui::IsKeyPressed(GLFW_KEY_RIGHT_BRACKET));
+    // Every press since the last frame, even one released before this frame began (KeyPresses.h).
+    const std::vector<KeyPress> presses = takeKeyPresses();
+    if (files_.dialog().isOpen()) return;
+    // Ctrl+Q quits from anywhere, a text field too (through the unsaved-changes prompt).
+    for (const KeyPress& press : presses)
+        if (press.ctrl() && press.key == GLFW_KEY_Q && !press.repeat) files_.requestQuit();
+    if (ImGui::GetIO().WantTextInput) return;
+    for (const KeyPress& press : presses) {
+        if (press.ctrl() && !press.repeat) {
+            switch (press.key) {
+            case GLFW_KEY_O:
+                files_.openProject();
+                break;
+            case GLFW_KEY_S:
+                files_.saveProject(press.shift());
+                break;
+            case GLFW_KEY_Z:
+                press.shift() ? session_.redo() : session_.undo();
+                break;
+            case GLFW_KEY_Y:
+                session_.redo();
+                break;
+            case GLFW_KEY_L:
+                files_.loadSample();
+                break;
+            default:
+                break;
+            }
+        }
+        // Blender's numpad: 1 front, 3 right, 7 top; with Ctrl the opposite side; 5 orthographic.
+        const bool opposite = press.ctrl();
+        switch (press.key) {
+        case GLFW_KEY_KP_1:
+            views_.setView(opposite ? StandardView::Back : StandardView::Front);
+            break;
+        case GLFW_KEY_KP_3:
+            views_.setView(opposite ? StandardView::Left : StandardView::Right);
+            break;
+        case GLFW_KEY_KP_7:
+            views_.setView(opposite ? StandardView::Bottom : StandardView::Top);
+            break;
+        case GLFW_KEY_KP_5:
+            if (!press.repeat) views_.toggleOrthographic();
+            break;
+        case GLFW_KEY_HOME:
+            views_.frameAll();
+            break;
+        case GLFW_KEY_KP_ADD:
+        case GLFW_KEY_EQUAL:
+            views_.zoom(0.9f);
+            break;
+        case GLFW_KEY_KP_SUBTRACT:
+        case GLFW_KEY_MINUS:
+            views_.zoom(1.0f / 0.9f);
+            break;
+        default:
+            break;
+        }
+        if (press.ctrl()) continue;
+        if (press.key == GLFW_KEY_F && !press.repeat) views_.frameAll();
+        if (press.key == GLFW_KEY_W && !press.repeat) views_.wireframe = !views_.wireframe;
+        // Brush size by keyboard, as in painting programs (held: keeps changing).
+        if (activePanel_ == Panel::Weights &&
+            (press.key == GLFW_KEY_LEFT_BRACKET || press.key == GLFW_KEY_RIGHT_BRACKET))
+            weights_.painter().resizeBrush(press.key == GLFW_KEY_RIGHT_BRACKET);
     }
 }
 
@@ -122,7 +190,7 @@ void EditorUi::menuBar() {
         if (ctl::MenuItem("Export avatar...", nullptr, false, session_.document().avatar.isSet()))
             avatar_.openExport();
         ImGui::Separator();
-        if (ctl::MenuItem("Quit")) files_.requestQuit();
+        if (ctl::MenuItem("Quit", "Ctrl+Q")) files_.requestQuit();
         ImGui::EndMenu();
     }
     if (ctl::BeginMenu("Edit")) {
@@ -133,7 +201,17 @@ void EditorUi::menuBar() {
         ImGui::EndMenu();
     }
     if (ctl::BeginMenu("View")) {
-        if (ctl::MenuItem("Frame model", "F")) views_.frameAll();
+        if (ctl::MenuItem("Frame model", "F, Home")) views_.frameAll();
+        static const std::pair<StandardView, const char*> kViews[] = {
+            {StandardView::Front, "Numpad 1"},     {StandardView::Right, "Numpad 3"},
+            {StandardView::Top, "Numpad 7"},       {StandardView::Back, "Ctrl+Numpad 1"},
+            {StandardView::Left, "Ctrl+Numpad 3"}, {StandardView::Bottom, "Ctrl+Numpad 7"}};
+        for (const auto& [view, keys] : kViews)
+            if (ctl::MenuItem(standardViewName(view), keys)) views_.setView(view);
+        if (ctl::MenuItem("Reset view")) views_.resetView();
+        bool orthographic = views_.orthographic();
+        if (ctl::MenuItem("Orthographic", "Numpad 5", &orthographic)) views_.toggleOrthographic();
+        ImGui::Separator();
         ctl::MenuItem("Wireframe overlay", "W", &views_.wireframe);
         ImGui::Separator();
         for (int i = 0; i < static_cast<int>(Panel::Count); ++i)
@@ -146,15 +224,16 @@ void EditorUi::menuBar() {
         ImGui::TextUnformatted("VisemeLab editor");
         ImGui::Separator();
         ImGui::TextUnformatted("Left drag: orbit    Right/middle drag: pan    Wheel: zoom");
-        ImGui::TextUnformatted("Arrows: orbit    +/-: zoom    F: frame    W: wireframe");
-        ImGui::TextUnformatted("Ctrl+O open, Ctrl+S save, Ctrl+Shift+S save as, Ctrl+L sample");
+        ImGui::TextUnformatted("Arrows: orbit    +/-: zoom    F or Home: frame    W: wireframe");
+        ImGui::TextUnformatted("Numpad 1/3/7: front/right/top, Ctrl for back/left/bottom, 5: orthographic");
+        ImGui::TextUnformatted("Ctrl+O open, Ctrl+S save, Ctrl+Shift+S save as, Ctrl+L sample, Ctrl+Q quit");
         ImGui::TextUnformatted("Ctrl+Z undo, Ctrl+Y redo");
         ImGui::TextUnformatted("Weights panel, brush on: left drag paints, Alt+left drag orbits");
         ImGui::TextUnformatted("Guide: docs/user-guide.md");
         ImGui::EndMenu();
     }
     if (session_.modified()) {
-        ImGui::SameLine(ImGui::GetWindowWidth() - 140.0f);
+        ImGui::SameLine(ImGui::GetWindowWidth() - scaled(140.0f));
         ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.4f, 1.0f), "unsaved changes");
     }
     ImGui::EndMainMenuBar();

@@ -21,6 +21,7 @@
 #include <nlohmann/json.hpp>
 
 #include <array>
+#include <cstdint>
 #include <string>
 
 struct GLFWwindow;
@@ -39,9 +40,12 @@ class EditorUi {
     // True when the user asked to quit and either nothing is unsaved or they confirmed.
     bool quitConfirmed() const { return files_.quitConfirmed(); }
 
-    // Start options (EditorApp).
+    // Start options (EditorApp). They set up the window for the document they open: once applied,
+    // that document's state is the window's (startOptionsApplied), not reset on the first frame.
+    void startOptionsApplied() { documentEpoch_ = session_.documentEpoch(); }
     void selectPanel(Panel panel);
     void setWireframe(bool on) { views_.wireframe = on; }
+    void setStartView(StandardView view, bool orthographic) { views_.setStartView(view, orthographic); }
     // "errors", "skin" or "overlay" (--merged); throws InputError for another name.
     void setMergedDisplay(const std::string& name) { reduction_.setMergedDisplay(name); }
     // Turns painting on with this operation (0 add, 1 subtract, 2 smooth).
@@ -67,6 +71,11 @@ class EditorUi {
     // --- the frame (EditorUi.cpp) ---
     void menuBar();
     void shortcuts();
+    // The one place that says what the window drops when the document is replaced (open, import,
+    // new, sample, build face: EditorSession::documentEpoch, whose beginNewDocument clears the
+    // session's part): the speech player (timeline, playhead, shown clip), the views' framing, and
+    // each panel's state of the old document (selected field, import error ...).
+    void documentReplaced();
     void sidePanel(float top, float width, float height);
     // The status bar (StatusBar.cpp): its height this frame (a long message wraps onto more
     // lines), then the bar.
@@ -77,6 +86,7 @@ class EditorUi {
     GLFWwindow* window_;
     Panel activePanel_ = Panel::Visemes;
     bool panelSelectPending_ = true;
+    std::uint64_t documentEpoch_ = 0; // of the document the window's state belongs to
     FileActions files_{session_};
     SpeechPlayer speech_{session_};
     PanelContext context_{session_, files_, speech_};

@@ -6,6 +6,8 @@
 #include "core/gltf/AvatarScan.h"
 #include "core/inspect/VertexErrors.h"
 #include "core/project/BuiltinGeometry.h"
+#include "ui/UiScale.h"
+#include "ui/widgets/GuiProbe.h"
 
 #include <imgui.h>
 
@@ -31,12 +33,17 @@ void emptyViewHint(const ImVec2& min, const ImVec2& max, const char* text) {
         IM_COL32(200, 200, 210, 255), text);
 }
 
-void viewLabel(const ImVec2& min, const std::string& text) {
+// A view's title in its top left corner, wrapped onto more lines when wider than the view (a
+// narrow comparison view at 1024 px cut it); recorded for the probe.
+void drawViewLabel(const ImVec2& min, const ImVec2& max, const std::string& text) {
     ImDrawList* draw = ImGui::GetWindowDrawList();
-    const ImVec2 size = ImGui::CalcTextSize(text.c_str());
-    draw->AddRectFilled(ImVec2(min.x + 8, min.y + 8), ImVec2(min.x + 16 + size.x, min.y + 12 + size.y),
-                        IM_COL32(20, 20, 24, 170), 4.0f);
-    draw->AddText(ImVec2(min.x + 12, min.y + 10), IM_COL32(235, 235, 240, 255), text.c_str());
+    const float wrap = std::max(40.0f, max.x - min.x - 28.0f);
+    const ImVec2 size = ImGui::CalcTextSize(text.c_str(), nullptr, false, wrap);
+    const ImVec2 box(min.x + 8, min.y + 8), boxMax(min.x + 16 + size.x, min.y + 12 + size.y);
+    draw->AddRectFilled(box, boxMax, IM_COL32(20, 20, 24, 170), 4.0f);
+    draw->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(min.x + 12, min.y + 10),
+                  IM_COL32(235, 235, 240, 255), text.c_str(), nullptr, wrap);
+    probe::recordRect(text.c_str(), "view-label", box, boxMax);
 }
 
 // The colour ramp of shaders/mesh.frag as a bar in the lower left corner of a view.
@@ -45,8 +52,8 @@ void colourLegend(const ImVec2& min, const ImVec2& max, const char* low, const c
                                   IM_COL32(26, 217, 153, 255), IM_COL32(242, 217, 51, 255),
                                   IM_COL32(204, 31, 13, 255)};
     ImDrawList* draw = ImGui::GetWindowDrawList();
-    const float width = 200.0f, height = 12.0f;
-    const ImVec2 origin(min.x + 16.0f, max.y - 36.0f);
+    const float width = scaled(200.0f), height = scaled(12.0f);
+    const ImVec2 origin(min.x + scaled(16.0f), max.y - scaled(36.0f));
     for (int i = 0; i < 4; ++i) {
         const float x0 = origin.x + width * static_cast<float>(i) / 4.0f;
         const float x1 = origin.x + width * static_cast<float>(i + 1) / 4.0f;
@@ -202,6 +209,33 @@ void EditorViews::frameAll() {
     }
 }
 
+void EditorViews::viewLabel(const ViewportEvents& view, const std::string& text) {
+    drawViewLabel(view.imageMin, view.imageMax, text);
+    shownLabels_.push_back(text);
+}
+
+void EditorViews::setView(StandardView view) {
+    shownCamera().setView(view);
+}
+
+void EditorViews::setStartView(StandardView view, bool orthographic) {
+    for (OrbitCamera* camera : {&visemeCamera_, &faceCamera_}) {
+        camera->setView(view);
+        camera->orthographic = orthographic;
+    }
+}
+
+void EditorViews::resetView() {
+    OrbitCamera& camera = shownCamera();
+    camera.setView(StandardView::Front);
+    camera.orthographic = false;
+    frameAll();
+}
+
+void EditorViews::toggleOrthographic() {
+    shownCamera().orthographic = !shownCamera().orthographic;
+}
+
 void EditorViews::draw(Panel active, float left, float top, float width, float height) {
     active_ = active;
     const ViewSubject subject = active_ == Panel::Deformation || active_ == Panel::Refinement
@@ -209,6 +243,7 @@ void EditorViews::draw(Panel active, float left, float top, float width, float h
                                     : ViewSubject::Visemes;
     subject_ = subject;
     shownFace_ = {}; // the face view says what it draws
+    shownLabels_.clear();
     ImGui::SetNextWindowPos(ImVec2(left, top));
     ImGui::SetNextWindowSize(ImVec2(width, height));
     ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
@@ -323,13 +358,13 @@ void EditorViews::drawMainView(ImVec2 size) {
             panels_.weights.painter().paint(events); // readout always, tools while painting
         if (active_ == Panel::Visemes && !speech_.shown()) panels_.visemes.sculptor().sculpt(events);
     }
-    if (!label.empty()) viewLabel(events.imageMin, label);
+    if (!label.empty()) viewLabel(events, label);
 }
 
 void EditorViews::comparisonViews(ImVec2 size) {
     // With a clip shown, the timeline takes the bottom of the views.
     const bool speech = speech_.shown();
-    const float timelineHeight = speech ? std::min(230.0f, 0.32f * size.y) : 0.0f;
+    const float timelineHeight = speech ? std::min(scaled(230.0f), 0.32f * size.y) : 0.0f;
     const ImVec2 half(std::floor(size.x * 0.5f) - 1.0f, size.y - timelineHeight);
     const int selected = std::max(session_.selectedViseme, 0);
     const Grouping* grouping = session_.currentGrouping();
@@ -393,7 +428,7 @@ void EditorViews::comparisonViews(ImVec2 size) {
             drawContext(view, projection);
         });
     if (session_.visemes())
-        viewLabel(left.imageMin, beforeLabel);
+        viewLabel(left, beforeLabel);
     else
         emptyViewHint(left.imageMin, left.imageMax, "No viseme set loaded");
     ImGui::SameLine(0.0f, 2.0f);
@@ -404,7 +439,7 @@ void EditorViews::comparisonViews(ImVec2 size) {
             mergedMesh_.draw(shader_, after, view, projection, errors);
             if (overlay) visemeMesh_.draw(shader_, before, view, projection, ghost);
         });
-    if (session_.visemes()) viewLabel(right.imageMin, afterLabel);
+    if (session_.visemes()) viewLabel(right, afterLabel);
     if (grouping && errorColours)
         colourLegend(right.imageMin, right.imageMax, "0 mm",
                      [&] {
@@ -546,8 +581,29 @@ std::string EditorViews::statistics() const {
 void EditorViews::addProbe(nlohmann::json& summary) const {
     summary["face_view"] = faceViewProbe();
     summary["wireframe"] = wireframe;
-    const OrbitCamera& camera = subject_ == ViewSubject::Face ? faceCamera_ : visemeCamera_;
-    summary["camera"] = {{"yaw", camera.yaw}, {"pitch", camera.pitch}, {"distance", camera.distance}};
+    summary["view_labels"] = shownLabels_;
+    // The shown camera and the matrices the views draw with (the tests compare them with
+    // reference matrices), column-major like glm.
+    const OrbitCamera& camera = shownCamera();
+    const auto flat = [](const glm::mat4& m) {
+        nlohmann::json values = nlohmann::json::array();
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 4; ++r) values.push_back(m[c][r]);
+        return values;
+    };
+    const Viewport& shown = active_ == Panel::Reduction ? beforeView_ : mainView_;
+    summary["camera"] = {{"yaw", camera.yaw},
+                         {"pitch", camera.pitch},
+                         {"distance", camera.distance},
+                         {"target", {camera.target.x, camera.target.y, camera.target.z}},
+                         {"orthographic", camera.orthographic},
+                         {"view", flat(camera.view())}};
+    // What the views drew last frame; the comparison's two views with one camera.
+    summary["drawn_camera"] = {
+        {"view", flat(shown.camera.view())},
+        {"projection", flat(shown.drawnProjection())},
+        {"linked", beforeView_.camera.view() == afterView_.camera.view() &&
+                       beforeView_.camera.orthographic == afterView_.camera.orthographic}};
 }
 
 } // namespace vl::ui

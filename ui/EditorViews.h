@@ -40,7 +40,19 @@ class EditorViews {
     // Once per frame before drawing: the GPU copies of what changed, new meshes framed.
     void update(Panel active);
     void draw(Panel active, float left, float top, float width, float height);
-    void frameAll(); // every view on its model (key F)
+    void frameAll(); // every view on its model (key F, Home)
+    // A new document: both subjects' cameras framed on what it shows.
+    void documentReplaced() { frameVisemes_ = frameFace_ = true; }
+    // The shown subject's camera (one for both comparison views: they stay linked) from a side
+    // (numpad 1/3/7), back to the front view framed (View > Reset view), or switched between
+    // perspective and orthographic (numpad 5).
+    void setView(StandardView view);
+    void resetView();
+    void toggleOrthographic();
+    void zoom(float factor) { shownCamera().zoom(factor); }
+    bool orthographic() const { return shownCamera().orthographic; }
+    // Start options: both subjects' cameras from that side, orthographic or not.
+    void setStartView(StandardView view, bool orthographic);
     const Viewport& mainView() const { return mainView_; }
     // The status bar's statistics of what the views show.
     std::string statistics() const;
@@ -60,6 +72,11 @@ class EditorViews {
     std::vector<float> visemeWeights(int viseme) const;
     ColorMode surfaceColours() const; // face colours for visemes generated from the face model
     nlohmann::json faceViewProbe() const;
+    void viewLabel(const ViewportEvents& view, const std::string& text); // its title, kept for the probe
+    OrbitCamera& shownCamera() { return subject_ == ViewSubject::Face ? faceCamera_ : visemeCamera_; }
+    const OrbitCamera& shownCamera() const {
+        return subject_ == ViewSubject::Face ? faceCamera_ : visemeCamera_;
+    }
 
     EditorSession& session_;
     SpeechPlayer& speech_;
@@ -92,6 +109,7 @@ class EditorViews {
         std::vector<float> weights;
         std::size_t skinTriangles = 0, partTriangles = 0;
     } shownFace_;
+    std::vector<std::string> shownLabels_; // the views' titles this frame
     // The camera of each subject, kept across tabs; framed when its mesh first appears.
     OrbitCamera visemeCamera_, faceCamera_;
     std::vector<Vec3> framedNeutral_; // the neutral the viseme camera was last framed on

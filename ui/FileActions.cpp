@@ -1,5 +1,6 @@
 #include "ui/FileActions.h"
 
+#include "ui/UiScale.h"
 #include "ui/widgets/Controls.h"
 
 #include <imgui.h>
@@ -74,17 +75,17 @@ void FileActions::unsavedChangesPopup() {
     if (!ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
     ImGui::TextUnformatted("The project has unsaved changes.");
     const bool hasPath = !session_.path().empty();
-    if (ctl::Button(hasPath ? "Save" : "Save as...", ImVec2(110, 0))) {
+    if (ctl::Button(hasPath ? "Save" : "Save as...", ImVec2(scaled(110), 0))) {
         ImGui::CloseCurrentPopup();
         saveProject(false, std::move(pendingGuarded_));
     }
     ImGui::SameLine();
-    if (ctl::Button("Discard changes", ImVec2(130, 0))) {
+    if (ctl::Button("Discard changes", ImVec2(scaled(130), 0))) {
         ImGui::CloseCurrentPopup();
         if (auto action = std::move(pendingGuarded_)) action();
     }
     ImGui::SameLine();
-    if (ctl::Button("Cancel", ImVec2(90, 0))) {
+    if (ctl::Button("Cancel", ImVec2(scaled(90), 0))) {
         pendingGuarded_ = nullptr;
         ImGui::CloseCurrentPopup();
     }

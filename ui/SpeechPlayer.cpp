@@ -57,6 +57,13 @@ void SpeechPlayer::hide() {
     shown_ = false;
 }
 
+void SpeechPlayer::reset() {
+    hide();
+    time_ = 0.0;
+    clip_ = 0;
+    samples_.reset();
+}
+
 void SpeechPlayer::advance() {
     const auto& clip = session_.speechClip();
     if (!clip) return;

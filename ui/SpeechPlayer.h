@@ -29,6 +29,9 @@ class SpeechPlayer {
     void play(double from);
     void pause();
     void hide(); // pauses, and the views compare visemes again
+    // A new document: nothing playing or shown (a Say or sequence asked for since still starts
+    // where it was asked to).
+    void reset();
     bool playing() const { return playing_; }
     double time() const { return time_; }
     bool shown() const { return shown_ && session_.speechClip() != nullptr; }

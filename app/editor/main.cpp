@@ -37,6 +37,9 @@ int main(int argc, char** argv) {
         ->expected(4);
     bool noWireframe = false;
     app.add_flag("--no-wireframe", noWireframe, "Start without the wireframe overlay (key W toggles it)");
+    app.add_option("--view", options.view, "Standard view at start: front, back, right, left, top, bottom");
+    app.add_flag("--orthographic", options.orthographic,
+                 "Orthographic projection at start (numpad 5 toggles it)");
     app.add_option("--individual", options.individual, "Base geometry of the face: bundled or retarget");
     app.add_option("--field", options.field, "Deformation field (stage name) to select");
     app.add_option("--play", options.play, "Start the playback at this time in seconds");

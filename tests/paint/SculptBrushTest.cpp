@@ -82,7 +82,8 @@ TEST(SculptBrush, SmoothMovesTheDisplacementTowardsItsNeighboursMean) {
     EXPECT_NEAR(s.shape[spike][2], 0.0, 1e-12); // full strength at the centre: the neighbours' mean, 0
     EXPECT_LT(s.shape[spike][2], before);
     // Its neighbours rose towards the spike's old displacement (read before the dab).
-    for (const std::uint32_t w : s.surface().neighbours(spike)) EXPECT_GT(s.shape[w][2], 0.0);
+    const PaintSurface after = s.surface(); // kept alive: neighbours() is a view into it
+    for (const std::uint32_t w : after.neighbours(spike)) EXPECT_GT(s.shape[w][2], 0.0);
 }
 
 TEST(SculptBrush, SmoothingKeepsADisplacementThatIsAlreadySmooth) {

@@ -285,6 +285,16 @@ nlohmann::json GuiDriver::reveal(const std::string& text, const std::string& kin
     throw std::runtime_error("the " + kind + " '" + text + "' never came into view");
 }
 
+nlohmann::json GuiDriver::revealAtEnd(const std::string& text, const std::string& kind) {
+    for (int attempt = 0; attempt < 20; ++attempt) {
+        const auto found = find(text, kind);
+        if (found && found->value("visible", true)) return *found;
+        scroll(200, 500, 5);
+        waitFrames(2);
+    }
+    return control(text, kind);
+}
+
 void GuiDriver::click(const nlohmann::json& control, double fx, double fy) {
     // A real user cannot click a row scrolled out of its list (the click lands on something else).
     if (!control.value("visible", true))
@@ -358,6 +368,37 @@ void GuiDriver::key(const std::string& keys) {
 void GuiDriver::type(const std::string& text) {
     xdotool("type --delay 30 '" + text + "'");
     waitFrames(3);
+}
+
+void GuiDriver::tap(const std::string& keys, bool wait) {
+    waitFrames(1);
+    const auto start = document().value("key_presses", std::uint64_t{0});
+    xdotool("key --delay 0 " + keys);
+    if (!wait) return;
+    // Each chord ("w", "ctrl+KP_1") is one key besides its modifiers.
+    const auto chords = static_cast<std::uint64_t>(1 + std::count(keys.begin(), keys.end(), ' '));
+    const auto deadline = Clock::now() + std::chrono::seconds(30);
+    while (document().value("key_presses", std::uint64_t{0}) < start + chords) {
+        if (Clock::now() > deadline) throw std::runtime_error("the editor never saw the keys " + keys);
+        waitFrames(1);
+    }
+    waitFrames(2);
+}
+
+std::filesystem::path GuiDriver::screenshot(const std::string& name) {
+    const std::filesystem::path picture = folder_ / (name + ".png");
+    const std::filesystem::path request = probeFile_.string() + ".screenshot";
+    std::ofstream(request) << picture.string();
+    const auto deadline = Clock::now() + std::chrono::seconds(30);
+    while (std::filesystem::exists(request) && Clock::now() < deadline) waitFrames(1);
+    waitFrames(1); // the frame that took it has ended: the file is whole
+    return picture;
+}
+
+bool GuiDriver::waitForExit(double seconds) {
+    const auto deadline = Clock::now() + std::chrono::duration<double>(seconds);
+    while (alive() && Clock::now() < deadline) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    return !alive();
 }
 
 void GuiDriver::chooseFile(const std::filesystem::path& file, const std::string& button) {

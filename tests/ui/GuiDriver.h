@@ -58,6 +58,9 @@ class GuiDriver {
     // The control, after scrolling the window under it until it is in view (a user scrolls to
     // reach a control below the fold too); fails the test when it never comes into view.
     nlohmann::json reveal(const std::string& text, const std::string& kind = {});
+    // The same for a control not drawn yet (ImGui skips what lies far below the fold): scrolls the
+    // side panel down until it is there and in view (the Say section ends the Reduction panel).
+    nlohmann::json revealAtEnd(const std::string& text, const std::string& kind);
 
     // Left click at a fraction of the control's rectangle (0.5, 0.5 = its centre).
     void click(const nlohmann::json& control, double fx = 0.5, double fy = 0.5);
@@ -71,6 +74,14 @@ class GuiDriver {
     // xdotool key names: "Escape", "Return", "ctrl+z", "Tab".
     void key(const std::string& keys);
     void type(const std::string& text);
+    // Quick taps: each press and release sent at once (xdotool key, no delay), as a fast typist's
+    // keys may reach the editor within one frame. Waits until the editor took them (and two more
+    // frames), unless `wait` is false (a key that quits the editor).
+    void tap(const std::string& keys, bool wait = true);
+    // A picture of the window as the editor drew its next frame (PNG in the test's folder).
+    std::filesystem::path screenshot(const std::string& name);
+    // Waits up to `seconds` for the editor to exit by itself; true when it did.
+    bool waitForExit(double seconds);
     // In the open file dialog: types `file` into its name field, presses `button` ("Open" or
     // "Save") and waits until the editor is idle. Fails the test when no dialog is open.
     void chooseFile(const std::filesystem::path& file, const std::string& button = "Open");

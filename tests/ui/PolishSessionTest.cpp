@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <stdexcept>
 
 namespace vl::ui {
 namespace {
@@ -104,6 +105,48 @@ TEST(FrequencyHistogram, LabelRowsAreTheFewestWithoutOverlap) {
         EXPECT_TRUE(overlapFree(rows)) << trial; // one name per row (rows = n) is overlap-free too
         for (int fewer = 1; fewer < rows; ++fewer) EXPECT_FALSE(overlapFree(fewer)) << trial;
     }
+}
+
+} // namespace
+} // namespace vl::ui
+
+namespace vl::ui {
+namespace {
+
+// Issue 32: a new document (the sample again, a set built from the face) drops the old clip and
+// the selection, and says so by a new epoch; an edit does not.
+TEST(NewDocument, DropsTheClipAndTheSelectionOnEveryReplacement) {
+    EditorSession session;
+    session.loadSample();
+    const auto loaded = session.documentEpoch();
+    session.playSequence("PP aa", 0.2);
+    ASSERT_TRUE(session.speechClip());
+    session.selectedViseme = 3;
+    session.setTarget(8);
+    EXPECT_EQ(session.documentEpoch(), loaded) << "an edit is the same document";
+    EXPECT_TRUE(session.speechClip());
+    session.loadSample();
+    EXPECT_GT(session.documentEpoch(), loaded);
+    EXPECT_FALSE(session.speechClip()) << "the old clip is not the new document's";
+    session.playSequence("", 0.2);
+    session.selectedViseme = 2;
+    session.loadFace();
+    const auto beforeBuild = session.documentEpoch();
+    session.generateVisemesFromFace();
+    EXPECT_GT(session.documentEpoch(), beforeBuild);
+    EXPECT_FALSE(session.speechClip());
+    EXPECT_EQ(session.selectedViseme, -1);
+    session.newProject();
+    EXPECT_FALSE(session.speechClip());
+}
+
+// A message that starts with the action's name is not prefixed again ("Constraints: constraints:").
+TEST(Messages, AnActionNamedByItsMessageIsNotRepeated) {
+    EditorSession session;
+    session.attempt("Constraints", [] { throw std::runtime_error("constraints: no viseme 'xx'"); });
+    EXPECT_EQ(session.messages().back().text, "Constraints: no viseme 'xx'");
+    session.attempt("Save", [] { throw std::runtime_error("disk full"); });
+    EXPECT_EQ(session.messages().back().text, "Save: disk full");
 }
 
 } // namespace

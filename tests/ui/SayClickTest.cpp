@@ -19,17 +19,6 @@ const nlohmann::json& say(const GuiDriver& gui) {
     return gui.document()["say"];
 }
 
-// Scrolls the side panel until the control is in view (the Say section is at the panel's end).
-nlohmann::json revealAtEnd(GuiDriver& gui, const std::string& text, const std::string& kind) {
-    for (int attempt = 0; attempt < 20; ++attempt) {
-        const auto found = gui.find(text, kind);
-        if (found && found->value("visible", true)) return *found;
-        gui.scroll(200, 500, 5);
-        gui.waitFrames(2);
-    }
-    return gui.control(text, kind);
-}
-
 // The timeline maps time linearly onto its width after the row names (ui/widgets/SpeechTimeline.cpp:
 // 92 px of labels on the left, 12 px margin on the right).
 double timelineFraction(const nlohmann::json& timeline, double timeFraction) {
@@ -56,16 +45,16 @@ TEST(SayClicks, TypeSayPauseScrubAndPlay) {
     EXPECT_FALSE(say(gui).contains("clip"));
     // The slowest rate and two sentences: about 10 s of speech, so it still plays when Pause is
     // clicked on a loaded machine (a GUI step can take seconds there).
-    gui.click(revealAtEnd(gui, "words/min", "slider"), 0.01);
+    gui.click(gui.revealAtEnd("words/min", "slider"), 0.01);
     gui.waitFrames(2);
     ASSERT_LE(say(gui)["rate"].get<int>(), 90);
     const std::string text = "Hello world. Four poor fire fighters faced the long and windy night!";
-    gui.click(revealAtEnd(gui, "##say text", "text"));
+    gui.click(gui.revealAtEnd("##say text", "text"));
     gui.type(text);
     gui.waitFrames(2);
     EXPECT_EQ(say(gui)["draft"], text);
     EXPECT_EQ(say(gui)["text"], ""); // the document takes the text on Say
-    gui.click(revealAtEnd(gui, "Say", "button"));
+    gui.click(gui.revealAtEnd("Say", "button"));
     EXPECT_ALIVE(gui);
     waitForClip(gui, "Hello world");
     EXPECT_EQ(say(gui)["text"], text);
@@ -83,7 +72,7 @@ TEST(SayClicks, TypeSayPauseScrubAndPlay) {
     EXPECT_TRUE(audio.rfind("audio: ", 0) == 0 || audio.find("shown silently") != std::string::npos) << audio;
 
     // Pause stops the clock.
-    gui.click(revealAtEnd(gui, "Pause", "button"));
+    gui.click(gui.revealAtEnd("Pause", "button"));
     gui.waitFrames(3);
     EXPECT_FALSE(say(gui)["playing"].get<bool>());
     const double paused = say(gui)["time"].get<double>();
@@ -120,14 +109,14 @@ TEST(SayClicks, TypeSayPauseScrubAndPlay) {
 
     // Play resumes from the playhead and runs to the end (no audio device: on the frame clock).
     gui.click(timeline, timelineFraction(timeline, 0.9), 0.5);
-    gui.click(revealAtEnd(gui, "Play", "button"));
+    gui.click(gui.revealAtEnd("Play", "button"));
     gui.waitFrames(3);
     EXPECT_TRUE(say(gui)["playing"].get<bool>() || say(gui)["time"].get<double>() == duration);
     for (int i = 0; i < 100 && say(gui)["playing"].get<bool>(); ++i) gui.waitFrames(3);
     EXPECT_FALSE(say(gui)["playing"].get<bool>());
     EXPECT_DOUBLE_EQ(say(gui)["time"].get<double>(), duration);
 
-    gui.click(revealAtEnd(gui, "Hide", "button"));
+    gui.click(gui.revealAtEnd("Hide", "button"));
     gui.waitFrames(2);
     EXPECT_FALSE(say(gui)["shown"].get<bool>());
     EXPECT_ALIVE(gui);
@@ -137,13 +126,13 @@ TEST(SayClicks, VoiceAndRateAreUndoableAndSpoken) {
     REQUIRE_GUI_TOOLS();
     GuiDriver gui({"--sample", "--panel", "Reduction"});
     gui.waitIdle();
-    gui.click(revealAtEnd(gui, "voice", "combo"));
+    gui.click(gui.revealAtEnd("voice", "combo"));
     gui.waitFrames(2);
     gui.click(gui.control("en-gb", "selectable"));
     gui.waitFrames(2);
     EXPECT_EQ(say(gui)["voice"], "en-gb");
     EXPECT_EQ(gui.document()["undo"], "Voice en-gb");
-    gui.click(revealAtEnd(gui, "words/min", "slider"), 0.9);
+    gui.click(gui.revealAtEnd("words/min", "slider"), 0.9);
     gui.waitFrames(2);
     const int fast = say(gui)["rate"].get<int>();
     EXPECT_GT(fast, 350);
@@ -153,13 +142,13 @@ TEST(SayClicks, VoiceAndRateAreUndoableAndSpoken) {
     EXPECT_EQ(say(gui)["rate"], 175);
     EXPECT_EQ(say(gui)["voice"], "en-gb");
 
-    gui.click(revealAtEnd(gui, "##say text", "text"));
+    gui.click(gui.revealAtEnd("##say text", "text"));
     gui.type("Good morning.");
-    gui.click(revealAtEnd(gui, "Say", "button"));
+    gui.click(gui.revealAtEnd("Say", "button"));
     waitForClip(gui, "en-gb, 175 wpm");
     const double british = say(gui)["duration"].get<double>();
-    gui.click(revealAtEnd(gui, "words/min", "slider"), 0.95);
-    gui.click(revealAtEnd(gui, "Say", "button"));
+    gui.click(gui.revealAtEnd("words/min", "slider"), 0.95);
+    gui.click(gui.revealAtEnd("Say", "button"));
     waitForClip(gui, "wpm");
     for (int i = 0; i < 20 && say(gui)["clip"].get<std::string>().find("175 wpm") != std::string::npos; ++i)
         gui.waitFrames(5);
@@ -171,13 +160,13 @@ TEST(SayClicks, NothingToSayIsAClearError) {
     REQUIRE_GUI_TOOLS();
     GuiDriver gui({"--sample", "--panel", "Reduction"});
     gui.waitIdle();
-    gui.click(revealAtEnd(gui, "Say", "button"));
+    gui.click(gui.revealAtEnd("Say", "button"));
     gui.waitFrames(3);
     EXPECT_NE(lastMessage(gui).find("type the text to say first"), std::string::npos) << lastMessage(gui);
     EXPECT_FALSE(say(gui).contains("clip"));
-    gui.click(revealAtEnd(gui, "##say text", "text"));
+    gui.click(gui.revealAtEnd("##say text", "text"));
     gui.type("... , ?"); // punctuation only: espeak-ng speaks no word ("!!" it reads as "exclamation")
-    gui.click(revealAtEnd(gui, "Say", "button"));
+    gui.click(gui.revealAtEnd("Say", "button"));
     gui.waitIdle();
     gui.waitFrames(3);
     EXPECT_NE(lastMessage(gui).find("nothing to say"), std::string::npos) << lastMessage(gui);
@@ -189,11 +178,11 @@ TEST(SayClicks, TypedSequenceAndPlayAllUseTheSamePlayback) {
     REQUIRE_GUI_TOOLS();
     GuiDriver gui({"--sample", "--panel", "Reduction"});
     gui.waitIdle();
-    gui.click(revealAtEnd(gui, "Typed sequence", "tree"));
+    gui.click(gui.revealAtEnd("Typed sequence", "tree"));
     gui.waitFrames(2);
-    gui.click(revealAtEnd(gui, "##sequence", "text"));
+    gui.click(gui.revealAtEnd("##sequence", "text"));
     gui.type("PP aa E");
-    gui.click(revealAtEnd(gui, "Play sequence", "button"));
+    gui.click(gui.revealAtEnd("Play sequence", "button"));
     gui.waitFrames(3);
     EXPECT_NE(say(gui)["clip"].get<std::string>().find("PP aa E"), std::string::npos);
     EXPECT_EQ(say(gui)["phonemes"], 3);
@@ -232,12 +221,12 @@ TEST(SayClicks, TextAndVoiceAreSavedWithTheProject) {
     {
         GuiDriver gui({"--sample", "--panel", "Reduction"});
         gui.waitIdle();
-        gui.click(revealAtEnd(gui, "voice", "combo"));
+        gui.click(gui.revealAtEnd("voice", "combo"));
         gui.waitFrames(2);
         gui.click(gui.control("en-gb-scotland", "selectable"));
-        gui.click(revealAtEnd(gui, "##say text", "text"));
+        gui.click(gui.revealAtEnd("##say text", "text"));
         gui.type(text);
-        gui.click(revealAtEnd(gui, "Say", "button"));
+        gui.click(gui.revealAtEnd("Say", "button"));
         waitForClip(gui, "juice");
         gui.key("ctrl+s"); // the sample is read-only: Save asks for a file
         ASSERT_TRUE(gui.document()["file_dialog_open"].get<bool>());
@@ -260,7 +249,7 @@ TEST(SayClicks, TextAndVoiceAreSavedWithTheProject) {
     EXPECT_EQ(say(gui)["text"], text);
     EXPECT_EQ(say(gui)["draft"], text);
     EXPECT_EQ(say(gui)["voice"], "en-gb-scotland");
-    gui.click(revealAtEnd(gui, "Say", "button"));
+    gui.click(gui.revealAtEnd("Say", "button"));
     waitForClip(gui, "en-gb-scotland");
     EXPECT_EQ(say(gui)["problem"], "");
     EXPECT_ALIVE(gui);

@@ -7,6 +7,7 @@
 #include "core/gltf/AvatarScan.h"
 #include "core/gltf/Gltfpack.h"
 #include "ui/FileActions.h"
+#include "ui/UiScale.h"
 #include "ui/panels/PanelWidgets.h"
 #include "ui/widgets/Controls.h"
 
@@ -59,7 +60,7 @@ void AvatarPanel::visemesSection() {
     ImGui::AlignTextToFramePadding();
     ImGui::TextUnformatted("Viseme targets");
     ImGui::SameLine();
-    ImGui::SetNextItemWidth(200);
+    ImGui::SetNextItemWidth(scaled(200.0f));
     const bool entered = ctl::InputTextWithHint("##avatar-pattern", "Oculus viseme names", &pattern_,
                                                 ImGuiInputTextFlags_EnterReturnsTrue);
     ImGui::SameLine();

@@ -16,7 +16,11 @@ glm::vec3 toGlm(const Vec3& p) {
 
 double unitsPerPixelAt(const OrbitCamera& camera, const ViewportEvents& events, const Vec3& point) {
     const glm::vec3 forward = glm::normalize(camera.target - camera.eye());
-    const double depth = std::max(1e-6, static_cast<double>(glm::dot(toGlm(point) - camera.eye(), forward)));
+    // Orthographic views show every depth at the scale of the target's (OrbitCamera::projection).
+    const double depth =
+        camera.orthographic
+            ? static_cast<double>(camera.distance)
+            : std::max(1e-6, static_cast<double>(glm::dot(toGlm(point) - camera.eye(), forward)));
     const double imageHeight = std::max(1.0f, events.imageMax.y - events.imageMin.y);
     return modelUnitsPerPixel(depth, camera.fovY, imageHeight);
 }

@@ -2,6 +2,7 @@
 // m), pairs kept apart, pairs kept together. Every change is one undoable edit of the document; the
 // core checks it (known names, no contradiction) and the reduction honours it exactly.
 #include "ui/panels/ConstraintsSection.h"
+#include "ui/UiScale.h"
 
 #include "ui/panels/PanelWidgets.h"
 #include "ui/widgets/Controls.h"
@@ -41,7 +42,7 @@ void ConstraintsSection::draw() {
     bool changed = false;
     const auto nameOf = [&](int i) { return set->visemes[static_cast<std::size_t>(i)].name; };
 
-    ImGui::SetNextItemWidth(110);
+    ImGui::SetNextItemWidth(scaled(110.0f));
     visemeCombo("##pinned viseme", *set, pin_);
     ImGui::SameLine();
     if (ctl::Button("Pin as its own key")) {
@@ -54,10 +55,10 @@ void ConstraintsSection::draw() {
     }
     helpMarker("A pinned viseme is never merged with another (e.g. PP, so the lips close for p, b, m).");
 
-    ImGui::SetNextItemWidth(110);
+    ImGui::SetNextItemWidth(scaled(110.0f));
     visemeCombo("##first of pair", *set, first_);
     ImGui::SameLine();
-    ImGui::SetNextItemWidth(110);
+    ImGui::SetNextItemWidth(scaled(110.0f));
     visemeCombo("##second of pair", *set, second_);
     ImGui::SameLine();
     const std::pair<std::string, std::string> pair{nameOf(first_), nameOf(second_)};

@@ -2,6 +2,7 @@
 // in StoreSlidersSection.cpp), the base geometry (retargeting) and editing of the analytic influence
 // regions, drawn on the face and in (u,v).
 #include "ui/panels/DeformationPanel.h"
+#include "ui/UiScale.h"
 
 #include "core/deform/Visemes.h"
 #include "core/document/VisemeCommands.h"
@@ -104,7 +105,7 @@ void DeformationPanel::draw() {
         if (selected_.influence < static_cast<int>(influences.size())) {
             InfluenceField field = influences[static_cast<std::size_t>(selected_.influence)];
             bool changed = false;
-            ImGui::PushItemWidth(-110);
+            ImGui::PushItemWidth(scaled(-110.0f));
             changed |= dragVec2("centre (u,v)", field.centre, 0.002f, 0.0f, 1.0f);
             endEditOnRelease(session_);
             changed |= dragVec2("radii", field.radii, 0.002f, 0.005f, 1.0f);

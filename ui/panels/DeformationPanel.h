@@ -23,6 +23,7 @@ class DeformationPanel : public SidePanel {
         : session_(context.session), files_(context.files), ownFace_(context), storeSliders_(context) {}
     void draw() override;
     void addProbe(nlohmann::json& summary) const override;
+    void documentReplaced() override { selected_ = {}; }
 
     // The analytic field being edited: an influence of a cascade stage (stage -1: none).
     struct Field {

@@ -1,5 +1,6 @@
 // The face's parameter sliders, shown by the Deformation and the Refinement panels.
 #include "ui/panels/ParameterSliders.h"
+#include "ui/UiScale.h"
 
 #include "core/document/VisemeCommands.h"
 #include "ui/panels/PanelWidgets.h"
@@ -25,7 +26,7 @@ void parameterSliders(EditorSession& session) {
         const DeformParameter& p = cascade.parameters[k];
         float value = static_cast<float>(model.parameters[k]);
         ImGui::PushID(static_cast<int>(k));
-        ImGui::SetNextItemWidth(-130);
+        ImGui::SetNextItemWidth(scaled(-130.0f));
         if (ctl::SliderFloat(p.name.c_str(), &value, static_cast<float>(p.min), static_cast<float>(p.max),
                              "%.2f"))
             session.attempt("Parameter", [&] { session.setParameter(static_cast<int>(k), value); });

@@ -9,6 +9,7 @@
 #include "core/phonetics/PhonemeMaps.h"
 #include "core/phonetics/PhonemeTableIO.h"
 #include "ui/FileActions.h"
+#include "ui/UiScale.h"
 #include "ui/panels/PanelWidgets.h"
 #include "ui/widgets/Controls.h"
 
@@ -52,7 +53,7 @@ bool visemeNameCombo(const char* label, const VisemeSet& set, std::string& curre
 } // namespace
 
 void PhonemeMapEditor::restVisemeRow() {
-    ImGui::SetNextItemWidth(120);
+    ImGui::SetNextItemWidth(scaled(120.0f));
     ctl::InputTextWithHint("##rest-name", "name", &restName_);
     ImGui::SameLine();
     if (ctl::Button("Add rest viseme") &&
@@ -140,10 +141,10 @@ void PhonemeMapEditor::startSection() {
     ImGui::PopID();
     int unassigned = 0;
     if (ImGui::BeginTable("##map-assignment", 4, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
-        ImGui::TableSetupColumn("Map's viseme", ImGuiTableColumnFlags_WidthFixed, 95.0f);
+        ImGui::TableSetupColumn("Map's viseme", ImGuiTableColumnFlags_WidthFixed, scaled(95.0f));
         ImGui::TableSetupColumn("Phonemes", ImGuiTableColumnFlags_WidthStretch);
-        ImGui::TableSetupColumn("Share", ImGuiTableColumnFlags_WidthFixed, 55.0f);
-        ImGui::TableSetupColumn("Your viseme", ImGuiTableColumnFlags_WidthFixed, 130.0f);
+        ImGui::TableSetupColumn("Share", ImGuiTableColumnFlags_WidthFixed, scaled(55.0f));
+        ImGui::TableSetupColumn("Your viseme", ImGuiTableColumnFlags_WidthFixed, scaled(130.0f));
         ImGui::TableHeadersRow();
         for (edit::MapAssignment& row : mapStart_.rows) {
             ImGui::PushID(row.from.c_str());
@@ -210,9 +211,9 @@ void PhonemeMapEditor::editor() {
     for (const auto& entry : source.phonemes.entries) total += entry.second;
     sectionHeader("Phonemes");
     if (ImGui::BeginTable("##phonemes", 4, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
-        ImGui::TableSetupColumn("Phoneme", ImGuiTableColumnFlags_WidthFixed, 70.0f);
+        ImGui::TableSetupColumn("Phoneme", ImGuiTableColumnFlags_WidthFixed, scaled(70.0f));
         ImGui::TableSetupColumn("Frequency", ImGuiTableColumnFlags_WidthStretch, 1.0f);
-        ImGui::TableSetupColumn("Share", ImGuiTableColumnFlags_WidthFixed, 55.0f);
+        ImGui::TableSetupColumn("Share", ImGuiTableColumnFlags_WidthFixed, scaled(55.0f));
         ImGui::TableSetupColumn("Viseme", ImGuiTableColumnFlags_WidthStretch, 1.2f);
         ImGui::TableHeadersRow();
         for (std::size_t i = 0; i < source.phonemes.entries.size(); ++i) {
@@ -251,10 +252,10 @@ void PhonemeMapEditor::editor() {
 
     sectionHeader("By viseme");
     if (ImGui::BeginTable("##by-viseme", 4, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
-        ImGui::TableSetupColumn("Viseme", ImGuiTableColumnFlags_WidthFixed, 90.0f);
-        ImGui::TableSetupColumn("Share", ImGuiTableColumnFlags_WidthFixed, 55.0f);
+        ImGui::TableSetupColumn("Viseme", ImGuiTableColumnFlags_WidthFixed, scaled(90.0f));
+        ImGui::TableSetupColumn("Share", ImGuiTableColumnFlags_WidthFixed, scaled(55.0f));
         ImGui::TableSetupColumn("Phonemes", ImGuiTableColumnFlags_WidthStretch);
-        ImGui::TableSetupColumn("Move all to", ImGuiTableColumnFlags_WidthFixed, 110.0f);
+        ImGui::TableSetupColumn("Move all to", ImGuiTableColumnFlags_WidthFixed, scaled(110.0f));
         ImGui::TableHeadersRow();
         for (std::size_t v = 0; v < set.size(); ++v) {
             const std::string& name = set.visemes[v].name;

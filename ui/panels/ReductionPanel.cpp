@@ -1,6 +1,7 @@
 // Reduction panel: target m, the optimal cost for every p with m marked, the groups, the compared
 // viseme, and Say (panels/SaySection.cpp): speech on the full and the reduced set side by side.
 #include "ui/panels/ReductionPanel.h"
+#include "ui/UiScale.h"
 
 #include "core/common/Error.h"
 #include "core/inspect/DistanceUnits.h"
@@ -32,7 +33,7 @@ void ReductionPanel::draw() {
     session_.attempt("Rest viseme", [&] { rest = documentRestPose(session_.document()); });
     const int maxKeys = rest.free && rest.viseme >= 0 ? std::max(1, n - 1) : n;
     sectionHeader("Target");
-    ImGui::SetNextItemWidth(-90);
+    ImGui::SetNextItemWidth(scaled(-90.0f));
     if (ctl::SliderInt("groups m", &m, 1, maxKeys))
         session_.attempt("Target", [&] { session_.setTarget(m); });
     endEditOnRelease(session_);
@@ -74,7 +75,7 @@ void ReductionPanel::draw() {
     ctl::Checkbox("% of p = 1", &costView_.percent);
     ImGui::SameLine();
     static const char* const kUnits[] = {"auto", "m", "cm", "mm", "in"};
-    ImGui::SetNextItemWidth(70);
+    ImGui::SetNextItemWidth(scaled(70.0f));
     ctl::Combo("model unit", &costView_.unit, kUnits, 5);
     helpMarker("The cost as a distance: the RMS weighted distance between each viseme and the merged "
                "shape of its group, averaged by frequency. 'auto' guesses the model's length unit from "
@@ -94,7 +95,8 @@ void ReductionPanel::draw() {
     options.unit = costView_.percent ? "%" : "mm";
     options.marked = m;
     if (curve->restFree) options.axis = "keys p (+ free rest)";
-    if (const int picked = costPlot("##cost", distances, options, ImVec2(0, 170)); picked > 0 && picked != m)
+    if (const int picked = costPlot("##cost", distances, options, ImVec2(0, scaled(170.0f)));
+        picked > 0 && picked != m)
         session_.attempt("Target", [&] {
             session_.setTarget(picked);
             session_.endEdit();
@@ -150,9 +152,9 @@ void ReductionPanel::draw() {
     if (ImGui::BeginTable("##groups", 3,
                           ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV |
                               ImGuiTableFlags_SizingStretchProp)) {
-        ImGui::TableSetupColumn("#", ImGuiTableColumnFlags_WidthFixed, 24.0f);
+        ImGui::TableSetupColumn("#", ImGuiTableColumnFlags_WidthFixed, scaled(24.0f));
         ImGui::TableSetupColumn("Members (click to compare)", ImGuiTableColumnFlags_WidthStretch);
-        ImGui::TableSetupColumn("Freq.", ImGuiTableColumnFlags_WidthFixed, 52.0f);
+        ImGui::TableSetupColumn("Freq.", ImGuiTableColumnFlags_WidthFixed, scaled(52.0f));
         ImGui::TableHeadersRow();
         for (std::size_t g = 0; g < grouping->groups.size(); ++g) {
             ImGui::TableNextRow();

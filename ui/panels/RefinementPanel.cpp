@@ -2,7 +2,9 @@
 // buttons running on a worker thread, live counts and timing, the automatic mode, and the face's
 // parameter sliders (the same as the Deformation panel's: the view shows the face at them).
 #include "ui/panels/RefinementPanel.h"
+#include "ui/UiScale.h"
 
+#include "core/inspect/DistanceUnits.h"
 #include "ui/panels/PanelWidgets.h"
 #include "ui/panels/ParameterSliders.h"
 #include "ui/widgets/Controls.h"
@@ -10,7 +12,20 @@
 
 #include <imgui.h>
 
+#include <cstdio>
+#include <string>
+
 namespace vl::ui {
+namespace {
+
+// A slider format showing a model-unit value and its length in mm ("%.4f (0.20 mm)").
+std::string withMillimetres(float value, double millimetresPerUnit) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%%.4f (%.2f mm)", static_cast<double>(value) * millimetresPerUnit);
+    return text;
+}
+
+} // namespace
 
 void RefinementPanel::draw() {
     const FaceModel& model = session_.face();
@@ -30,12 +45,12 @@ void RefinementPanel::draw() {
     criterionChanged |= ctl::RadioButton("contour error", &kind, 2);
     changed |= criterionChanged;
     settings.kind = static_cast<CriterionKind>(kind);
-    ImGui::PushItemWidth(-150);
-    changed |= ctl::SliderInt("max depth", &settings.maxDepth, 0, 16);
+    ImGui::PushItemWidth(scaled(-150.0f));
+    changed |= ctl::SliderInt("max depth", &settings.maxDepth, 0, 16, "%d levels");
     endEditOnRelease(session_);
     switch (settings.kind) {
     case CriterionKind::Depth:
-        changed |= ctl::SliderInt("uniform depth", &settings.depth.depth, 0, 12);
+        changed |= ctl::SliderInt("uniform depth", &settings.depth.depth, 0, 12, "%d levels");
         endEditOnRelease(session_);
         break;
     case CriterionKind::Normals: {
@@ -54,19 +69,25 @@ void RefinementPanel::draw() {
         break;
     }
     case CriterionKind::Contour: {
+        // The errors are distances in the face's model units: shown with their length in mm.
         float average = static_cast<float>(settings.contour.averageError);
         float maximum = static_cast<float>(settings.contour.maximumError);
-        if (ctl::SliderFloat("average error", &average, 0.001f, 0.5f, "%.4f", ImGuiSliderFlags_Logarithmic)) {
+        const double mm = guessMillimetresPerUnit(session_.faceSamples().rest);
+        const std::string averageFormat = withMillimetres(average, mm);
+        const std::string maximumFormat = withMillimetres(maximum, mm);
+        if (ctl::SliderFloat("average error", &average, 0.001f, 0.5f, averageFormat.c_str(),
+                             ImGuiSliderFlags_Logarithmic)) {
             settings.contour.averageError = average;
             changed = true;
         }
         endEditOnRelease(session_);
-        if (ctl::SliderFloat("maximum error", &maximum, 0.001f, 2.0f, "%.4f", ImGuiSliderFlags_Logarithmic)) {
+        if (ctl::SliderFloat("maximum error", &maximum, 0.001f, 2.0f, maximumFormat.c_str(),
+                             ImGuiSliderFlags_Logarithmic)) {
             settings.contour.maximumError = maximum;
             changed = true;
         }
         endEditOnRelease(session_);
-        changed |= ctl::SliderInt("samples per side", &settings.contour.samplesPerSide, 1, 16);
+        changed |= ctl::SliderInt("samples per side", &settings.contour.samplesPerSide, 1, 16, "%d per edge");
         endEditOnRelease(session_);
         break;
     }
@@ -95,11 +116,22 @@ void RefinementPanel::draw() {
         "where it allows; Re-adapt does both after a change. 'For all visemes' refines one mesh for "
         "every viseme pose: Generate viseme set (Deformation panel) then gives an interpolable set on it.");
     ctl::Checkbox("Automatic: re-adapt after every slider or threshold change", &session_.autoRefine);
-    if (busy)
-        for (const auto& job : session_.runningJobs())
-            if (job.job == EditorSession::Job::Refinement &&
-                jobProgress(job.label, job.fraction, job.secondsLeft, "Cancel##refinement", -1))
+    // The progress line is always there and the run's report is below the sliders: a run that
+    // starts or ends (Automatic ticked) moves no control under the cursor. While a run lasts the line
+    // shows its progress and Cancel.
+    bool shown = false;
+    for (const auto& job : session_.runningJobs())
+        if (job.job == EditorSession::Job::Refinement) {
+            shown = true;
+            if (jobProgress(job.label, job.fraction, job.secondsLeft, "Cancel##refinement", -1))
                 session_.cancelJob(job.job);
+        }
+    if (!shown) ImGui::ProgressBar(0.0f, ImVec2(-1, 0), "no refinement running");
+
+    sectionHeader("Parameters");
+    noteText("The view shows the refined skin and, inside it, the head's parts (eyeballs, teeth, tongue, "
+             "mouth cavity) at these values.");
+    parameterSliders(session_);
 
     sectionHeader("Current mesh");
     ImGui::Text("%zu vertices, %zu triangles", model.domain->positions.size(),
@@ -121,13 +153,8 @@ void RefinementPanel::draw() {
                             report->triangles, report->stats.tests);
         if (report->maxLevel >= 0) ImGui::Text("Deepest level: %d", report->maxLevel);
     } else {
-        ImGui::TextDisabled("The face is shown on a regular (u,v) grid until you refine.");
+        ImGui::TextDisabled("No refinement run since the face was opened.");
     }
-
-    sectionHeader("Parameters");
-    noteText("The view shows the refined skin and, inside it, the head's parts (eyeballs, teeth, tongue, "
-             "mouth cavity) at these values.");
-    parameterSliders(session_);
 }
 
 void RefinementPanel::addProbe(nlohmann::json& summary) const {

@@ -3,6 +3,7 @@
 // the rest is a key like any other (projects before version 3). One undoable edit each
 // (edit::setRest); the core decides which viseme rests.
 #include "ui/panels/RestModelSection.h"
+#include "ui/UiScale.h"
 
 #include "ui/panels/PanelWidgets.h"
 #include "ui/widgets/Controls.h"
@@ -37,7 +38,7 @@ void restModelSection(EditorSession& session) {
             ? (pose.viseme >= 0 ? "default (" + set->visemes[static_cast<std::size_t>(pose.viseme)].name + ")"
                                 : std::string("default (none)"))
             : restViseme;
-    ImGui::SetNextItemWidth(180);
+    ImGui::SetNextItemWidth(scaled(180.0f));
     if (ctl::BeginCombo("rest viseme", shown.c_str(), ImGuiComboFlags_HeightLargest)) {
         if (ctl::Selectable("default (sil / viseme_sil)", restViseme.empty())) {
             restViseme.clear();

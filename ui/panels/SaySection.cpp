@@ -2,6 +2,7 @@
 // utterance error and the audio status, and a typed sequence of visemes. The clip, its timeline under
 // the views and what the GUI probe reports about it are SpeechPlayer's.
 #include "ui/panels/SaySection.h"
+#include "ui/UiScale.h"
 
 #include "ui/SpeechPlayer.h"
 #include "ui/panels/PanelWidgets.h"
@@ -45,7 +46,7 @@ void SaySection::draw() {
                                             "Type a sentence, then Say");
     }
 
-    ImGui::SetNextItemWidth(150);
+    ImGui::SetNextItemWidth(scaled(150.0f));
     if (ctl::BeginCombo("voice", speech.voice.c_str())) {
         for (const char* voice : kVoices)
             if (ctl::Selectable(voice, speech.voice == voice)) {
@@ -57,7 +58,7 @@ void SaySection::draw() {
     }
     ImGui::SameLine();
     int rate = speech.wordsPerMinute;
-    ImGui::SetNextItemWidth(-90);
+    ImGui::SetNextItemWidth(scaled(-90.0f));
     if (ctl::SliderInt("words/min", &rate, kMinWordsPerMinute, kMaxWordsPerMinute)) {
         SpeechSettings next = speech;
         next.wordsPerMinute = rate;
@@ -125,8 +126,8 @@ void SaySection::draw() {
         ImGui::SetNextItemWidth(-1);
         ctl::InputTextWithHint("##sequence", "phonemes or visemes, e.g. PP aa E RR (empty: all visemes)",
                                &speech_.sequence);
-        ImGui::SetNextItemWidth(160);
-        ctl::SliderFloat("s per key", &speech_.secondsPerKey, 0.05f, 1.0f, "%.2f");
+        ImGui::SetNextItemWidth(scaled(160.0f));
+        ctl::SliderFloat("s per key", &speech_.secondsPerKey, 0.05f, 1.0f, "%.2f s");
         ImGui::SameLine();
         if (ctl::Button("Play sequence")) speech_.playSequence(speech_.sequence);
         ImGui::TreePop();

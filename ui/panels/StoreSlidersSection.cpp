@@ -2,6 +2,7 @@
 // (the preset, and the mesh when the viseme set is the face's own), and the face's presets: apply
 // one to the sliders, remove one. Apply, adjust, store: a preset is edited with the sliders.
 #include "ui/panels/StoreSlidersSection.h"
+#include "ui/UiScale.h"
 
 #include "core/document/VisemeCommands.h"
 #include "ui/panels/PanelWidgets.h"
@@ -75,9 +76,9 @@ void StoreSlidersSection::draw() {
 
     sectionHeader("Viseme presets");
     if (ImGui::BeginTable("##presets", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
-        ImGui::TableSetupColumn("Preset", ImGuiTableColumnFlags_WidthFixed, 90.0f);
+        ImGui::TableSetupColumn("Preset", ImGuiTableColumnFlags_WidthFixed, scaled(90.0f));
         ImGui::TableSetupColumn("Parameters (others at their default)", ImGuiTableColumnFlags_WidthStretch);
-        ImGui::TableSetupColumn("##remove", ImGuiTableColumnFlags_WidthFixed, 20.0f);
+        ImGui::TableSetupColumn("##remove", ImGuiTableColumnFlags_WidthFixed, scaled(20.0f));
         ImGui::TableHeadersRow();
         for (const VisemeParameters& preset : presets) {
             ImGui::PushID(preset.name.c_str());

@@ -1,6 +1,7 @@
 // Visemes panel, under the list: rename, duplicate, move and delete the selected viseme. A delete
 // that would leave phonemes unmapped asks where they go (a popup listing them) instead of failing.
 #include "ui/panels/VisemeAuthoring.h"
+#include "ui/UiScale.h"
 
 #include "core/common/Error.h"
 #include "core/document/PhonemeMapCommands.h"
@@ -17,8 +18,17 @@ namespace {
 
 constexpr const char* kDeletePopup = "Delete viseme";
 
-// "<name> copy", or "<name> copy 2", ... : the first name the document accepts for a new viseme.
-std::string copyName(const Document& document, const std::string& name) {
+// "<name> copy", or "<name> copy 2", ... : the first name the document accepts for a new viseme. A
+// copy's copy counts on ("aa copy" gives "aa copy 2", not "aa copy copy").
+std::string copyName(const Document& document, std::string name) {
+    const std::size_t copy = name.rfind(" copy");
+    if (copy != std::string::npos && copy > 0) {
+        const std::string rest = name.substr(copy + 5);
+        const bool numbered =
+            rest.size() > 1 && rest[0] == ' ' &&
+            std::all_of(rest.begin() + 1, rest.end(), [](char c) { return c >= '0' && c <= '9'; });
+        if (rest.empty() || numbered) name.resize(copy);
+    }
     for (int k = 1;; ++k) {
         const std::string candidate = name + " copy" + (k == 1 ? "" : " " + std::to_string(k));
         try {
@@ -141,7 +151,7 @@ void VisemeAuthoring::deletePopup() {
     ImGui::Text("Phonemes %s map to %s.", phonemes.c_str(), name.c_str());
     ImGui::TextUnformatted("Choose the viseme they map to once it is deleted:");
     ImGui::PopTextWrapPos();
-    ImGui::SetNextItemWidth(200);
+    ImGui::SetNextItemWidth(scaled(200.0f));
     if (ctl::BeginCombo("##phonemes-go-to", phonemesGoTo_.empty() ? "(choose)" : phonemesGoTo_.c_str(),
                         ImGuiComboFlags_HeightLargest)) {
         for (const Viseme& viseme : set->visemes)

@@ -2,6 +2,7 @@
 // importing meshes with the core's interpolability errors shown; under the list, authoring of the
 // selected viseme (VisemeAuthoring.cpp).
 #include "ui/panels/VisemesPanel.h"
+#include "ui/UiScale.h"
 
 #include "ui/FileActions.h"
 #include "ui/SpeechPlayer.h"
@@ -114,7 +115,7 @@ void VisemesPanel::draw() {
 
 void VisemesPanel::importSection() {
     sectionHeader("Import a viseme mesh");
-    ImGui::SetNextItemWidth(150);
+    ImGui::SetNextItemWidth(scaled(150.0f));
     ctl::InputTextWithHint("##import-name", "name", &importName_);
     ImGui::SameLine();
     if (ctl::Button("Choose file...")) {

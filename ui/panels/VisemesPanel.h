@@ -21,6 +21,7 @@ class VisemesPanel : public SidePanel {
         authoring_.addProbe(summary);
         summary["sculpt"] = sculptor_.probe();
     }
+    void documentReplaced() override { importError_.clear(); }
     VisemeSculptor& sculptor() { return sculptor_; }
 
   private:

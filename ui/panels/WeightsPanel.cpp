@@ -2,6 +2,7 @@
 // brush (radius in screen pixels or % of the head, front faces only), a region fill and a box
 // selection filled with a value. The weight under the cursor shows beside it in the view.
 #include "ui/panels/WeightsPanel.h"
+#include "ui/UiScale.h"
 
 #include "core/paint/PaintRegions.h"
 #include "ui/panels/PanelWidgets.h"
@@ -54,7 +55,7 @@ void WeightsPanel::draw() {
                "the back of the head, the inside of the mouth and the other lip alone, and a box selects "
                "no vertex hidden behind another part (the far lip, an ear behind the head).");
 
-    ImGui::PushItemWidth(-130);
+    ImGui::PushItemWidth(scaled(-130.0f));
     sectionHeader("Brush");
     const bool pixels = painter_.brush.radius.unit == RadiusUnit::ScreenPixels;
     float radius = static_cast<float>(painter_.brush.radius.value);
@@ -78,7 +79,9 @@ void WeightsPanel::draw() {
             painter_.brush.radius.value = unit == 1 ? 8.0 : 40.0;
         painter_.brush.radius.unit = static_cast<RadiusUnit>(unit);
     }
-    ctl::SliderFloat("strength", &painter_.brush.strength, 0.01f, 1.0f, "%.2f");
+    // Weights are in [0, 1]: strength is the weight a dab adds at its centre (smooth: the share of the
+    // way to the neighbours' mean), the fill value a weight, the tolerance a weight difference.
+    ctl::SliderFloat("strength", &painter_.brush.strength, 0.01f, 1.0f, "%.2f weight per dab");
     const char* falloffs[] = {"linear", "smoothstep", "cosine", "gaussian"};
     ctl::Combo("falloff", &painter_.brush.falloff, falloffs, 4);
     const char* modes[] = {"add", "subtract", "smooth"};
@@ -87,8 +90,8 @@ void WeightsPanel::draw() {
     ImGui::TextDisabled("[ and ] shrink and grow the brush. Each stroke is one undo step.");
 
     sectionHeader("Fill");
-    ctl::SliderFloat("fill value", &painter_.tools.fillValue, 0.0f, 1.0f, "%.2f");
-    ctl::SliderFloat("region tolerance", &painter_.tools.fillTolerance, 0.0f, 1.0f, "%.2f");
+    ctl::SliderFloat("fill value", &painter_.tools.fillValue, 0.0f, 1.0f, "weight %.2f");
+    ctl::SliderFloat("region tolerance", &painter_.tools.fillTolerance, 0.0f, 1.0f, "+- %.2f weight");
     ImGui::PopItemWidth();
     if (ctl::Button("Fill all")) {
         std::vector<std::uint32_t> all(set->vertexCount());

@@ -1,14 +1,16 @@
 #include "ui/render/Camera.h"
 
+#include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 
 namespace vl::ui {
 namespace {
 
-constexpr float kMaxPitch = 1.5f;
+constexpr float kMaxPitch = glm::half_pi<float>();
 
 glm::vec3 forwardOf(float yaw, float pitch) {
     // yaw = 0, pitch = 0 looks down -z (the face looks along +z at the viewer).
@@ -17,22 +19,56 @@ glm::vec3 forwardOf(float yaw, float pitch) {
 
 } // namespace
 
+const char* standardViewName(StandardView view) {
+    static const char* const kNames[] = {"Front", "Back", "Right", "Left", "Top", "Bottom"};
+    return kNames[static_cast<int>(view)];
+}
+
+std::optional<StandardView> standardViewFromName(std::string_view name) {
+    for (int i = 0; i <= static_cast<int>(StandardView::Bottom); ++i) {
+        const std::string_view candidate = standardViewName(static_cast<StandardView>(i));
+        if (std::equal(name.begin(), name.end(), candidate.begin(), candidate.end(),
+                       [](char a, char b) { return std::tolower(a) == std::tolower(b); }))
+            return static_cast<StandardView>(i);
+    }
+    return std::nullopt;
+}
+
 glm::vec3 OrbitCamera::eye() const {
     return target - forwardOf(yaw, pitch) * distance;
 }
 
 glm::mat4 OrbitCamera::view() const {
-    return glm::lookAt(eye(), target, glm::vec3(0.0f, 1.0f, 0.0f));
+    // Rotations rather than lookAt: the same matrix without roll, and defined at the poles (top and
+    // bottom views), where lookAt's up vector would be parallel to the view axis.
+    glm::mat4 v = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, -distance));
+    v = glm::rotate(v, pitch, glm::vec3(1.0f, 0.0f, 0.0f));
+    v = glm::rotate(v, -yaw, glm::vec3(0.0f, 1.0f, 0.0f));
+    return glm::translate(v, -target);
 }
 
 glm::mat4 OrbitCamera::projection(float aspect) const {
+    aspect = std::max(aspect, 1e-3f);
+    if (orthographic) {
+        // Depth both sides of the eye: nothing of the model is cut when zoomed in.
+        const float h = 0.5f * visibleHeightAtTarget(), depth = distance * 100.0f;
+        return glm::ortho(-h * aspect, h * aspect, -h, h, -depth, depth);
+    }
     const float nearPlane = std::max(distance * 0.01f, 1e-4f);
-    return glm::perspective(fovY, std::max(aspect, 1e-3f), nearPlane, distance * 100.0f);
+    return glm::perspective(fovY, aspect, nearPlane, distance * 100.0f);
 }
 
 void OrbitCamera::orbit(float deltaYaw, float deltaPitch) {
     yaw += deltaYaw;
     pitch = std::clamp(pitch + deltaPitch, -kMaxPitch, kMaxPitch);
+}
+
+void OrbitCamera::setView(StandardView view) {
+    constexpr float kPi = glm::pi<float>();
+    static const float kAngles[][2] = {{0.0f, 0.0f},        {kPi, 0.0f},       {0.5f * kPi, 0.0f},
+                                       {-0.5f * kPi, 0.0f}, {0.0f, kMaxPitch}, {0.0f, -kMaxPitch}};
+    yaw = kAngles[static_cast<int>(view)][0];
+    pitch = kAngles[static_cast<int>(view)][1];
 }
 
 float OrbitCamera::visibleHeightAtTarget() const {

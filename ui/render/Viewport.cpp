@@ -2,9 +2,6 @@
 #include "ui/render/SceneSignature.h"
 #include "ui/widgets/GuiProbe.h"
 
-#define GLFW_INCLUDE_NONE
-#include <GLFW/glfw3.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -87,6 +84,7 @@ ViewportEvents Viewport::show(const char* id, ImVec2 size, const SceneFn& scene,
     // The scene is drawn again only when what it shows changed (a moved camera, an edit, a new
     // weight ...): its draws recorded first as a signature, compared with the one on screen.
     const glm::mat4 view = camera.view(), projection = camera.projection(events.aspect);
+    drawnProjection_ = projection;
     SceneSignature signature;
     {
         const SceneSignature::Recording recording(signature);
@@ -146,10 +144,6 @@ ViewportEvents Viewport::show(const char* id, ImVec2 size, const SceneFn& scene,
         if (ImGui::IsKeyDown(ImGui::GetKeyIndex(ImGuiKey_RightArrow))) camera.orbit(-step, 0.0f);
         if (ImGui::IsKeyDown(ImGui::GetKeyIndex(ImGuiKey_UpArrow))) camera.orbit(0.0f, step);
         if (ImGui::IsKeyDown(ImGui::GetKeyIndex(ImGuiKey_DownArrow))) camera.orbit(0.0f, -step);
-        // ImGui 1.86 keys are the backend's native codes (GLFW here).
-        if (ImGui::IsKeyPressed(GLFW_KEY_KP_ADD) || ImGui::IsKeyPressed(GLFW_KEY_EQUAL)) camera.zoom(0.9f);
-        if (ImGui::IsKeyPressed(GLFW_KEY_KP_SUBTRACT) || ImGui::IsKeyPressed(GLFW_KEY_MINUS))
-            camera.zoom(1.0f / 0.9f);
     }
     return events;
 }

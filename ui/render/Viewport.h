@@ -1,8 +1,8 @@
 #pragma once
 // A 3D view inside an ImGui window: renders a scene into its own multisampled framebuffer (again
 // only when what it shows changed: SceneSignature), shows it as an image and turns mouse/keyboard input over
-// it into camera moves (left drag orbits, right or middle drag pans, wheel zooms, arrow keys orbit, +/-
-// zoom).
+// it into camera moves (left drag orbits, right or middle drag pans, wheel zooms, arrow keys orbit;
+// +/- zoom is a shortcut of the window, EditorUi).
 #include "ui/render/Camera.h"
 
 #include <epoxy/gl.h>
@@ -46,6 +46,8 @@ class Viewport {
 
     // How many times the scene was rendered (not shown again): for the GUI tests' idle checks.
     std::uint64_t renders() const { return renders_; }
+    // The projection of the last show() (its aspect is the view's).
+    const glm::mat4& drawnProjection() const { return drawnProjection_; }
 
     OrbitCamera camera;
     glm::vec3 background{0.16f, 0.17f, 0.20f};
@@ -60,6 +62,7 @@ class Viewport {
     GLuint resolveFbo_ = 0, resolveTexture_ = 0;
     std::optional<std::uint64_t> shownSignature_; // of the scene in resolveTexture_
     std::uint64_t renders_ = 0;
+    glm::mat4 drawnProjection_{1.0f};
     bool leftDragActive_ = false, otherDragActive_ = false;
     ImVec2 excludedMin_{0, 0}, excludedMax_{0, 0};
 };

@@ -127,14 +127,33 @@ bool EditorSession::attempt(std::string_view what, const std::function<void()>& 
         action();
         return true;
     } catch (const std::exception& e) {
-        error(std::string(what) + ": " + e.what());
+        // "Constraints: constraints: ..." says the same thing twice: a message that starts with
+        // the action's name keeps only its own.
+        const std::string_view message = e.what();
+        const bool named = message.size() > what.size() + 1 && message[what.size()] == ':' &&
+                           std::equal(what.begin(), what.end(), message.begin(), [](char a, char b) {
+                               return std::tolower(static_cast<unsigned char>(a)) ==
+                                      std::tolower(static_cast<unsigned char>(b));
+                           });
+        std::string text = named ? std::string(message) : std::string(what) + ": " + std::string(message);
+        text[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(text[0])));
+        error(std::move(text));
         return false;
     }
 }
 
 // --- opening documents -----------------------------------------------------------------------
 
+void EditorSession::beginNewDocument() {
+    ++documentEpoch_;
+    speech_.clear();
+    refinement_.clearLast();
+    lastAvatarExport_.clear();
+    selectedViseme = -1;
+}
+
 void EditorSession::adopt(Loaded loaded) {
+    beginNewDocument();
     reduction_.cancel();
     retireCurrent();
     const Document& before = *frameDocuments_.back();
@@ -603,7 +622,9 @@ void EditorSession::setIndividual(face::Individual individual) {
 
 void EditorSession::useOwnFace(const OwnFaceCandidate& candidate) {
     face::FaceBuildReport report;
-    commit("Use my mesh " + candidate.name, edit::useOwnFace(document(), candidate, &report));
+    Document next = edit::useOwnFace(document(), candidate, &report);
+    beginNewDocument();
+    commit("Use my mesh " + candidate.name, std::move(next));
     std::size_t islands = 0;
     for (const auto& island : report.islands) islands += island.used;
     std::string text = "Face '" + candidate.name + "' built: " + std::to_string(islands) + " of " +
@@ -627,8 +648,9 @@ static FrequencySource bundledOculusTable() {
 void EditorSession::generateVisemesFromFace() {
     FrequencySource table;
     const bool spoken = attempt("Bundled phoneme table", [&] { table = bundledOculusTable(); });
-    commit("Generate visemes from face",
-           edit::generateVisemesFromFace(document(), spoken ? &table : nullptr));
+    Document next = edit::generateVisemesFromFace(document(), spoken ? &table : nullptr);
+    beginNewDocument();
+    commit("Generate visemes from face", std::move(next));
     info("Generated " + std::to_string(visemeCount()) + " visemes from the face");
 }
 

@@ -292,6 +292,10 @@ class EditorSession {
     void endEdit() { history_.closeMerge(); }
     // Identifies the current document state: changes with every edit, undo and redo.
     std::uint64_t documentId() const { return history_.currentId(); }
+    // Changes when the document is replaced (new, open, sample, folder, import) or its subject is
+    // built anew (Generate viseme set from face, Use my mesh): the window then drops every view's
+    // state of the old one (EditorUi::documentReplaced); the session drops its own here.
+    std::uint64_t documentEpoch() const { return documentEpoch_; }
 
     // --- messages ----------------------------------------------------------------------------
     void info(std::string text);
@@ -342,6 +346,12 @@ class EditorSession {
     void collectRefinement();
     void adoptFaceSamples(std::shared_ptr<const DeformationCascade> cascade,
                           std::shared_ptr<const MeshData> domain, std::shared_ptr<const FaceSamples> samples);
+
+    // The one place that says what a new document clears in the session (see documentEpoch()):
+    // the speech clip and its synthesis, the last refinement's report, the last avatar export,
+    // the selection. Called on every replacement, before the new document is current.
+    void beginNewDocument();
+    std::uint64_t documentEpoch_ = 1;
 
     // Keeps the current document alive until the next beginFrame() (call before replacing it).
     void retireCurrent();

@@ -72,6 +72,7 @@ class RefinementService {
 
     const std::optional<RefinementReport>& last() const { return last_; }
     void setLast(RefinementReport report) { last_ = std::move(report); }
+    void clearLast() { last_.reset(); }
 
   private:
     std::shared_ptr<AdaptiveWork> work_;

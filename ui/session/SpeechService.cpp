@@ -42,6 +42,13 @@ FaceTrack trackOf(ReducedModel model, const SpeechClip& clip, const char* where)
 
 } // namespace
 
+void SpeechService::clear() {
+    task_.cancel();
+    clip_.reset();
+    playback_ = {};
+    builtClip_ = 0;
+}
+
 void SpeechService::say(const SpeechSettings& settings) {
     checkSpeechSettings(settings, "speech");
     if (settings.text.find_first_not_of(" \t\r\n") == std::string::npos)

@@ -65,6 +65,8 @@ class SpeechService {
     void playSequence(const Document& document, const std::string& sequence, double secondsPerKey);
 
     const std::shared_ptr<const SpeechClip>& clip() const { return clip_; }
+    // No clip and no synthesis running (a new document: the old sentence is not its own).
+    void clear();
 
     // The clip's tracks on the document's faces; `grouping` (may be null) is the current
     // reduction into document.target groups, `inputsRevision` numbers its inputs and `curveRevision`
@@ -79,7 +81,7 @@ class SpeechService {
     std::uint64_t nextId_ = 1;
     // playback() cache and what it was built for (revisions, never addresses).
     SpeechPlayback playback_;
-    std::uint64_t builtClip_ = 0, builtRevision_ = 0, builtCurve_ = 0;
+    std::uint64_t builtClip_ = 0, builtRevision_ = 0, builtCurve_ = 0; // 0: nothing built
     bool builtGrouping_ = false;
     int builtTarget_ = 0;
 };

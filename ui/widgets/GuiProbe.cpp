@@ -129,6 +129,23 @@ void recordRect(const char* label, const char* kind, ImVec2 min, ImVec2 max) {
                            cutSideways(rect, window->ClipRect)});
 }
 
+std::optional<std::filesystem::path> takeScreenshotRequest() {
+    const Probe& probe = probeState();
+    if (!probe.enabled) return std::nullopt;
+    const std::filesystem::path request = probe.file.string() + ".screenshot";
+    std::FILE* f = std::fopen(request.string().c_str(), "rb");
+    if (!f) return std::nullopt;
+    char buffer[4096] = {};
+    const std::size_t size = std::fread(buffer, 1, sizeof buffer - 1, f);
+    std::fclose(f);
+    std::error_code ignored;
+    std::filesystem::remove(request, ignored);
+    std::string path(buffer, size);
+    while (!path.empty() && (path.back() == '\n' || path.back() == '\r')) path.pop_back();
+    if (path.empty()) return std::nullopt;
+    return std::filesystem::path(path);
+}
+
 void endFrame(const nlohmann::json& document) {
     Probe& probe = probeState();
     if (!probe.enabled) return;

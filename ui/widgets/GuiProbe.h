@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
+#include <optional>
 
 namespace vl::ui::probe {
 
@@ -31,6 +32,10 @@ void recordArea(const char* label, const char* kind);
 void recordRect(const char* label, const char* kind, ImVec2 min, ImVec2 max);
 // Every record says whether the whole item, label included, reaches past its window's clip
 // rectangle sideways ("cut": a label the user cannot read in full).
+
+// A test asks for a picture of the window by writing its path into FILE.screenshot; the editor
+// takes the request (the file is removed) and saves the frame there (EditorApp).
+std::optional<std::filesystem::path> takeScreenshotRequest();
 
 // Writes the frame's controls and `document` (a summary the caller chooses) and starts a new list.
 void endFrame(const nlohmann::json& document);
