@@ -40,6 +40,22 @@ Project newAvatarProject(const std::filesystem::path& file, const std::string& p
 std::string reducedAvatarGlb(const Document& document, const std::vector<int>& groupOf,
                              const AvatarWriteOptions& options = {}, AvatarWriteSummary* summary = nullptr);
 
+// Sculpted avatar visemes (the editor's Sculpt on an avatar): per viseme of the document's set, its
+// world-space positions where they differ from the avatar file's, else empty; all empty when nothing
+// was sculpted. What the writer maps back into each mesh's space (AvatarWriteOptions::sculpted) and
+// what a project stores.
+std::vector<std::vector<Vec3>> sculptedAvatarVisemes(const Document& document);
+
+// The document's set becomes the avatar's with `sculpted` (as sculptedAvatarVisemes returns, by
+// viseme index) over it. Throws InputError naming `where` and the viseme when a shape has the wrong
+// vertex count or moves a vertex no target of that viseme can move (avatarSculptableVertices).
+void applyAvatarSculpts(Document& document, const std::vector<std::vector<Vec3>>& sculpted,
+                        const std::string& where);
+
+// Per vertex of the avatar's set: whether viseme `viseme` can move it, i.e. its mesh carries a
+// target of that viseme (a target is only ever replaced, never added, so the others stay put).
+std::vector<char> avatarSculptableVertices(const AvatarScan& scan, std::size_t viseme);
+
 // Refuses (InputError) an output that is the avatar the document was read from, or a .gltf name
 // (the reduced avatar is a GLB), or a document without avatar.
 void checkAvatarOutput(const Document& document, const std::filesystem::path& out);

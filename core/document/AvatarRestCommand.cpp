@@ -20,7 +20,7 @@ Document addAvatarRestViseme(const Document& document, const FrequencySource& oc
     addAvatarRest(*scan, name);
     Document next = document;
     next.avatar.scan = scan;
-    next.visemes = std::shared_ptr<const VisemeSet>(scan, &scan->set);
+    applyAvatarSculpts(next, sculptedAvatarVisemes(document), "rest viseme"); // the rest goes last
     next.visemeFiles.emplace_back();
     if (document.frequencies == defaultAvatarFrequencies(before, oculusTable)) {
         // Still the defaults: those of the avatar with its rest (an Oculus avatar now fits the bundled

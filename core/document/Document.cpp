@@ -139,7 +139,10 @@ LoadedProject documentFromProject(const Project& project) {
                             e.what());
         }
         checkAvatarVisemeNames(project, document.avatar.scan->visemes);
-        document.visemes = std::shared_ptr<const VisemeSet>(document.avatar.scan, &document.avatar.scan->set);
+        std::vector<std::vector<Vec3>> sculpted(project.visemes.size());
+        for (std::size_t i = 0; i < project.visemes.size(); ++i) sculpted[i] = project.visemes[i].positions;
+        applyAvatarSculpts(document, sculpted,
+                           (project.path.empty() ? "" : project.path.string() + ": ") + "/visemes");
         document.visemeFiles.assign(project.visemes.size(), {});
     } else if (project.neutral.isSet()) {
         document.visemes = std::make_shared<const VisemeSet>(loadProjectVisemeSet(project));
@@ -188,7 +191,11 @@ Project projectFromDocument(const Document& document, const std::optional<Reduct
     Project project;
     if (document.avatar.isSet()) {
         project.avatar = {document.avatar.file, document.avatar.pattern, document.avatar.scan->addedRest};
-        for (const std::string& name : visemeNames(document)) project.visemes.push_back({name, {}, {}});
+        std::vector<std::vector<Vec3>> sculpted = sculptedAvatarVisemes(document);
+        const std::vector<std::string> names = visemeNames(document);
+        for (std::size_t i = 0; i < names.size(); ++i)
+            project.visemes.push_back(
+                {names[i], {}, i < sculpted.size() ? std::move(sculpted[i]) : std::vector<Vec3>{}});
     } else if (const VisemeSet* set = document.visemes.get()) {
         project.neutral.file = document.neutralFile;
         if (document.neutralFile.empty()) project.neutral.embedded = set->neutral;

@@ -1,5 +1,8 @@
 #include "core/document/VisemeCommands.h"
 
+#include "core/document/AvatarDocument.h"
+#include "core/gltf/AvatarScan.h"
+
 #include "core/common/Error.h"
 #include "core/deform/CascadeSampler.h"
 #include "core/document/CommandSupport.h"
@@ -191,7 +194,6 @@ Document addRestViseme(const Document& document, const std::string& name) {
 
 Document setVisemeShape(const Document& document, int index, std::vector<Vec3> positions) {
     requireSet(document, "sculpt viseme");
-    refuseAvatar(document, "sculpt viseme");
     const std::size_t i = checkedIndex(index, document.visemeCount(), "sculpt viseme");
     const std::string where = "sculpt " + document.visemes->visemes[i].name;
     if (positions.size() != document.visemes->vertexCount())
@@ -201,6 +203,18 @@ Document setVisemeShape(const Document& document, int index, std::vector<Vec3> p
     for (const Vec3& p : positions)
         if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
             throwInputError(where, "the shape has a position that is not a finite number");
+    if (document.avatar.isSet()) {
+        // An avatar's viseme is its targets: a mesh without a target of it keeps the file's vertices
+        // (the writer replaces targets, never adds one; AvatarWriter.h).
+        const AvatarScan& scan = *document.avatar.scan;
+        const std::vector<char> movable = avatarSculptableVertices(scan, i);
+        if (std::find(movable.begin(), movable.end(), 1) == movable.end())
+            throwInputError(where, "no mesh of the avatar has a target of it (a rest viseme added to the "
+                                   "avatar is its base mesh)");
+        const std::vector<Vec3>& file = scan.set.visemes[i].positions;
+        for (std::size_t v = 0; v < positions.size(); ++v)
+            if (!movable[v]) positions[v] = file[v];
+    }
     Document next = document;
     auto set = std::make_shared<VisemeSet>(*next.visemes);
     set->visemes[i].positions = std::move(positions);

@@ -1,6 +1,7 @@
 #include "core/gltf/AvatarScan.h"
 
 #include "core/gltf/Accessors.h"
+#include "core/gltf/AvatarPlacement.h"
 #include "core/gltf/AvatarRest.h"
 #include "core/gltf/BufferViews.h"
 #include "core/gltf/DracoDecode.h"
@@ -96,43 +97,6 @@ std::vector<std::string> selectOwnKeys(AvatarMesh& mesh, const OwnOutput& own,
         keys[k] = "key " + std::to_string(key); // not a viseme name: never joins with another spelling
     }
     return keys;
-}
-
-// World placement of a primitive's vertices: one matrix, or one per vertex for skinned meshes.
-struct Placement {
-    glm::dmat4 node{1.0};
-    std::vector<glm::dmat4> joints; // empty: not skinned
-};
-
-std::vector<glm::dmat4> skinnedMatrices(const GltfDocument& doc, AccessorReader& reader,
-                                        const tinygltf::Primitive& prim, const Placement& placement,
-                                        std::size_t vertices, const std::string& where) {
-    std::vector<glm::dmat4> blended(vertices, glm::dmat4(0.0));
-    std::vector<double> total(vertices, 0.0);
-    for (int set = 0;; ++set) {
-        const int joints = attribute(prim.attributes, "JOINTS_" + std::to_string(set));
-        const int weights = attribute(prim.attributes, "WEIGHTS_" + std::to_string(set));
-        if (joints < 0 || weights < 0) break;
-        const std::vector<float> j =
-            reader.floats(joints, TINYGLTF_TYPE_VEC4, where + "/JOINTS_" + std::to_string(set), vertices);
-        const std::vector<float> w =
-            reader.floats(weights, TINYGLTF_TYPE_VEC4, where + "/WEIGHTS_" + std::to_string(set), vertices);
-        for (std::size_t v = 0; v < vertices; ++v)
-            for (std::size_t c = 0; c < 4; ++c) {
-                const float weight = w[4 * v + c];
-                if (weight == 0.0f) continue;
-                const auto joint = static_cast<std::size_t>(j[4 * v + c]);
-                if (j[4 * v + c] < 0 || joint >= placement.joints.size())
-                    doc.fail(where + "/JOINTS_" + std::to_string(set),
-                             "vertex " + std::to_string(v) + " names joint " + std::to_string(joint) +
-                                 " of " + std::to_string(placement.joints.size()));
-                blended[v] += static_cast<double>(weight) * placement.joints[joint];
-                total[v] += weight;
-            }
-    }
-    for (std::size_t v = 0; v < vertices; ++v)
-        blended[v] = total[v] > 0 ? blended[v] / total[v] : placement.node;
-    return blended;
 }
 
 // Accessors decoded once however many primitives use them: memory follows the file's unique data
@@ -341,9 +305,7 @@ AvatarScan scan(const GltfDocument& doc, const AvatarSelection& selection) {
     for (AvatarMesh& mesh : scan.meshes) {
         if (!mesh.carriesVisemes && !selection.context) continue;
         MeshData& out = mesh.carriesVisemes ? scan.set.neutral : scan.context;
-        Placement placement;
-        if (mesh.node >= 0) placement.node = scene.world[static_cast<std::size_t>(mesh.node)];
-        if (mesh.skin >= 0) placement.joints = skinRestMatrices(doc, reader, scene, mesh.skin);
+        const AvatarPlacement placement = avatarPlacement(doc, reader, scene, mesh);
         if (mesh.carriesVisemes && mesh.uses > 1)
             mesh.note = "measured at node " + std::to_string(mesh.node) + " (one of " +
                         std::to_string(mesh.uses) + ")";
@@ -387,9 +349,8 @@ AvatarScan scan(const GltfDocument& doc, const AvatarSelection& selection) {
             info.triangles = triangles.size();
             out.triangles.insert(out.triangles.end(), triangles.begin(), triangles.end());
 
-            std::vector<glm::dmat4> perVertex;
-            if (!placement.joints.empty())
-                perVertex = skinnedMatrices(doc, reader, prim, placement, info.vertices, where);
+            const std::vector<glm::dmat4> perVertex =
+                skinnedMatrices(doc, reader, prim, placement, info.vertices, where);
             const auto matrixOf = [&](std::size_t v) -> const glm::dmat4& {
                 return perVertex.empty() ? placement.node : perVertex[v];
             };

@@ -2,6 +2,7 @@
 
 #include "core/common/Error.h"
 #include "core/gltf/Accessors.h"
+#include "core/gltf/AvatarPlacement.h"
 #include "core/gltf/AvatarScan.h"
 #include "core/gltf/BufferViews.h"
 #include "core/gltf/GlbRepack.h"
@@ -13,6 +14,7 @@
 #include "core/gltf/TargetStorage.h"
 #include "core/reduce/Reduction.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -118,11 +120,54 @@ struct KeyWriting {
     StorageTally tally;
 };
 
+// The sculpted visemes' POSITION displacements on one primitive, in the mesh's own space: per viseme,
+// 3 x vertices floats, or empty where the viseme is as in the file on this primitive.
+struct PrimitiveSculpts {
+    std::vector<std::vector<float>> local;
+    const std::vector<float>* of(int viseme) const {
+        return static_cast<std::size_t>(viseme) < local.size() &&
+                       !local[static_cast<std::size_t>(viseme)].empty()
+                   ? &local[static_cast<std::size_t>(viseme)]
+                   : nullptr;
+    }
+};
+
+PrimitiveSculpts primitiveSculpts(const GltfDocument& doc, const AvatarScan& scan, const AvatarMesh& mesh,
+                                  std::size_t p, const std::vector<std::vector<Vec3>>* sculpted) {
+    PrimitiveSculpts out;
+    if (!sculpted) return out;
+    const std::size_t first = mesh.primitives[p].firstVertex, vertices = mesh.primitives[p].vertices;
+    const auto& neutral = scan.set.neutral.positions;
+    std::vector<glm::dmat3> inverses; // computed on the first sculpted viseme met
+    for (std::size_t i = 0; i < sculpted->size() && i < scan.set.size(); ++i) {
+        const std::vector<Vec3>& edited = (*sculpted)[i];
+        const std::vector<Vec3>& original = scan.set.visemes[i].positions;
+        if (edited.size() != neutral.size()) continue;
+        bool changed = false;
+        for (std::size_t v = first; v < first + vertices && !changed; ++v) changed = edited[v] != original[v];
+        if (!changed) continue;
+        if (inverses.empty()) inverses = inverseWorldLinear(doc, mesh, p);
+        out.local.resize(scan.set.size());
+        std::vector<float>& local = out.local[i];
+        local.resize(3 * vertices);
+        for (std::size_t v = 0; v < vertices; ++v) {
+            const Vec3 d = edited[first + v] - neutral[first + v];
+            const glm::dvec3 l = inverses[inverses.size() == 1 ? 0 : v] * glm::dvec3(d[0], d[1], d[2]);
+            for (int c = 0; c < 3; ++c) local[3 * v + static_cast<std::size_t>(c)] = static_cast<float>(l[c]);
+        }
+    }
+    return out;
+}
+
 // The morph target of key `key` on one primitive, each attribute stored as its most precise member.
 Json keyTarget(GlbRepack& out, KeyWriting& w, const Json& originalTargets, const tinygltf::Primitive& prim,
                const AvatarMesh& mesh, const std::vector<std::size_t>& members, const KeyGrouping& grouping,
-               std::size_t key, std::size_t vertices, bool targetNormals, const std::string& where) {
-    if (grouping.size[key] == 1) { // one member: its own accessors, unchanged
+               std::size_t key, std::size_t vertices, bool targetNormals, const std::string& where,
+               const PrimitiveSculpts& sculpts) {
+    const bool sculpted = std::any_of(members.begin(), members.end(), [&](std::size_t k) {
+        return sculpts.of(mesh.targets[k].viseme) != nullptr;
+    });
+    if (grouping.size[key] == 1 && !sculpted) { // one member: its own accessors, unchanged
         Json target = originalTargets[members.front()];
         if (!targetNormals) {
             target.erase("NORMAL");
@@ -136,15 +181,24 @@ Json keyTarget(GlbRepack& out, KeyWriting& w, const Json& originalTargets, const
         std::vector<double> sum(3 * vertices, 0.0);
         bool any = false;
         TargetStorage storage;
+        const bool position = std::strcmp(name, "POSITION") == 0;
         for (std::size_t k : members) {
+            const int viseme = mesh.targets[k].viseme;
+            const std::vector<float>* sculpt = position ? sculpts.of(viseme) : nullptr;
             const int accessor = attribute(prim.targets[k], name);
-            if (accessor < 0) continue;
+            if (accessor < 0 && !sculpt) continue;
             const std::string at = where + "/targets/" + std::to_string(k) + "/" + name;
-            const TargetStorage own = storageOf(w.doc, w.views, accessor, at);
-            storage = any ? morePrecise(storage, own) : own;
+            if (accessor >= 0 || sculpt) {
+                TargetStorage own = accessor >= 0 ? storageOf(w.doc, w.views, accessor, at) : TargetStorage{};
+                // A sculpted shape is new data: the member's grid or exponent (inferred from what the
+                // file held, zeros on an eye) need not hold it. Floats, compressed if the member was.
+                if (sculpt) own = TargetStorage{.meshopt = own.meshopt};
+                storage = any ? morePrecise(storage, own) : own;
+            }
             any = true;
-            const double weight = grouping.weightInGroup[static_cast<std::size_t>(mesh.targets[k].viseme)];
-            const std::vector<float> d = w.reader.floats(accessor, TINYGLTF_TYPE_VEC3, at, vertices);
+            const double weight = grouping.weightInGroup[static_cast<std::size_t>(viseme)];
+            const std::vector<float> d =
+                sculpt ? *sculpt : w.reader.floats(accessor, TINYGLTF_TYPE_VEC3, at, vertices);
             for (std::size_t c = 0; c < sum.size(); ++c) sum[c] += weight * d[c];
         }
         if (!any && std::strcmp(name, "POSITION") != 0) continue;
@@ -344,12 +398,13 @@ std::string write(const GltfDocument& doc, const AvatarScan& scan, const Reduced
                 "meshes/" + std::to_string(mesh.index) + "/primitives/" + std::to_string(p);
             Json& primJson = meshJson["primitives"][p];
             const Json originalTargets = primJson["targets"];
+            const PrimitiveSculpts sculpts = primitiveSculpts(doc, scan, mesh, p, options.sculpted);
             std::vector<Json> keys(model.keys.size());
             for (std::size_t g = 0; g < model.keys.size(); ++g)
                 if (!plan.members[g].empty())
-                    keys[g] =
-                        keyTarget(out, keyWriting, originalTargets, gm.primitives[p], mesh, plan.members[g],
-                                  grouping, g, mesh.primitives[p].vertices, options.targetNormals, where);
+                    keys[g] = keyTarget(out, keyWriting, originalTargets, gm.primitives[p], mesh,
+                                        plan.members[g], grouping, g, mesh.primitives[p].vertices,
+                                        options.targetNormals, where, sculpts);
             Json targets = Json::array();
             for (std::size_t k = 0; k < mesh.targets.size(); ++k) {
                 const int viseme = mesh.targets[k].viseme;

@@ -12,7 +12,7 @@
 // on every mesh: key g on a mesh is the frequency-weighted mean of its members' displacements on that
 // mesh (a member the mesh lacks counts as zero, as in the reduction's concatenated geometry), for
 // POSITION and, unless disabled, NORMAL and TANGENT. A key of one member reuses that member's
-// accessors as they are.
+// accessors as they are (unless it was sculpted on that primitive: AvatarWriteOptions::sculpted).
 //
 // Names clients drive by:
 // - AvatarNames::Original (default): every original viseme target stays, under its own name and
@@ -51,6 +51,12 @@ struct AvatarWriteOptions {
     AvatarNames names = AvatarNames::Original;
     bool targetNormals = true; // NORMAL/TANGENT displacements of the reduced keys
     int maxTargets = 0;        // > 0: refuse when a primitive would have more morph targets
+    // Sculpted visemes (the editor): per viseme of the scan, its world-space positions over the scan's
+    // set, or empty when it is as in the file. On each primitive where a sculpted viseme differs
+    // from the file, its POSITION displacement is taken from these positions, mapped back into the
+    // mesh's own space (AvatarPlacement.h); NORMAL/TANGENT stay the file's. Primitives where it does
+    // not differ keep their bytes.
+    const std::vector<std::vector<Vec3>>* sculpted = nullptr;
 };
 
 struct AvatarMeshChange {

@@ -182,8 +182,13 @@ Json projectToJson(const Project& project) {
     root["neutral"] = neutralToJson(project.neutral);
     Json visemes = Json::array();
     for (std::size_t i = 0; i < project.visemes.size(); ++i)
-        visemes.push_back(project.avatar.isSet() ? Json{{"name", project.visemes[i].name}}
-                                                 : visemeToJson(project.visemes[i], i));
+        if (!project.avatar.isSet())
+            visemes.push_back(visemeToJson(project.visemes[i], i));
+        else if (project.visemes[i].positions.empty())
+            visemes.push_back(Json{{"name", project.visemes[i].name}});
+        else // sculpted in the editor: its world-space positions over the avatar's meshes
+            visemes.push_back(Json{{"name", project.visemes[i].name},
+                                   {"positions", vec3Array(project.visemes[i].positions)}});
     root["visemes"] = std::move(visemes);
     root["frequencies"] = frequenciesToJson(project.frequencies);
     root["weights"] = weightsToJson(project.weights);
@@ -211,9 +216,12 @@ Project projectFromJson(const JsonNode& root, const ProjectReadContext& context)
     std::vector<std::string> names;
     std::unordered_set<std::string> seen; // linear-time duplicate check, however many visemes
     for (const JsonNode& v : visemes.elements()) {
-        if (project.avatar.isSet()) { // the avatar holds the meshes: a viseme is its name
-            v.allowOnly({"name"});
-            project.visemes.push_back({v["name"].nonEmptyString(), {}, {}});
+        if (project.avatar.isSet()) {           // the avatar holds the meshes: a viseme is its name
+            v.allowOnly({"name", "positions"}); // positions: sculpted (counts checked with the avatar)
+            project.visemes.push_back(
+                {v["name"].nonEmptyString(),
+                 {},
+                 v.has("positions") ? vec3ArrayFromJson(v["positions"]) : std::vector<Vec3>{}});
         } else {
             project.visemes.push_back(visemeFromJson(v, project.neutral, context));
         }

@@ -59,6 +59,16 @@ VisemeSet loadProjectVisemeSet(const Project& project) {
             throwInputError(projectWhere(project, "/avatar/file"), e.what());
         }
         checkAvatarVisemeNames(project, scan.visemes);
+        for (std::size_t i = 0; i < project.visemes.size(); ++i) { // sculpted in the editor
+            const std::vector<Vec3>& sculpted = project.visemes[i].positions;
+            if (sculpted.empty()) continue;
+            if (sculpted.size() != scan.set.vertexCount())
+                throwInputError(projectWhere(project, jsonPathAppend("/visemes", i) + "/positions"),
+                                "expected " + std::to_string(scan.set.vertexCount()) +
+                                    " vertices (the avatar's meshes carrying visemes), found " +
+                                    std::to_string(sculpted.size()));
+            scan.set.visemes[i].positions = sculpted;
+        }
         return std::move(scan.set);
     }
     if (!project.neutral.isSet())

@@ -243,6 +243,33 @@ void restModelCases(benchmark::internal::Benchmark* b) {
     b->ComputeStatistics("max",
                          [](const std::vector<double>& v) { return *std::max_element(v.begin(), v.end()); });
 }
+
+// Each solver alone on both models (args: n, 1 = rest free, method 0 = branch and bound, 1 = LP):
+// where Auto's branch-and-bound share should end (issue 29's ratio at n = 32).
+void BM_ArpabetModelMethod(benchmark::State& state) {
+    const int n = static_cast<int>(state.range(0));
+    const bool restFree = state.range(1) != 0;
+    const Instance& inst = arpabetInstance(n);
+    vl::ReductionOptions options;
+    options.method =
+        state.range(2) == 0 ? vl::ReductionMethod::BranchAndBound : vl::ReductionMethod::ColumnGeneration;
+    options.timeLimitSeconds = 60;
+    const vl::RestPose rest{restFree, 0, inst.neutral};
+    bool proved = true;
+    for (auto _ : state) {
+        auto result = vl::reduceVisemes({inst.shapes, inst.frequencies, inst.weights, 10, {}, rest}, options);
+        proved = proved && result.best().optimal;
+        benchmark::DoNotOptimize(result);
+    }
+    state.SetLabel("arpabet n=" + std::to_string(n) + (restFree ? " rest free" : " keyed") + " by " +
+                   vl::toString(options.method) + (proved ? " proved" : " NOT proved"));
+}
+BENCHMARK(BM_ArpabetModelMethod)
+    ->ArgsProduct({{24, 28, 32, 36, 40}, {0, 1}, {0, 1}})
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime()
+    ->Iterations(1)
+    ->Repetitions(3);
 BENCHMARK_CAPTURE(BM_ReduceArpabetRest, keyed, false)->Apply(restModelCases);
 BENCHMARK_CAPTURE(BM_ReduceArpabetRest, rest_free, true)->Apply(restModelCases);
 

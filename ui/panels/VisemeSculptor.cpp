@@ -30,7 +30,7 @@ double symmetryPlane(const VisemeSet& set) {
 bool VisemeSculptor::active() const {
     const VisemeSet* set = session_.visemes();
     return settings.enabled && set && session_.selectedViseme >= 0 &&
-           session_.selectedViseme < static_cast<int>(set->size()) && !session_.document().avatar.isSet();
+           session_.selectedViseme < static_cast<int>(set->size());
 }
 
 SculptDab VisemeSculptor::dab(const Vec3& eye) const {
@@ -114,8 +114,9 @@ void VisemeSculptor::sculpt(const ViewportEvents& events) {
 }
 
 void VisemeSculptor::controls() {
+    // On an avatar the meshes without a target of the selected viseme stay put (edit::setVisemeShape),
+    // and a new viseme would need a new target: Blend is for viseme sets of meshes.
     const bool avatar = session_.document().avatar.isSet();
-    if (avatar) ImGui::BeginDisabled();
     // Two rows, so that the panel's narrowest width still shows every control.
     ctl::Checkbox("Sculpt", &settings.enabled);
     ImGui::SameLine();
@@ -126,11 +127,14 @@ void VisemeSculptor::controls() {
     ImGui::SameLine();
     ctl::Checkbox("X-mirror", &settings.symmetric);
     ImGui::SameLine();
+    if (avatar) ImGui::BeginDisabled();
     if (ctl::Button("Blend...")) openBlend_ = true;
+    if (avatar) ImGui::EndDisabled();
     if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
-        ImGui::SetTooltip(
-            "A new viseme mixed from others: the neutral plus each one's displacement times its "
-            "weight");
+        ImGui::SetTooltip(avatar ? "An avatar's visemes are its morph targets: sculpt one of them instead of "
+                                   "blending a new one"
+                                 : "A new viseme mixed from others: the neutral plus each one's displacement "
+                                   "times its weight");
     ImGui::SetNextItemWidth(140);
     float radius = static_cast<float>(settings.radius.value);
     if (ctl::SliderFloat("##sculpt-radius", &radius, 1.0f, 40.0f, "radius %.0f %%"))
@@ -139,11 +143,7 @@ void VisemeSculptor::controls() {
     ImGui::SameLine();
     ImGui::SetNextItemWidth(140);
     ctl::SliderFloat("##sculpt-strength", &settings.strength, 0.05f, 1.0f, "strength %.2f");
-    if (avatar) {
-        ImGui::EndDisabled();
-        ImGui::SameLine();
-        ImGui::TextDisabled("(an avatar's visemes are its targets)");
-    } else if (settings.enabled) {
+    if (settings.enabled) {
         ImGui::SameLine();
         ImGui::TextDisabled(session_.selectedViseme >= 0 ? "Alt+drag orbits" : "select a viseme to sculpt");
     }
