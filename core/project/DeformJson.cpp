@@ -8,6 +8,7 @@
 #include "core/project/FieldJson.h"
 #include "core/project/ProjectJson.h"
 
+#include <algorithm>
 #include <set>
 
 namespace vl {
@@ -195,6 +196,9 @@ MeshData domainFromJson(const JsonNode& node) {
 } // namespace
 
 int projectVersionFor(const Project& project) {
+    if (project.avatar.isSet() && std::any_of(project.visemes.begin(), project.visemes.end(),
+                                              [](const ProjectViseme& v) { return !v.positions.empty(); }))
+        return 5; // a sculpted avatar viseme
     if (!project.avatar.addedRest.empty()) return 4;
     if (reductionNeedsVersion3(project.reduction)) return 3;
     return project.deformation.domain.positions.empty() ? 1 : 2;

@@ -23,7 +23,7 @@ namespace vl {
 // /deformation/domain, version 3 the reduction's rest model (/reduction/rest, restViseme, resting
 // visemes), version 4 an avatar's added rest viseme (/avatar/addedRest): a project without them is
 // still written as the lowest version that holds it, so VisemeLabs that read it keep opening it.
-constexpr int kProjectVersion = 4;
+constexpr int kProjectVersion = 5;
 constexpr int kOldestProjectVersion = 0; // older versions load through a migration
 inline constexpr const char* kProjectFormat = "visemelab-project";
 

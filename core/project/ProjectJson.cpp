@@ -218,6 +218,9 @@ Project projectFromJson(const JsonNode& root, const ProjectReadContext& context)
     for (const JsonNode& v : visemes.elements()) {
         if (project.avatar.isSet()) {           // the avatar holds the meshes: a viseme is its name
             v.allowOnly({"name", "positions"}); // positions: sculpted (counts checked with the avatar)
+            if (v.has("positions") && context.version < 5)
+                v["positions"].fail("a sculpted avatar viseme needs project version 5 (this file says " +
+                                    std::to_string(context.version) + ")");
             project.visemes.push_back(
                 {v["name"].nonEmptyString(),
                  {},

@@ -17,6 +17,7 @@
 #include "tests/document/DocumentTestSupport.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -157,7 +158,20 @@ TEST(AvatarSculpt, AProjectKeepsTheSculptAndRefusesAShapeOfAnotherSize) {
     Project project = projectFromDocument(next);
     project.path = dir / "rpm.visemelab.json";
     saveProject(project.path, project);
+    const nlohmann::json saved = nlohmann::json::parse(readFileToString(project.path));
+    EXPECT_EQ(saved["version"], 5); // the lowest version that holds a sculpted avatar viseme
+    EXPECT_EQ(saved["visemes"][aa]["positions"].size(), next.visemes->vertexCount());
+    EXPECT_FALSE(saved["visemes"][0].contains("positions"));
     const Project loaded = loadProject(project.path);
+    nlohmann::json older = saved; // a version-4 file cannot hold a sculpt: refused, with its path
+    older["version"] = 4;
+    writeFileAtomically(dir / "older.visemelab.json", older.dump());
+    try {
+        loadProject(dir / "older.visemelab.json");
+        ADD_FAILURE() << "a version-4 file with a sculpted avatar viseme was accepted";
+    } catch (const InputError& error) {
+        EXPECT_NE(std::string(error.what()).find("/positions"), std::string::npos) << error.what();
+    }
     ASSERT_EQ(loaded.visemes[aa].positions.size(), next.visemes->vertexCount());
     const Document reopened = documentFromProject(loaded).document;
     EXPECT_EQ(reopened.visemes->visemes[aa].positions, next.visemes->visemes[aa].positions);

@@ -14,14 +14,14 @@ TEST(ProjectVersion, NewerVersionIsRefusedWithAClearMessage) {
     test::writeText(dir / "p.vlproj",
                     R"({"format": "visemelab-project", "version": 7, "whatever": {"new": true}})");
     EXPECT_INPUT_ERROR(loadProject(dir / "p.vlproj"),
-                       "/version: project version 7 is newer than this VisemeLab (supports up to 4)");
+                       "/version: project version 7 is newer than this VisemeLab (supports up to 5)");
 }
 
 TEST(ProjectVersion, UnknownVersionsAreRefused) {
     ScratchDir dir("unknown");
     test::writeText(dir / "p.vlproj", R"({"format": "visemelab-project", "version": -1})");
     EXPECT_INPUT_ERROR(loadProject(dir / "p.vlproj"),
-                       "/version: unknown project version -1 (this VisemeLab reads versions 0..4)");
+                       "/version: unknown project version -1 (this VisemeLab reads versions 0..5)");
     test::writeText(dir / "p.vlproj", R"({"format": "visemelab-project", "version": 1.5})");
     EXPECT_INPUT_ERROR(loadProject(dir / "p.vlproj"), "/version: expected an integer, found 1.5");
     test::writeText(dir / "p.vlproj", R"({"format": "visemelab-project", "version": "1"})");

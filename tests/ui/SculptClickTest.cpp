@@ -3,8 +3,12 @@
 // grabbed point), Ctrl+Z takes the stroke back whole, and the camera stays where it was.
 // Skips with a message when Xvfb or xdotool is not installed.
 #include "GuiDriver.h"
+#include "core/common/AtomicFile.h"
+#include "tests/gltf/AvatarFixtures.h"
 
 #include <gtest/gtest.h>
+
+#include <unistd.h>
 
 namespace vl::test {
 namespace {
@@ -42,6 +46,42 @@ TEST(SculptClicks, AGrabStrokeMovesTheVisemeAndUndoesAsOneStep) {
     EXPECT_NEAR(gui.document()["sculpt"]["shape_y_sum"].get<double>(), before, 1e-6);
     EXPECT_NE(gui.document()["undo"], "Sculpt aa (grab)");
     EXPECT_FALSE(hasError(gui)) << gui.document()["messages"].dump();
+}
+
+// The same stroke on an avatar's viseme (a Ready Player Me-like file: skinned head under a 0.01-scaled
+// armature): the avatar's target moves and undoes; the export writing it back is tested in core
+// (tests/document/AvatarSculptTest.cpp).
+TEST(SculptClicks, AGrabStrokeOnAnAvatarVisemeMovesItsTarget) {
+    REQUIRE_GUI_TOOLS();
+    const auto dir =
+        std::filesystem::temp_directory_path() / ("visemelab-sculpt-avatar-" + std::to_string(getpid()));
+    std::filesystem::create_directories(dir);
+    writeFileAtomically(dir / "rpm.glb", rpmLikeAvatar());
+    GuiDriver gui({"--avatar", (dir / "rpm.glb").string(), "--panel", "Visemes", "--viseme", "viseme_aa"});
+    gui.waitIdle();
+    const double before = gui.document()["sculpt"]["shape_y_sum"].get<double>();
+    gui.click(gui.control("Sculpt", "checkbox"));
+    gui.waitFrames();
+    ASSERT_TRUE(gui.document()["sculpt"]["enabled"].get<bool>());
+    const auto view = gui.control("main", "view");
+    const double x = view["x"].get<double>() + 0.5 * view["width"].get<double>();
+    const double y = view["y"].get<double>() + 0.55 * view["height"].get<double>();
+    gui.hover(x, y);
+    gui.waitFrames();
+    const double unitsPerPixel = gui.document()["sculpt"]["units_per_pixel"].get<double>();
+    ASSERT_GT(unitsPerPixel, 0.0);
+    gui.drag(x, y, x, y - 40, 10);
+    gui.waitIdle();
+    EXPECT_ALIVE(gui);
+    EXPECT_EQ(gui.document()["undo"], "Sculpt viseme_aa (grab)") << gui.document()["messages"].dump();
+    EXPECT_GT(gui.document()["sculpt"]["shape_y_sum"].get<double>() - before,
+              0.5 * 40.0 * unitsPerPixel * 0.9)
+        << gui.document()["sculpt"].dump();
+    gui.key("ctrl+z");
+    gui.waitIdle();
+    EXPECT_NEAR(gui.document()["sculpt"]["shape_y_sum"].get<double>(), before, 1e-9);
+    EXPECT_FALSE(hasError(gui)) << gui.document()["messages"].dump();
+    std::filesystem::remove_all(dir);
 }
 
 } // namespace
