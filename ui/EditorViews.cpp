@@ -415,7 +415,9 @@ ViewportEvents EditorViews::drawOwnFaceStep(ImVec2 size, const DrawStyle& style,
         },
         orbit);
     handles.handle(mainView_.camera, events);
-    label = "Your mesh " + session_.document().ownFace->name + ": drag a landmark's dot to move it";
+    // The panel may have closed the step this frame (Cancel, Build): the mesh is shown once more.
+    if (const auto& step = session_.document().ownFace)
+        label = "Your mesh " + step->name + ": drag a landmark's dot to move it";
     return events;
 }
 
