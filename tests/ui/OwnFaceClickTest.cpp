@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <string>
@@ -140,6 +141,34 @@ TEST(OwnFaceClicks, ALandmarkDotDraggedInTheViewMovesTheLandmarkAsOneStep) {
     EXPECT_DOUBLE_EQ(restored["u"].get<double>(), u0);
     EXPECT_DOUBLE_EQ(restored["v"].get<double>(), v0);
     EXPECT_EQ(gui.document()["undo"], before);
+}
+
+// A viseme set the face generated shows the head's teeth, tongue and cavity in the Visemes view as
+// the Deformation view does (it showed a hole for a mouth): posed with the selected viseme's
+// parameters ("aa" opens the jaw).
+TEST(OwnFaceClicks, AFaceVisemeSetShowsTheTeethInTheVisemeView) {
+    REQUIRE_GUI_TOOLS();
+    GuiDriver gui({"--panel", "Deformation"});
+    gui.waitIdle();
+    gui.click(gui.reveal("Generate viseme set from face", "button"));
+    gui.waitFrames(3);
+    if (gui.find("Discard changes", "button")) gui.click(gui.control("Discard changes", "button"));
+    gui.waitIdle();
+    ASSERT_EQ(gui.document()["undo"], "Generate visemes from face");
+    gui.click(gui.control("Visemes", "tab"));
+    gui.waitIdle();
+    gui.click(gui.reveal("aa", "selectable"));
+    gui.waitFrames(3);
+    const auto parts = gui.document()["viseme_view_parts"];
+    EXPECT_GT(parts["triangles"].get<int>(), 100) << parts.dump();
+    // The parts' weights are the face's parameters of "aa": its jaw is open.
+    const auto q = parts["q"];
+    ASSERT_FALSE(q.empty());
+    double largest = 0.0;
+    for (const auto& value : q) largest = std::max(largest, value.get<double>());
+    EXPECT_GT(largest, 0.2) << q.dump();
+    gui.screenshot("viseme-aa-teeth");
+    EXPECT_ALIVE(gui);
 }
 
 } // namespace
