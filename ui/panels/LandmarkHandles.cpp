@@ -6,8 +6,10 @@
 
 #include <glm/glm.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 namespace vl::ui {
 namespace {
@@ -79,6 +81,14 @@ void LandmarkHandles::handle(const OrbitCamera& camera, const ViewportEvents& ev
     ImDrawList* draw = ImGui::GetWindowDrawList();
     draw->PushClipRect(events.imageMin, events.imageMax, true);
     const float radius = scaled(5.0f);
+    // What a name must not cover (min x, min y, max x, max y): every dot, then the names drawn.
+    std::vector<ImVec4> labels;
+    for (const face::Landmark landmark : face::allLandmarks()) {
+        const face::FoundLandmark& found = step->landmarks()[landmark];
+        if (!found.found()) continue;
+        if (const auto at = onScreen(camera, events.imageMin, events.imageMax, found.position))
+            labels.emplace_back(at->x - radius, at->y - radius, at->x + radius, at->y + radius);
+    }
     for (const face::Landmark landmark : face::allLandmarks()) {
         const face::FoundLandmark& found = step->landmarks()[landmark];
         const bool dragged = drag_.landmark() == landmark;
@@ -94,7 +104,23 @@ void LandmarkHandles::handle(const OrbitCamera& camera, const ViewportEvents& ev
                                                         : IM_COL32(90, 220, 255, 255);
         draw->AddCircleFilled(*at, lit ? 1.5f * radius : radius, fill, 16);
         draw->AddCircle(*at, lit ? 1.5f * radius : radius, IM_COL32(20, 20, 24, 255), 16, 1.5f);
-        draw->AddText(ImVec2(at->x + 1.8f * radius, at->y - 0.9f * ImGui::GetFontSize()), fill, name.c_str());
+        // The name beside the dot, right or else left of it where no other name is; crowded dots
+        // (the lip points) show theirs under the cursor only.
+        const ImVec2 size = ImGui::CalcTextSize(name.c_str());
+        const float top = at->y - 0.9f * ImGui::GetFontSize();
+        for (const float x : {at->x + 1.8f * radius, at->x - 1.8f * radius - size.x}) {
+            const ImVec4 box(x - 2.0f, top - 1.0f, x + size.x + 2.0f, top + size.y + 1.0f);
+            const bool free = std::none_of(labels.begin(), labels.end(), [&](const ImVec4& other) {
+                return box.x < other.z && other.x < box.z && box.y < other.w && other.y < box.w;
+            });
+            if (!free && !lit) continue;
+            if (lit)
+                draw->AddRectFilled(ImVec2(box.x, box.y), ImVec2(box.z, box.w), IM_COL32(20, 20, 24, 200),
+                                    3.0f);
+            draw->AddText(ImVec2(x, top), fill, name.c_str());
+            labels.push_back(box);
+            break;
+        }
         probe::recordRect(name.c_str(), "landmark", ImVec2(at->x - radius, at->y - radius),
                           ImVec2(at->x + radius, at->y + radius));
         drawn_[name] = {at->x, at->y};
