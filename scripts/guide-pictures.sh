@@ -24,6 +24,11 @@ shot frequencies --frames 8 --screenshot-bits 6 --panel Frequencies --no-wirefra
 shot phoneme-map --frames 8 --screenshot-bits 6 --panel Frequencies --map-start mpeg4 --no-wireframe
 shot weights --screenshot-bits 6 --panel Weights --weights uniform --brush subtract --drag 760 380 1010 410 --frames 20 --no-wireframe
 shot deformation --frames 8 --panel Deformation --preset oh --field zygomatic_l --no-wireframe --screenshot-bits 5
+# Use my mesh: the landmarks as dots on the mesh (the MediaPipe canonical face from the shared data
+# when it is there, else the sample's neutral, whose landmarks the finder only partly sees).
+ownface=../shared/data/mediapipe-canonical-face/canonical_face_model.obj
+[ -f "$ownface" ] || ownface=assets/sample/neutral.obj
+shot own-face --frames 10 --panel Deformation --own-face "$ownface" --no-wireframe --screenshot-bits 6
 shot refinement --frames 8 --panel Refinement --refine contour --preset aa --screenshot-bits 4
 shot reduction --frames 8 --screenshot-bits 6 --panel Reduction --viseme E --no-wireframe
 shot reduction-overlay --frames 8 --screenshot-bits 6 --panel Reduction --viseme E --merged overlay --no-wireframe

@@ -134,6 +134,10 @@ void applyStartOptions(const EditorOptions& options, EditorSession& session, Edi
         needFace();
         session.setIndividual(face::parseIndividual(options.individual, "--individual"));
     });
+    step(!options.ownFace.empty(), [&] {
+        needFace();
+        session.openOwnFace(options.ownFace);
+    });
     step(!options.preset.empty(), [&] {
         needFace();
         session.applyVisemePreset(options.preset);

@@ -19,6 +19,7 @@ struct EditorOptions {
     std::string panel;           // panel to show (Visemes, Frequencies, Weights, ...)
     std::string viseme;          // viseme to select
     std::string individual;      // base geometry of the face: bundled or retarget
+    std::string ownFace;         // a mesh whose landmarks the own-face step shows (Use my mesh...)
     std::string preset;          // viseme preset applied to the deformable face
     std::string field;           // deformation field (stage name) to select
     double play = -1.0;          // >= 0: start the playback at this time (seconds)

@@ -178,6 +178,16 @@ void EditorViews::syncGpu() {
         weightsKey_.clear(), errorKey_.clear(), influenceKey_.clear();
     }
     syncContextMesh();
+    // The own-face step's mesh; the face camera frames it when it appears and the face when it goes.
+    const auto& step = session_.document().ownFace;
+    if (std::shared_ptr<const face::UvMesh> mesh = step ? step->mesh : nullptr; mesh != uploadedOwnFace_) {
+        uploadedOwnFace_ = std::move(mesh);
+        const bool shown = uploadedOwnFace_ && session_.attempt("Display your mesh", [&] {
+            ownFaceMesh_.setGeometry(uploadedOwnFace_->positions, uploadedOwnFace_->triangles, {});
+        });
+        if (!shown) ownFaceMesh_.setGeometry({}, {}, {});
+        frameFace_ = true;
+    }
     updateScalars();
 }
 
@@ -197,13 +207,19 @@ void EditorViews::frameNewMeshes() {
         if (!set || frameOn(visemeCamera_, set->neutral.positions)) frameVisemes_ = false;
     }
     if (frameFace_) {
-        if (!session_.face().cascade || frameOn(faceCamera_, session_.faceSamples().rest)) frameFace_ = false;
+        if (uploadedOwnFace_)
+            frameFace_ = !frameOn(faceCamera_, uploadedOwnFace_->positions);
+        else if (!session_.face().cascade || frameOn(faceCamera_, session_.faceSamples().rest))
+            frameFace_ = false;
     }
 }
 
 void EditorViews::frameAll() {
     if (subject_ == ViewSubject::Face) {
-        if (session_.face().cascade) frameOn(faceCamera_, session_.faceSamples().rest);
+        if (uploadedOwnFace_)
+            frameOn(faceCamera_, uploadedOwnFace_->positions);
+        else if (session_.face().cascade)
+            frameOn(faceCamera_, session_.faceSamples().rest);
     } else if (const VisemeSet* set = session_.visemes()) {
         frameOn(visemeCamera_, set->neutral.positions);
     }
@@ -243,6 +259,7 @@ void EditorViews::draw(Panel active, float left, float top, float width, float h
                                     : ViewSubject::Visemes;
     subject_ = subject;
     shownFace_ = {}; // the face view says what it draws
+    shownVisemeParts_ = {};
     shownLabels_.clear();
     ImGui::SetNextWindowPos(ImVec2(left, top));
     ImGui::SetNextWindowSize(ImVec2(width, height));
@@ -277,6 +294,28 @@ std::vector<float> EditorViews::visemeWeights(int viseme) const {
     return w;
 }
 
+std::vector<float> EditorViews::visemePartWeights(std::span<const float> weights) {
+    const std::vector<std::vector<double>>& parameters = session_.visemeFaceParameters();
+    const auto& cascade = session_.face().cascade;
+    if (parameters.empty() || !cascade || parameters.size() != weights.size()) return {};
+    const std::vector<double> rest = cascade->defaults();
+    std::vector<double> q = rest;
+    for (std::size_t i = 0; i < weights.size(); ++i)
+        if (weights[i] != 0.0f)
+            for (std::size_t k = 0; k < q.size() && k < parameters[i].size(); ++k)
+                q[k] += static_cast<double>(weights[i]) * (parameters[i][k] - rest[k]);
+    return std::vector<float>(q.begin(), q.end());
+}
+
+std::size_t EditorViews::drawHeadParts(std::span<const float> q, const glm::mat4& view,
+                                       const glm::mat4& projection, const DrawStyle& skinStyle) const {
+    if (partsMesh_.empty()) return 0;
+    DrawStyle partsStyle = skinStyle;
+    partsStyle.color = ColorMode::VertexColor;
+    partsMesh_.draw(shader_, q, view, projection, partsStyle);
+    return partsMesh_.triangleCount();
+}
+
 void EditorViews::drawMainView(ImVec2 size) {
     const DeformationPanel::Field selected = panels_.deformation.selectedField();
     DrawStyle style;
@@ -286,7 +325,9 @@ void EditorViews::drawMainView(ImVec2 size) {
     const bool orbit = !painting || ImGui::GetIO().KeyAlt;
     std::string label;
     ViewportEvents events;
-    if (subject_ == ViewSubject::Face) {
+    if (subject_ == ViewSubject::Face && active_ == Panel::Deformation && uploadedOwnFace_) {
+        events = drawOwnFaceStep(size, style, label);
+    } else if (subject_ == ViewSubject::Face) {
         std::vector<float> q;
         for (double v : session_.face().parameters) q.push_back(static_cast<float>(v));
         style.color = panels_.deformation.showInfluence() && selected.stage >= 0 ? ColorMode::Scalar
@@ -306,14 +347,10 @@ void EditorViews::drawMainView(ImVec2 size) {
         if (inset) mainView_.excludeFromDrags(place.min, place.max);
         // The skin (its influence colours when a field is selected) and the head's parts inside it,
         // in their own colours, at the same weights.
-        DrawStyle partsStyle = style;
-        partsStyle.color = ColorMode::VertexColor;
         shownFace_ = {active_, q, faceMesh_.triangleCount(), 0};
         events = mainView_.show("main", size, [&](const glm::mat4& view, const glm::mat4& projection) {
             faceMesh_.draw(shader_, q, view, projection, style);
-            if (faceMesh_.empty() || partsMesh_.empty()) return;
-            partsMesh_.draw(shader_, q, view, projection, partsStyle);
-            shownFace_.partTriangles = partsMesh_.triangleCount();
+            if (!faceMesh_.empty()) shownFace_.partTriangles = drawHeadParts(q, view, projection, style);
         });
         if (inset) panels_.deformation.inset(place);
         if (faceMesh_.empty())
@@ -332,10 +369,17 @@ void EditorViews::drawMainView(ImVec2 size) {
         style.color =
             active_ == Panel::Weights && panels_.weights.showColours() ? ColorMode::Scalar : surfaceColours();
         if (active_ == Panel::Weights) weights.assign(weights.size(), 0.0f); // paint on the neutral
+        // A set the face made shows the head's teeth, tongue and cavity in the mouth, as the face view
+        // does (not while painting weights, which apply to the skin alone).
+        std::vector<float> partsQ;
+        if (active_ != Panel::Weights) partsQ = visemePartWeights(weights);
+        shownVisemeParts_ = {0, partsQ};
         events = mainView_.show(
             "main", size,
             [&](const glm::mat4& view, const glm::mat4& projection) {
                 visemeMesh_.draw(shader_, weights, view, projection, style);
+                if (!partsQ.empty() && !visemeMesh_.empty())
+                    shownVisemeParts_.triangles = drawHeadParts(partsQ, view, projection, style);
                 drawContext(view, projection);
             },
             orbit);
@@ -359,6 +403,22 @@ void EditorViews::drawMainView(ImVec2 size) {
         if (active_ == Panel::Visemes && !speech_.shown()) panels_.visemes.sculptor().sculpt(events);
     }
     if (!label.empty()) viewLabel(events, label);
+}
+
+ViewportEvents EditorViews::drawOwnFaceStep(ImVec2 size, const DrawStyle& style, std::string& label) {
+    LandmarkHandles& handles = panels_.deformation.landmarkHandles();
+    const bool orbit = !handles.wantsMouse(mainView_.camera, ImGui::GetCursorScreenPos(), size);
+    const ViewportEvents events = mainView_.show(
+        "main", size,
+        [&](const glm::mat4& view, const glm::mat4& projection) {
+            ownFaceMesh_.draw(shader_, {}, view, projection, style);
+        },
+        orbit);
+    handles.handle(mainView_.camera, events);
+    // The panel may have closed the step this frame (Cancel, Build): the mesh is shown once more.
+    if (const auto& step = session_.document().ownFace)
+        label = "Your mesh " + step->name + ": drag a landmark's dot to move it";
+    return events;
 }
 
 void EditorViews::comparisonViews(ImVec2 size) {
@@ -580,6 +640,7 @@ std::string EditorViews::statistics() const {
 
 void EditorViews::addProbe(nlohmann::json& summary) const {
     summary["face_view"] = faceViewProbe();
+    summary["viseme_view_parts"] = {{"triangles", shownVisemeParts_.triangles}, {"q", shownVisemeParts_.q}};
     summary["wireframe"] = wireframe;
     summary["view_labels"] = shownLabels_;
     // The shown camera and the matrices the views draw with (the tests compare them with

@@ -18,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -63,6 +64,8 @@ class EditorViews {
 
   private:
     void drawMainView(ImVec2 size);
+    // The own-face step: the user's mesh with its landmarks as draggable dots.
+    ViewportEvents drawOwnFaceStep(ImVec2 size, const DrawStyle& style, std::string& label);
     void comparisonViews(ImVec2 size);
     void frameNewMeshes();
     void syncGpu();
@@ -70,6 +73,13 @@ class EditorViews {
     void updateScalars();
     void drawContext(const glm::mat4& view, const glm::mat4& projection) const;
     std::vector<float> visemeWeights(int viseme) const;
+    // The face parameters that pose the head's parts for viseme weights of a set the face made
+    // (q0 + sum_i w_i (q_i - q0), q0 the neutral's); empty when the set is not the face's.
+    std::vector<float> visemePartWeights(std::span<const float> weights);
+    // The head's parts (eyeballs, teeth, tongue, mouth cavity) inside the skin at face parameters q,
+    // in their own colours: the face view and the viseme view draw them alike. Returns the triangles.
+    std::size_t drawHeadParts(std::span<const float> q, const glm::mat4& view, const glm::mat4& projection,
+                              const DrawStyle& skinStyle) const;
     ColorMode surfaceColours() const; // face colours for visemes generated from the face model
     nlohmann::json faceViewProbe() const;
     void viewLabel(const ViewportEvents& view, const std::string& text); // its title, kept for the probe
@@ -89,6 +99,7 @@ class EditorViews {
     GpuMesh faceMesh_;    // face cascade at q = 0 + one target per parameter
     GpuMesh partsMesh_;   // the head's parts (eyeballs, teeth, tongue, cavity) in the same form
     GpuMesh contextMesh_; // an avatar's meshes without visemes, drawn greyed
+    GpuMesh ownFaceMesh_; // the user's mesh while its landmarks are placed (Use my mesh...)
     Viewport mainView_, beforeView_, afterView_;
     std::uint64_t uploadedGeometry_ = 0;
     // Caches hold what they show (shared, immutable) or its revision, never a bare address that a
@@ -97,6 +108,7 @@ class EditorViews {
     std::shared_ptr<const MeshData> uploadedDomain_;
     std::shared_ptr<const HeadPartSamples> uploadedParts_; // what partsMesh_ holds
     std::shared_ptr<const AvatarScan> uploadedContext_;    // the scan contextMesh_ shows
+    std::shared_ptr<const face::UvMesh> uploadedOwnFace_;  // the mesh ownFaceMesh_ shows
     std::uint64_t uploadedMergedCurve_ = 0;                // ReductionService::curveRevision()
     int uploadedMergedGroups_ = 0;
     // What each mesh's scalars currently show, to re-upload only on change.
@@ -109,6 +121,11 @@ class EditorViews {
         std::vector<float> weights;
         std::size_t skinTriangles = 0, partTriangles = 0;
     } shownFace_;
+    // The parts the viseme view drew in its last frame (triangles; their face parameters).
+    struct ShownVisemeParts {
+        std::size_t triangles = 0;
+        std::vector<float> q;
+    } shownVisemeParts_;
     std::vector<std::string> shownLabels_; // the views' titles this frame
     // The camera of each subject, kept across tabs; framed when its mesh first appears.
     OrbitCamera visemeCamera_, faceCamera_;

@@ -41,6 +41,8 @@ int main(int argc, char** argv) {
     app.add_flag("--orthographic", options.orthographic,
                  "Orthographic projection at start (numpad 5 toggles it)");
     app.add_option("--individual", options.individual, "Base geometry of the face: bundled or retarget");
+    app.add_option("--own-face", options.ownFace,
+                   "Open Deformation > Use my mesh... on this mesh: its landmarks to confirm");
     app.add_option("--field", options.field, "Deformation field (stage name) to select");
     app.add_option("--play", options.play, "Start the playback at this time in seconds");
     app.add_option("--sequence", options.sequence, "Playback sequence: phonemes or viseme names");

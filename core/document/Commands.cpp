@@ -391,8 +391,31 @@ Document useOwnFace(const Document& document, const OwnFaceCandidate& candidate,
     const double ratio = built.report.scale / std::max(previousScale, 1e-12);
     next.refinement.contour.averageError *= ratio;
     next.refinement.contour.maximumError *= ratio;
+    next.ownFace.reset();
     if (report) *report = std::move(built.report);
     return checked(std::move(next));
+}
+
+Document beginOwnFace(const Document& document, OwnFaceCandidate candidate) {
+    if (!candidate.mesh) throwInputError("own face", "no mesh loaded");
+    Document next = document;
+    next.ownFace = std::make_shared<const OwnFaceCandidate>(std::move(candidate));
+    return next;
+}
+
+Document placeOwnFaceLandmark(const Document& document, face::Landmark landmark, const Vec2& uv) {
+    if (!document.ownFace)
+        throwInputError(std::string(face::landmarkName(landmark)),
+                        "no own-face step is open (Use my mesh...)");
+    Document next = document;
+    next.ownFace = std::make_shared<const OwnFaceCandidate>(placeLandmark(*document.ownFace, landmark, uv));
+    return next;
+}
+
+Document cancelOwnFace(const Document& document) {
+    Document next = document;
+    next.ownFace.reset();
+    return next;
 }
 
 } // namespace vl::edit

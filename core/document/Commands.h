@@ -86,7 +86,14 @@ Document addAvatarRestViseme(const Document& document, const FrequencySource& oc
 // display mesh kept; the contour criterion's thresholds scale with the face's size (a face in metres
 // gets thresholds in metres). Throws InputError naming the file and the missing landmarks, or what
 // the build refuses. `report`, when given, receives what the build found (islands, holes, scale).
+// The result closes the own-face step (Document::ownFace).
 Document useOwnFace(const Document& document, const OwnFaceCandidate& candidate,
                     face::FaceBuildReport* report = nullptr);
+// The own-face step: opened on a candidate (its mesh read, its landmarks suggested), one landmark
+// placed at a (u,v) of the mesh's texture space (placeLandmark: InputError when it lies on no
+// triangle, or when no step is open), closed without building.
+Document beginOwnFace(const Document& document, OwnFaceCandidate candidate);
+Document placeOwnFaceLandmark(const Document& document, face::Landmark landmark, const Vec2& uv);
+Document cancelOwnFace(const Document& document);
 
 } // namespace vl::edit

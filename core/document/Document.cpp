@@ -79,7 +79,9 @@ DocumentParts changedParts(const Document& before, const Document& after) {
         before.restViseme != after.restViseme)
         parts |= kReductionPart;
     if (before.target != after.target) parts |= kTargetPart;
-    if (before.refinement != after.refinement || before.speech != after.speech) parts |= kOtherPart;
+    if (before.refinement != after.refinement || before.speech != after.speech ||
+        before.ownFace != after.ownFace)
+        parts |= kOtherPart;
     // A field the tags above do not know yet (added later): everything may have changed.
     if (parts == 0 && !(before == after)) parts = kAllDocumentParts;
     return parts;

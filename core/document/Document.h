@@ -13,6 +13,7 @@
 #include "core/deform/DeformationCascade.h"
 #include "core/deform/Visemes.h"
 #include "core/document/DocumentAvatar.h"
+#include "core/document/OwnFace.h"
 #include "core/project/Project.h"
 #include "core/reduce/Frequencies.h"
 #include "core/reduce/Reduction.h"
@@ -76,6 +77,11 @@ struct Document {
     // Set when the viseme set was read from an avatar (core/document/AvatarDocument.h): the set is
     // the avatar's visemes over the concatenated world-space geometry of the meshes carrying them.
     DocumentAvatar avatar;
+    // The own-face step under way (Deformation > Use my mesh...): the user's mesh and its landmarks
+    // awaiting confirmation, edited by undoable commands (edit::placeOwnFaceLandmark) so that the
+    // numeric fields and the dots in the 3D view read the same landmarks; null when no step is open.
+    // Not saved: a project records the face built from it.
+    std::shared_ptr<const OwnFaceCandidate> ownFace;
 
     std::size_t visemeCount() const { return visemes ? visemes->size() : 0; }
     bool operator==(const Document&) const = default;
@@ -99,7 +105,7 @@ enum DocumentPart : unsigned {
     kFacePart = 1u << 4,          // the rest of the face: cascade, individual, (u,v) mesh, presets
     kReductionPart = 1u << 5,     // constraints, rest model and rest viseme (the curve's settings)
     kTargetPart = 1u << 6,        // m: which grouping of the curve, not the curve
-    kOtherPart = 1u << 7,         // refinement thresholds, speech settings
+    kOtherPart = 1u << 7,         // refinement thresholds, speech settings, the own-face step
     kAllDocumentParts = (1u << 8) - 1,
 };
 using DocumentParts = unsigned;

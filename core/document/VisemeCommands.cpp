@@ -270,6 +270,19 @@ bool visemeSetMadeByFace(const Document& document) {
     return true;
 }
 
+std::vector<std::vector<double>> visemeFaceParameters(const Document& document) {
+    if (!visemeSetMadeByFace(document)) return {};
+    const DeformationCascade& cascade = *document.face.cascade;
+    const std::vector<VisemeParameters> presets = facePresets(document.face);
+    std::vector<std::vector<double>> out;
+    for (const Viseme& viseme : document.visemes->visemes) {
+        const auto preset = std::find_if(presets.begin(), presets.end(),
+                                         [&](const VisemeParameters& p) { return p.name == viseme.name; });
+        out.push_back(preset == presets.end() ? cascade.defaults() : parameterVector(cascade, *preset));
+    }
+    return out;
+}
+
 VisemeParameters presetOfSliders(const FaceModel& face, const std::string& name) {
     VisemeParameters preset{name, {}};
     const auto& parameters = face.cascade->parameters;

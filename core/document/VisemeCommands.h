@@ -44,6 +44,10 @@ std::vector<VisemeParameters> facePresets(const FaceModel& face);
 // True when the viseme set is the face's own: its neutral has (u,v) and is the face at its default
 // parameters there, so a viseme of the face can be generated on the set's mesh.
 bool visemeSetMadeByFace(const Document& document);
+// For a set the face made: the face's parameter vector of each viseme in set order (its preset's, the
+// defaults for one without a preset: sculpted or blended), so that the head's parts (teeth, tongue,
+// cavity) can be posed with it; empty when the set is not the face's.
+std::vector<std::vector<double>> visemeFaceParameters(const Document& document);
 // The face's current slider values as a preset named `name` (values equal to the default omitted).
 VisemeParameters presetOfSliders(const FaceModel& face, const std::string& name);
 

@@ -2,6 +2,9 @@
 
 #include "core/common/Error.h"
 #include "core/deform/BundledFace.h"
+#include "core/deform/FaceDomain.h"
+#include "core/deform/FaceShape.h" // the eye opening's lens, shared with the bundled face
+#include "core/face/HeadParts.h"
 #include "core/face/MeshGeometry.h"
 
 #include <tbb/blocked_range.h>
@@ -217,6 +220,86 @@ DeformationCascade retargetedCascade(const SampledField& base, const FaceFrame& 
     return cascade;
 }
 
+namespace {
+
+// The eyes open as the bundled face's do: a mesh with closed eyes (or a slit between the lids) would
+// show none of the eyeballs (issue 32). Inside each eye's opening, the bundled face's lens between the
+// corners in the domain (the alignment puts the user's corners there), the skin turns back behind
+// the carried eyeball (where makeHeadParts puts it) into the socket, as the bundled face's does
+// (core/deform/FaceGeometry.cpp): first to the eyeball's front (ramped in from the lid margin), then
+// deeper towards the axis by the bundled socket's profile, scaled to the face. Where the alignment
+// maps the lens onto less height than the bundled face's proportion of the eye's width (a face whose
+// (u,v) crowd the eyes), the lens is taller in the domain so that the opening keeps that proportion.
+double lensHeight(const std::vector<Vec3>& samples, int n, double u, const Vec3& up) {
+    const auto at = [&](double v) { // bilinear in the geometry image
+        const double x = u * (n - 1), y = std::clamp(v, 0.0, 1.0) * (n - 1);
+        const int i = std::min(static_cast<int>(x), n - 2), j = std::min(static_cast<int>(y), n - 2);
+        const double fx = x - i, fy = y - j;
+        const auto s = [&](int a, int b) { return samples[static_cast<std::size_t>(b) * n + a]; };
+        return (s(i, j) * (1 - fx) + s(i + 1, j) * fx) * (1 - fy) +
+               (s(i, j + 1) * (1 - fx) + s(i + 1, j + 1) * fx) * fy;
+    };
+    const detail::EyeLens lens = detail::eyeLens(u, detail::kEyeCentreV);
+    return (at(detail::kEyeCentreV + lens.upper) - at(detail::kEyeCentreV - lens.lower)) | up;
+}
+
+// The bundled face's lens height over its eye's width (computed once from its geometry).
+double bundledLensProportion() {
+    static const double proportion = [] {
+        const DeformationCascade bundled = makeBundledFace();
+        const SampledField* base = nullptr;
+        for (const auto& stage : bundled.stages)
+            if (stage.kind == StageKind::Constant) base = &stage.field.sampled;
+        const auto landmarks = baseLandmarkPositions(bundled);
+        const double width = (landmarks[static_cast<std::size_t>(Landmark::EyeOuterLeft)] -
+                              landmarks[static_cast<std::size_t>(Landmark::EyeInnerLeft)])
+                                 .norm();
+        return lensHeight(base->samples, base->width, kMouthU + detail::kEyeCentreU, bundledFaceFrame().up) /
+               width;
+    }();
+    return proportion;
+}
+
+void openEyes(std::vector<Vec3>& samples, int n, const std::array<Vec3, kLandmarkCount>& positions,
+              const FaceFrame& frame, double scale) {
+    const double radius = kEyeballRadius * scale;
+    for (const bool left : {false, true}) {
+        const Vec3 centre = carriedEyeballCentre(positions, left);
+        const double width =
+            (positions[static_cast<std::size_t>(left ? Landmark::EyeOuterLeft : Landmark::EyeOuterRight)] -
+             positions[static_cast<std::size_t>(left ? Landmark::EyeInnerLeft : Landmark::EyeInnerRight)])
+                .norm();
+        const double height =
+            lensHeight(samples, n, kMouthU + (left ? 1.0 : -1.0) * detail::kEyeCentreU, frame.up);
+        // How much taller the lens is made: never shorter, at most three times (a face whose lens
+        // maps onto nothing keeps a plausible eye rather than a tall hole).
+        const double stretch =
+            height > 0.0 ? std::clamp(bundledLensProportion() * width / height, 1.0, 3.0) : 3.0;
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i) {
+                const double u = double(i) / (n - 1), v = double(j) / (n - 1);
+                if ((u > kMouthU) != left) continue;
+                detail::EyeLens lens = detail::eyeLens(u, v);
+                lens.offset /= stretch;
+                const double inside = lens.inside();
+                if (inside <= 0.0) continue;
+                Vec3& p = samples[static_cast<std::size_t>(j) * n + i];
+                const Vec3 d = p - centre;
+                const double depth = d | frame.forward;
+                const double lateral = (d - frame.forward * depth).sqrnorm();
+                const double front = std::sqrt(std::max(0.0, radius * radius - lateral));
+                const double along = std::clamp(lens.along, -1.0, 1.0), shape = 1.0 - along * along;
+                const double socket =
+                    scale * std::sqrt(shape) * std::sqrt(1.0 - (1.0 - inside) * (1.0 - inside));
+                // In from the lid margins, and from the corners, where the opening closes.
+                const double ramp = std::min(1.0, inside / 0.05) * std::min(1.0, shape / 0.2);
+                p -= frame.forward * (ramp * std::max(0.0, depth - front) + socket);
+            }
+    }
+}
+
+} // namespace
+
 BuiltFace buildFace(const UvMesh& mesh, const FaceLandmarks& landmarks, const FaceBuildOptions& options) {
     if (options.gridSize < 17 || options.gridSize > 2049)
         throwInputError("face build",
@@ -303,6 +386,8 @@ BuiltFace buildFace(const UvMesh& mesh, const FaceLandmarks& landmarks, const Fa
                 samples[s] -= report.frame.forward * (depth * std::sin(0.5 * M_PI * t));
             }
     }
+
+    openEyes(samples, n, positions, report.frame, report.scale);
 
     const double inverseStep = std::pow(10.0, std::round(4.0 - std::log10(std::max(report.scale, 1e-12))));
     SampledField base;

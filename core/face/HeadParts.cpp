@@ -332,14 +332,17 @@ PartBuilder cavity(const DeformationCascade& cascade, const FaceFrame& frame, do
     return b;
 }
 
+// A direction of the bundled face in `face`'s frame.
+Vec3 carried(const Vec3& d, const FaceFrame& bundled, const FaceFrame& face) {
+    return face.rotate(Vec3(OpenMesh::dot(d, bundled.right), OpenMesh::dot(d, bundled.up),
+                            OpenMesh::dot(d, bundled.forward)));
+}
+
 // Carries a bundled-template part to a face: p -> target + R * scale * (p - source), R taking the
 // bundled frame's axes to the face's; own displacements rotate and scale the same way.
 void place(HeadPart& part, const Vec3& source, const Vec3& target, const FaceFrame& bundled,
            const FaceFrame& face, double scale) {
-    const auto rotate = [&](const Vec3& d) {
-        return face.rotate(Vec3(OpenMesh::dot(d, bundled.right), OpenMesh::dot(d, bundled.up),
-                                OpenMesh::dot(d, bundled.forward)));
-    };
+    const auto rotate = [&](const Vec3& d) { return carried(d, bundled, face); };
     for (auto& p : part.rest.positions) p = target + rotate(p - source) * scale;
     for (auto& o : part.own)
         for (auto& d : o.displacement) d = rotate(d) * scale;
@@ -349,14 +352,35 @@ void place(HeadPart& part, const Vec3& source, const Vec3& target, const FaceFra
         for (auto& t : part.rest.triangles) std::swap(t[1], t[2]);
 }
 
+// The middle between an eye's corners.
+Vec3 eyeMiddle(const std::array<Vec3, kLandmarkCount>& p, bool left) {
+    const Landmark inner = left ? Landmark::EyeInnerLeft : Landmark::EyeInnerRight;
+    const Landmark outer = left ? Landmark::EyeOuterLeft : Landmark::EyeOuterRight;
+    return (p[static_cast<std::size_t>(inner)] + p[static_cast<std::size_t>(outer)]) * 0.5;
+}
+
+const std::array<Vec3, kLandmarkCount>& bundledLandmarkPositions() {
+    static const auto positions = baseLandmarkPositions(makeBundledFace());
+    return positions;
+}
+
 } // namespace
+
+Vec3 carriedEyeballCentre(const std::array<Vec3, kLandmarkCount>& landmarks, bool left) {
+    const FaceFrame& bundled = bundledFaceFrame();
+    const FaceFrame face = frameFromLandmarks(landmarks);
+    const Vec3 source = eyeMiddle(bundledLandmarkPositions(), left);
+    return eyeMiddle(landmarks, left) +
+           carried(eyeballCentre(Individual::Bundled, left ? 1.0 : -1.0) - source, bundled, face) *
+               face.scaleTo(bundled);
+}
 
 std::vector<HeadPart> makeHeadParts(const DeformationCascade& cascade) {
     const FaceFrame& bundled = bundledFaceFrame();
     const FaceFrame face = faceFrameOf(cascade);
     const double scale = face.scaleTo(bundled);
     static const BundledMouth mouth = bundledMouth();
-    static const auto bundledLandmarks = baseLandmarkPositions(makeBundledFace());
+    const auto& bundledLandmarks = bundledLandmarkPositions();
     const auto landmarks = baseLandmarkPositions(cascade);
     const auto at = [](const std::array<Vec3, kLandmarkCount>& p, Landmark l) {
         return p[static_cast<std::size_t>(l)];
@@ -368,12 +392,9 @@ std::vector<HeadPart> makeHeadParts(const DeformationCascade& cascade) {
     };
     const int jaw = cascade.findParameter("jaw_open");
     std::vector<HeadPart> parts;
-    for (const bool left : {false, true}) {
-        const Landmark inner = left ? Landmark::EyeInnerLeft : Landmark::EyeInnerRight;
-        const Landmark outer = left ? Landmark::EyeOuterLeft : Landmark::EyeOuterRight;
+    for (const bool left : {false, true}) { // carriedEyeballCentre() is where this puts the centre
         HeadPart eye = eyeball(left, eyeballCentre(Individual::Bundled, left ? 1.0 : -1.0)).part;
-        place(eye, (at(bundledLandmarks, inner) + at(bundledLandmarks, outer)) * 0.5,
-              (at(landmarks, inner) + at(landmarks, outer)) * 0.5, bundled, face, scale);
+        place(eye, eyeMiddle(bundledLandmarks, left), eyeMiddle(landmarks, left), bundled, face, scale);
         parts.push_back(std::move(eye));
     }
     for (const bool upper : {true, false}) {

@@ -14,8 +14,10 @@
 // domain (face::HeadTile), so preview colours and exports tell the parts apart.
 #include "core/deform/DeformationCascade.h"
 #include "core/deform/Visemes.h"
+#include "core/face/Landmarks.h"
 #include "core/reduce/VisemeSet.h"
 
+#include <array>
 #include <span>
 #include <string>
 #include <vector>
@@ -61,6 +63,10 @@ class HeadPartsSampler {
     std::vector<Vec3> rest_;
     std::vector<std::vector<Vec3>> displacement_; // per parameter, per vertex (empty when unused)
 };
+
+// Where makeHeadParts puts the eyeball of a face whose base geometry has these landmark positions
+// (baseLandmarkPositions): the bundled eyeball carried to the eye (`left`: the face's left eye).
+Vec3 carriedEyeballCentre(const std::array<Vec3, kLandmarkCount>& landmarks, bool left);
 
 // The parts as one mesh (vertices of each part in order, triangles re-indexed) at rest.
 MeshData partsMesh(std::span<const HeadPart> parts);

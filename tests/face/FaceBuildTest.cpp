@@ -3,10 +3,13 @@
 // geometry is known everywhere (so the sampled base geometry can be checked point by point).
 #include "core/face/FaceBuild.h"
 #include "core/common/Error.h"
+#include "core/deform/FaceShape.h"
 #include "core/face/FaceAlignment.h"
 #include "core/face/FaceFrame.h"
 #include "core/face/ThinPlateSpline.h"
 #include "core/face/UvMesh.h"
+
+#include "tests/face/SharedFaces.h"
 
 #include <gtest/gtest.h>
 
@@ -15,6 +18,8 @@
 
 namespace vl::face {
 namespace {
+
+using test::canonicalLandmarks;
 
 // A smooth face-sized surface over texture space: x to the face's left, y up, z out of the face
 // (symmetric in x, so the landmark frame's right axis is exactly +x).
@@ -43,18 +48,6 @@ template <class Keep> MeshData analyticGrid(double lo, double hi, int cells, Kee
             mesh.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
         }
     return mesh;
-}
-
-// Every landmark at its canonical position in texture space: the alignment is then the identity
-// (apart from the mouth squeeze and retraction it applies in the domain).
-FaceLandmarks canonicalLandmarks(const UvMesh& mesh) {
-    FaceLandmarks landmarks;
-    for (const auto l : allLandmarks()) {
-        LandmarkInput input;
-        input.uv = canonicalPosition(l);
-        landmarks[l] = resolveLandmark(mesh, input, LandmarkSource::File, 1.0, "test", landmarkName(l));
-    }
-    return landmarks;
 }
 
 // Brute force: the first triangle of the islands whose (u,v) triangle holds p.
@@ -159,6 +152,8 @@ TEST(FaceBuild, SamplingAnAnalyticSurfaceReproducesIt) {
     const int n = options.gridSize;
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {
+            // The eye openings are opened into sockets behind the eyeballs (EyeOpeningTest.cpp).
+            if (detail::eyeLens(double(i) / (n - 1), double(j) / (n - 1)).inside() > -0.5) continue;
             const Vec2 c = alignment.canonical(Vec2(double(i) / (n - 1), double(j) / (n - 1)));
             const Vec3 expected = analyticSurface(c);
             worst = std::max(worst, (base->samples[static_cast<std::size_t>(j) * n + i] - expected).norm());
@@ -167,11 +162,16 @@ TEST(FaceBuild, SamplingAnAnalyticSurfaceReproducesIt) {
     // rounding of the stored samples: far below a millimetre on a 12-unit face.
     EXPECT_LT(worst, 2e-3);
 
-    // The landmarks sit on the base geometry where the domain puts them.
+    // The landmarks sit on the base geometry where the domain puts them. The eye corners are the tips
+    // of the openings: interpolated with samples opened into the sockets one grid step away, they
+    // may move back by up to a twentieth of the eye's width (1.6 units here).
     const auto onBase = baseLandmarkPositions(built.cascade);
     for (const auto l : allLandmarks()) {
         if (!isRequired(l)) continue;
-        EXPECT_LT((onBase[static_cast<std::size_t>(l)] - landmarks[l].position).norm(), 0.05)
+        const bool eyeCorner = l == Landmark::EyeOuterLeft || l == Landmark::EyeOuterRight ||
+                               l == Landmark::EyeInnerLeft || l == Landmark::EyeInnerRight;
+        EXPECT_LT((onBase[static_cast<std::size_t>(l)] - landmarks[l].position).norm(),
+                  eyeCorner ? 0.08 : 0.05)
             << landmarkName(l);
     }
 }

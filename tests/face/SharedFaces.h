@@ -1,6 +1,7 @@
 #pragma once
 // The real faces in VISEMELAB_SHARED_DATA_DIR the face tests use (never copied into the repository),
 // how to skip loudly without them, and how to read one as a UvMesh.
+#include "core/face/Landmarks.h"
 #include "core/face/UvMesh.h"
 #include "core/io/MeshIO.h"
 
@@ -19,6 +20,19 @@ inline UvMesh loadUvMesh(const std::filesystem::path& path) {
     CornerTexCoords corners;
     const MeshData mesh = readMesh(path, corners);
     return makeUvMesh(mesh, corners, path.string());
+}
+
+// Every landmark at its canonical position in texture space: for meshes whose (u,v) are the face
+// domain's (the bundled sample's skin, analytic test surfaces), where the alignment is the identity
+// (apart from the mouth squeeze and retraction it applies in the domain).
+inline FaceLandmarks canonicalLandmarks(const UvMesh& mesh) {
+    FaceLandmarks landmarks;
+    for (const auto l : allLandmarks()) {
+        LandmarkInput input;
+        input.uv = canonicalPosition(l);
+        landmarks[l] = resolveLandmark(mesh, input, LandmarkSource::File, 1.0, "test", landmarkName(l));
+    }
+    return landmarks;
 }
 
 } // namespace vl::face::test

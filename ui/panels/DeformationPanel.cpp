@@ -264,6 +264,7 @@ bool DeformationPanel::selectField(const std::string& stageName) {
 
 void DeformationPanel::addProbe(nlohmann::json& summary) const {
     summary["own_face_step"] = ownFace_.probe();
+    summary["landmark_handles"] = handles_.probe();
     summary["uv_inset_offset"] = {insetOffset_.x, insetOffset_.y};
 }
 

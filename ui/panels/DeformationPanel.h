@@ -2,6 +2,7 @@
 // Deformation panel: the face's base geometry (bundled, retargeted, the user's mesh), its parameter
 // sliders and presets, and editing of the analytic influence regions, drawn on the face and in the
 // (u,v) inset over the view.
+#include "ui/panels/LandmarkHandles.h"
 #include "ui/panels/OwnFaceStep.h"
 #include "ui/panels/PanelContext.h"
 #include "ui/panels/StoreSlidersSection.h"
@@ -20,7 +21,8 @@ namespace vl::ui {
 class DeformationPanel : public SidePanel {
   public:
     explicit DeformationPanel(const PanelContext& context)
-        : session_(context.session), files_(context.files), ownFace_(context), storeSliders_(context) {}
+        : session_(context.session), files_(context.files), ownFace_(context), handles_(context.session),
+          storeSliders_(context) {}
     void draw() override;
     void addProbe(nlohmann::json& summary) const override;
     void documentReplaced() override { selected_ = {}; }
@@ -44,6 +46,9 @@ class DeformationPanel : public SidePanel {
     };
     InsetPlace insetPlace(ImVec2 viewMin, ImVec2 viewMax) const;
     void inset(const InsetPlace& place); // of the selected field
+    // The own-face step (Use my mesh...) is open: the view shows the user's mesh and its landmarks.
+    bool ownFaceStepOpen() const { return ownFace_.active(); }
+    LandmarkHandles& landmarkHandles() { return handles_; }
 
   private:
     void uvView(float side);
@@ -51,6 +56,7 @@ class DeformationPanel : public SidePanel {
     EditorSession& session_;
     FileActions& files_;
     OwnFaceStep ownFace_;
+    LandmarkHandles handles_; // the step's landmarks as dots in the view
     StoreSlidersSection storeSliders_;
     std::shared_ptr<const DeformationCascade> ownFaceCascade_; // the cascade ownFaceLoaded_ was found for
     bool ownFaceLoaded_ = false;                               // the face is built from a user's mesh

@@ -1,11 +1,13 @@
 // Deformation > Use my mesh...: the user's mesh is read and its landmarks suggested; this step shows
 // each landmark with where it came from and how sure the finder is, lets the user move any of them
-// in the mesh's (u,v), and builds the face only when they confirm (one undoable command,
-// edit::useOwnFace). Until then the document is untouched.
+// in the mesh's (u,v) (here or by dragging its dot in the 3D view), and builds the face only when they
+// confirm (edit::useOwnFace). Opening, each move and the build are undo steps; the face changes only
+// on the build.
 #include "ui/panels/OwnFaceStep.h"
 
 #include "ui/FileActions.h"
 #include "ui/panels/PanelWidgets.h"
+#include "ui/session/EditorSession.h"
 #include "ui/widgets/Controls.h"
 
 #include <imgui.h>
@@ -16,22 +18,30 @@
 namespace vl::ui {
 
 void OwnFaceStep::open() {
-    files_.dialog().open(
-        "Use my mesh (with (u,v) on the face)", FileDialog::Mode::OpenFile,
-        {".obj", ".ply", ".wrl", ".vrml", ".glb", ".gltf"}, [this](const std::filesystem::path& path) {
-            session_.attempt("Use my mesh", [&] { candidate_ = loadOwnFaceCandidate(path); });
-        });
+    files_.dialog().open("Use my mesh (with (u,v) on the face)", FileDialog::Mode::OpenFile,
+                         {".obj", ".ply", ".wrl", ".vrml", ".glb", ".gltf"},
+                         [this](const std::filesystem::path& path) {
+                             session_.attempt("Use my mesh", [&] { session_.openOwnFace(path); });
+                         });
+}
+
+bool OwnFaceStep::active() const {
+    return session_.document().ownFace != nullptr;
 }
 
 void OwnFaceStep::draw() {
-    OwnFaceCandidate& candidate = *candidate_;
+    // Held for the frame: a move below replaces the document.
+    const std::shared_ptr<const OwnFaceCandidate> step = session_.document().ownFace;
+    const OwnFaceCandidate& candidate = *step;
     sectionHeader("Use my mesh: confirm the landmarks");
     ImGui::TextWrapped("%s: %zu vertices, %zu triangles with (u,v), %zu UV islands", candidate.name.c_str(),
                        candidate.mesh->positions.size(), candidate.mesh->triangles.size(),
                        candidate.mesh->islandCount);
     for (const std::string& note : candidate.suggestion.notes) ImGui::TextDisabled("%s", note.c_str());
-    ImGui::TextWrapped("Each landmark is a point of your mesh's (u,v). Drag a value to move it; right and "
-                       "left are the face's own (its right eye is on the viewer's left).");
+    ImGui::TextWrapped(
+        "Each landmark is a point of your mesh's (u,v), shown as a dot on the mesh in the view: "
+        "drag a dot over the surface or a value here to move it; right and left are the "
+        "face's own (its right eye is on the viewer's left).");
 
     // One row per landmark: its name, u and v (two drags, each a control the GUI tests can find as
     // "u##<name>" and "v##<name>"), then where it came from and how sure the finder is.
@@ -52,9 +62,9 @@ void OwnFaceStep::draw() {
                 uv[k] = value;
                 moved = true;
             }
+            endEditOnRelease(session_); // one undo step per drag
         }
-        if (moved)
-            session_.attempt("Place landmark", [&] { candidate = placeLandmark(candidate, landmark, uv); });
+        if (moved) session_.attempt("Place landmark", [&] { session_.placeOwnFaceLandmark(landmark, uv); });
         ImGui::SameLine();
         if (!found.found())
             ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.35f, 1.0f), "%s",
@@ -68,25 +78,21 @@ void OwnFaceStep::draw() {
     const std::string missing = candidate.missingRequired();
     if (!missing.empty()) ImGui::TextWrapped("Still missing: %s", missing.c_str());
     if (ctl::Button("Build face from these landmarks"))
-        session_.attempt("Use my mesh", [&] {
-            session_.useOwnFace(candidate);
-            candidate_.reset();
-        });
+        session_.attempt("Use my mesh", [&] { session_.buildOwnFace(); });
     ImGui::SameLine();
-    if (ctl::Button("Cancel##ownface")) candidate_.reset();
+    if (ctl::Button("Cancel##ownface")) session_.cancelOwnFace();
 }
 
 nlohmann::json OwnFaceStep::probe() const {
-    if (!candidate_) return nullptr;
+    const auto& step = session_.document().ownFace;
+    if (!step) return nullptr;
     nlohmann::json landmarks = nlohmann::json::object();
     for (const face::Landmark landmark : face::allLandmarks()) {
-        const face::FoundLandmark& found = candidate_->landmarks()[landmark];
+        const face::FoundLandmark& found = step->landmarks()[landmark];
         landmarks[std::string(face::landmarkName(landmark))] = {
             {"source", face::sourceName(found.source)}, {"u", found.uv[0]}, {"v", found.uv[1]}};
     }
-    return {{"file", candidate_->file.string()},
-            {"missing", candidate_->missingRequired()},
-            {"landmarks", landmarks}};
+    return {{"file", step->file.string()}, {"missing", step->missingRequired()}, {"landmarks", landmarks}};
 }
 
 } // namespace vl::ui

@@ -4,9 +4,12 @@
 #include "ui/panels/RefinementPanel.h"
 #include "ui/UiScale.h"
 
+#include "core/deform/FaceDomain.h"
+#include "core/document/Document.h"
 #include "core/inspect/DistanceUnits.h"
 #include "ui/panels/PanelWidgets.h"
 #include "ui/panels/ParameterSliders.h"
+#include "ui/session/EditorSession.h"
 #include "ui/widgets/Controls.h"
 #include "ui/widgets/JobProgress.h"
 
@@ -152,9 +155,37 @@ void RefinementPanel::draw() {
         ImGui::TextDisabled("Triangles: %zu before, %zu after; %zu refinement tests", report->trianglesBefore,
                             report->triangles, report->stats.tests);
         if (report->maxLevel >= 0) ImGui::Text("Deepest level: %d", report->maxLevel);
-    } else {
-        ImGui::TextDisabled("No refinement run since the face was opened.");
     }
+    shownNote_ = meshNote(*model.domain, domainRefined(), session_.lastRefinement().has_value());
+    ImGui::TextWrapped("%s", shownNote_.c_str());
+}
+
+bool RefinementPanel::domainRefined() {
+    const auto& domain = session_.face().domain;
+    if (domain != checkedDomain_) {
+        checkedDomain_ = domain;
+        checkedRefined_ = domain && isRefinedDomain(*domain);
+    }
+    return checkedRefined_;
+}
+
+bool RefinementPanel::isRefinedDomain(const MeshData& domain) {
+    // Regular: the base mesh a face gets when it is loaded (in the editor or from a project without
+    // a refined mesh); anything else is a refinement's.
+    const auto regular = [&](int resolution) {
+        const MeshData base = face::faceDomainMesh(resolution, face::DomainDensity::MouthFocused);
+        return base.uvs == domain.uvs && base.triangles == domain.triangles;
+    };
+    return !regular(kFaceDomainResolution) && !regular(EditorSession::kEditorFaceResolution);
+}
+
+std::string RefinementPanel::meshNote(const MeshData& domain, bool refined, bool ranSinceOpened) {
+    const std::string size = std::to_string(domain.positions.size()) + " vertices";
+    if (!refined) return "The face is shown on its regular base mesh (" + size + ") until you refine it.";
+    if (ranSinceOpened) return "The face is shown on the refined mesh (" + size + ").";
+    // Reopened: the project's refined mesh is restored; no run is needed to see it.
+    return "The face is shown on the refined mesh saved with the project (" + size +
+           "); no refinement run since it was opened.";
 }
 
 void RefinementPanel::addProbe(nlohmann::json& summary) const {
@@ -168,6 +199,7 @@ void RefinementPanel::addProbe(nlohmann::json& summary) const {
                   {"added", report->stats.splits},
                   {"removed", report->stats.welds}};
     summary["refine"] = std::move(refine);
+    summary["refine_mesh_note"] = shownNote_;
 }
 
 } // namespace vl::ui

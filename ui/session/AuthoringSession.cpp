@@ -88,10 +88,17 @@ void EditorSession::removePreset(const std::string& name) {
 
 bool EditorSession::visemeSetMadeByFace() {
     const Document& current = document();
-    if (madeByFace_.set != current.visemes || madeByFace_.cascade != current.face.cascade) {
-        madeByFace_ = {current.visemes, current.face.cascade, edit::visemeSetMadeByFace(current)};
+    if (madeByFace_.set != current.visemes || madeByFace_.cascade != current.face.cascade ||
+        madeByFace_.presets != current.face.presets) {
+        madeByFace_ = {current.visemes, current.face.cascade, current.face.presets,
+                       edit::visemeSetMadeByFace(current), edit::visemeFaceParameters(current)};
     }
     return madeByFace_.value;
+}
+
+const std::vector<std::vector<double>>& EditorSession::visemeFaceParameters() {
+    visemeSetMadeByFace(); // brings the cache up to date
+    return madeByFace_.parameters;
 }
 
 FrequencyTable EditorSession::startingPhonemeTable() const {

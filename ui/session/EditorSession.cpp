@@ -637,6 +637,27 @@ void EditorSession::useOwnFace(const OwnFaceCandidate& candidate) {
     for (const auto& warning : report.warnings) error("Face '" + candidate.name + "': warning: " + warning);
 }
 
+void EditorSession::openOwnFace(const std::filesystem::path& mesh) {
+    OwnFaceCandidate candidate = loadOwnFaceCandidate(mesh);
+    const std::string name = candidate.name;
+    commit("Open " + name + " for its landmarks", edit::beginOwnFace(document(), std::move(candidate)));
+}
+
+void EditorSession::placeOwnFaceLandmark(face::Landmark landmark, const Vec2& uv) {
+    const std::string name(face::landmarkName(landmark));
+    commit("Move landmark " + name, edit::placeOwnFaceLandmark(document(), landmark, uv), "landmark:" + name);
+}
+
+void EditorSession::buildOwnFace() {
+    if (!document().ownFace) throwInputError("own face", "no own-face step is open (Use my mesh...)");
+    const std::shared_ptr<const OwnFaceCandidate> candidate = document().ownFace; // outlives the commit
+    useOwnFace(*candidate);
+}
+
+void EditorSession::cancelOwnFace() {
+    if (document().ownFace) commit("Cancel Use my mesh", edit::cancelOwnFace(document()));
+}
+
 // The bundled American English phoneme table with the Oculus map (generated sets, phoneme counts).
 static FrequencySource bundledOculusTable() {
     const std::filesystem::path dir = EditorSession::assetsDirectory();

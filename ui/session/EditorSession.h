@@ -175,6 +175,14 @@ class EditorSession {
     // Own face (Deformation > Use my mesh...): the face built from the user's mesh and confirmed
     // landmarks becomes the document's face (one undo step); the status bar says what the build found.
     void useOwnFace(const OwnFaceCandidate& candidate);
+    // The own-face step as document state (Document::ownFace), each change one undo step: open on a
+    // mesh (its landmarks suggested), place a landmark at a (u,v) of the mesh (the calls of one
+    // numeric drag merge into one step; endEdit() closes it), build from the step's landmarks
+    // (useOwnFace above, closing the step) or cancel it.
+    void openOwnFace(const std::filesystem::path& mesh);
+    void placeOwnFaceLandmark(face::Landmark landmark, const Vec2& uv);
+    void buildOwnFace();
+    void cancelOwnFace();
 
     // --- adaptive refinement -----------------------------------------------------------------
     void setRefinementSettings(const CriterionSettings& settings); // validated, undoable
@@ -245,6 +253,9 @@ class EditorSession {
     void removePreset(const std::string& name);
     // True when the viseme set is the face's own (cached per set and cascade).
     bool visemeSetMadeByFace();
+    // For such a set, each viseme's face parameter vector (edit::visemeFaceParameters; cached): the
+    // viseme view poses the head's parts with it. Empty otherwise.
+    const std::vector<std::vector<double>>& visemeFaceParameters();
     // The phoneme table a new map starts from: the current one, else the bundled en-us table.
     FrequencyTable startingPhonemeTable() const;
     void startPhonemeMap(FrequencyTable table, const PhonemeVisemeMap& start,
@@ -380,11 +391,14 @@ class EditorSession {
     // faceParts() cache: the parts of partsCascade_.
     std::shared_ptr<const DeformationCascade> partsCascade_;
     std::shared_ptr<const HeadPartSamples> parts_;
-    // visemeSetMadeByFace() cache: the answer for the set and cascade it holds.
+    // visemeSetMadeByFace() cache: the answer and the visemes' parameter vectors for the set, cascade
+    // and presets it holds.
     struct MadeByFace {
         std::shared_ptr<const VisemeSet> set;
         std::shared_ptr<const DeformationCascade> cascade;
+        std::vector<VisemeParameters> presets;
         bool value = false;
+        std::vector<std::vector<double>> parameters;
     } madeByFace_;
     // Keeps the selection on viseme `name` after an edit moved it (or clears it when it is gone).
     void select(const std::string& name);
