@@ -13,24 +13,32 @@
 namespace vl::test {
 namespace {
 
-TEST(SculptClicks, AGrabStrokeMovesTheVisemeAndUndoesAsOneStep) {
-    REQUIRE_GUI_TOOLS();
-    GuiDriver gui({"--sample", "--panel", "Visemes", "--viseme", "aa"});
-    gui.waitIdle();
-    const double before = gui.document()["sculpt"]["shape_y_sum"].get<double>();
-    const nlohmann::json camera = gui.document()["camera"];
+// Turns Sculpt on with a real click and pulls the middle of the face up by `pixels` (a grab stroke).
+// Returns the model units per pixel at the grabbed point, 0 when the brush found no surface.
+double grabUp(GuiDriver& gui, double pixels) {
     gui.click(gui.control("Sculpt", "checkbox"));
     gui.waitFrames();
-    ASSERT_TRUE(gui.document()["sculpt"]["enabled"].get<bool>());
+    EXPECT_TRUE(gui.document()["sculpt"]["enabled"].get<bool>());
     const auto view = gui.control("main", "view");
     const double x = view["x"].get<double>() + 0.5 * view["width"].get<double>();
     const double y = view["y"].get<double>() + 0.55 * view["height"].get<double>();
     gui.hover(x, y);
     gui.waitFrames();
     const double unitsPerPixel = gui.document()["sculpt"]["units_per_pixel"].get<double>();
-    ASSERT_GT(unitsPerPixel, 0.0);
-    gui.drag(x, y, x, y - 60, 12); // pull the middle of the face up, 60 pixels
+    if (unitsPerPixel <= 0.0) return 0.0;
+    gui.drag(x, y, x, y - pixels, 12);
     gui.waitIdle();
+    return unitsPerPixel;
+}
+
+TEST(SculptClicks, AGrabStrokeMovesTheVisemeAndUndoesAsOneStep) {
+    REQUIRE_GUI_TOOLS();
+    GuiDriver gui({"--sample", "--panel", "Visemes", "--viseme", "aa"});
+    gui.waitIdle();
+    const double before = gui.document()["sculpt"]["shape_y_sum"].get<double>();
+    const nlohmann::json camera = gui.document()["camera"];
+    const double unitsPerPixel = grabUp(gui, 60); // pull the middle of the face up, 60 pixels
+    ASSERT_GT(unitsPerPixel, 0.0);
     EXPECT_ALIVE(gui);
     EXPECT_EQ(gui.document()["undo"], "Sculpt aa (grab)") << gui.document()["messages"].dump();
     const auto& sculpt = gui.document()["sculpt"];
@@ -60,18 +68,8 @@ TEST(SculptClicks, AGrabStrokeOnAnAvatarVisemeMovesItsTarget) {
     GuiDriver gui({"--avatar", (dir / "rpm.glb").string(), "--panel", "Visemes", "--viseme", "viseme_aa"});
     gui.waitIdle();
     const double before = gui.document()["sculpt"]["shape_y_sum"].get<double>();
-    gui.click(gui.control("Sculpt", "checkbox"));
-    gui.waitFrames();
-    ASSERT_TRUE(gui.document()["sculpt"]["enabled"].get<bool>());
-    const auto view = gui.control("main", "view");
-    const double x = view["x"].get<double>() + 0.5 * view["width"].get<double>();
-    const double y = view["y"].get<double>() + 0.55 * view["height"].get<double>();
-    gui.hover(x, y);
-    gui.waitFrames();
-    const double unitsPerPixel = gui.document()["sculpt"]["units_per_pixel"].get<double>();
+    const double unitsPerPixel = grabUp(gui, 40);
     ASSERT_GT(unitsPerPixel, 0.0);
-    gui.drag(x, y, x, y - 40, 10);
-    gui.waitIdle();
     EXPECT_ALIVE(gui);
     EXPECT_EQ(gui.document()["undo"], "Sculpt viseme_aa (grab)") << gui.document()["messages"].dump();
     EXPECT_GT(gui.document()["sculpt"]["shape_y_sum"].get<double>() - before,
