@@ -52,8 +52,16 @@ void colourLegend(const ImVec2& min, const ImVec2& max, const char* low, const c
                                   IM_COL32(26, 217, 153, 255), IM_COL32(242, 217, 51, 255),
                                   IM_COL32(204, 31, 13, 255)};
     ImDrawList* draw = ImGui::GetWindowDrawList();
-    const float width = scaled(200.0f), height = scaled(12.0f);
-    const ImVec2 origin(min.x + scaled(16.0f), max.y - scaled(36.0f));
+    const float highWidth = ImGui::CalcTextSize(high).x;
+    const float lowWidth = ImGui::CalcTextSize(low).x;
+    const float margin = scaled(16.0f), line = ImGui::GetTextLineHeight();
+    const float width = std::max(scaled(60.0f), std::min(scaled(200.0f), max.x - min.x - 2.0f * margin));
+    // In a narrow view (a comparison at 1024 px) the high label goes on a line of its own rather than
+    // past the view's edge.
+    const bool ownLine = margin + lowWidth + 12.0f + highWidth > max.x - min.x - 4.0f ||
+                         std::max(width - highWidth, lowWidth + 12.0f) + highWidth > max.x - min.x - margin;
+    const float height = scaled(12.0f);
+    const ImVec2 origin(min.x + margin, max.y - scaled(36.0f) - (ownLine ? line : 0.0f));
     for (int i = 0; i < 4; ++i) {
         const float x0 = origin.x + width * static_cast<float>(i) / 4.0f;
         const float x1 = origin.x + width * static_cast<float>(i + 1) / 4.0f;
@@ -63,11 +71,10 @@ void colourLegend(const ImVec2& min, const ImVec2& max, const char* low, const c
     draw->AddRect(origin, ImVec2(origin.x + width, origin.y + height), IM_COL32(20, 20, 24, 255));
     draw->AddText(ImVec2(origin.x, origin.y + height + 2.0f), IM_COL32(220, 220, 230, 255), low);
     // Right-aligned under the bar's end, but never over the low label.
-    const float highWidth = ImGui::CalcTextSize(high).x;
-    const float lowWidth = ImGui::CalcTextSize(low).x;
-    draw->AddText(
-        ImVec2(std::max(origin.x + width - highWidth, origin.x + lowWidth + 12.0f), origin.y + height + 2.0f),
-        IM_COL32(220, 220, 230, 255), high);
+    const ImVec2 at = ownLine ? ImVec2(origin.x, origin.y + height + 2.0f + line)
+                              : ImVec2(std::max(origin.x + width - highWidth, origin.x + lowWidth + 12.0f),
+                                       origin.y + height + 2.0f);
+    draw->AddText(at, IM_COL32(220, 220, 230, 255), high);
 }
 
 std::vector<float> normalised(const std::vector<double>& values, double scale) {
