@@ -246,8 +246,8 @@ void EditorUi::sidePanel(float top, float width, float height) {
     ImGui::SetNextWindowPos(ImVec2(0, top));
     ImGui::SetNextWindowSize(ImVec2(width, height));
     ImGui::Begin("##side", nullptr, kFixed);
-    ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(4, 4));
-    ImGui::PushStyleVar(ImGuiStyleVar_ItemInnerSpacing, ImVec2(2, 4));
+    ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(scaled(4), scaled(4)));
+    ImGui::PushStyleVar(ImGuiStyleVar_ItemInnerSpacing, ImVec2(scaled(2), scaled(4)));
     const bool tabs = ImGui::BeginTabBar("##panels", ImGuiTabBarFlags_FittingPolicyResizeDown);
     ImGui::PopStyleVar(2);
     if (tabs) {

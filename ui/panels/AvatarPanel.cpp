@@ -134,7 +134,7 @@ void AvatarPanel::exportSection() {
     ctl::RadioButton("merged (one target per key)", &names_, 1);
     ctl::Checkbox("normals of the keys (NORMAL/TANGENT displacements)", &targetNormals_);
     gltfpackOption();
-    if (ctl::Button("Export avatar...", ImVec2(200, 0))) openExport();
+    if (ctl::Button("Export avatar...", ImVec2(scaled(200), 0))) openExport();
     ImGui::SameLine();
     noteText("a .glb (or .vrm), never the file it was read from");
     // What the last export wrote, read back from the file: a runtime drives these targets.

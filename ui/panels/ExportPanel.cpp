@@ -1,6 +1,7 @@
 // Export panel: project save/load and the runtime exports of the core.
 #include "ui/panels/ExportPanel.h"
 #include "ui/FileActions.h"
+#include "ui/UiScale.h"
 #include "ui/panels/PanelWidgets.h"
 #include "ui/widgets/Controls.h"
 
@@ -47,7 +48,7 @@ void ExportPanel::draw() {
         {ExportFormat::Obj, "OBJ per key", "one OBJ file per merged viseme", true, ""},
     };
     for (const Target& target : targets) {
-        if (ctl::Button(target.label, ImVec2(200, 0))) {
+        if (ctl::Button(target.label, ImVec2(scaled(200), 0))) {
             const ExportFormat format = target.format;
             auto run = [this, format](const std::filesystem::path& out) {
                 session_.attempt("Export", [&] { session_.startExport(format, out); });
@@ -66,10 +67,10 @@ void ExportPanel::draw() {
     if (session_.document().avatar.isSet()) avatar_.exportSection();
 
     sectionHeader("Import");
-    if (ctl::Button("Import glTF morph targets...", ImVec2(200, 0))) files_.importGltf("Import glTF");
+    if (ctl::Button("Import glTF morph targets...", ImVec2(scaled(200), 0))) files_.importGltf("Import glTF");
     ImGui::SameLine();
     noteText("the targets become the visemes");
-    if (ctl::Button("Import avatar...", ImVec2(200, 0))) avatar_.openImport();
+    if (ctl::Button("Import avatar...", ImVec2(scaled(200), 0))) avatar_.openImport();
     ImGui::SameLine();
     noteText("visemes of every mesh; export writes the same avatar back");
 }

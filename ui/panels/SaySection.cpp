@@ -66,18 +66,18 @@ void SaySection::draw() {
     }
     endEditOnRelease(session_);
 
-    if (ctl::Button("Say", ImVec2(70, 0)) && commitDraft()) speech_.say();
+    if (ctl::Button("Say", ImVec2(scaled(70), 0)) && commitDraft()) speech_.say();
     const auto& clip = session_.speechClip();
     ImGui::SameLine();
     if (!clip) ImGui::BeginDisabled();
-    if (ctl::Button(speech_.playing() ? "Pause" : "Play", ImVec2(70, 0))) {
+    if (ctl::Button(speech_.playing() ? "Pause" : "Play", ImVec2(scaled(70), 0))) {
         if (speech_.playing())
             speech_.pause();
         else
             speech_.play(speech_.time());
     }
     ImGui::SameLine();
-    if (ctl::Button("Hide", ImVec2(60, 0))) speech_.hide();
+    if (ctl::Button("Hide", ImVec2(scaled(60), 0))) speech_.hide();
     if (!clip) ImGui::EndDisabled();
     if (session_.speaking()) {
         ImGui::SameLine();

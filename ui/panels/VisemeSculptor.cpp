@@ -1,6 +1,7 @@
 #include "ui/panels/VisemeSculptor.h"
 
 #include "core/paint/RayPick.h"
+#include "ui/UiScale.h"
 #include "ui/panels/BrushCursor.h"
 #include "ui/session/EditorSession.h"
 #include "ui/widgets/Controls.h"
@@ -122,7 +123,7 @@ void VisemeSculptor::controls() {
     ImGui::SameLine();
     const char* tools[] = {"grab", "smooth", "inflate", "deflate"};
     int tool = static_cast<int>(settings.tool);
-    ImGui::SetNextItemWidth(90);
+    ImGui::SetNextItemWidth(scaled(90));
     if (ctl::Combo("##sculpt-tool", &tool, tools, 4)) settings.tool = static_cast<SculptTool>(tool);
     ImGui::SameLine();
     ctl::Checkbox("X-mirror", &settings.symmetric);
@@ -135,13 +136,13 @@ void VisemeSculptor::controls() {
                                    "blending a new one"
                                  : "A new viseme mixed from others: the neutral plus each one's displacement "
                                    "times its weight");
-    ImGui::SetNextItemWidth(140);
+    ImGui::SetNextItemWidth(scaled(140));
     float radius = static_cast<float>(settings.radius.value);
     if (ctl::SliderFloat("##sculpt-radius", &radius, 1.0f, 40.0f, "radius %.0f %%"))
         settings.radius.value = radius;
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Brush radius in %% of the head's size");
     ImGui::SameLine();
-    ImGui::SetNextItemWidth(140);
+    ImGui::SetNextItemWidth(scaled(140));
     ctl::SliderFloat("##sculpt-strength", &settings.strength, 0.05f, 1.0f, "strength %.2f");
     if (settings.enabled) {
         ImGui::SameLine();
@@ -164,16 +165,16 @@ void VisemeSculptor::blendPopup() {
     if (!ImGui::BeginPopupModal("Blend visemes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
     blendWeights_.resize(set->size(), 0.0f);
     ImGui::TextUnformatted("New viseme = neutral + sum of weight x (viseme - neutral)");
-    if (ImGui::BeginChild("##blend-weights", ImVec2(360, 260), true)) {
+    if (ImGui::BeginChild("##blend-weights", ImVec2(scaled(360), scaled(260)), true)) {
         for (std::size_t i = 0; i < set->size(); ++i) {
             ImGui::PushID(static_cast<int>(i));
-            ImGui::SetNextItemWidth(200);
+            ImGui::SetNextItemWidth(scaled(200));
             ctl::SliderFloat(set->visemes[i].name.c_str(), &blendWeights_[i], -1.0f, 2.0f, "%.2f");
             ImGui::PopID();
         }
     }
     ImGui::EndChild();
-    ImGui::SetNextItemWidth(200);
+    ImGui::SetNextItemWidth(scaled(200));
     ctl::InputTextWithHint("##blend-name", "name of the new viseme", &blendName_);
     if (ctl::Button("Create##blend")) {
         std::vector<std::pair<int, double>> mix;

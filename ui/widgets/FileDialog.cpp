@@ -1,4 +1,5 @@
 #include "ui/widgets/FileDialog.h"
+#include "ui/UiScale.h"
 #include "ui/widgets/Controls.h"
 
 #include <imgui.h>
@@ -41,9 +42,9 @@ void FileDialog::finish(fs::path chosen) { // a copy: replacing_ is cleared belo
 void FileDialog::drawReplaceQuestion() {
     ImGui::TextWrapped("%s already exists. Replace it?", replacing_.filename().string().c_str());
     ImGui::TextDisabled("%s", replacing_.parent_path().string().c_str());
-    if (ctl::Button("Replace", ImVec2(100, 0))) finish(replacing_);
+    if (ctl::Button("Replace", ImVec2(scaled(100), 0))) finish(replacing_);
     ImGui::SameLine();
-    if (ctl::Button("Cancel", ImVec2(100, 0))) replacing_.clear(); // back to choosing a name
+    if (ctl::Button("Cancel", ImVec2(scaled(100), 0))) replacing_.clear(); // back to choosing a name
 }
 
 void FileDialog::draw() {
@@ -53,7 +54,7 @@ void FileDialog::draw() {
         ImGui::OpenPopup(id.c_str());
         openPending_ = false;
     }
-    ImGui::SetNextWindowSize(ImVec2(640, 460), ImGuiCond_Appearing);
+    ImGui::SetNextWindowSize(ImVec2(scaled(640), scaled(460)), ImGuiCond_Appearing);
     if (!ImGui::BeginPopupModal(id.c_str(), &visible_)) return;
     if (!replacing_.empty()) {
         drawReplaceQuestion();
@@ -110,7 +111,7 @@ void FileDialog::draw() {
     }
     const bool ready = mode_ == Mode::OpenFolder || !name_.empty();
     if (!ready) ImGui::BeginDisabled();
-    if (ctl::Button(mode_ == Mode::SaveFile ? "Save" : "Open", ImVec2(100, 0)) && visible_) {
+    if (ctl::Button(mode_ == Mode::SaveFile ? "Save" : "Open", ImVec2(scaled(100), 0)) && visible_) {
         const fs::path chosen = mode_ == Mode::OpenFolder ? folder : folder / name_;
         if (mode_ == Mode::SaveFile && fs::exists(fs::symlink_status(chosen, ec)))
             replacing_ = chosen; // asked on the next frame
@@ -119,7 +120,7 @@ void FileDialog::draw() {
     }
     if (!ready) ImGui::EndDisabled();
     ImGui::SameLine();
-    if (ctl::Button("Cancel", ImVec2(100, 0))) {
+    if (ctl::Button("Cancel", ImVec2(scaled(100), 0))) {
         visible_ = false;
         ImGui::CloseCurrentPopup();
     }
