@@ -244,11 +244,12 @@ void restModelCases(benchmark::internal::Benchmark* b) {
                          [](const std::vector<double>& v) { return *std::max_element(v.begin(), v.end()); });
 }
 
-// Each solver alone on both models (args: n, 1 = rest free, method 0 = branch and bound, 1 = LP):
+// Each solver alone on both models (args: n, 1 = rest free, method 0 = branch and bound, 1 = LP, m):
 // where Auto's branch-and-bound share should end (issue 29's ratio at n = 32).
 void BM_ArpabetModelMethod(benchmark::State& state) {
     const int n = static_cast<int>(state.range(0));
     const bool restFree = state.range(1) != 0;
+    const int m = state.range(3) > 0 ? static_cast<int>(state.range(3)) : 10;
     const Instance& inst = arpabetInstance(n);
     vl::ReductionOptions options;
     options.method =
@@ -257,15 +258,17 @@ void BM_ArpabetModelMethod(benchmark::State& state) {
     const vl::RestPose rest{restFree, 0, inst.neutral};
     bool proved = true;
     for (auto _ : state) {
-        auto result = vl::reduceVisemes({inst.shapes, inst.frequencies, inst.weights, 10, {}, rest}, options);
+        auto result = vl::reduceVisemes({inst.shapes, inst.frequencies, inst.weights, m, {}, rest}, options);
         proved = proved && result.best().optimal;
         benchmark::DoNotOptimize(result);
     }
-    state.SetLabel("arpabet n=" + std::to_string(n) + (restFree ? " rest free" : " keyed") + " by " +
-                   vl::toString(options.method) + (proved ? " proved" : " NOT proved"));
+    state.SetLabel("arpabet n=" + std::to_string(n) + " m=" + std::to_string(m) +
+                   (restFree ? " rest free" : " keyed") + " by " + vl::toString(options.method) +
+                   (proved ? " proved" : " NOT proved"));
 }
 BENCHMARK(BM_ArpabetModelMethod)
-    ->ArgsProduct({{24, 28, 32, 36, 40}, {0, 1}, {0, 1}})
+    ->ArgsProduct({{24, 28, 32, 36, 40}, {0, 1}, {0, 1}, {10}})
+    ->Args({32, 0, 0, 11}) // keyed with one key more: the rest-free model's groups (10 keys + the rest)
     ->Unit(benchmark::kMillisecond)
     ->MeasureProcessCPUTime()
     ->Iterations(1)
