@@ -6,8 +6,8 @@
 #include "ui/EditorUi.h"
 #include "ui/KeyPresses.h"
 #include "ui/UiScale.h"
+#include "ui/probe/GuiProbe.h"
 #include "ui/session/EditorSession.h"
-#include "ui/widgets/GuiProbe.h"
 
 #include <epoxy/gl.h>
 #define GLFW_INCLUDE_NONE

@@ -7,7 +7,7 @@
 #include "core/inspect/VertexErrors.h"
 #include "core/project/BuiltinGeometry.h"
 #include "ui/UiScale.h"
-#include "ui/widgets/GuiProbe.h"
+#include "ui/probe/GuiProbe.h"
 
 #include <imgui.h>
 

@@ -2,7 +2,7 @@
 // expires (StatusLine) and wraps onto up to kMaxLines lines (the bar grows) instead of running
 // off the window; the full history is in its tooltip.
 #include "ui/EditorUi.h"
-#include "ui/widgets/GuiProbe.h"
+#include "ui/probe/GuiProbe.h"
 #include "ui/widgets/JobProgress.h"
 
 #include <imgui.h>

@@ -1,7 +1,7 @@
 #pragma once
 // Drives the real editor window with real input events, as a user would: a private Xvfb server,
 // the editor process started with --probe (it reports its controls' rectangles and a document
-// summary after every frame, see ui/widgets/GuiProbe.h), and xdotool for mouse and keyboard.
+// summary after every frame, see ui/probe/GuiProbe.h), and xdotool for mouse and keyboard.
 // Nothing is injected into ImGui: events go through X11, GLFW and the ImGui backend.
 #include <nlohmann/json.hpp>
 

@@ -1,8 +1,8 @@
 #include "ui/panels/LandmarkHandles.h"
 
 #include "ui/UiScale.h"
+#include "ui/probe/GuiProbe.h"
 #include "ui/session/EditorSession.h"
-#include "ui/widgets/GuiProbe.h"
 
 #include <glm/glm.hpp>
 

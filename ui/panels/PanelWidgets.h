@@ -1,7 +1,7 @@
 #pragma once
 // Small ImGui helpers shared by the panels.
+#include "ui/probe/GuiProbe.h"
 #include "ui/session/EditorSession.h"
-#include "ui/widgets/GuiProbe.h"
 
 #include <imgui.h>
 

@@ -1,6 +1,6 @@
 #include "ui/render/Viewport.h"
+#include "ui/probe/GuiProbe.h"
 #include "ui/render/SceneSignature.h"
-#include "ui/widgets/GuiProbe.h"
 
 #include <algorithm>
 #include <cmath>

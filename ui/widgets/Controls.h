@@ -1,7 +1,7 @@
 #pragma once
 // The ImGui controls the editor uses, recorded for GUI tests (GuiProbe.h): each wrapper calls the
 // ImGui function of the same name with the same arguments and returns its result unchanged.
-#include "ui/widgets/GuiProbe.h"
+#include "ui/probe/GuiProbe.h"
 
 #include <imgui.h>
 #include <imgui_stdlib.h> // std::string overloads of InputText

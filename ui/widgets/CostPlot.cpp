@@ -15,7 +15,7 @@ const ImU32 kAxis = IM_COL32(150, 150, 160, 255);
 const ImU32 kGrid = IM_COL32(70, 72, 80, 255);
 const ImU32 kLine = IM_COL32(110, 180, 255, 255);
 const ImU32 kMark = IM_COL32(255, 190, 60, 255);
-const ImU32 kText = IM_COL32(210, 210, 220, 255);
+const ImU32 kPlotText = IM_COL32(210, 210, 220, 255);
 
 std::string tickLabel(double value) {
     char text[32];
@@ -75,7 +75,7 @@ int costPlot(const char* id, std::span<const double> values, const CostPlotOptio
         draw->AddLine(ImVec2(left, y), ImVec2(right, y), kGrid);
         const std::string label = tickLabel(ticks[i]);
         const ImVec2 textSize = ImGui::CalcTextSize(label.c_str());
-        draw->AddText(ImVec2(left - 4.0f - textSize.x, y - 0.5f * textSize.y), kText, label.c_str());
+        draw->AddText(ImVec2(left - 4.0f - textSize.x, y - 0.5f * textSize.y), kPlotText, label.c_str());
     }
     const int xStep = std::max(1, (n + 9) / 10);
     for (int p = 1; p <= n; p += (p == 1 && xStep > 1 ? xStep - 1 : xStep)) {
@@ -83,15 +83,15 @@ int costPlot(const char* id, std::span<const double> values, const CostPlotOptio
         draw->AddLine(ImVec2(x, bottom), ImVec2(x, bottom + 3.0f), kAxis);
         const std::string label = std::to_string(p);
         const float width = ImGui::CalcTextSize(label.c_str()).x;
-        draw->AddText(ImVec2(std::clamp(x - 0.5f * width, left, right - width), bottom + 3.0f), kText,
+        draw->AddText(ImVec2(std::clamp(x - 0.5f * width, left, right - width), bottom + 3.0f), kPlotText,
                       label.c_str());
     }
     draw->AddLine(ImVec2(left, top), ImVec2(left, bottom), kAxis);
     draw->AddLine(ImVec2(left, bottom), ImVec2(right, bottom), kAxis);
     if (options.unit[0])
         draw->AddText(ImVec2(std::max(origin.x, left - 4.0f - ImGui::CalcTextSize(options.unit).x), origin.y),
-                      kText, options.unit);
-    draw->AddText(ImVec2(right - ImGui::CalcTextSize(options.axis).x, origin.y), kText, options.axis);
+                      kPlotText, options.unit);
+    draw->AddText(ImVec2(right - ImGui::CalcTextSize(options.axis).x, origin.y), kPlotText, options.axis);
 
     // Runs of finite values are drawn as lines; a p without a grouping leaves a gap.
     std::vector<ImVec2> points, run;
@@ -125,7 +125,7 @@ int costPlot(const char* id, std::span<const double> values, const CostPlotOptio
                                  1, n)
                     : 1;
         const double value = values[static_cast<std::size_t>(under - 1)];
-        draw->AddCircle(points[static_cast<std::size_t>(under - 1)], 6.0f, kText);
+        draw->AddCircle(points[static_cast<std::size_t>(under - 1)], 6.0f, kPlotText);
         ImGui::BeginTooltip();
         if (!std::isfinite(value))
             ImGui::Text("p = %d: no grouping satisfies the constraints", under);

@@ -1,7 +1,7 @@
 #include "ui/widgets/FrequencyHistogram.h"
 
+#include "ui/probe/GuiProbe.h"
 #include "ui/widgets/Controls.h"
-#include "ui/widgets/GuiProbe.h"
 
 #include <algorithm>
 #include <cmath>

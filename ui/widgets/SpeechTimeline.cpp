@@ -14,7 +14,7 @@ namespace {
 constexpr float kLabelWidth = 92.0f; // row names on the left
 constexpr float kAxisHeight = 18.0f;
 constexpr float kRowHeight = 22.0f;
-constexpr ImU32 kText = IM_COL32(225, 225, 232, 255);
+constexpr ImU32 kTimelineText = IM_COL32(225, 225, 232, 255);
 constexpr ImU32 kDim = IM_COL32(150, 150, 160, 255);
 
 // The same value gets the same colour in every row (a viseme in the full row and its merged key
@@ -48,7 +48,7 @@ void drawRow(ImDrawList* draw, const char* name, std::span<const Item> items, Va
                             colourOf(value));
         const ImVec2 text = ImGui::CalcTextSize(value.c_str());
         if (text.x + 4.0f < b - a)
-            draw->AddText(ImVec2(0.5f * (a + b - text.x), y + 0.5f * (kRowHeight - text.y)), kText,
+            draw->AddText(ImVec2(0.5f * (a + b - text.x), y + 0.5f * (kRowHeight - text.y)), kTimelineText,
                           value.c_str());
     }
 }
@@ -125,7 +125,7 @@ std::optional<double> speechTimeline(const char* id, const SpeechTimelineData& d
                   IM_COL32(255, 255, 255, 230), 2.0f);
     char now[32];
     std::snprintf(now, sizeof now, "%.2f s", data.time);
-    draw->AddText(ImVec2(origin.x + 6.0f, origin.y + 1.0f), kText, now);
+    draw->AddText(ImVec2(origin.x + 6.0f, origin.y + 1.0f), kTimelineText, now);
 
     if (active) {
         const float x = ImGui::GetIO().MousePos.x;

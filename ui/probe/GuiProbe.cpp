@@ -1,4 +1,4 @@
-#include "ui/widgets/GuiProbe.h"
+#include "ui/probe/GuiProbe.h"
 
 #include <imgui.h>
 #include <imgui_internal.h>
