@@ -14,7 +14,6 @@
 #include "core/gltf/AvatarScan.h"
 #include "core/gltf/Gltfpack.h"
 #include "core/io/MeshIO.h"
-#include "core/phonetics/EspeakTranscriber.h"
 #include "core/phonetics/PhonemeMaps.h"
 #include "core/phonetics/PhonemeTableIO.h"
 #include "core/project/ProjectRun.h"
@@ -52,7 +51,9 @@ Document documentOfSet(std::shared_ptr<const VisemeSet> set, std::filesystem::pa
 
 } // namespace
 
-EditorSession::EditorSession() : history_(Document{}), inputs_(history_.currentShared()) {
+EditorSession::EditorSession(SpeechEngines engines)
+    : history_(Document{}), inputs_(history_.currentShared()), engines_(std::move(engines)),
+      speech_(engines_.synthesizer) {
     reduction_.track(inputs_.revision());
 }
 
@@ -518,8 +519,8 @@ void EditorSession::startPhonemeCount(const std::filesystem::path& corpus, const
     if (!visemes()) throwInputError("phoneme count", "load a viseme set first");
     if (countTask_.running()) throwInputError("phoneme count", "a count is already running");
     countCorpus_ = corpus;
-    countTask_.start("Counting phonemes", [corpus, voice](const auto& progress) {
-        auto transcriber = makeEspeakTranscriber(voice);
+    countTask_.start("Counting phonemes", [corpus, voice, make = engines_.transcriber](const auto& progress) {
+        auto transcriber = make(voice);
         return countPhonemesInFile(corpus, *transcriber, [&](std::uint64_t done, std::uint64_t total) {
             progress(total ? static_cast<double>(done) / static_cast<double>(total) : 0.0);
         });

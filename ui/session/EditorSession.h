@@ -43,7 +43,9 @@ struct StatusMessage {
 
 class EditorSession {
   public:
-    EditorSession();
+    // The speech engines Say and the corpus count use (core/phonetics/SpeechEngines.h); the default
+    // argument is evaluated where the session is made, so the session itself constructs none.
+    explicit EditorSession(SpeechEngines engines = espeakSpeechEngines());
     ~EditorSession();
 
     // --- the document ----------------------------------------------------------------------------
@@ -379,6 +381,7 @@ class EditorSession {
     std::uint64_t geometryGeneration_ = 1;
     ReductionService reduction_;
     RefinementService refinement_;
+    SpeechEngines engines_;
     SpeechService speech_;
     BackgroundTask<PhonemeCountResult> countTask_;
     std::filesystem::path countCorpus_;

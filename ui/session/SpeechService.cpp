@@ -1,7 +1,6 @@
 #include "ui/session/SpeechService.h"
 
 #include "core/common/Error.h"
-#include "core/phonetics/EspeakSynthesizer.h"
 #include "core/project/ReduceInputs.h"
 #include "core/reduce/ReducedModel.h"
 
@@ -54,8 +53,8 @@ void SpeechService::say(const SpeechSettings& settings) {
     if (settings.text.find_first_not_of(" \t\r\n") == std::string::npos)
         throwInputError("text", "type the text to say first");
     const std::uint64_t id = nextId_++;
-    task_.start("Speaking", [settings, id](const auto&) {
-        auto synthesizer = makeEspeakSynthesizer({settings.voice, settings.wordsPerMinute});
+    task_.start("Speaking", [settings, id, make = synthesizer_](const auto&) {
+        auto synthesizer = make({settings.voice, settings.wordsPerMinute});
         Utterance utterance = synthesizer->synthesize(settings.text);
         if (std::none_of(utterance.phonemes.begin(), utterance.phonemes.end(),
                          [](const TimedPhoneme& p) { return p.phoneme != kSilencePhoneme; }))

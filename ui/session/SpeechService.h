@@ -5,6 +5,7 @@
 // runtime's keyframe evaluator (core/speech/FaceTrack.h) and the utterance error between them. The
 // tracks are rebuilt when the clip, the reduction inputs or the grouping change.
 #include "core/document/Document.h"
+#include "core/phonetics/SpeechEngines.h"
 #include "core/speech/DisplacementError.h"
 #include "core/speech/FaceTrack.h"
 #include "core/speech/SpeechSettings.h"
@@ -12,6 +13,7 @@
 #include "ui/session/BackgroundTask.h"
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -49,6 +51,8 @@ inline constexpr double kSpeechErrorFps = 60.0;
 
 class SpeechService {
   public:
+    explicit SpeechService(std::function<std::unique_ptr<SpeechSynthesizer>(const SpeechVoice&)> synthesizer)
+        : synthesizer_(std::move(synthesizer)) {}
     ~SpeechService() { task_.cancel(); }
 
     // Speaks `settings` on a worker thread (a running synthesis is cancelled). Throws InputError
@@ -76,6 +80,7 @@ class SpeechService {
                                    std::uint64_t curveRevision, const Grouping* grouping);
 
   private:
+    std::function<std::unique_ptr<SpeechSynthesizer>(const SpeechVoice&)> synthesizer_;
     BackgroundTask<SpeechClip> task_;
     std::shared_ptr<const SpeechClip> clip_;
     std::uint64_t nextId_ = 1;
