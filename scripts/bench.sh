@@ -13,7 +13,7 @@ cli=build/release/app/visemelab
 # Whole processes, honestly: min / median / max of repeated runs, wall and CPU (user + sys of the
 # process and all its threads), each beside its floor measured in the same run.
 #  - reduce on the bundled sample (16 meshes in, 15 -> 10, OBJ + VRML + JSON written) against the
-#    floor: a process that does nothing (`visemelab --help`) plus reading the same inputs and building
+#    floor: a process that does nothing (`visemelab-cli --help`: the commands, not the launcher) plus reading the same inputs and building
 #    the Gram matrix in process (bench_reduce BM_SampleReduceFloor). Three cases of the process:
 #    into an empty folder (a first export), over the same outputs (a re-run whose result did not
 #    change: unchanged files are compared and left), and over other outputs (the frequency table
@@ -28,10 +28,10 @@ cli=build/release/app/visemelab
 python3 - "$cli" build/release/tests/bench/bench_reduce <<'PY'
 import json, os, re, resource, shutil, statistics, subprocess, sys, tempfile, time
 cli, bench = sys.argv[1], sys.argv[2]
-def run(args):
+def run(args, program=None):
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     start = time.perf_counter()
-    done = subprocess.run([cli] + args, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True)
+    done = subprocess.run([program or cli] + args, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True)
     wall = time.perf_counter() - start
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     return wall, after.ru_utime - before.ru_utime + after.ru_stime - before.ru_stime, done.stdout
@@ -77,14 +77,15 @@ for r in range(11):
     for name, args in cases:
         for values, value in zip(series[name], run(args(r))):
             values.append(value)
-    for values, value in zip(idle, run(["--help"])):
+    # The commands' own --help: the launcher answers its --help without loading them (app/cli/Launcher.c).
+    for values, value in zip(idle, run(["--help"], cli + "-cli")):
         values.append(value)
     wall, cpu = in_process("BM_SampleReduceFloor", ["--benchmark_min_time=0.2"])
     floor_wall.append(wall[0])
     floor_cpu.append(cpu[0])
 report = json.load(open(os.path.join(same, "report.json")))["timing_ms"]
 print("CLI reduce on the sample (16 meshes in, 15 -> 10, OBJ+VRML+JSON written), 11 rounds:")
-print("  floor: empty process (visemelab --help) wall", line(idle[0]), "| CPU", line(idle[1]))
+print("  floor: empty process (visemelab-cli --help) wall", line(idle[0]), "| CPU", line(idle[1]))
 print("  floor: read inputs + Gram matrix in process wall", line(floor_wall), "| CPU", line(floor_cpu))
 for name, _ in cases:
     wall, cpu, _ = series[name]

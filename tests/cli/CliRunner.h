@@ -12,9 +12,10 @@ struct CliResult {
     std::string output; // stdout and stderr together
 };
 
-// `shellPrefix` runs first in the same shell, e.g. "ulimit -t 20; " to bound the CLI.
-inline CliResult runCliWith(const std::string& shellPrefix, const std::string& arguments) {
-    const std::string command = shellPrefix + std::string(VISEMELAB_CLI) + " " + arguments + " 2>&1";
+// Runs `program` with `arguments` through the shell; `shellPrefix` runs first in the same shell.
+inline CliResult runProgram(const std::string& shellPrefix, const std::string& program,
+                            const std::string& arguments) {
+    const std::string command = shellPrefix + program + " " + arguments + " 2>&1";
     CliResult result;
     FILE* pipe = ::popen(command.c_str(), "r");
     if (!pipe) return result;
@@ -24,6 +25,11 @@ inline CliResult runCliWith(const std::string& shellPrefix, const std::string& a
     const int status = ::pclose(pipe);
     result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     return result;
+}
+
+// `shellPrefix` runs first in the same shell, e.g. "ulimit -t 20; " to bound the CLI.
+inline CliResult runCliWith(const std::string& shellPrefix, const std::string& arguments) {
+    return runProgram(shellPrefix, VISEMELAB_CLI, arguments);
 }
 
 inline CliResult runCli(const std::string& arguments) {
