@@ -98,8 +98,9 @@ class MaterialReader {
         const int t = indexAt(doc_, *index, where + "/index", textures.size());
         if (const Json* set = member(info, "texCoord"))
             texCoord = indexAt(doc_, *set, where + "/texCoord", 8);
-        if (const Json* transform = member(member(info, "extensions") ? *member(info, "extensions") : Json(),
-                                           "KHR_texture_transform")) {
+        const Json* infoExtensions = member(info, "extensions");
+        if (const Json* transform =
+                infoExtensions ? member(*infoExtensions, "KHR_texture_transform") : nullptr) {
             const std::string at = where + "/extensions/KHR_texture_transform";
             readNumbers(doc_, member(*transform, "offset"), at + "/offset", material.uvOffset);
             readNumbers(doc_, member(*transform, "scale"), at + "/scale", material.uvScale);
