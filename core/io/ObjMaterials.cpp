@@ -159,6 +159,9 @@ class MtlReader {
 
 ObjSurface parseObjSurface(std::string_view objText, std::string_view source,
                            const std::filesystem::path& folder) {
+    // Most OBJ files name no material: not worth parsing a second time.
+    if (objText.find("mtllib") == std::string_view::npos && objText.find("usemtl") == std::string_view::npos)
+        return {};
     CornerTexCoords corners;
     const MeshData mesh = parseObj(objText, source, corners);
     ObjSurface out;
