@@ -282,8 +282,8 @@ ColorMode EditorViews::surfaceColours() const {
 }
 
 ColorMode EditorViews::skinColours(const GpuMesh& mesh) const {
-    return shownSurface() == SurfaceShading::Materials && mesh.hasSurface() ? ColorMode::Material
-                                                                            : surfaceColours();
+    return drawnSurface_ == SurfaceShading::Materials && mesh.hasSurface() ? ColorMode::Material
+                                                                           : surfaceColours();
 }
 
 void EditorViews::setSurface(SurfaceShading shading) {
