@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <exception>
 #include <span>
 
 namespace vl::ui {
@@ -180,9 +181,15 @@ void EditorViews::syncGpu() {
                 for (const KeyMesh& key : merged->keys) targets.push_back(key.positions);
             mergedMesh_.setGeometry(set->neutral.positions, set->neutral.triangles, targets);
             if (const auto& colours = session_.document().visemeColours) mergedMesh_.setColors(*colours);
-            mergedMesh_.setSurface(materials_.visemes, materials_.materials);
         });
         if (!shown) mergedMesh_.setGeometry({}, {}, {});
+        // The viseme mesh's materials: a layout that does not fit was reported for it already.
+        if (shown && visemeMesh_.hasSurface()) {
+            try {
+                mergedMesh_.setSurface(materials_.visemes, materials_.materials);
+            } catch (const std::exception&) {
+            }
+        }
         uploadedMergedCurve_ = session_.reductionCurveRevision();
         uploadedMergedGroups_ = groups;
         weightsKey_.clear(), errorKey_.clear(), influenceKey_.clear();
@@ -525,10 +532,10 @@ void EditorViews::syncContextMesh() {
         return;
     }
     const MeshData& context = avatar.scan->context;
-    session_.attempt("Display the avatar", [&] {
-        contextMesh_.setGeometry(context.positions, context.triangles, {});
-        contextMesh_.setSurface(materials_.context, materials_.materials);
-    });
+    if (session_.attempt("Display the avatar",
+                         [&] { contextMesh_.setGeometry(context.positions, context.triangles, {}); }))
+        session_.attempt("Display materials",
+                         [&] { contextMesh_.setSurface(materials_.context, materials_.materials); });
 }
 
 void EditorViews::drawContext(const glm::mat4& view, const glm::mat4& projection) const {

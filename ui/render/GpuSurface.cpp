@@ -1,13 +1,13 @@
 #include "ui/render/GpuSurface.h"
 
 #include "ui/render/GlShader.h"
+#include "ui/render/SeamSplit.h"
 
 #include <glm/glm.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
 #include <cmath>
 #include <stdexcept>
-#include <unordered_map>
 
 namespace vl::ui {
 namespace {
@@ -71,45 +71,31 @@ void GpuSurface::upload(std::span<const Vec3> rest, std::span<const Vec3> restNo
                         const SurfaceMaterials& materials) {
     release();
     if (layout.empty()) return;
-    const bool texCoords = !layout.cornerTexCoords.empty();
-    if (texCoords && layout.cornerTexCoords.size() != triangles.size())
-        throw std::invalid_argument("texture coordinates of " +
-                                    std::to_string(layout.cornerTexCoords.size()) +
-                                    " triangles for a mesh of " + std::to_string(triangles.size()));
     std::size_t covered = 0;
     for (const MaterialRange& r : layout.ranges) {
-        if (r.firstTriangle != covered || r.material >= static_cast<int>(materials.materials.size()))
+        if (r.firstTriangle != covered || r.material < -1 ||
+            r.material >= static_cast<int>(materials.materials.size()))
             throw std::invalid_argument("material ranges do not cover the mesh in order");
         covered += r.triangleCount;
     }
     if (covered != triangles.size()) throw std::invalid_argument("material ranges do not cover the mesh");
 
-    // One vertex per distinct (mesh vertex, texture coordinate): glTF meshes map one to one.
-    std::unordered_map<std::uint64_t, std::uint32_t> vertexOf;
+    const SeamSplit split = splitAtSeams(triangles, rest.size(), layout);
+    const bool texCoords = !layout.cornerTexCoords.empty();
     std::vector<float> positions, normals, uvs;
     std::vector<std::int32_t> sources;
-    std::vector<std::uint32_t> indices;
-    indices.reserve(3 * triangles.size());
-    for (std::size_t t = 0; t < triangles.size(); ++t)
-        for (int k = 0; k < 3; ++k) {
-            const std::uint32_t v = triangles[t][static_cast<std::size_t>(k)];
-            const std::uint32_t c = texCoords ? layout.cornerTexCoords[t][static_cast<std::size_t>(k)] : 0;
-            if (v >= rest.size() || (texCoords && c >= layout.texCoords.size()))
-                throw std::invalid_argument("triangle " + std::to_string(t) + " indexes beyond the mesh");
-            const auto [it, added] =
-                vertexOf.emplace(std::uint64_t{v} << 32 | c, static_cast<std::uint32_t>(sources.size()));
-            if (added) {
-                for (int a = 0; a < 3; ++a) {
-                    positions.push_back(static_cast<float>(rest[v][a]));
-                    normals.push_back(static_cast<float>(restNormals[v][a]));
-                }
-                const Vec2 uv = texCoords ? layout.texCoords[c] : Vec2(0, 0);
-                uvs.push_back(static_cast<float>(uv[0]));
-                uvs.push_back(static_cast<float>(uv[1]));
-                sources.push_back(static_cast<std::int32_t>(v));
-            }
-            indices.push_back(it->second);
+    for (std::size_t d = 0; d < split.source.size(); ++d) {
+        const std::uint32_t v = split.source[d];
+        for (int a = 0; a < 3; ++a) {
+            positions.push_back(static_cast<float>(rest[v][a]));
+            normals.push_back(static_cast<float>(restNormals[v][a]));
         }
+        const Vec2 uv = texCoords ? layout.texCoords[split.texCoord[d]] : Vec2(0, 0);
+        uvs.push_back(static_cast<float>(uv[0]));
+        uvs.push_back(static_cast<float>(uv[1]));
+        sources.push_back(static_cast<std::int32_t>(v));
+    }
+    const std::vector<std::uint32_t>& indices = split.indices;
 
     glGenVertexArrays(1, &vao_);
     glBindVertexArray(vao_);
