@@ -1,5 +1,6 @@
 #include "core/gltf/AvatarMaterials.h"
 
+#include "core/common/Error.h"
 #include "core/gltf/Accessors.h"
 #include "core/gltf/AvatarScan.h"
 #include "core/gltf/BufferViews.h"

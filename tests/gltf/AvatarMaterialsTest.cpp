@@ -129,5 +129,18 @@ TEST(AvatarMaterials, ReadyPlayerMeLikeLayoutsFitEveryStorage) {
     }
 }
 
+TEST(AvatarMaterials, VRoidLikeLayoutsFitItsTwoFacePrimitives) {
+    for (const bool vrm1 : {false, true}) {
+        const GltfDocument doc = parseGltfDocument(test::vroidLikeAvatar(vrm1), "vroid.vrm", {});
+        const AvatarScan scan = scanAvatar(doc, {"Fcl_MTH_*", true});
+        const AvatarSurfaces surfaces = readAvatarSurfaces(doc, scan);
+        EXPECT_EQ(surfaces.visemes.texCoords.size(), scan.set.neutral.positions.size());
+        EXPECT_EQ(surfaces.context.texCoords.size(), scan.context.positions.size());
+        std::size_t triangles = 0;
+        for (const MaterialRange& r : surfaces.visemes.ranges) triangles += r.triangleCount;
+        EXPECT_EQ(triangles, scan.set.neutral.triangles.size());
+    }
+}
+
 } // namespace
 } // namespace vl
