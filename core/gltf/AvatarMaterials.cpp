@@ -112,6 +112,14 @@ class MaterialReader {
         }
         const std::string textureWhere = "textures/" + std::to_string(t);
         const Json& tex = textures[static_cast<std::size_t>(t)];
+        if (const Json* sampler = member(tex, "sampler")) {
+            const Json& samplers = arrayOf(doc_, "samplers");
+            const std::string samplerWhere = textureWhere + "/sampler";
+            const Json& s =
+                samplers[static_cast<std::size_t>(indexAt(doc_, *sampler, samplerWhere, samplers.size()))];
+            material.wrapU = wrap(member(s, "wrapS"), samplerWhere);
+            material.wrapV = wrap(member(s, "wrapT"), samplerWhere);
+        }
         const Json* source = member(tex, "source");
         if (!source) { // only an extension's image (KHR_texture_basisu, EXT_texture_webp, ...)
             std::string kinds;
@@ -126,6 +134,14 @@ class MaterialReader {
         }
         material.image = image(
             indexAt(doc_, *source, textureWhere + "/source", arrayOf(doc_, "images").size()), material.name);
+    }
+
+    // glTF's wrap mode codes (the WebGL enums); absent: repeat.
+    TextureWrap wrap(const Json* mode, const std::string& where) const {
+        if (!mode || *mode == 10497) return TextureWrap::Repeat;
+        if (*mode == 33071) return TextureWrap::Clamp;
+        if (*mode == 33648) return TextureWrap::Mirror;
+        doc_.fail(where, "wrap mode " + mode->dump() + " is not 10497, 33071 or 33648");
     }
 
     std::string imageBytes(const Json& image, const std::string& where) {

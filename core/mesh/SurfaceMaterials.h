@@ -21,7 +21,8 @@ struct TextureImage {
     std::vector<std::uint8_t> rgba; // width x height x 4, top row first
 };
 
-enum class AlphaMode { Opaque, Mask, Blend }; // glTF material.alphaMode
+enum class AlphaMode { Opaque, Mask, Blend };     // glTF material.alphaMode
+enum class TextureWrap { Repeat, Clamp, Mirror }; // glTF sampler wrapS/wrapT (10497, 33071, 33648)
 
 struct SurfaceMaterial {
     std::string name;
@@ -30,6 +31,7 @@ struct SurfaceMaterial {
     // KHR_texture_transform of the base-colour texture: uv' = offset + R(rotation) S(scale) uv.
     std::array<float, 2> uvOffset{0.0f, 0.0f}, uvScale{1.0f, 1.0f};
     float uvRotation = 0.0f; // radians, counter-clockwise in texture space as the extension defines
+    TextureWrap wrapU = TextureWrap::Repeat, wrapV = TextureWrap::Repeat; // the texture's sampler
     AlphaMode alphaMode = AlphaMode::Opaque;
     float alphaCutoff = 0.5f;
     bool doubleSided = false;

@@ -43,6 +43,8 @@ TEST(AvatarMaterials, FaceTextureEyeBlendAndBodyFallbackPerPrimitive) {
     ASSERT_EQ(face.image, 0);
     EXPECT_EQ(face.uvOffset[0], 0.5f);
     EXPECT_EQ(face.uvScale[0], 0.5f);
+    EXPECT_EQ(face.wrapU, TextureWrap::Clamp);
+    EXPECT_EQ(face.wrapV, TextureWrap::Clamp);
     EXPECT_EQ(face.alphaMode, AlphaMode::Opaque);
     ASSERT_EQ(m.images.size(), 1u);
     EXPECT_EQ(m.images[0].width, 4);
@@ -122,8 +124,14 @@ TEST(AvatarMaterials, ReadyPlayerMeLikeLayoutsFitEveryStorage) {
         const AvatarSurfaces surfaces = readAvatarSurfaces(doc, scan);
         EXPECT_EQ(surfaces.visemes.texCoords.size(), scan.set.neutral.positions.size());
         EXPECT_EQ(surfaces.context.texCoords.size(), scan.context.positions.size());
-        // The head's skin texture (the fixture's 2x2 PNG) is decoded.
+        // The head's skin texture (the fixture's 2x2 PNG) is decoded, sampled as its sampler says
+        // (wrapS repeat, wrapT mirrored).
         ASSERT_FALSE(surfaces.materials.images.empty()) << static_cast<int>(storage);
+        for (const SurfaceMaterial& m : surfaces.materials.materials)
+            if (m.image >= 0) {
+                EXPECT_EQ(m.wrapU, TextureWrap::Repeat);
+                EXPECT_EQ(m.wrapV, TextureWrap::Mirror);
+            }
         EXPECT_EQ(surfaces.materials.images[0].width, 2);
         EXPECT_EQ(surfaces.materials.images[0].rgba[0], 200);
     }

@@ -75,7 +75,8 @@ std::string texturedAvatar(const TexturedAvatarOptions& options) {
     else
         image["bufferView"] = b.addView(png.data(), png.size());
     const int faceImage = b.add("images", image);
-    const int faceTexture = b.add("textures", {{"source", faceImage}});
+    const int clamp = b.add("samplers", {{"wrapS", 33071}, {"wrapT", 33071}});
+    const int faceTexture = b.add("textures", {{"source", faceImage}, {"sampler", clamp}});
     const int faceMaterial =
         b.add("materials", {{"name", "Face"},
                             {"pbrMetallicRoughness",

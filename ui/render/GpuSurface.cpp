@@ -38,6 +38,18 @@ GLuint uploadImage(const TextureImage& image) {
     return texture;
 }
 
+GLint glWrap(TextureWrap wrap) {
+    switch (wrap) {
+    case TextureWrap::Clamp:
+        return GL_CLAMP_TO_EDGE;
+    case TextureWrap::Mirror:
+        return GL_MIRRORED_REPEAT;
+    case TextureWrap::Repeat:
+        break;
+    }
+    return GL_REPEAT;
+}
+
 // KHR_texture_transform's matrix: translation * rotation * scale (the extension's GLSL).
 glm::mat3 texTransform(const SurfaceMaterial& m) {
     const float c = std::cos(m.uvRotation), s = std::sin(m.uvRotation);
@@ -135,6 +147,10 @@ void GpuSurface::drawRange(const GlShader& shader, const Range& range) const {
     glUniform1i(shader.uniform("uHasTexture"), textured ? 1 : 0);
     glActiveTexture(GL_TEXTURE1);
     glBindTexture(GL_TEXTURE_2D, textured ? textures_[static_cast<std::size_t>(m.image)] : 0);
+    if (textured) { // the material's sampler (one image may be sampled differently by two materials)
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, glWrap(m.wrapU));
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, glWrap(m.wrapV));
+    }
     glActiveTexture(GL_TEXTURE0);
     const glm::mat3 transform = texTransform(m);
     glUniformMatrix3fv(shader.uniform("uTexTransform"), 1, GL_FALSE, glm::value_ptr(transform));
