@@ -46,20 +46,26 @@ std::optional<float> number(std::string_view token) {
     return value;
 }
 
-// The file name of a `map_Kd [options] file` statement: options start with '-' and take the
-// numbers (or on/off) after them; what remains, joined by single spaces, is the file.
-std::string mapFileName(const std::vector<std::string_view>& words) {
-    std::string name;
+// A `map_Kd [options] file` statement: options start with '-' and take the numbers (or on/off)
+// after them; what remains, joined by single spaces, is the file. `-clamp on` clamps the texture.
+struct TextureMap {
+    std::string file;
+    bool clamp = false;
+};
+
+TextureMap textureMap(const std::vector<std::string_view>& words) {
+    TextureMap map;
     for (std::size_t i = 1; i < words.size(); ++i) {
-        if (name.empty() && words[i].starts_with('-')) {
+        if (map.file.empty() && words[i].starts_with('-')) {
+            if (words[i] == "-clamp" && i + 1 < words.size()) map.clamp = words[i + 1] == "on";
             while (i + 1 < words.size() &&
                    (number(words[i + 1]) || words[i + 1] == "on" || words[i + 1] == "off"))
                 ++i;
             continue;
         }
-        name += (name.empty() ? "" : " ") + std::string(words[i]);
+        map.file += (map.file.empty() ? "" : " ") + std::string(words[i]);
     }
-    return name;
+    return map;
 }
 
 // sRGB-coded display colour (what .mtl files hold) to the linear factor SurfaceMaterial keeps.
@@ -106,9 +112,10 @@ class MtlReader {
                 current->baseColor[3] = std::clamp(words[0] == "d" ? *value : 1.0f - *value, 0.0f, 1.0f);
                 if (current->baseColor[3] < 1.0f) current->alphaMode = AlphaMode::Blend;
             } else if (words[0] == "map_Kd") {
-                const std::string name = mapFileName(words);
-                if (name.empty()) throwInputError(at, "map_Kd names no file");
-                current->image = image(file.parent_path() / name, at);
+                const TextureMap map = textureMap(words);
+                if (map.file.empty()) throwInputError(at, "map_Kd names no file");
+                current->image = image(file.parent_path() / map.file, at);
+                current->wrapU = current->wrapV = map.clamp ? TextureWrap::Clamp : TextureWrap::Repeat;
             }
         });
         for (SurfaceMaterial& m : out_.materials.materials)

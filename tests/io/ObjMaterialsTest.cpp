@@ -52,7 +52,7 @@ std::string joined(const std::vector<std::string>& lines) {
 TEST(ObjMaterials, MaterialsRangesTexturesAndCornerTexCoords) {
     MaterialsFolder dir;
     putFile(dir / "skin.png", test::pngBytes(2, 1, {10, 20, 30, 255, 40, 50, 60, 255}));
-    putFile(dir / "head.mtl", "newmtl skin\nKd 0.8 0.8 0.8\nmap_Kd -s 1 1 1 skin.png\n"
+    putFile(dir / "head.mtl", "newmtl skin\nKd 0.8 0.8 0.8\nmap_Kd -s 1 1 1 -clamp on skin.png\n"
                               "newmtl lips\nKd 0.5 0.25 1\nd 0.5\n");
     putFile(dir / "head.obj", kObj);
     const ObjSurface surface = readObjSurface(dir / "head.obj");
@@ -63,6 +63,7 @@ TEST(ObjMaterials, MaterialsRangesTexturesAndCornerTexCoords) {
     EXPECT_EQ(skin.name, "skin");
     ASSERT_EQ(skin.image, 0);
     EXPECT_EQ(skin.baseColor[0], 1.0f); // the texture is the colour
+    EXPECT_EQ(skin.wrapU, TextureWrap::Clamp);
     ASSERT_EQ(surface.materials.images.size(), 1u);
     EXPECT_EQ(surface.materials.images[0].width, 2);
     EXPECT_EQ(surface.materials.images[0].rgba[4], 40);
