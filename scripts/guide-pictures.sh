@@ -47,3 +47,9 @@ xvfb-run -a -s '-screen 0 1600x1000x24' "$editor" --size 1280 800 --avatar "$fix
   --frames 10 --screenshot-bits 6 --panel Reduction --viseme viseme_aa --no-wireframe \
   --screenshot docs/images/editor-avatar.png >/dev/null
 echo docs/images/editor-avatar.png
+# The same avatar in its materials (the skin texture, the eyes' and the body's colours), the
+# Materials | Error colours switch in the view's corner.
+xvfb-run -a -s '-screen 0 1600x1000x24' "$editor" --size 1280 800 --avatar "$fixtures/rpm_plain.glb" \
+  --frames 10 --screenshot-bits 6 --panel Visemes --viseme viseme_aa --surface materials \
+  --screenshot docs/images/editor-materials.png >/dev/null
+echo docs/images/editor-materials.png

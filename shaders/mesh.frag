@@ -1,14 +1,23 @@
 #version 330 core
-// Two-sided Blinn-Phong with a head light; optional per-vertex scalar shown through a colour map.
+// Two-sided Blinn-Phong with a head light; optional per-vertex scalar shown through a colour map, or
+// a material's base colour (factor times texture, KHR_texture_transform, alpha mask or blend).
 in vec3 vViewPosition;
 in vec3 vViewNormal;
 in float vScalar;
 in vec3 vColor;
+in vec2 vTexCoord;
 
-uniform int uColorMode;   // 0: surface colour, 1: scalar through the colour map, 2: vertex colour
+uniform int uColorMode;   // 0: surface colour, 1: scalar through the colour map, 2: vertex colour, 3: material
 uniform vec3 uSurfaceColor;
 uniform int uWireframe;   // 1 for the line pass
 uniform vec4 uWireColor;
+// Material (uColorMode 3): base colour factor in display values, texture on unit 1.
+uniform vec4 uBaseColor;
+uniform int uHasTexture;
+uniform sampler2D uBaseTexture;
+uniform mat3 uTexTransform;
+uniform int uAlphaMode;   // 0 opaque, 1 mask, 2 blend
+uniform float uAlphaCutoff;
 
 out vec4 fragColor;
 
@@ -35,10 +44,18 @@ void main() {
     vec3 v = normalize(-vViewPosition);
     if (dot(n, v) < 0.0) n = -n;
     vec3 base = uColorMode == 1 ? colorMap(vScalar) : (uColorMode == 2 ? vColor : uSurfaceColor);
+    float alpha = 1.0;
+    if (uColorMode == 3) {
+        vec4 material = uBaseColor;
+        if (uHasTexture == 1) material *= texture(uBaseTexture, (uTexTransform * vec3(vTexCoord, 1.0)).xy);
+        if (uAlphaMode == 1 && material.a < uAlphaCutoff) discard;
+        base = material.rgb;
+        alpha = uAlphaMode == 2 ? material.a : 1.0;
+    }
     float diffuse = max(dot(n, v), 0.0);
     vec3 h = normalize(v + normalize(vec3(0.3, 0.5, 1.0)));
     float specular = pow(max(dot(n, h), 0.0), 48.0) * 0.25;
     float fill = max(dot(n, normalize(vec3(-0.6, 0.3, 0.5))), 0.0) * 0.25;
     vec3 color = base * (0.22 + 0.68 * diffuse + fill) + vec3(specular);
-    fragColor = vec4(pow(color, vec3(1.0 / 1.1)), 1.0);
+    fragColor = vec4(pow(color, vec3(1.0 / 1.1)), alpha);
 }

@@ -176,6 +176,7 @@ void applyStartOptions(const EditorOptions& options, EditorSession& session, Edi
         throwInputError("--sculpt",
                         "expected grab, smooth, inflate or deflate, got '" + options.sculpt + "'");
     });
+    step(!options.surface.empty(), [&] { ui.setSurface(options.surface); });
     step(!options.merged.empty(), [&] { ui.setMergedDisplay(options.merged); });
     if (options.play >= 0.0) ui.startPlayback(options.play, options.sequence);
     step(!options.mapStart.empty(), [&] { ui.startMapFrom(options.mapStart); });

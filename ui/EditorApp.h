@@ -15,27 +15,28 @@ struct EditorOptions {
     std::string avatarTargets;          // its viseme target pattern (empty: the Oculus names)
     std::filesystem::path screenshot;   // non-empty: render `frames` frames, save a PNG, exit
     int frames = 6;
-    int screenshotBits = 8;      // < 8: fewer colour levels, much smaller files
-    std::string panel;           // panel to show (Visemes, Frequencies, Weights, ...)
-    std::string viseme;          // viseme to select
-    std::string individual;      // base geometry of the face: bundled or retarget
-    std::string ownFace;         // a mesh whose landmarks the own-face step shows (Use my mesh...)
-    std::string preset;          // viseme preset applied to the deformable face
-    std::string field;           // deformation field (stage name) to select
-    double play = -1.0;          // >= 0: start the playback at this time (seconds)
-    std::string sequence;        // playback sequence (phonemes or viseme names)
-    std::string say;             // text the Reduction panel's Say speaks at start
-    double sayAt = -1.0;         // >= 0: show the speech paused at this time (seconds)
-    std::string brush;           // add, subtract or smooth: paint in the Weights panel
-    std::string sculpt;          // grab, smooth, inflate or deflate: sculpt in the Visemes panel
-    std::string weights;         // uniform, area or painted: the weight mode set after loading
-    std::vector<float> drag;     // x0 y0 x1 y1: a left-button drag over the frames (window pixels)
-    bool wireframe = true;       // wireframe overlay at start
-    std::string view;            // standard view at start: front, back, right, left, top, bottom
-    bool orthographic = false;   // orthographic projection at start
-    std::string merged;          // errors, skin or overlay: how the Reduction view shows the merged shape
-    std::string refine;          // run a refinement with this criterion (depth, normals, contour)
-    std::string mapStart;        // open the map editor's assignment from this bundled map id
+    int screenshotBits = 8;    // < 8: fewer colour levels, much smaller files
+    std::string panel;         // panel to show (Visemes, Frequencies, Weights, ...)
+    std::string viseme;        // viseme to select
+    std::string individual;    // base geometry of the face: bundled or retarget
+    std::string ownFace;       // a mesh whose landmarks the own-face step shows (Use my mesh...)
+    std::string preset;        // viseme preset applied to the deformable face
+    std::string field;         // deformation field (stage name) to select
+    double play = -1.0;        // >= 0: start the playback at this time (seconds)
+    std::string sequence;      // playback sequence (phonemes or viseme names)
+    std::string say;           // text the Reduction panel's Say speaks at start
+    double sayAt = -1.0;       // >= 0: show the speech paused at this time (seconds)
+    std::string brush;         // add, subtract or smooth: paint in the Weights panel
+    std::string sculpt;        // grab, smooth, inflate or deflate: sculpt in the Visemes panel
+    std::string weights;       // uniform, area or painted: the weight mode set after loading
+    std::vector<float> drag;   // x0 y0 x1 y1: a left-button drag over the frames (window pixels)
+    bool wireframe = true;     // wireframe overlay at start
+    std::string view;          // standard view at start: front, back, right, left, top, bottom
+    bool orthographic = false; // orthographic projection at start
+    std::string surface;  // materials or errors: what the views' surfaces show (documents with materials)
+    std::string merged;   // errors, skin or overlay: how the Reduction view shows the merged shape
+    std::string refine;   // run a refinement with this criterion (depth, normals, contour)
+    std::string mapStart; // open the map editor's assignment from this bundled map id
     std::filesystem::path probe; // GUI tests: write the controls and a document summary here each frame
     int width = 1600;
     int height = 1000;

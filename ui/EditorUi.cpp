@@ -1,6 +1,7 @@
 #include "ui/EditorUi.h"
 
 #include "core/adaptive/Criteria.h"
+#include "core/common/Error.h"
 #include "ui/KeyPresses.h"
 #include "ui/UiScale.h"
 #include "ui/widgets/Controls.h"
@@ -167,11 +168,20 @@ void EditorUi::shortcuts() {
         if (press.ctrl()) continue;
         if (press.key == GLFW_KEY_F && !press.repeat) views_.frameAll();
         if (press.key == GLFW_KEY_W && !press.repeat) views_.wireframe = !views_.wireframe;
+        if (press.key == GLFW_KEY_M && !press.repeat && views_.hasMaterials())
+            views_.setSurface(views_.surface == SurfaceShading::Materials ? SurfaceShading::ErrorColours
+                                                                          : SurfaceShading::Materials);
         // Brush size by keyboard, as in painting programs (held: keeps changing).
         if (activePanel_ == Panel::Weights &&
             (press.key == GLFW_KEY_LEFT_BRACKET || press.key == GLFW_KEY_RIGHT_BRACKET))
             weights_.painter().resizeBrush(press.key == GLFW_KEY_RIGHT_BRACKET);
     }
+}
+
+void EditorUi::setSurface(const std::string& name) {
+    if (name != "materials" && name != "errors")
+        throwInputError("--surface", "expected materials or errors, got '" + name + "'");
+    views_.setSurface(name == "materials" ? SurfaceShading::Materials : SurfaceShading::ErrorColours);
 }
 
 void EditorUi::menuBar() {
@@ -214,6 +224,13 @@ void EditorUi::menuBar() {
         ImGui::Separator();
         ctl::MenuItem("Wireframe overlay", "W", &views_.wireframe);
         ImGui::Separator();
+        // The document's materials or the analysis colours (also the switch in the views' corner).
+        const bool materials = views_.hasMaterials();
+        if (ctl::MenuItem("Materials", "M", views_.surface == SurfaceShading::Materials, materials))
+            views_.setSurface(SurfaceShading::Materials);
+        if (ctl::MenuItem("Error colours", "M", views_.surface == SurfaceShading::ErrorColours, materials))
+            views_.setSurface(SurfaceShading::ErrorColours);
+        ImGui::Separator();
         for (int i = 0; i < static_cast<int>(Panel::Count); ++i)
             if (ctl::MenuItem(panelName(static_cast<Panel>(i)), nullptr,
                               activePanel_ == static_cast<Panel>(i)))
@@ -224,7 +241,8 @@ void EditorUi::menuBar() {
         ImGui::TextUnformatted("VisemeLab editor");
         ImGui::Separator();
         ImGui::TextUnformatted("Left drag: orbit    Right/middle drag: pan    Wheel: zoom");
-        ImGui::TextUnformatted("Arrows: orbit    +/-: zoom    F or Home: frame    W: wireframe");
+        ImGui::TextUnformatted(
+            "Arrows: orbit    +/-: zoom    F or Home: frame    W: wireframe    M: materials");
         ImGui::TextUnformatted("Numpad 1/3/7: front/right/top, Ctrl for back/left/bottom, 5: orthographic");
         ImGui::TextUnformatted("Ctrl+O open, Ctrl+S save, Ctrl+Shift+S save as, Ctrl+L sample, Ctrl+Q quit");
         ImGui::TextUnformatted("Ctrl+Z undo, Ctrl+Y redo");

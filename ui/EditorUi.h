@@ -46,6 +46,8 @@ class EditorUi {
     void selectPanel(Panel panel);
     void setWireframe(bool on) { views_.wireframe = on; }
     void setStartView(StandardView view, bool orthographic) { views_.setStartView(view, orthographic); }
+    // "materials" or "errors" (--surface); throws InputError for another name.
+    void setSurface(const std::string& name);
     // "errors", "skin" or "overlay" (--merged); throws InputError for another name.
     void setMergedDisplay(const std::string& name) { reduction_.setMergedDisplay(name); }
     // Turns painting on with this operation (0 add, 1 subtract, 2 smooth).

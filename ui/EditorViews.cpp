@@ -8,6 +8,7 @@
 #include "core/project/BuiltinGeometry.h"
 #include "ui/UiScale.h"
 #include "ui/probe/GuiProbe.h"
+#include "ui/widgets/SurfaceToggle.h"
 
 #include <imgui.h>
 
@@ -16,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <exception>
 #include <span>
 
 namespace vl::ui {
@@ -118,6 +120,12 @@ nlohmann::json EditorViews::faceViewProbe() const {
 }
 
 void EditorViews::syncGpu() {
+    if (refreshViewMaterials(materials_, session_.document(), session_)) {
+        // Another source of materials: every mesh that shows them is uploaded again.
+        uploadedGeometry_ = 0;
+        uploadedMergedCurve_ = 0;
+        uploadedContext_ = nullptr;
+    }
     if (uploadedGeometry_ != session_.geometryGeneration()) {
         uploadedGeometry_ = session_.geometryGeneration();
         if (const VisemeSet* set = session_.visemes()) {
@@ -127,11 +135,13 @@ void EditorViews::syncGpu() {
                 visemeMesh_.setGeometry(set->neutral.positions, set->neutral.triangles, targets);
                 if (const auto& colours = session_.document().visemeColours) visemeMesh_.setColors(*colours);
             });
+            session_.attempt("Display materials",
+                             [&] { visemeMesh_.setSurface(materials_.visemes, materials_.materials); });
         } else {
             visemeMesh_.setGeometry({}, {}, {});
         }
         uploadedMergedCurve_ = 0;
-        weightsKey_.clear(), errorKey_.clear(), influenceKey_.clear();
+        weightsKey_.clear(), errorKey_.clear(), influenceKey_.clear(), mainErrorKey_.clear();
         // Another set is framed once; an edit of a viseme (a sculpt stroke, an undo) keeps the camera.
         const VisemeSet* set = session_.visemes();
         std::vector<Vec3> neutral = set ? set->neutral.positions : std::vector<Vec3>();
@@ -180,6 +190,13 @@ void EditorViews::syncGpu() {
             if (const auto& colours = session_.document().visemeColours) mergedMesh_.setColors(*colours);
         });
         if (!shown) mergedMesh_.setGeometry({}, {}, {});
+        // The viseme mesh's materials: a layout that does not fit was reported for it already.
+        if (shown && visemeMesh_.hasSurface()) {
+            try {
+                mergedMesh_.setSurface(materials_.visemes, materials_.materials);
+            } catch (const std::exception&) {
+            }
+        }
         uploadedMergedCurve_ = session_.reductionCurveRevision();
         uploadedMergedGroups_ = groups;
         weightsKey_.clear(), errorKey_.clear(), influenceKey_.clear();
@@ -295,6 +312,33 @@ ColorMode EditorViews::surfaceColours() const {
     return session_.document().visemeColours ? ColorMode::VertexColor : ColorMode::Surface;
 }
 
+ColorMode EditorViews::skinColours(const GpuMesh& mesh) const {
+    return drawnSurface_ == SurfaceShading::Materials && mesh.hasSurface() ? ColorMode::Material
+                                                                           : surfaceColours();
+}
+
+void EditorViews::setSurface(SurfaceShading shading) {
+    surface = shading;
+    using Display = ReductionPanel::MergedDisplay;
+    if (shading == SurfaceShading::ErrorColours)
+        panels_.reduction.setMergedDisplay(Display::ErrorColours);
+    else if (panels_.reduction.mergedDisplay() == Display::ErrorColours)
+        panels_.reduction.setMergedDisplay(Display::Skin);
+}
+
+void EditorViews::excludeSurfaceSwitch(Viewport& view, ImVec2 viewMin, ImVec2 size) const {
+    if (!hasMaterials()) return;
+    ImVec2 min, max;
+    surfaceToggleRect(ImVec2(viewMin.x + size.x, viewMin.y), min, max);
+    view.excludeFromDrags(min, max);
+}
+
+void EditorViews::surfaceSwitch(const ViewportEvents& view) {
+    if (!hasMaterials()) return;
+    SurfaceShading shading = drawnSurface_;
+    if (surfaceToggle(ImVec2(view.imageMax.x, view.imageMin.y), shading)) setSurface(shading);
+}
+
 std::vector<float> EditorViews::visemeWeights(int viseme) const {
     std::vector<float> w(session_.visemeCount(), 0.0f);
     if (viseme >= 0 && viseme < static_cast<int>(w.size())) w[static_cast<std::size_t>(viseme)] = 1.0f;
@@ -325,6 +369,7 @@ std::size_t EditorViews::drawHeadParts(std::span<const float> q, const glm::mat4
 
 void EditorViews::drawMainView(ImVec2 size) {
     const DeformationPanel::Field selected = panels_.deformation.selectedField();
+    drawnSurface_ = shownSurface();
     DrawStyle style;
     style.wireframe = wireframe;
     const bool painting = (active_ == Panel::Weights && panels_.weights.painter().brush.enabled) ||
@@ -373,14 +418,20 @@ void EditorViews::drawMainView(ImVec2 size) {
         std::vector<float> weights =
             speech_.shown() ? speech_.weights(false) : visemeWeights(session_.selectedViseme);
         if (weights.size() != session_.visemeCount()) weights = visemeWeights(-1);
-        style.color =
-            active_ == Panel::Weights && panels_.weights.showColours() ? ColorMode::Scalar : surfaceColours();
+        // Weight colours while painting; with materials switched to error colours, the merge error of
+        // the selected viseme once the reduction has one.
+        const bool errorMap = active_ == Panel::Visemes && !mainErrorKey_.empty();
+        style.color = (active_ == Panel::Weights && panels_.weights.showColours()) || errorMap
+                          ? ColorMode::Scalar
+                          : skinColours(visemeMesh_);
         if (active_ == Panel::Weights) weights.assign(weights.size(), 0.0f); // paint on the neutral
         // A set the face made shows the head's teeth, tongue and cavity in the mouth, as the face view
         // does (not while painting weights, which apply to the skin alone).
         std::vector<float> partsQ;
         if (active_ != Panel::Weights) partsQ = visemePartWeights(weights);
         shownVisemeParts_ = {0, partsQ};
+        shownMainColour_ = style.color;
+        excludeSurfaceSwitch(mainView_, ImGui::GetCursorScreenPos(), size);
         events = mainView_.show(
             "main", size,
             [&](const glm::mat4& view, const glm::mat4& projection) {
@@ -404,7 +455,12 @@ void EditorViews::drawMainView(ImVec2 size) {
             const int s = session_.selectedViseme;
             label = s >= 0 ? "Viseme " + session_.visemes()->visemes[static_cast<std::size_t>(s)].name
                            : "Neutral";
+            if (errorMap) {
+                label += " (merge error)";
+                errorLegend(events);
+            }
         }
+        if (!visemeMesh_.empty()) surfaceSwitch(events);
         if (active_ == Panel::Weights)
             panels_.weights.painter().paint(events); // readout always, tools while painting
         if (active_ == Panel::Visemes && !speech_.shown()) panels_.visemes.sculptor().sculpt(events);
@@ -478,9 +534,15 @@ void EditorViews::comparisonViews(ImVec2 size) {
             }
         }
     }
+    // The comparison follows the panel's choice for the right view: its error colours are the
+    // analysis colours on both sides, skin and overlay show the materials.
+    drawnSurface_ =
+        hasMaterials() && panels_.reduction.mergedDisplay() != ReductionPanel::MergedDisplay::ErrorColours
+            ? SurfaceShading::Materials
+            : SurfaceShading::ErrorColours;
     DrawStyle plain;
     plain.wireframe = wireframe;
-    plain.color = surfaceColours();
+    plain.color = skinColours(visemeMesh_);
     DrawStyle errors = plain;
     const bool errorColours =
         !speech && panels_.reduction.mergedDisplay() == ReductionPanel::MergedDisplay::ErrorColours;
@@ -499,6 +561,7 @@ void EditorViews::comparisonViews(ImVec2 size) {
     else
         emptyViewHint(left.imageMin, left.imageMax, "No viseme set loaded");
     ImGui::SameLine(0.0f, 2.0f);
+    excludeSurfaceSwitch(afterView_, ImGui::GetCursorScreenPos(), half);
     const ViewportEvents right =
         afterView_.show("after", half, [&](const glm::mat4& view, const glm::mat4& projection) {
             drawContext(view, projection); // the avatar's meshes without visemes, greyed
@@ -507,15 +570,8 @@ void EditorViews::comparisonViews(ImVec2 size) {
             if (overlay) visemeMesh_.draw(shader_, before, view, projection, ghost);
         });
     if (session_.visemes()) viewLabel(right, afterLabel);
-    if (grouping && errorColours)
-        colourLegend(right.imageMin, right.imageMax, "0 mm",
-                     [&] {
-                         char text[64];
-                         std::snprintf(text, sizeof text, "%.3g mm (largest, all visemes)",
-                                       errorLegendMax_ * panels_.reduction.millimetresPerModelUnit());
-                         return std::string(text);
-                     }()
-                         .c_str());
+    if (grouping && errorColours) errorLegend(right);
+    if (session_.visemes()) surfaceSwitch(right);
     // One camera for both views: the one the user is moving wins.
     if (right.hovered || right.leftDown)
         beforeView_.camera = afterView_.camera;
@@ -527,6 +583,13 @@ void EditorViews::comparisonViews(ImVec2 size) {
     }
 }
 
+void EditorViews::errorLegend(const ViewportEvents& view) const {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.3g mm (largest, all visemes)",
+                  errorLegendMax_ * panels_.reduction.millimetresPerModelUnit());
+    colourLegend(view.imageMin, view.imageMax, "0 mm", text);
+}
+
 void EditorViews::syncContextMesh() {
     const DocumentAvatar& avatar = session_.document().avatar;
     if (avatar.scan == uploadedContext_) return;
@@ -536,18 +599,51 @@ void EditorViews::syncContextMesh() {
         return;
     }
     const MeshData& context = avatar.scan->context;
-    session_.attempt("Display the avatar",
-                     [&] { contextMesh_.setGeometry(context.positions, context.triangles, {}); });
+    if (session_.attempt("Display the avatar",
+                         [&] { contextMesh_.setGeometry(context.positions, context.triangles, {}); }))
+        session_.attempt("Display materials",
+                         [&] { contextMesh_.setSurface(materials_.context, materials_.materials); });
 }
 
 void EditorViews::drawContext(const glm::mat4& view, const glm::mat4& projection) const {
     if (contextMesh_.empty()) return;
-    // Greyed: the meshes the reduction does not touch (body, hair, outfit), for orientation only.
+    // The meshes the reduction does not touch (body, hair, outfit), for orientation only: in their
+    // materials, or greyed.
     DrawStyle grey;
     grey.wireframe = false;
-    grey.color = ColorMode::Surface;
+    grey.color = skinColours(contextMesh_) == ColorMode::Material ? ColorMode::Material : ColorMode::Surface;
     grey.surfaceColor = glm::vec3(0.36f, 0.37f, 0.40f);
     contextMesh_.draw(shader_, {}, view, projection, grey);
+}
+
+bool EditorViews::mergeErrors(int selected, std::vector<float>& values) {
+    const VisemeSet* set = session_.visemes();
+    const Grouping* grouping = session_.currentGrouping();
+    bool done = false;
+    session_.attempt("Error map", [&] {
+        const ReducedModel* merged = session_.reducedModel();
+        if (!set || !grouping || !merged) return;
+        const std::vector<double> w = session_.weights();
+        double scale = 0.0;
+        std::vector<double> shown;
+        const auto measure = [&](int member, const std::vector<Vec3>& shape) {
+            auto errors = vertexErrors(set->visemes[static_cast<std::size_t>(member)].positions, shape, w);
+            scale = std::max(scale, maxOf(errors));
+            if (member == selected) shown = std::move(errors);
+        };
+        for (std::size_t g = 0; g < grouping->groups.size(); ++g)
+            for (int member : grouping->groups[g]) measure(member, merged->keys[g].positions);
+        // A resting viseme is shown as the neutral: its error is its distance from it.
+        for (int member : grouping->rest) measure(member, set->neutral.positions);
+        // Square root: distances read better than squared distances on a colour ramp. The
+        // legend reads in distance for a vertex of the largest weight (sqrt(w) d / sqrt(w_max)).
+        for (double& e : shown) e = std::sqrt(e);
+        values = normalised(shown, std::sqrt(scale));
+        const double maxWeight = maxOf(w);
+        errorLegendMax_ = maxWeight > 0.0 ? std::sqrt(scale / maxWeight) : 0.0;
+        done = true;
+    });
+    return done;
 }
 
 void EditorViews::updateScalars() {
@@ -567,6 +663,7 @@ void EditorViews::updateScalars() {
             }
             visemeMesh_.setScalars(normalised(w, maxOf(w)));
             weightsKey_ = key;
+            mainErrorKey_.clear(); // the merge errors are no longer there
         }
     }
     // Merge error of the selected viseme on the reduced view.
@@ -576,30 +673,26 @@ void EditorViews::updateScalars() {
         const std::string key = std::to_string(selected) + ":" + std::to_string(session_.inputsGeneration()) +
                                 ":" + std::to_string(grouping->groups.size());
         if (key != errorKey_) {
-            session_.attempt("Error map", [&] {
-                const ReducedModel* merged = session_.reducedModel();
-                if (!merged) return;
-                const std::vector<double> w = session_.weights();
-                double scale = 0.0;
-                std::vector<double> shown;
-                const auto measure = [&](int member, const std::vector<Vec3>& shape) {
-                    auto errors =
-                        vertexErrors(set->visemes[static_cast<std::size_t>(member)].positions, shape, w);
-                    scale = std::max(scale, maxOf(errors));
-                    if (member == selected) shown = std::move(errors);
-                };
-                for (std::size_t g = 0; g < grouping->groups.size(); ++g)
-                    for (int member : grouping->groups[g]) measure(member, merged->keys[g].positions);
-                // A resting viseme is shown as the neutral: its error is its distance from it.
-                for (int member : grouping->rest) measure(member, set->neutral.positions);
-                // Square root: distances read better than squared distances on a colour ramp. The
-                // legend reads in distance for a vertex of the largest weight (sqrt(w) d / sqrt(w_max)).
-                for (double& e : shown) e = std::sqrt(e);
-                mergedMesh_.setScalars(normalised(shown, std::sqrt(scale)));
-                const double maxWeight = maxOf(w);
-                errorLegendMax_ = maxWeight > 0.0 ? std::sqrt(scale / maxWeight) : 0.0;
-            });
+            std::vector<float> values;
+            if (mergeErrors(selected, values)) mergedMesh_.setScalars(values);
             errorKey_ = key;
+        }
+    }
+    // The same on the viseme itself in the Visemes panel, when materials are switched to error colours.
+    const bool mainErrors = set && grouping && active_ == Panel::Visemes && hasMaterials() &&
+                            surface == SurfaceShading::ErrorColours && session_.selectedViseme >= 0 &&
+                            !speech_.shown();
+    if (!mainErrors) {
+        mainErrorKey_.clear();
+    } else {
+        const std::string key = std::to_string(session_.selectedViseme) + ":" +
+                                std::to_string(session_.inputsGeneration()) + ":" +
+                                std::to_string(grouping->groups.size());
+        std::vector<float> values;
+        if (key != mainErrorKey_ && mergeErrors(session_.selectedViseme, values)) {
+            visemeMesh_.setScalars(values);
+            mainErrorKey_ = key;
+            weightsKey_.clear(); // the weights are no longer there
         }
     }
     // Influence of the selected analytic field on the face.
@@ -649,6 +742,16 @@ void EditorViews::addProbe(nlohmann::json& summary) const {
     summary["face_view"] = faceViewProbe();
     summary["viseme_view_parts"] = {{"triangles", shownVisemeParts_.triangles}, {"q", shownVisemeParts_.q}};
     summary["wireframe"] = wireframe;
+    // The surface switch and what the main view drew last frame with it.
+    static const char* const kColourModes[] = {"surface", "scalar", "vertex colour", "material"};
+    summary["surface"] = {{"choice", surface == SurfaceShading::Materials ? "materials" : "error colours"},
+                          {"has_materials", hasMaterials()},
+                          {"main_colours", kColourModes[static_cast<int>(shownMainColour_)]},
+                          {"materials", materials_.summary()},
+                          {"textures", materials_.materials.images.size()},
+                          {"viseme_ranges", materials_.visemes.ranges.size()},
+                          {"context_ranges", materials_.context.ranges.size()},
+                          {"warnings", materials_.materials.warnings}};
     summary["view_labels"] = shownLabels_;
     // The shown camera and the matrices the views draw with (the tests compare them with
     // reference matrices), column-major like glm.

@@ -14,6 +14,7 @@
 #include "ui/render/GpuMesh.h"
 #include "ui/render/Viewport.h"
 #include "ui/session/EditorSession.h"
+#include "ui/session/ViewMaterials.h"
 
 #include <nlohmann/json.hpp>
 
@@ -61,6 +62,13 @@ class EditorViews {
     void addProbe(nlohmann::json& summary) const;
 
     bool wireframe = true;
+    // Materials or error colours (View menu, the switch in the views' corner); only documents with
+    // materials show the choice, the others always draw their analysis colours.
+    SurfaceShading surface = SurfaceShading::Materials;
+    bool hasMaterials() const { return materials_.any(); }
+    SurfaceShading shownSurface() const { return hasMaterials() ? surface : SurfaceShading::ErrorColours; }
+    // Sets `surface`; the Reduction panel's right view follows (error colours, or skin in materials).
+    void setSurface(SurfaceShading shading);
 
   private:
     void drawMainView(ImVec2 size);
@@ -81,6 +89,15 @@ class EditorViews {
     std::size_t drawHeadParts(std::span<const float> q, const glm::mat4& view, const glm::mat4& projection,
                               const DrawStyle& skinStyle) const;
     ColorMode surfaceColours() const; // face colours for visemes generated from the face model
+    // What a skin-coloured drawing of `mesh` shows: its materials when they are drawnSurface_.
+    ColorMode skinColours(const GpuMesh& mesh) const;
+    // The merge error of viseme `selected` per vertex in [0,1] (and errorLegendMax_); false without
+    // a reduced model.
+    bool mergeErrors(int selected, std::vector<float>& values);
+    // The Materials | Error colours switch in the corner of a view about to be shown at `viewMin`.
+    void excludeSurfaceSwitch(Viewport& view, ImVec2 viewMin, ImVec2 size) const;
+    void surfaceSwitch(const ViewportEvents& view);
+    void errorLegend(const ViewportEvents& view) const; // the merge error's colour ramp in mm
     nlohmann::json faceViewProbe() const;
     void viewLabel(const ViewportEvents& view, const std::string& text); // its title, kept for the probe
     OrbitCamera& shownCamera() { return subject_ == ViewSubject::Face ? faceCamera_ : visemeCamera_; }
@@ -113,6 +130,8 @@ class EditorViews {
     int uploadedMergedGroups_ = 0;
     // What each mesh's scalars currently show, to re-upload only on change.
     std::string weightsKey_, errorKey_, influenceKey_;
+    std::string mainErrorKey_;    // the merge error on visemeMesh_'s scalars (Visemes panel, error colours)
+    ViewMaterials materials_;     // of the document's set, uploaded on visemeMesh_, mergedMesh_, contextMesh_
     double errorLegendMax_ = 0.0; // largest weighted distance of the error colours, model units
     // What the face view drew in its last frame (for the probe): the panel, the weights, and the
     // triangles of skin and parts.
@@ -126,7 +145,10 @@ class EditorViews {
         std::size_t triangles = 0;
         std::vector<float> q;
     } shownVisemeParts_;
-    std::vector<std::string> shownLabels_; // the views' titles this frame
+    std::vector<std::string> shownLabels_;           // the views' titles this frame
+    ColorMode shownMainColour_ = ColorMode::Surface; // how the main view drew the visemes last frame
+    // What the views being drawn show (the comparison follows the Reduction panel's right view).
+    SurfaceShading drawnSurface_ = SurfaceShading::ErrorColours;
     // The camera of each subject, kept across tabs; framed when its mesh first appears.
     OrbitCamera visemeCamera_, faceCamera_;
     std::vector<Vec3> framedNeutral_; // the neutral the viseme camera was last framed on

@@ -30,6 +30,8 @@ int main(int argc, char** argv) {
     app.add_option("--brush", options.brush, "Paint in the Weights panel: add, subtract or smooth");
     app.add_option("--sculpt", options.sculpt,
                    "Sculpt the selected viseme (Visemes panel): grab, smooth, inflate or deflate");
+    app.add_option("--surface", options.surface,
+                   "What the views' surfaces show when the document has materials: materials or errors");
     app.add_option(
         "--merged", options.merged,
         "How the Reduction panel shows the merged shape: errors, skin or overlay (on the original)");

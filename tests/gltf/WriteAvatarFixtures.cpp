@@ -9,6 +9,7 @@
 #include "tests/gltf/AvatarFixtures.h"
 #include "tests/gltf/AvatarSpeechFixture.h"
 #include "tests/gltf/KeyTableVersion1.h"
+#include "tests/gltf/TexturedAvatar.h"
 
 #include <cstdio>
 #include <cstring>
@@ -91,6 +92,8 @@ int main(int argc, char** argv) {
             // Few keys: most targets are new, in the input's storage (core/gltf/TargetStorage.h).
             writeReductions(dir, std::string(name) + "_reduced2", glb, 2, "");
         }
+        // The small textured avatar of the material tests (guide picture, manual checks).
+        vl::writeFileAtomically(dir / "textured.glb", vl::test::texturedAvatar());
         // A merged-name reduction as VisemeLab wrote it before key table version 2 (core/gltf/KeyTable.h),
         // for the three.js player's test.
         vl::writeFileAtomically(

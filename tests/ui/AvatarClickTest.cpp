@@ -101,7 +101,7 @@ TEST(AvatarClicks, FileMenuImportsAnAvatarWithEveryMeshShown) {
     EXPECT_NE(head.find("kept as they are (not an Oculus viseme name): browInnerUp jawOpen"),
               std::string::npos)
         << head;
-    gui.click(revealed(gui, "Wolf3D_Body (greyed)", "selectable"));
+    gui.click(revealed(gui, "Wolf3D_Body (context)", "selectable"));
     EXPECT_NE(gui.document()["avatar_mesh_report"].get<std::string>().find("Wolf3D_Body"), std::string::npos);
     EXPECT_FALSE(hasError(gui)) << gui.document()["messages"].dump();
     // The Visemes panel's button imports too (the document is unmodified: nothing to confirm).

@@ -1,7 +1,8 @@
 // Avatars in the editor: File > Import avatar... opens a glTF/GLB/VRM as a document (its visemes over
 // every mesh carrying them), the Visemes panel shows the avatar's meshes and the target pattern that
-// selects the visemes, the views show the meshes without visemes greyed, and File > Export avatar...
-// writes the same avatar with its visemes reduced. The work is the core's (core/document/AvatarDocument.h).
+// selects the visemes, the views show the meshes without visemes as context (in their materials or greyed),
+// and File > Export avatar... writes the same avatar with its visemes reduced. The work is the core's
+// (core/document/AvatarDocument.h).
 #include "ui/panels/AvatarPanel.h"
 #include "core/gltf/AvatarReport.h"
 #include "core/gltf/AvatarScan.h"
@@ -89,7 +90,7 @@ void AvatarPanel::visemesSection() {
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
             const std::string name = (mesh.name.empty() ? "mesh " + std::to_string(mesh.index) : mesh.name) +
-                                     (mesh.carriesVisemes ? "" : " (greyed)") + "##avatar-mesh" +
+                                     (mesh.carriesVisemes ? "" : " (context)") + "##avatar-mesh" +
                                      std::to_string(row);
             if (!mesh.carriesVisemes)
                 ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));

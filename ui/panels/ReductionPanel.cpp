@@ -232,8 +232,9 @@ void ReductionPanel::draw() {
     displayChanged |= ctl::RadioButton("overlay on original", &display, 2);
     if (displayChanged) mergedDisplay_ = static_cast<MergedDisplay>(display);
     helpMarker("Error colours: the weighted distance of each vertex to the merged shape. Skin: the merged "
-               "shape as the face will look. Overlay: the merged shape in skin with the original drawn "
-               "over it as a cyan film; plain skin shows where the merged shape stands out in front.");
+               "shape as the face will look (in its materials when it has them). Overlay: the merged shape "
+               "in skin with the original drawn over it as a cyan film; plain skin shows where the merged "
+               "shape stands out in front.");
 
     say_.draw();
 }

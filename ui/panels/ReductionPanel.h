@@ -21,6 +21,7 @@ class ReductionPanel : public SidePanel {
     MergedDisplay mergedDisplay() const { return mergedDisplay_; }
     // "errors", "skin" or "overlay" (--merged); throws InputError for another name.
     void setMergedDisplay(const std::string& name);
+    void setMergedDisplay(MergedDisplay display) { mergedDisplay_ = display; }
     // Millimetres per model unit: the chosen unit, or the guess from the neutral mesh's size.
     double millimetresPerModelUnit() const;
 

@@ -18,10 +18,6 @@ void appendVec3(std::vector<float>& out, const Vec3& v) {
     out.push_back(static_cast<float>(v[2]));
 }
 
-GLsizeiptr byteSize(std::size_t count, std::size_t elementSize) {
-    return static_cast<GLsizeiptr>(count * elementSize);
-}
-
 } // namespace
 
 GpuMesh::~GpuMesh() {
@@ -37,6 +33,7 @@ void GpuMesh::release() {
     if (vao_) glDeleteVertexArrays(1, &vao_);
     vao_ = positionBuffer_ = normalBuffer_ = scalarBuffer_ = colorBuffer_ = indexBuffer_ = targetBuffer_ =
         targetTexture_ = 0;
+    surface_.release();
     triangleCount_ = 0;
     targetCount_ = 0;
     revision_ = nextUploadRevision();
@@ -82,37 +79,37 @@ void GpuMesh::setGeometry(std::span<const Vec3> rest, std::span<const Triangle> 
     glBindVertexArray(vao_);
     glGenBuffers(1, &positionBuffer_);
     glBindBuffer(GL_ARRAY_BUFFER, positionBuffer_);
-    glBufferData(GL_ARRAY_BUFFER, byteSize(positions.size(), sizeof(float)), positions.data(),
+    glBufferData(GL_ARRAY_BUFFER, glByteSize(positions.size(), sizeof(float)), positions.data(),
                  GL_STATIC_DRAW);
     glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
     glEnableVertexAttribArray(0);
     glGenBuffers(1, &normalBuffer_);
     glBindBuffer(GL_ARRAY_BUFFER, normalBuffer_);
-    glBufferData(GL_ARRAY_BUFFER, byteSize(normals.size(), sizeof(float)), normals.data(), GL_STATIC_DRAW);
+    glBufferData(GL_ARRAY_BUFFER, glByteSize(normals.size(), sizeof(float)), normals.data(), GL_STATIC_DRAW);
     glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
     glEnableVertexAttribArray(1);
     glGenBuffers(1, &scalarBuffer_);
     glBindBuffer(GL_ARRAY_BUFFER, scalarBuffer_);
     const std::vector<float> zeros(n, 0.0f);
-    glBufferData(GL_ARRAY_BUFFER, byteSize(n, sizeof(float)), zeros.data(), GL_DYNAMIC_DRAW);
+    glBufferData(GL_ARRAY_BUFFER, glByteSize(n, sizeof(float)), zeros.data(), GL_DYNAMIC_DRAW);
     glVertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, 0, nullptr);
     glEnableVertexAttribArray(2);
     glGenBuffers(1, &colorBuffer_);
     glBindBuffer(GL_ARRAY_BUFFER, colorBuffer_);
     const std::vector<float> grey(3 * n, 0.8f);
-    glBufferData(GL_ARRAY_BUFFER, byteSize(grey.size(), sizeof(float)), grey.data(), GL_DYNAMIC_DRAW);
+    glBufferData(GL_ARRAY_BUFFER, glByteSize(grey.size(), sizeof(float)), grey.data(), GL_DYNAMIC_DRAW);
     glVertexAttribPointer(3, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
     glEnableVertexAttribArray(3);
     glGenBuffers(1, &indexBuffer_);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indexBuffer_);
     static_assert(sizeof(Triangle) == 3 * sizeof(std::uint32_t));
-    glBufferData(GL_ELEMENT_ARRAY_BUFFER, byteSize(triangles.size(), sizeof(Triangle)), triangles.data(),
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, glByteSize(triangles.size(), sizeof(Triangle)), triangles.data(),
                  GL_STATIC_DRAW);
     glBindVertexArray(0);
 
     glGenBuffers(1, &targetBuffer_);
     glBindBuffer(GL_TEXTURE_BUFFER, targetBuffer_);
-    glBufferData(GL_TEXTURE_BUFFER, byteSize(texels.size(), sizeof(float)), texels.data(), GL_STATIC_DRAW);
+    glBufferData(GL_TEXTURE_BUFFER, glByteSize(texels.size(), sizeof(float)), texels.data(), GL_STATIC_DRAW);
     glGenTextures(1, &targetTexture_);
     glBindTexture(GL_TEXTURE_BUFFER, targetTexture_);
     glTexBuffer(GL_TEXTURE_BUFFER, GL_RGB32F, targetBuffer_);
@@ -124,13 +121,20 @@ void GpuMesh::setGeometry(std::span<const Vec3> rest, std::span<const Triangle> 
     revision_ = nextUploadRevision();
 }
 
+void GpuMesh::setSurface(const SurfaceLayout& layout, const SurfaceMaterials& materials) {
+    surface_.release();
+    if (!layout.empty())
+        surface_.upload(rest_, vertexNormals(rest_, triangles_), triangles_, layout, materials);
+    revision_ = nextUploadRevision();
+}
+
 void GpuMesh::setScalars(std::span<const float> values) {
     if (!scalarBuffer_) return;
     const std::size_t n = rest_.size();
     std::vector<float> data(n, 0.0f);
     std::copy_n(values.begin(), std::min(n, values.size()), data.begin());
     glBindBuffer(GL_ARRAY_BUFFER, scalarBuffer_);
-    glBufferSubData(GL_ARRAY_BUFFER, 0, byteSize(n, sizeof(float)), data.data());
+    glBufferSubData(GL_ARRAY_BUFFER, 0, glByteSize(n, sizeof(float)), data.data());
     glBindBuffer(GL_ARRAY_BUFFER, 0);
     revision_ = nextUploadRevision();
 }
@@ -142,7 +146,7 @@ void GpuMesh::setColors(std::span<const Vec3> colors) {
     data.reserve(3 * n);
     for (std::size_t i = 0; i < n; ++i) appendVec3(data, i < colors.size() ? colors[i] : Vec3(0.8, 0.8, 0.8));
     glBindBuffer(GL_ARRAY_BUFFER, colorBuffer_);
-    glBufferSubData(GL_ARRAY_BUFFER, 0, byteSize(data.size(), sizeof(float)), data.data());
+    glBufferSubData(GL_ARRAY_BUFFER, 0, glByteSize(data.size(), sizeof(float)), data.data());
     glBindBuffer(GL_ARRAY_BUFFER, 0);
     revision_ = nextUploadRevision();
 }
@@ -178,7 +182,11 @@ void GpuMesh::draw(const GlShader& shader, std::span<const float> weights, const
     glUniform1i(shader.uniform("uTargetCount"), targetCount_);
     glUniform1i(shader.uniform("uVertexCount"), static_cast<GLint>(rest_.size()));
     glUniform1fv(shader.uniform("uTargetWeights"), kMaxMorphTargets, uniformWeights);
-    glUniform1i(shader.uniform("uColorMode"), static_cast<GLint>(style.color));
+    const bool material = style.color == ColorMode::Material && !surface_.empty();
+    const ColorMode mode = style.color == ColorMode::Material && !material ? ColorMode::Surface : style.color;
+    glUniform1i(shader.uniform("uColorMode"), static_cast<GLint>(mode));
+    glUniform1i(shader.uniform("uUseSource"), 0);
+    glUniform1i(shader.uniform("uBaseTexture"), 1); // never unit 0, the morph texture buffer's
     glUniform3fv(shader.uniform("uSurfaceColor"), 1, glm::value_ptr(style.surfaceColor));
     glUniform4fv(shader.uniform("uWireColor"), 1, glm::value_ptr(style.wireColor));
     glActiveTexture(GL_TEXTURE0);
@@ -212,7 +220,12 @@ void GpuMesh::draw(const GlShader& shader, std::span<const float> weights, const
     glUniform1i(shader.uniform("uWireframe"), 0);
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(1.0f, 1.0f);
-    glDrawElements(GL_TRIANGLES, indexCount, GL_UNSIGNED_INT, nullptr);
+    if (material) {
+        surface_.draw(shader); // its own vertex array
+        glBindVertexArray(vao_);
+    } else {
+        glDrawElements(GL_TRIANGLES, indexCount, GL_UNSIGNED_INT, nullptr);
+    }
     glDisable(GL_POLYGON_OFFSET_FILL);
     if (style.wireframe) {
         glUniform1i(shader.uniform("uWireframe"), 1);

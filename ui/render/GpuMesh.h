@@ -1,8 +1,10 @@
 #pragma once
 // A triangle mesh on the GPU with morph targets for live deformation (see shaders/mesh.vert):
 // rest positions and normals as vertex attributes, per-target position and normal deltas in a
-// texture buffer, an optional per-vertex scalar in [0,1] shown through the colour map.
+// texture buffer, an optional per-vertex scalar in [0,1] shown through the colour map, and optional
+// materials (textures and base colours, GpuSurface) drawn in ColorMode::Material.
 #include "core/mesh/Mesh.h"
+#include "ui/render/GpuSurface.h"
 
 #include <epoxy/gl.h>
 #include <glm/glm.hpp>
@@ -17,7 +19,8 @@ class GlShader;
 
 constexpr int kMaxMorphTargets = 128; // matches kMaxTargets in shaders/mesh.vert
 
-enum class ColorMode { Surface, Scalar, VertexColor };
+// Material: the materials of setSurface (the surface colour where there are none).
+enum class ColorMode { Surface, Scalar, VertexColor, Material };
 
 struct DrawStyle {
     bool wireframe = true;
@@ -46,6 +49,12 @@ class GpuMesh {
     // One RGB colour in [0,1] per vertex, or empty for the surface colour everywhere.
     void setColors(std::span<const Vec3> colors);
 
+    // Materials over the current geometry (cleared by setGeometry); throws std::invalid_argument
+    // when the layout does not fit it.
+    void setSurface(const SurfaceLayout& layout, const SurfaceMaterials& materials);
+    bool hasSurface() const { return !surface_.empty(); }
+    const GpuSurface& surface() const { return surface_; }
+
     // Weights beyond targetCount() are ignored; missing ones count as zero.
     void draw(const GlShader& shader, std::span<const float> weights, const glm::mat4& modelView,
               const glm::mat4& projection, const DrawStyle& style) const;
@@ -68,6 +77,7 @@ class GpuMesh {
     int targetCount_ = 0;
     std::vector<Vec3> rest_;
     std::vector<Triangle> triangles_;
+    GpuSurface surface_;
     std::vector<float> deltas_;  // CPU copy of the position deltas, targetCount x vertexCount x 3
     std::uint64_t revision_ = 0; // changes with every upload (see SceneSignature)
 };
