@@ -179,6 +179,7 @@ void parseSay(Fields& f, const std::filesystem::path& folder, const std::string&
         if (f.has(field))
             f.fail(field, "not available in batch jobs (use visemelab say for a corpus, pages and curves)");
 
+    f.requireAllUsed(); // a misspelt field is named before the combinations it leaves
     if (s.project.empty() == s.avatar.empty()) f.fail("project", "give \"project\" or \"avatar\", not both");
     const bool constrained = !s.constraints.empty() || s.maxErrorMm > 0;
     if (s.avatar.empty() && (s.target > 0 || !s.reduced.empty() || !s.targets.empty() || constrained))
@@ -217,6 +218,7 @@ void parseReduce(Fields& f, const std::filesystem::path& folder, const std::stri
     r.closure = closureOf(f.text("closure", "auto"));
     r.out = f.output("out", id + ".glb", true);
     r.report = f.output("report", id + ".report.json");
+    f.requireAllUsed();
     if ((r.target > 0) == (r.maxErrorMm > 0))
         f.fail("m", "give the number of keys \"m\", or \"max-error-mm\" (which chooses it)");
     if (std::filesystem::path(r.out).extension() == ".gltf")

@@ -43,6 +43,21 @@ std::string located(const std::string& where, const std::string& field, const st
     return where + ": " + (field.empty() ? std::string() : field + ": ") + what;
 }
 
+// The id of a line that is not a valid job, when it has a string one: results name it.
+std::string idOf(std::string_view line) {
+    try {
+        checkJsonNesting(line, "", 16); // a hostile line is not parsed again without the limit
+    } catch (const InputError&) {
+        return {};
+    }
+    const auto json = nlohmann::json::parse(line, nullptr, false);
+    if (json.is_object())
+        if (const auto id = json.find("id");
+            id != json.end() && id->is_string() && isValidUtf8(id->get<std::string>()))
+            return quoteInput(id->get<std::string>(), 100);
+    return {};
+}
+
 // Outputs never replace the job's inputs (with or without an InputRecording: the Python binding
 // runs jobs without one).
 void refuseOutputsOverInputs(const BatchJob& job, const std::filesystem::path& outFolder,
@@ -166,9 +181,10 @@ std::vector<std::filesystem::path> stampInputs(const BatchContext& context, cons
                                                const std::vector<std::filesystem::path>& read) {
     std::vector<std::filesystem::path> inputs = job.namedInputs();
     std::error_code ec;
-    const std::string cache = context.options().speechCacheFolder.empty()
-                                  ? std::string()
-                                  : std::filesystem::absolute(context.options().speechCacheFolder, ec).string();
+    const std::string cache =
+        context.options().speechCacheFolder.empty()
+            ? std::string()
+            : std::filesystem::absolute(context.options().speechCacheFolder, ec).string();
     for (const auto& file : read)
         if (cache.empty() || !file.string().starts_with(cache)) inputs.push_back(file);
     return inputs;
@@ -205,6 +221,7 @@ JobResult runBatchJob(BatchContext& context, std::string_view line, std::size_t 
     } catch (const InputError& e) {
         result.status = JobStatus::Error;
         result.error = located(where, "", e.what());
+        if (result.id.empty()) result.id = idOf(line);
     } catch (const std::bad_alloc&) {
         result.status = JobStatus::Error;
         result.error = where + ": out of memory (the job's input is too large for this machine)";

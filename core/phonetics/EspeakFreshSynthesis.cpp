@@ -154,6 +154,12 @@ enum Answer : std::uint64_t { kSpoken = 0, kInputError = 1, kFailure = 2 };
 } // namespace
 
 FreshSpeech::FreshSpeech() {
+    {
+        std::lock_guard lock(espeak::engineMutex());
+        if (espeak::hasSpoken())
+            throw std::logic_error(
+                "FreshSpeech made after this process spoke: its helper would not be fresh");
+    }
     int pair[2];
     if (::socketpair(AF_UNIX, SOCK_SEQPACKET | SOCK_CLOEXEC, 0, pair) != 0)
         throw std::runtime_error(std::string("espeak-ng helper: socketpair: ") + std::strerror(errno));

@@ -7,8 +7,8 @@
 // (docs/batch.md). So each sentence is spoken by a process of its own, forked from a helper that has
 // initialised espeak-ng and spoken nothing: its state is a fresh `visemelab say`'s.
 //
-// The helper is forked once, when the FreshSpeech is made (make it before starting threads that use
-// espeak-ng in this process); it forks one child per sentence, so sentences are spoken in parallel
+// The helper is forked once, when the FreshSpeech is made (before this process synthesises in-process, and
+// best before it starts threads); it forks one child per sentence, so sentences are spoken in parallel
 // on all cores. It exits when the FreshSpeech is destroyed or this process dies.
 #include "core/phonetics/EspeakSynthesizer.h"
 
@@ -23,7 +23,8 @@ namespace vl {
 
 class FreshSpeech {
   public:
-    // Throws std::runtime_error when the helper cannot be started or espeak-ng not initialised.
+    // Throws std::runtime_error when the helper cannot be started, std::logic_error when this process
+    // has already synthesised speech in-process (its engine is no longer fresh).
     FreshSpeech();
     ~FreshSpeech();
     FreshSpeech(const FreshSpeech&) = delete;
