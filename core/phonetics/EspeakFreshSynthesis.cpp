@@ -116,8 +116,72 @@ enum Answer : std::uint64_t { kSpoken = 0, kInputError = 1, kFailure = 2 };
     ::_exit(0); // no atexit handlers or destructors of the parent's objects
 }
 
-// The helper: initialises espeak-ng, then forks a child per socket received on `control`; exits
-// when `control` closes (the FreshSpeech is gone or its process died).
+constexpr std::size_t kMaxVoiceBytes = 256;
+
+// Receives one message of `control`: its bytes and the socket it carries (-1 when none). False at
+// the end (the sender closed its side).
+bool receive(int control, std::string& bytes, int& fd) {
+    char buffer[kMaxVoiceBytes];
+    iovec io{buffer, sizeof buffer};
+    alignas(cmsghdr) char space[CMSG_SPACE(sizeof(int))] = {};
+    msghdr message{};
+    message.msg_iov = &io;
+    message.msg_iovlen = 1;
+    message.msg_control = space;
+    message.msg_controllen = sizeof space;
+    ssize_t n = 0;
+    while ((n = ::recvmsg(control, &message, 0)) < 0 && errno == EINTR) {
+    }
+    if (n <= 0) return false;
+    bytes.assign(buffer, static_cast<std::size_t>(n));
+    fd = -1;
+    if (const cmsghdr* header = CMSG_FIRSTHDR(&message); header && header->cmsg_type == SCM_RIGHTS)
+        std::memcpy(&fd, CMSG_DATA(header), sizeof fd);
+    return true;
+}
+
+// Sends `bytes` (at most kMaxVoiceBytes) and the socket `fd` as one message.
+bool sendWithSocket(int control, std::string_view bytes, int fd) {
+    iovec io{const_cast<char*>(bytes.data()), bytes.size()};
+    alignas(cmsghdr) char space[CMSG_SPACE(sizeof(int))] = {};
+    msghdr message{};
+    message.msg_iov = &io;
+    message.msg_iovlen = 1;
+    message.msg_control = space;
+    message.msg_controllen = sizeof space;
+    cmsghdr* header = CMSG_FIRSTHDR(&message);
+    header->cmsg_level = SOL_SOCKET;
+    header->cmsg_type = SCM_RIGHTS;
+    header->cmsg_len = CMSG_LEN(sizeof(int));
+    std::memcpy(CMSG_DATA(header), &fd, sizeof fd);
+    return ::sendmsg(control, &message, MSG_NOSIGNAL) == static_cast<ssize_t>(bytes.size());
+}
+
+// A voice's helper: selects the voice once (listing espeak-ng's voices costs more than speaking a
+// sentence), then forks a child per socket received; exits when `control` closes.
+[[noreturn]] void serveVoice(int control, const std::string& voice) {
+    try {
+        std::lock_guard lock(espeak::engineMutex());
+        espeak::selectVoice(voice);
+    } catch (const std::exception&) {
+        // Each child selects it again and reports the error.
+    }
+    std::string bytes;
+    int fd = -1;
+    while (receive(control, bytes, fd)) {
+        if (fd < 0) continue;
+        if (::fork() == 0) {
+            ::close(control);
+            speakOnce(fd);
+        }
+        ::close(fd); // a failed fork closes the socket: the parent reads an empty answer
+    }
+    ::_exit(0);
+}
+
+// The helper: initialises espeak-ng, then passes each socket to the helper of its voice (forked on
+// first use: its state is Initialize + SetVoiceByName, a fresh `say`'s); exits when `control`
+// closes (the FreshSpeech is gone or its process died), and so do the voices' helpers.
 [[noreturn]] void serve(int control) {
     std::signal(SIGCHLD, SIG_IGN); // children are reaped by the kernel
     try {
@@ -126,29 +190,31 @@ enum Answer : std::uint64_t { kSpoken = 0, kInputError = 1, kFailure = 2 };
     } catch (const std::exception&) {
         // Each child reports the failure when it speaks.
     }
-    for (;;) {
-        char byte = 0;
-        iovec io{&byte, 1};
-        alignas(cmsghdr) char space[CMSG_SPACE(sizeof(int))] = {};
-        msghdr message{};
-        message.msg_iov = &io;
-        message.msg_iovlen = 1;
-        message.msg_control = space;
-        message.msg_controllen = sizeof space;
-        const ssize_t n = ::recvmsg(control, &message, 0);
-        if (n < 0 && errno == EINTR) continue;
-        if (n <= 0) ::_exit(0);
-        const cmsghdr* header = CMSG_FIRSTHDR(&message);
-        if (!header || header->cmsg_type != SCM_RIGHTS) continue;
-        int fd = -1;
-        std::memcpy(&fd, CMSG_DATA(header), sizeof fd);
-        const pid_t child = ::fork();
-        if (child == 0) {
-            ::close(control);
-            speakOnce(fd);
+    std::map<std::string, int> voices; // voice -> its helper's control socket
+    std::string voice;
+    int fd = -1;
+    while (receive(control, voice, fd)) {
+        if (fd < 0) continue;
+        auto it = voices.find(voice);
+        if (it == voices.end()) {
+            int pair[2];
+            if (::socketpair(AF_UNIX, SOCK_SEQPACKET, 0, pair) == 0) {
+                if (::fork() == 0) {
+                    ::close(control);
+                    ::close(pair[0]);
+                    ::close(
+                        fd); // it comes again as the first message: a copy kept would hold the socket open
+                    for (const auto& [name, other] : voices) ::close(other);
+                    serveVoice(pair[1], voice);
+                }
+                ::close(pair[1]);
+                it = voices.emplace(voice, pair[0]).first;
+            }
         }
-        ::close(fd); // a failed fork closes the socket: the parent reads an empty answer
+        if (it != voices.end()) sendWithSocket(it->second, voice, fd);
+        ::close(fd);
     }
+    ::_exit(0);
 }
 
 } // namespace
@@ -188,24 +254,13 @@ FreshSpeech::Spoken FreshSpeech::speak(const SpeechVoice& voice, std::string_vie
     int pair[2];
     if (::socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, pair) != 0)
         throw std::runtime_error(std::string("espeak-ng helper: socketpair: ") + std::strerror(errno));
+    if (voice.voice.empty() || voice.voice.size() > kMaxVoiceBytes)
+        throwInputError("voice '" + voice.voice + "'", "espeak-ng has no such voice");
     {
-        char byte = 0;
-        iovec io{&byte, 1};
-        alignas(cmsghdr) char space[CMSG_SPACE(sizeof(int))] = {};
-        msghdr message{};
-        message.msg_iov = &io;
-        message.msg_iovlen = 1;
-        message.msg_control = space;
-        message.msg_controllen = sizeof space;
-        cmsghdr* header = CMSG_FIRSTHDR(&message);
-        header->cmsg_level = SOL_SOCKET;
-        header->cmsg_type = SCM_RIGHTS;
-        header->cmsg_len = CMSG_LEN(sizeof(int));
-        std::memcpy(CMSG_DATA(header), &pair[1], sizeof(int));
         std::lock_guard lock(sending_);
-        const ssize_t sent = ::sendmsg(control_, &message, MSG_NOSIGNAL);
+        const bool sent = sendWithSocket(control_, voice.voice, pair[1]);
         ::close(pair[1]);
-        if (sent != 1) {
+        if (!sent) {
             ::close(pair[0]);
             throw std::runtime_error("espeak-ng helper: not running");
         }

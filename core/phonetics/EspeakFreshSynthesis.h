@@ -5,11 +5,13 @@
 // the phoneme times). espeak_ng_Terminate + espeak_Initialize, espeak_SetVoiceByName (same or
 // another voice) and a fixed priming sentence before each were all tried and all leave it
 // (docs/batch.md). So each sentence is spoken by a process of its own, forked from a helper that has
-// initialised espeak-ng and spoken nothing: its state is a fresh `visemelab say`'s.
+// initialised espeak-ng and selected the voice (one helper per voice), and spoken nothing: its state
+// is a fresh `visemelab say`'s.
 //
-// The helper is forked once, when the FreshSpeech is made (before this process synthesises in-process, and
-// best before it starts threads); it forks one child per sentence, so sentences are spoken in parallel
-// on all cores. It exits when the FreshSpeech is destroyed or this process dies.
+// The helper is forked once, when the FreshSpeech is made (before this process synthesises
+// in-process, and best before it starts threads); the voices' helpers fork one child per sentence,
+// so sentences are spoken in parallel on all cores. They exit when the FreshSpeech is destroyed or
+// this process dies.
 #include "core/phonetics/EspeakSynthesizer.h"
 
 #include <cstddef>
