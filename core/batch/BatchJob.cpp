@@ -140,8 +140,15 @@ std::filesystem::path inputPath(const std::string& field, const std::filesystem:
     return (folder / field).lexically_normal();
 }
 
-std::string closureOf(const std::string& closure) {
-    return closure == "none" ? std::string() : closure;
+// The designer's constraints, as `--pin`, `--apart`, `--together`, `--max-error-mm` and `--closure`
+// ("none": no closure rule).
+void readConstraints(Fields& f, ConstraintNames& constraints, double& maxErrorMm, std::string& closure) {
+    constraints.pinned = f.names("pin");
+    constraints.apart = f.pairs("apart");
+    constraints.together = f.pairs("together");
+    maxErrorMm = f.positive("max-error-mm", 0);
+    closure = f.text("closure", "auto");
+    if (closure == "none") closure.clear();
 }
 
 void parseSay(Fields& f, const std::filesystem::path& folder, const std::string& id, SayJob& s) {
@@ -153,11 +160,7 @@ void parseSay(Fields& f, const std::filesystem::path& folder, const std::string&
     s.reduced = inputPath(f.text("reduced"), folder);
     s.targets = f.text("targets");
     s.target = f.positiveInt("m");
-    s.constraints.pinned = f.names("pin");
-    s.constraints.apart = f.pairs("apart");
-    s.constraints.together = f.pairs("together");
-    s.maxErrorMm = f.positive("max-error-mm", 0);
-    s.closure = closureOf(f.text("closure", "auto"));
+    readConstraints(f, s.constraints, s.maxErrorMm, s.closure);
     s.map = inputPath(f.text("map"), folder);
     s.voice = f.text("voice", "en-us");
     if (const Json* rate = f.find("rate")) {
@@ -211,11 +214,7 @@ void parseReduce(Fields& f, const std::filesystem::path& folder, const std::stri
     r.rest = f.text("rest", "free");
     if (r.rest != "free" && r.rest != "key") f.fail("rest", "must be free or key, got '" + r.rest + "'");
     r.restViseme = f.text("rest-viseme");
-    r.constraints.pinned = f.names("pin");
-    r.constraints.apart = f.pairs("apart");
-    r.constraints.together = f.pairs("together");
-    r.maxErrorMm = f.positive("max-error-mm", 0);
-    r.closure = closureOf(f.text("closure", "auto"));
+    readConstraints(f, r.constraints, r.maxErrorMm, r.closure);
     r.out = f.output("out", id + ".glb", true);
     r.report = f.output("report", id + ".report.json");
     f.requireAllUsed();

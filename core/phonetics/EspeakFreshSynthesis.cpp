@@ -118,43 +118,44 @@ enum Answer : std::uint64_t { kSpoken = 0, kInputError = 1, kFailure = 2 };
 
 constexpr std::size_t kMaxVoiceBytes = 256;
 
+// One message of the control sockets: a few bytes (a voice name) and room for one socket.
+struct SocketMessage {
+    explicit SocketMessage(char* data, std::size_t size) : io{data, size} {
+        header.msg_iov = &io;
+        header.msg_iovlen = 1;
+        header.msg_control = space;
+        header.msg_controllen = sizeof space;
+    }
+    iovec io;
+    alignas(cmsghdr) char space[CMSG_SPACE(sizeof(int))] = {};
+    msghdr header{};
+};
+
 // Receives one message of `control`: its bytes and the socket it carries (-1 when none). False at
 // the end (the sender closed its side).
 bool receive(int control, std::string& bytes, int& fd) {
     char buffer[kMaxVoiceBytes];
-    iovec io{buffer, sizeof buffer};
-    alignas(cmsghdr) char space[CMSG_SPACE(sizeof(int))] = {};
-    msghdr message{};
-    message.msg_iov = &io;
-    message.msg_iovlen = 1;
-    message.msg_control = space;
-    message.msg_controllen = sizeof space;
+    SocketMessage message(buffer, sizeof buffer);
     ssize_t n = 0;
-    while ((n = ::recvmsg(control, &message, 0)) < 0 && errno == EINTR) {
+    while ((n = ::recvmsg(control, &message.header, 0)) < 0 && errno == EINTR) {
     }
     if (n <= 0) return false;
     bytes.assign(buffer, static_cast<std::size_t>(n));
     fd = -1;
-    if (const cmsghdr* header = CMSG_FIRSTHDR(&message); header && header->cmsg_type == SCM_RIGHTS)
+    if (const cmsghdr* header = CMSG_FIRSTHDR(&message.header); header && header->cmsg_type == SCM_RIGHTS)
         std::memcpy(&fd, CMSG_DATA(header), sizeof fd);
     return true;
 }
 
 // Sends `bytes` (at most kMaxVoiceBytes) and the socket `fd` as one message.
 bool sendWithSocket(int control, std::string_view bytes, int fd) {
-    iovec io{const_cast<char*>(bytes.data()), bytes.size()};
-    alignas(cmsghdr) char space[CMSG_SPACE(sizeof(int))] = {};
-    msghdr message{};
-    message.msg_iov = &io;
-    message.msg_iovlen = 1;
-    message.msg_control = space;
-    message.msg_controllen = sizeof space;
-    cmsghdr* header = CMSG_FIRSTHDR(&message);
+    SocketMessage message(const_cast<char*>(bytes.data()), bytes.size());
+    cmsghdr* header = CMSG_FIRSTHDR(&message.header);
     header->cmsg_level = SOL_SOCKET;
     header->cmsg_type = SCM_RIGHTS;
     header->cmsg_len = CMSG_LEN(sizeof(int));
     std::memcpy(CMSG_DATA(header), &fd, sizeof fd);
-    return ::sendmsg(control, &message, MSG_NOSIGNAL) == static_cast<ssize_t>(bytes.size());
+    return ::sendmsg(control, &message.header, MSG_NOSIGNAL) == static_cast<ssize_t>(bytes.size());
 }
 
 // A voice's helper: selects the voice once (listing espeak-ng's voices costs more than speaking a
