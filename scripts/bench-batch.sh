@@ -51,7 +51,8 @@ for _ in range(runs):  # interleaved, so both see the same machine load
     times["batch"].append(timed(batch_cmd))
     times["separate say"].append(timed(driver))
     made = len(os.listdir(os.path.join(out, "single")))
-    assert made == n, "separate calls wrote %d of %d tracks" % (made, n)
+    batched = len([f for f in os.listdir(os.path.join(out, "batch")) if f.endswith(".json")])
+    assert made == batched == n, "tracks written: %d by the separate calls, %d by batch, of %d" % (made, batched, n)
 for name, t in times.items():
     print("%-12s %d sentences: wall time min %.2f s, median %.2f s, max %.2f s (%d runs); %.1f sentences/s"
           % (name, n, min(t), statistics.median(t), max(t), runs, n / statistics.median(t)))

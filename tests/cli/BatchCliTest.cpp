@@ -138,7 +138,6 @@ TEST_F(BatchCli, GoodJobsAreTheSingleCommandsBytesAndBadJobsNameTheirLine) {
     if (run.exitCode != 3 && run.output.find("espeak") != std::string::npos) GTEST_SKIP() << run.output;
     ASSERT_EQ(run.exitCode, 3) << run.output; // some jobs failed on their input
     ASSERT_EQ(r.size(), std::size_t(kLines));
-    std::vector<int> failedGood;
     for (int line = 1; line <= kLines; ++line) {
         const nlohmann::json& result = r[std::size_t(line - 1)];
         ASSERT_EQ(result["line"], line);
@@ -147,14 +146,11 @@ TEST_F(BatchCli, GoodJobsAreTheSingleCommandsBytesAndBadJobsNameTheirLine) {
             const std::string error = result.value("error", "");
             EXPECT_TRUE(error.starts_with(path("jobs.jsonl") + ":" + std::to_string(line) + ": ")) << error;
             EXPECT_NE(error.find(bad->second.second), std::string::npos) << error;
-        } else if (result["status"] == "error") {
-            failedGood.push_back(line); // must be the single command's failure too, below
         } else {
             EXPECT_EQ(result["status"], "ok") << result;
             EXPECT_EQ(result["id"], "j" + std::to_string(line));
         }
     }
-    EXPECT_LE(failedGood.size(), 3u);
     // A sample of every kind (lines 1..20 and a later stretch) against the single command.
     const auto batchFiles = files(dir / "out");
     const auto single = [&](int line) {
