@@ -54,9 +54,12 @@ class BatchCaches {
     std::shared_ptr<const void> entry(const std::string& key, std::vector<std::filesystem::path>& inputs,
                                       const std::function<std::shared_ptr<const void>()>& load);
 
+    std::string identity(const std::filesystem::path& file);
+
     const BatchOptions& options_;
     mutable std::mutex mutex_;
     std::map<std::string, std::shared_ptr<Slot>> slots_;
+    std::map<std::string, std::pair<std::string, std::string>> hashes_; // file -> (stat version, hash)
     std::once_flag speechOnce_, bundledOnce_;
     std::unique_ptr<FreshSpeech> speech_;
     std::exception_ptr speechError_;
