@@ -14,6 +14,7 @@
 #include "core/gltf/Gltfpack.h"
 #include "core/gltf/TargetNames.h"
 #include "core/phonetics/PhonemeMaps.h"
+#include "core/project/AvatarReduceRun.h"
 #include "core/project/ReduceInputs.h"
 
 #include <chrono>
@@ -60,28 +61,10 @@ double avatarMillisecondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
-// Frequencies: a given table (with --map: phonemes), or the bundled American English phoneme table
-// with the given map; without either, the core's default (the bundled table and Oculus map when the
-// avatar's visemes are Oculus visemes, else equal). Says what it chose.
-FrequencySource avatarFrequencies(const AvatarReduceOptions& o, const AvatarScan& scan, std::string& chosen) {
+// The bundled en-us phoneme table, alone and with the Oculus map (core/project/AvatarReduceRun.h).
+BundledFrequencies bundledAvatarFrequencies() {
     const std::filesystem::path assets = VISEMELAB_ASSETS_DIR;
-    if (o.freqFile.empty() && o.mapFile.empty())
-        return defaultAvatarFrequencies(scan, bundledPhonemeFrequencies(assets, "oculus"), &chosen);
-    FrequencySource source;
-    if (!o.freqFile.empty()) {
-        source = loadFrequencyFile(o.freqFile);
-        chosen = o.freqFile;
-    }
-    if (!o.mapFile.empty()) {
-        if (o.freqFile.empty()) {
-            source = loadFrequencyFile(defaultPhonemeTablePath(assets));
-            chosen = "bundled en-us phoneme table";
-        }
-        source = withPhonemeMap(std::move(source), loadPhonemeMapFile(o.mapFile));
-        chosen += " + map " + o.mapFile;
-    }
-    requirePhonemeMap(source, o.freqFile);
-    return source;
+    return {loadFrequencyFile(defaultPhonemeTablePath(assets)), bundledPhonemeFrequencies(assets, "oculus")};
 }
 
 int runAvatarReduce(const AvatarReduceOptions& o) {
@@ -97,46 +80,46 @@ int runAvatarReduce(const AvatarReduceOptions& o) {
     if (o.maxTargets < 0) throwUsage("--max-targets must be >= 1");
     if (!o.targets.empty()) checkGlobPattern(o.targets, "--targets");
     if (o.rest != "free" && o.rest != "key") throwUsage("--rest must be free or key, got '" + o.rest + "'");
-    ReduceSettings settings = avatarReduceSettings(o.target);
-    applyWeightsOption(o.weights, settings);
-    if (o.rest == "key") settings.rest = RestChoice::Key;
-    settings.restViseme = o.restViseme;
-    settings.constraints = o.constraints.names();
-    settings.maxErrorMm = o.constraints.maxErrorMm;
-    settings.closure = closureSetting(o.constraints);
+    AvatarReduceRequest request;
+    request.target = o.target;
+    request.maxErrorMm = o.constraints.maxErrorMm;
+    request.targets = o.targets;
+    request.freqFile = o.freqFile;
+    request.mapFile = o.mapFile;
+    ReduceSettings weights;
+    applyWeightsOption(o.weights, weights);
+    request.weightMode = weights.weightMode;
+    request.paintedWeights = std::move(weights.paintedWeights);
+    request.paintedWeightsSource = weights.paintedWeightsSource;
+    request.rest = o.rest == "key" ? RestChoice::Key : RestChoice::Free;
+    request.restViseme = o.restViseme;
+    request.constraints = o.constraints.names();
+    request.closure = closureSetting(o.constraints);
     if ((o.target > 0) == (o.constraints.maxErrorMm > 0))
         throwUsage("give the number of keys -m M, or --max-error-mm X (which chooses it)");
-    AvatarWriteOptions write;
+    AvatarWriteOptions& write = request.write;
     write.names = o.names == "merged" ? AvatarNames::Merged : AvatarNames::Original;
     write.targetNormals = !o.noTargetNormals;
     write.maxTargets = o.maxTargets;
+    request.gltfpack = o.gltfpack;
 
     const auto t0 = std::chrono::steady_clock::now();
     const GltfDocument doc = loadGltfDocument(o.input);
     const AvatarScan scan = scanAvatar(doc, {o.targets});
     std::string chosen;
-    const FrequencySource frequencies = avatarFrequencies(o, scan, chosen);
+    const FrequencySource frequencies =
+        avatarReduceFrequencies(request, scan, bundledAvatarFrequencies(), chosen);
     ReduceTimings timings;
     timings.loadMs = avatarMillisecondsSince(t0);
 
     const auto t1 = std::chrono::steady_clock::now();
     ProgressLine progress("reducing");
-    AvatarReduction r =
-        reduceAvatar(doc, scan, frequencies, withPolicy(settings, ReducePolicy::batch(), scan.visemes.size()),
-                     write, progress.callback());
+    AvatarReduceResult run = runAvatarReduce(doc, scan, frequencies, request, progress.callback());
     progress.finish();
+    AvatarReduction& r = run.reduction;
+    const ReduceSettings& settings = run.settings;
     timings.reduceMs = avatarMillisecondsSince(t1);
     const auto t2 = std::chrono::steady_clock::now();
-    if (o.gltfpack) {
-        recompressInPlace(r.glb, r.summary.notes, findGltfpack(), {o.targets});
-    } else if (avatarStoredCompressed(scan)) {
-        const std::filesystem::path gltfpack = findGltfpack();
-        r.summary.notes.push_back(
-            gltfpack.empty()
-                ? std::string("--gltfpack would re-compress the output; gltfpack is not found: ") +
-                      kGltfpackHint
-                : "--gltfpack re-compresses the output (with " + gltfpack.string() + ")");
-    }
     writeFileAtomically(o.out, r.glb);
     timings.writeMs = avatarMillisecondsSince(t2);
     if (!o.report.empty())

@@ -13,6 +13,11 @@ std::mutex& engineMutex() {
     return mutex;
 }
 
+bool& hasSpoken() {
+    static bool spoken = false;
+    return spoken;
+}
+
 int ensureInitialised() {
     static int sampleRate = 0;
     if (sampleRate > 0) return sampleRate;

@@ -18,4 +18,8 @@ int ensureInitialised();
 // language code of the selected voice ("en-us"). Throws InputError naming an unknown voice.
 std::string selectVoice(const std::string& voice);
 
+// Whether this process has synthesised speech: its engine then holds state a fresh process's has
+// not (core/phonetics/EspeakFreshSynthesis.h). Set with the lock held.
+bool& hasSpoken();
+
 } // namespace vl::espeak

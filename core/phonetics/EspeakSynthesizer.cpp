@@ -82,6 +82,7 @@ class EspeakSynthesizer final : public SpeechSynthesizer {
             espeak::api().SetParameter(espeakRATE, voice_.wordsPerMinute, 0);
             espeak::api().SetSynthCallback(onSynthesis);
             currentRun = &run;
+            espeak::hasSpoken() = true;
             const espeak_ERROR status = espeak::api().Synth(input.c_str(), input.size() + 1, 0, POS_CHARACTER,
                                                             0, espeakCHARS_UTF8, nullptr, nullptr);
             currentRun = nullptr;

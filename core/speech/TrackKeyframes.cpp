@@ -52,9 +52,12 @@ std::vector<runtime::Keyframe> keyframesOf(std::span<const TimedPhoneme> phoneme
         const std::uint32_t key =
             keys[i] == kNeutralKey ? runtime::kRestKey : static_cast<std::uint32_t>(keys[i]);
         const float dominance = phonemeDominance(p.phoneme);
-        if (p.end - p.start > 2 * settings.hold) {
-            keyframes.push_back({p.start + settings.hold, key, dominance});
-            keyframes.push_back({p.end - settings.hold, key, dominance});
+        // Both conditions: a phoneme a hair longer than 2 x hold (2,646 samples at 22,050 Hz is 0.12 s
+        // exactly) can round its two times to equal or reversed ones, which the runtime refuses.
+        const double first = p.start + settings.hold, last = p.end - settings.hold;
+        if (p.end - p.start > 2 * settings.hold && last > first) {
+            keyframes.push_back({first, key, dominance});
+            keyframes.push_back({last, key, dominance});
         } else {
             keyframes.push_back({0.5 * (p.start + p.end), key, dominance});
         }
