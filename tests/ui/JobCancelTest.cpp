@@ -10,6 +10,8 @@
 #include <fstream>
 #include <thread>
 
+#include <unistd.h>
+
 namespace vl::ui {
 namespace {
 
@@ -138,6 +140,68 @@ TEST(JobCancel, ACancelledOpenLeavesTheDocumentAsItWas) {
     EXPECT_EQ(session.documentId(), revision);
     EXPECT_TRUE(session.path().empty());
     EXPECT_EQ(session.visemes(), nullptr);
+}
+
+// A folder of `count` visemes with random shapes on a small grid (neutral.obj + v<i>.obj): no
+// structure, so an exact reduction takes seconds (issue 33's certificates).
+std::filesystem::path randomVisemeFolder(const std::string& name, int count) {
+    const auto dir =
+        std::filesystem::temp_directory_path() / ("visemelab-" + name + "-" + std::to_string(::getpid()));
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    constexpr int kSide = 6;
+    std::uint32_t seed = 12345;
+    const auto random = [&seed] {
+        seed = seed * 1664525u + 1013904223u;
+        return static_cast<double>(seed >> 8) / static_cast<double>(1u << 24) - 0.5;
+    };
+    const auto write = [&](const std::string& file, double amplitude) {
+        std::ofstream out(dir / file);
+        for (int y = 0; y < kSide; ++y)
+            for (int x = 0; x < kSide; ++x)
+                out << "v " << x + amplitude * random() << ' ' << y + amplitude * random() << ' '
+                    << amplitude * random() << '\n';
+        for (int y = 0; y + 1 < kSide; ++y)
+            for (int x = 0; x + 1 < kSide; ++x) {
+                const int a = y * kSide + x + 1, b = a + 1, c = a + kSide, d = c + 1;
+                out << "f " << a << ' ' << b << ' ' << d << "\nf " << a << ' ' << d << ' ' << c << '\n';
+            }
+    };
+    write("neutral.obj", 0.0);
+    for (int i = 0; i < count; ++i) write("v" + std::to_string(i) + ".obj", 0.8);
+    return dir;
+}
+
+// A large set's Cancel is a Stop: the search ends at its next node and keeps the best groupings it
+// found with their proven gaps, as at the time limit; the document is untouched.
+TEST(JobCancel, AReductionStopsWithinASecondAndTheDocumentStays) {
+    const auto dir = randomVisemeFolder("cancel-reduction", 30);
+    EditorSession session;
+    session.loadVisemeFolder(dir);
+    session.cancelJob(EditorSession::Job::Reduction); // an automatic run of the loaded set, if any
+    session.setTarget(22);                            // past any curve a first run computed
+    const auto revision = session.documentId();
+    const std::string undo = session.undoName();
+    session.startReduction();
+    // The search reports its bound, not a fraction done: let it run a while, then Cancel.
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    const auto reducing = [&session] {
+        for (const auto& status : session.runningJobs())
+            if (status.job == EditorSession::Job::Reduction) return true;
+        return false;
+    };
+    ASSERT_TRUE(reducing()) << "the reduction ended before it could be cancelled";
+    const auto start = Clock::now();
+    session.cancelJob(EditorSession::Job::Reduction);
+    EXPECT_LT(secondsSince(start), 0.2) << "Cancel returns at once";
+    while (reducing() && secondsSince(start) < 5) {
+        session.poll();
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+    EXPECT_LT(secondsSince(start), 1.0) << "the search did not stop within a second";
+    EXPECT_EQ(session.documentId(), revision);
+    EXPECT_EQ(session.undoName(), undo);
+    std::filesystem::remove_all(dir);
 }
 
 } // namespace
