@@ -14,6 +14,7 @@
 #include "core/gltf/Gltfpack.h"
 #include "core/gltf/TargetNames.h"
 #include "core/phonetics/PhonemeMaps.h"
+#include "core/project/AvatarReduceRun.h"
 #include "core/project/ReduceInputs.h"
 
 #include <chrono>
@@ -60,30 +61,6 @@ double avatarMillisecondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
-// Frequencies: a given table (with --map: phonemes), or the bundled American English phoneme table
-// with the given map; without either, the core's default (the bundled table and Oculus map when the
-// avatar's visemes are Oculus visemes, else equal). Says what it chose.
-FrequencySource avatarFrequencies(const AvatarReduceOptions& o, const AvatarScan& scan, std::string& chosen) {
-    const std::filesystem::path assets = VISEMELAB_ASSETS_DIR;
-    if (o.freqFile.empty() && o.mapFile.empty())
-        return defaultAvatarFrequencies(scan, bundledPhonemeFrequencies(assets, "oculus"), &chosen);
-    FrequencySource source;
-    if (!o.freqFile.empty()) {
-        source = loadFrequencyFile(o.freqFile);
-        chosen = o.freqFile;
-    }
-    if (!o.mapFile.empty()) {
-        if (o.freqFile.empty()) {
-            source = loadFrequencyFile(defaultPhonemeTablePath(assets));
-            chosen = "bundled en-us phoneme table";
-        }
-        source = withPhonemeMap(std::move(source), loadPhonemeMapFile(o.mapFile));
-        chosen += " + map " + o.mapFile;
-    }
-    requirePhonemeMap(source, o.freqFile);
-    return source;
-}
-
 int runAvatarReduce(const AvatarReduceOptions& o) {
     refuseOverwrite(o.out, o.input, "--out");
     if (!o.report.empty()) {
@@ -106,43 +83,30 @@ int runAvatarReduce(const AvatarReduceOptions& o) {
     settings.closure = closureSetting(o.constraints);
     if ((o.target > 0) == (o.constraints.maxErrorMm > 0))
         throwUsage("give the number of keys -m M, or --max-error-mm X (which chooses it)");
-    AvatarWriteOptions write;
-    write.names = o.names == "merged" ? AvatarNames::Merged : AvatarNames::Original;
-    write.targetNormals = !o.noTargetNormals;
-    write.maxTargets = o.maxTargets;
+    AvatarReduceRequest request;
+    request.input = o.input;
+    request.targets = o.targets;
+    request.settings = settings;
+    request.write.names = o.names == "merged" ? AvatarNames::Merged : AvatarNames::Original;
+    request.write.targetNormals = !o.noTargetNormals;
+    request.write.maxTargets = o.maxTargets;
+    request.freqFile = o.freqFile;
+    request.mapFile = o.mapFile;
+    request.bundledTable = bundledPhonemeFrequencies(VISEMELAB_ASSETS_DIR, "oculus");
+    request.gltfpack = o.gltfpack;
 
-    const auto t0 = std::chrono::steady_clock::now();
-    const GltfDocument doc = loadGltfDocument(o.input);
-    const AvatarScan scan = scanAvatar(doc, {o.targets});
-    std::string chosen;
-    const FrequencySource frequencies = avatarFrequencies(o, scan, chosen);
-    ReduceTimings timings;
-    timings.loadMs = avatarMillisecondsSince(t0);
-
-    const auto t1 = std::chrono::steady_clock::now();
     ProgressLine progress("reducing");
-    AvatarReduction r =
-        reduceAvatar(doc, scan, frequencies, withPolicy(settings, ReducePolicy::batch(), scan.visemes.size()),
-                     write, progress.callback());
+    AvatarReduceRun run = vl::runAvatarReduce(request, progress.callback());
     progress.finish();
-    timings.reduceMs = avatarMillisecondsSince(t1);
-    const auto t2 = std::chrono::steady_clock::now();
-    if (o.gltfpack) {
-        recompressInPlace(r.glb, r.summary.notes, findGltfpack(), {o.targets});
-    } else if (avatarStoredCompressed(scan)) {
-        const std::filesystem::path gltfpack = findGltfpack();
-        r.summary.notes.push_back(
-            gltfpack.empty()
-                ? std::string("--gltfpack would re-compress the output; gltfpack is not found: ") +
-                      kGltfpackHint
-                : "--gltfpack re-compresses the output (with " + gltfpack.string() + ")");
-    }
-    writeFileAtomically(o.out, r.glb);
-    timings.writeMs = avatarMillisecondsSince(t2);
-    if (!o.report.empty())
-        writeFileAtomically(o.report,
-                            avatarReductionReport(r, scan, settings, write, timings, o.input, o.out));
+    const auto written = std::chrono::steady_clock::now();
+    writeFileAtomically(o.out, run.reduction.glb);
+    run.timings.writeMs += avatarMillisecondsSince(written);
+    if (!o.report.empty()) writeFileAtomically(o.report, avatarReduceReport(run, request, o.out));
 
+    const AvatarScan& scan = run.scan;
+    const AvatarReduction& r = run.reduction;
+    const AvatarWriteOptions& write = request.write;
+    const std::string& chosen = run.frequencies;
     const Grouping& best = r.outcome.result.best();
     std::printf("Reduced %zu visemes to %zu (weights: %s; frequencies: %s), %s %.6g\n", scan.visemes.size(),
                 r.outcome.model.keys.size(), toString(settings.weightMode), chosen.c_str(),

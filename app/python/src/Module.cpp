@@ -7,4 +7,5 @@ PYBIND11_MODULE(_core, m) {
     m.attr("__version__") = VISEMELAB_VERSION;
     vl::python::registerErrors(m);
     vl::python::bindVisemes(m);
+    vl::python::bindAvatar(m);
 }

@@ -2,6 +2,7 @@
 // or mesh files, through the core's one reduction run (core/project/ReduceInputs.h).
 #include "app/python/src/Arrays.h"
 #include "app/python/src/Bindings.h"
+#include "app/python/src/Options.h"
 #include "core/common/Error.h"
 #include "core/inspect/DistanceUnits.h"
 #include "core/project/ReduceInputs.h"
@@ -101,43 +102,9 @@ FrequencySource frequencySource(const VisemeSet& set, const py::object& frequenc
     } else {
         source = loadFrequencyFile(frequencies.cast<std::filesystem::path>());
     }
-    if (!map.is_none()) {
-        PhonemeVisemeMap phonemeMap;
-        if (py::isinstance<py::dict>(map)) {
-            for (const auto& [phoneme, viseme] : map.cast<py::dict>())
-                phonemeMap.entries.emplace_back(phoneme.cast<std::string>(), viseme.cast<std::string>());
-            phonemeMap.origin = Provenance{"phoneme_map"};
-        } else {
-            phonemeMap = loadPhonemeMapFile(map.cast<std::filesystem::path>());
-        }
-        source = withPhonemeMap(std::move(source), std::move(phonemeMap));
-    }
+    if (!map.is_none()) source = withPhonemeMap(std::move(source), phonemeMapFrom(map));
     requirePhonemeMap(source, "frequencies");
     return source;
-}
-
-// Weights: "uniform", "area", a file of painted weights, or an array of one weight per vertex.
-void applyWeights(const py::object& weights, ReduceSettings& settings) {
-    if (py::isinstance<py::str>(weights)) {
-        const std::string text = weights.cast<std::string>();
-        if (const auto mode = weightModeFromString(text); mode && *mode != WeightMode::Painted) {
-            settings.weightMode = *mode;
-            return;
-        }
-        settings.weightMode = WeightMode::Painted;
-        settings.paintedWeights = loadWeightsFile(text);
-        settings.paintedWeightsSource = text;
-        return;
-    }
-    settings.weightMode = WeightMode::Painted;
-    settings.paintedWeights = valuesFrom(weights.cast<Float64Array>(), "weights");
-    settings.paintedWeightsSource = "weights";
-}
-
-ConstraintNames constraintNames(const std::vector<std::string>& pin,
-                                const std::vector<std::pair<std::string, std::string>>& apart,
-                                const std::vector<std::pair<std::string, std::string>>& together) {
-    return ConstraintNames{pin, apart, together};
 }
 
 py::dict groupingDict(const Grouping& g, const std::vector<std::string>& names) {
@@ -221,11 +188,9 @@ py::dict reduceVisemeSet(const SetPtr& set, int m, const py::object& frequencies
     ReduceSettings& settings = inputs.settings;
     settings.target = m;
     applyWeights(weights, settings);
-    settings.constraints = constraintNames(pin, apart, together);
+    settings.constraints = ConstraintNames{pin, apart, together};
     settings.constraintsSource = "pin/apart/together";
-    const auto choice = restChoiceFromString(rest);
-    if (!choice) throwInputError("rest", "must be auto, free or key, not '" + quoteInput(rest) + "'");
-    settings.rest = *choice;
+    settings.rest = restChoiceFrom(rest, "rest");
     settings.restViseme = restViseme;
     settings.restVisemeSource = "rest_viseme";
     settings.closure = closure;

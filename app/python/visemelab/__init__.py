@@ -11,5 +11,6 @@ from ._core import (  # noqa: F401 (the package's API)
     VisemeSet,
     __version__,
     load_visemes,
+    reduce_avatar,
     reduce_visemes,
 )
