@@ -61,6 +61,12 @@ double avatarMillisecondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
+// The bundled en-us phoneme table, alone and with the Oculus map (core/project/AvatarReduceRun.h).
+BundledFrequencies bundledAvatarFrequencies() {
+    const std::filesystem::path assets = VISEMELAB_ASSETS_DIR;
+    return {loadFrequencyFile(defaultPhonemeTablePath(assets)), bundledPhonemeFrequencies(assets, "oculus")};
+}
+
 int runAvatarReduce(const AvatarReduceOptions& o) {
     refuseOverwrite(o.out, o.input, "--out");
     if (!o.report.empty()) {
@@ -74,39 +80,52 @@ int runAvatarReduce(const AvatarReduceOptions& o) {
     if (o.maxTargets < 0) throwUsage("--max-targets must be >= 1");
     if (!o.targets.empty()) checkGlobPattern(o.targets, "--targets");
     if (o.rest != "free" && o.rest != "key") throwUsage("--rest must be free or key, got '" + o.rest + "'");
-    ReduceSettings settings = avatarReduceSettings(o.target);
-    applyWeightsOption(o.weights, settings);
-    if (o.rest == "key") settings.rest = RestChoice::Key;
-    settings.restViseme = o.restViseme;
-    settings.constraints = o.constraints.names();
-    settings.maxErrorMm = o.constraints.maxErrorMm;
-    settings.closure = closureSetting(o.constraints);
-    if ((o.target > 0) == (o.constraints.maxErrorMm > 0))
-        throwUsage("give the number of keys -m M, or --max-error-mm X (which chooses it)");
     AvatarReduceRequest request;
-    request.input = o.input;
+    request.target = o.target;
+    request.maxErrorMm = o.constraints.maxErrorMm;
     request.targets = o.targets;
-    request.settings = settings;
-    request.write.names = o.names == "merged" ? AvatarNames::Merged : AvatarNames::Original;
-    request.write.targetNormals = !o.noTargetNormals;
-    request.write.maxTargets = o.maxTargets;
     request.freqFile = o.freqFile;
     request.mapFile = o.mapFile;
-    request.bundledTable = bundledPhonemeFrequencies(VISEMELAB_ASSETS_DIR, "oculus");
+    ReduceSettings weights;
+    applyWeightsOption(o.weights, weights);
+    request.weightMode = weights.weightMode;
+    request.paintedWeights = std::move(weights.paintedWeights);
+    request.paintedWeightsSource = weights.paintedWeightsSource;
+    request.rest = o.rest == "key" ? RestChoice::Key : RestChoice::Free;
+    request.restViseme = o.restViseme;
+    request.constraints = o.constraints.names();
+    request.closure = closureSetting(o.constraints);
+    if ((o.target > 0) == (o.constraints.maxErrorMm > 0))
+        throwUsage("give the number of keys -m M, or --max-error-mm X (which chooses it)");
+    AvatarWriteOptions& write = request.write;
+    write.names = o.names == "merged" ? AvatarNames::Merged : AvatarNames::Original;
+    write.targetNormals = !o.noTargetNormals;
+    write.maxTargets = o.maxTargets;
     request.gltfpack = o.gltfpack;
 
-    ProgressLine progress("reducing");
-    AvatarReduceRun run = vl::runAvatarReduce(request, progress.callback());
-    progress.finish();
-    const auto written = std::chrono::steady_clock::now();
-    writeFileAtomically(o.out, run.reduction.glb);
-    run.timings.writeMs += avatarMillisecondsSince(written);
-    if (!o.report.empty()) writeFileAtomically(o.report, avatarReduceReport(run, request, o.out));
+    const auto t0 = std::chrono::steady_clock::now();
+    const GltfDocument doc = loadGltfDocument(o.input);
+    const AvatarScan scan = scanAvatar(doc, {o.targets});
+    std::string chosen;
+    const FrequencySource frequencies =
+        avatarReduceFrequencies(request, scan, bundledAvatarFrequencies(), chosen);
+    ReduceTimings timings;
+    timings.loadMs = avatarMillisecondsSince(t0);
 
-    const AvatarScan& scan = run.scan;
-    const AvatarReduction& r = run.reduction;
-    const AvatarWriteOptions& write = request.write;
-    const std::string& chosen = run.frequencies;
+    const auto t1 = std::chrono::steady_clock::now();
+    ProgressLine progress("reducing");
+    AvatarReduceResult run = runAvatarReduce(doc, scan, frequencies, request, progress.callback());
+    progress.finish();
+    AvatarReduction& r = run.reduction;
+    const ReduceSettings& settings = run.settings;
+    timings.reduceMs = avatarMillisecondsSince(t1);
+    const auto t2 = std::chrono::steady_clock::now();
+    writeFileAtomically(o.out, r.glb);
+    timings.writeMs = avatarMillisecondsSince(t2);
+    if (!o.report.empty())
+        writeFileAtomically(o.report,
+                            avatarReductionReport(r, scan, settings, write, timings, o.input, o.out));
+
     const Grouping& best = r.outcome.result.best();
     std::printf("Reduced %zu visemes to %zu (weights: %s; frequencies: %s), %s %.6g\n", scan.visemes.size(),
                 r.outcome.model.keys.size(), toString(settings.weightMode), chosen.c_str(),

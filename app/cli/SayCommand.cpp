@@ -20,7 +20,9 @@
 #include "core/project/AvatarSpeechGlb.h"
 #include "core/project/Project.h"
 #include "core/project/ProjectSpeech.h"
+#include "core/project/SpeakingFace.h"
 #include "core/project/SpeechCache.h"
+#include "core/project/SpokenTrack.h"
 #include "core/speech/DisplacementError.h"
 #include "core/speech/SpeechGltf.h"
 #include "core/speech/SpeechPage.h"
@@ -130,8 +132,8 @@ std::vector<TrackErrorCurvePoint> errorCurve(const SayOptions& o, const Project&
     return points;
 }
 
-// The avatar's faces (AvatarSpeech), checking the avatar options.
-AvatarSpeech avatarFaces(const SayOptions& o, const std::optional<PhonemeVisemeMap>& map) {
+// What the avatar speaks with (AvatarSpeechOptions), checking the avatar options.
+AvatarSpeechOptions avatarOptions(const SayOptions& o, const std::optional<PhonemeVisemeMap>& map) {
     if (!o.project.empty()) throwUsage("give --project or --avatar, not both");
     if (o.target > 0 && !o.reduced.empty()) throwUsage("give -m or --reduced, not both");
     if (o.curve) throwUsage("--curve needs --project (the error curve reduces a project to every m)");
@@ -148,7 +150,7 @@ AvatarSpeech avatarFaces(const SayOptions& o, const std::optional<PhonemeVisemeM
     options.reduced = o.reduced;
     options.phonemeTable = bundledPhonemeFrequencies(VISEMELAB_ASSETS_DIR, "oculus");
     options.map = map;
-    return avatarSpeech(o.avatar, options);
+    return options;
 }
 
 void printDisplacement(const TrackError& e, std::size_t keys) {
@@ -177,63 +179,16 @@ void printSummary(const SpeechTrackFile& track, std::size_t reducedKeys, std::si
         std::printf("%4d %16.6g %14.6g %14.6g %10.2f %%\n", p.m, p.cost, p.mean, p.max, 100 * p.relative);
 }
 
-// What every sentence of a run speaks with: the full and the reduced face (shared by the sentences'
-// tracks), the vertex weights of the error and the unit of displacements.
-struct SayFace {
-    std::shared_ptr<const ReducedModel> full, reduced;
-    std::vector<double> weights;
-    DisplacementUnit unit;
-    std::string where;
-};
-
-struct SpokenTrack {
-    FaceTrack full, reduced;
-    SpeechTrackFile file;
-};
-
-// One utterance's tracks on both faces, their error and the track file (without the error curve).
-SpokenTrack trackOf(const SayOptions& o, const SayFace& face, const Utterance& utterance,
-                    runtime::Interpolation interpolation, const std::string& text) {
-    const PlaybackSettings settings{interpolation};
-    SpokenTrack spoken{FaceTrack(face.full, utterance.phonemes, settings, face.where),
-                       FaceTrack(face.reduced, utterance.phonemes, settings, face.where),
-                       {}};
-    const FaceTrack& full = spoken.full;
-    const FaceTrack& reduced = spoken.reduced;
-    const UtteranceError error = measureUtteranceError(full, reduced, face.weights, o.fps);
-    const DisplacementError displacement =
-        measureDisplacementError(full, reduced, face.weights, o.fps, face.unit);
-    SpeechTrackFile& track = spoken.file;
-    track.metadata = {o.wav.empty() ? std::string() : projectRelativePath(o.out, o.wav).generic_string(),
-                      utterance.duration(),
-                      text,
-                      o.textFile,
-                      o.voice,
-                      o.rate,
-                      o.project,
-                      toString(interpolation),
-                      o.fps};
-    track.mouthCues = full.cues();
-    track.reducedCues = reduced.cues();
-    track.phonemes = utterance.phonemes;
-    track.error = TrackError{error.mean,
-                             error.max,
-                             error.maxTime,
-                             error.relative,
-                             error.frames,
-                             TrackDisplacementError{displacement.unit, displacement.rms, displacement.max,
-                                                    displacement.maxTime, displacement.rmsFrames,
-                                                    displacement.maxFrames}};
-    track.playback =
-        TrackPlayback{toString(interpolation), settings.dominanceRate, playbackOf(full), playbackOf(reduced)};
-    return spoken;
+// What the track file records of this run (core/project/SpokenTrack.h).
+SpokenTrackOptions trackOptions(const SayOptions& o, runtime::Interpolation interpolation) {
+    return {o.out, o.wav, o.textFile, o.voice, o.rate, o.project, interpolation, o.fps};
 }
 
 // `say --stdin`: one sentence per line of the standard input, one JSON line out per line in
 // ({"line": N, "track": {...}} or {"line": N, "error": "..."}), flushed at once when the output is the
 // standard output (a server reads each answer before it sends the next sentence). The faces are
 // loaded once. A bad line is answered with its error and the run goes on; exit 3 if any line failed.
-int sayLines(const SayOptions& o, const SayFace& face, SpeechSynthesizer& synthesizer,
+int sayLines(const SayOptions& o, const SpeakingFace& face, SpeechSynthesizer& synthesizer,
              runtime::Interpolation interpolation, TrackFormat format) {
     const bool streaming = isStandardOutput(o.out);
     std::optional<AtomicFileWriter> file;
@@ -248,7 +203,7 @@ int sayLines(const SayOptions& o, const SayFace& face, SpeechSynthesizer& synthe
             Utterance utterance;
             synthesizer.speak(line, utterance, [](std::span<const std::int16_t>) {});
             requireSpeech(utterance, "stdin:" + std::to_string(lineNumber), "the line");
-            const SpokenTrack spoken = trackOf(o, face, utterance, interpolation, line);
+            const SpokenTrack spoken = spokenTrack(face, utterance, trackOptions(o, interpolation), line);
             answer["track"] = nlohmann::ordered_json::parse(formatTrack(spoken.file, format, o.out));
         } catch (const InputError& e) {
             answer["error"] = e.what();
@@ -294,29 +249,26 @@ int runSay(const SayOptions& o) {
 
     std::optional<PhonemeVisemeMap> map;
     if (!o.map.empty()) map = loadPhonemeMapFile(o.map);
-    std::optional<AvatarSpeech> avatar;
+    SpeakingFaceRequest request;
+    if (!o.avatar.empty()) {
+        request.avatar = o.avatar;
+        request.avatarOptions = avatarOptions(o, map);
+    } else {
+        request.project = o.project;
+        request.map = map;
+        request.speechCacheFolder = speechCacheFolder();
+    }
+    const SpeakingFace face = loadSpeakingFace(request);
+    const AvatarSpeech* avatar = face.avatar.get();
     Project project;
-    ProjectSpeechFaces cached;
-    if (!o.avatar.empty())
-        avatar = avatarFaces(o, map);
-    else
-        cached = cachedProjectSpeechFaces(o.project, map ? &*map : nullptr);
     if (!avatar && (o.curve || !o.textFile.empty())) project = loadProject(o.project); // the error curve
-    const std::string where = avatar ? o.avatar : o.project;
-    // Moved, not copied, into the face below: an avatar's keys are the size of its meshes.
-    SpeechFaces faces = avatar ? std::move(avatar->faces) : std::move(cached.faces);
-    // glTF lengths are metres; a project of mesh files has no unit.
-    const SayFace face{std::make_shared<const ReducedModel>(std::move(faces.full)),
-                       std::make_shared<const ReducedModel>(std::move(faces.reduced)),
-                       std::move(faces.weights),
-                       avatar || cached.metres ? millimetresFromMetres() : DisplacementUnit{}, where};
     auto synthesizer = makeEspeakSynthesizer({o.voice, o.rate});
     if (o.lines) return sayLines(o, face, *synthesizer, *interpolation, *format);
     std::optional<WavStreamWriter> wav;
     if (!o.wav.empty()) wav.emplace(o.wav, synthesizer->sampleRate());
     const Utterance utterance = speak(o, *synthesizer, wav ? &*wav : nullptr);
 
-    SpokenTrack spoken = trackOf(o, face, utterance, *interpolation, o.text);
+    SpokenTrack spoken = spokenTrack(face, utterance, trackOptions(o, *interpolation), o.text);
     const PlaybackSettings settings{*interpolation};
     const FaceTrack& full = spoken.full;
     const FaceTrack& reduced = spoken.reduced;
@@ -329,13 +281,7 @@ int runSay(const SayOptions& o) {
     const std::string trackText = formatTrack(track, *format, o.out);
     if (wav) wav->finish();
     // The face the --glb file and the --html page show: the avatar itself (animated), or the reduced face.
-    std::string glb;
-    if (avatar && (!o.glb.empty() || !o.html.empty())) {
-        glb = speakingAvatarGlb(*avatar, avatar->reducedFace ? reduced : full, o.fps);
-    } else if (!o.glb.empty() || !o.html.empty()) {
-        const GltfMorphAnimation animation = gltfAnimationOf(reduced, o.fps);
-        glb = formatGlb(reduced.model(), &animation);
-    }
+    const std::string glb = o.glb.empty() && o.html.empty() ? std::string() : spokenGlb(face, spoken, o.fps);
     if (!o.glb.empty()) writeFileAtomically(o.glb, glb);
     if (!o.html.empty()) {
         // The page always carries VisemeLab's own track (the player needs its playback section).

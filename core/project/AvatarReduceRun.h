@@ -1,45 +1,61 @@
 #pragma once
-// `visemelab avatar reduce` as one use case for every front end (the command, batch jobs, the Python
-// package): the avatar read (a file, or bytes named like one), its visemes scanned, the frequencies
-// chosen as the command documents them, the reduction under the batch policy, the optional gltfpack
-// pass, and the report. Front ends check their own flags and write the outputs.
+// `avatar reduce` from its options to its output bytes: the frequencies it chooses, the settings,
+// the reduction, the optional gltfpack re-compression and the report. The CLI command and
+// `visemelab batch` jobs both run it, so a batch job writes the single command's bytes.
 #include "core/export/ReductionOutputs.h"
 #include "core/gltf/AvatarReduce.h"
 #include "core/gltf/AvatarScan.h"
+#include "core/gltf/AvatarWriter.h"
+#include "core/gltf/GltfDocument.h"
+#include "core/reduce/Frequencies.h"
+#include "core/reduce/ReduceRun.h"
 
 #include <filesystem>
-#include <optional>
 #include <string>
+#include <vector>
 
 namespace vl {
 
 struct AvatarReduceRequest {
-    std::filesystem::path input;      // the avatar file, or the name its bytes are reported under
-    std::optional<std::string> bytes; // the avatar's bytes (GLB or JSON glTF): input is not read
-    std::string targets;              // glob over target names; empty: the Oculus visemes
-    ReduceSettings settings; // avatarReduceSettings(m) with the front end's weights, rest, constraints
+    int target = 0;        // m; or
+    double maxErrorMm = 0; // > 0: the fewest keys within this bound
+    std::string targets;   // glob over target names; empty: the Oculus visemes
+    std::filesystem::path freqFile, mapFile;
+    WeightMode weightMode = WeightMode::Uniform;
+    std::vector<double> paintedWeights; // with WeightMode::Painted
+    std::string paintedWeightsSource;
+    RestChoice rest = RestChoice::Free;
+    std::string restViseme;
+    ConstraintNames constraints;
+    std::string closure = kClosureAuto; // "" for none
     AvatarWriteOptions write;
-    std::filesystem::path freqFile; // a frequency table (with mapFile: phonemes); empty: the default
-    std::filesystem::path mapFile;  // a phoneme -> viseme map; empty: the table's
-    // The bundled en-us phoneme table with the Oculus map (bundledPhonemeFrequencies(assets, "oculus")):
-    // the default frequencies when the avatar's visemes are Oculus visemes, the table beside a map.
-    FrequencySource bundledTable;
-    bool gltfpack = false; // re-compress the output with gltfpack (found by findGltfpack)
+    bool gltfpack = false;
 };
 
-struct AvatarReduceRun {
-    AvatarScan scan;
-    AvatarReduction reduction; // .glb: the bytes to write
-    std::string frequencies;   // which table and map reduced it, for messages
-    ReduceTimings timings;     // writeMs: the gltfpack pass (writing is the front end's)
+// The bundled frequencies `avatar reduce` falls back on, loaded by the caller (core/phonetics
+// PhonemeMaps.h, which this layer cannot reach): the en-us phoneme table alone (with --map) and with
+// the Oculus map (without --freq-file and --map).
+struct BundledFrequencies {
+    FrequencySource phonemeTable;
+    FrequencySource oculus;
 };
 
-// Throws InputError naming the file and element for what the avatar, the tables or the reduction
-// refuse (see reduceAvatar, scanAvatar, loadFrequencyFile).
-AvatarReduceRun runAvatarReduce(const AvatarReduceRequest& request, const ProgressCallback& progress = {});
+// The frequencies: a given table (with mapFile: phonemes), or the bundled phoneme table with the
+// given map, else defaultAvatarFrequencies. `chosen` says which.
+FrequencySource avatarReduceFrequencies(const AvatarReduceRequest& request, const AvatarScan& scan,
+                                        const BundledFrequencies& bundled, std::string& chosen);
 
-// The JSON report of `avatar reduce --report` (avatarReductionReport) naming `output`.
-std::string avatarReduceReport(const AvatarReduceRun& run, const AvatarReduceRequest& request,
-                               const std::string& output);
+// The settings the reduction runs with (before the time-limit policy).
+ReduceSettings avatarReduceRequestSettings(const AvatarReduceRequest& request);
+
+struct AvatarReduceResult {
+    AvatarReduction reduction; // glb: the bytes to write
+    ReduceSettings settings;
+};
+
+// Reduces and (with request.gltfpack) re-compresses; notes what gltfpack would do otherwise.
+AvatarReduceResult runAvatarReduce(const GltfDocument& doc, const AvatarScan& scan,
+                                   const FrequencySource& frequencies, const AvatarReduceRequest& request,
+                                   const ProgressCallback& progress = {});
 
 } // namespace vl

@@ -1,0 +1,57 @@
+#include "core/project/SpokenTrack.h"
+
+#include "core/export/Gltf.h"
+#include "core/project/AvatarSpeechGlb.h"
+#include "core/project/Project.h"
+#include "core/speech/DisplacementError.h"
+#include "core/speech/SpeechGltf.h"
+#include "core/speech/TrackPlayback.h"
+#include "core/speech/UtteranceError.h"
+
+namespace vl {
+
+SpokenTrack spokenTrack(const SpeakingFace& face, const Utterance& utterance, const SpokenTrackOptions& o,
+                        const std::string& text) {
+    const PlaybackSettings settings{o.interpolation};
+    SpokenTrack spoken{FaceTrack(face.full, utterance.phonemes, settings, face.where),
+                       FaceTrack(face.reduced, utterance.phonemes, settings, face.where),
+                       {}};
+    const FaceTrack& full = spoken.full;
+    const FaceTrack& reduced = spoken.reduced;
+    const UtteranceError error = measureUtteranceError(full, reduced, face.weights, o.fps);
+    const DisplacementError displacement =
+        measureDisplacementError(full, reduced, face.weights, o.fps, face.unit);
+    SpeechTrackFile& track = spoken.file;
+    track.metadata = {o.wav.empty() ? std::string() : projectRelativePath(o.out, o.wav).generic_string(),
+                      utterance.duration(),
+                      text,
+                      o.textFile,
+                      o.voice,
+                      o.wordsPerMinute,
+                      o.project,
+                      toString(o.interpolation),
+                      o.fps};
+    track.mouthCues = full.cues();
+    track.reducedCues = reduced.cues();
+    track.phonemes = utterance.phonemes;
+    track.error = TrackError{error.mean,
+                             error.max,
+                             error.maxTime,
+                             error.relative,
+                             error.frames,
+                             TrackDisplacementError{displacement.unit, displacement.rms, displacement.max,
+                                                    displacement.maxTime, displacement.rmsFrames,
+                                                    displacement.maxFrames}};
+    track.playback = TrackPlayback{toString(o.interpolation), settings.dominanceRate, playbackOf(full),
+                                   playbackOf(reduced)};
+    return spoken;
+}
+
+std::string spokenGlb(const SpeakingFace& face, const SpokenTrack& spoken, double fps) {
+    if (face.avatar)
+        return speakingAvatarGlb(*face.avatar, face.avatar->reducedFace ? spoken.reduced : spoken.full, fps);
+    const GltfMorphAnimation animation = gltfAnimationOf(spoken.reduced, fps);
+    return formatGlb(spoken.reduced.model(), &animation);
+}
+
+} // namespace vl
