@@ -3,12 +3,15 @@
 #include "app/python/src/Bindings.h"
 #include "app/python/src/Options.h"
 #include "core/common/Error.h"
+#include "core/gltf/GltfDocument.h"
 #include "core/gltf/TargetNames.h"
 #include "core/phonetics/PhonemeMaps.h"
 #include "core/project/AvatarReduceRun.h"
 
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
+
+#include <chrono>
 
 namespace py = pybind11;
 
@@ -17,6 +20,10 @@ namespace vl::python {
 namespace {
 
 using Pairs = std::vector<std::pair<std::string, std::string>>;
+
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
 
 // The avatar's reduced bytes and the JSON report `--report` writes (naming `output`).
 py::tuple reduceAvatarBytes(const py::bytes& glb, int m, const std::string& name, const std::string& targets,
@@ -32,28 +39,43 @@ py::tuple reduceAvatarBytes(const py::bytes& glb, int m, const std::string& name
     if (maxTargets < 0) throw py::value_error("max_targets must be >= 1 (0: no limit)");
     if (!targets.empty()) checkGlobPattern(targets, "targets");
     AvatarReduceRequest request;
-    request.input = name;
-    request.bytes = std::string(glb);
+    request.target = m;
+    request.maxErrorMm = maxErrorMm;
     request.targets = targets;
-    request.settings = avatarReduceSettings(m);
-    applyWeights(weights, request.settings);
-    request.settings.rest = restChoiceFrom(rest, "rest");
-    request.settings.restViseme = restViseme;
-    request.settings.constraints = ConstraintNames{pin, apart, together};
-    request.settings.maxErrorMm = maxErrorMm;
-    request.settings.closure = closure == "none" ? std::string() : closure;
+    request.freqFile = freqFile.value_or(std::filesystem::path());
+    request.mapFile = mapFile.value_or(std::filesystem::path());
+    ReduceSettings weighting;
+    applyWeights(weights, weighting);
+    request.weightMode = weighting.weightMode;
+    request.paintedWeights = std::move(weighting.paintedWeights);
+    request.paintedWeightsSource = weighting.paintedWeightsSource;
+    request.rest = rest == "key" ? RestChoice::Key : RestChoice::Free;
+    request.restViseme = restViseme;
+    request.constraints = ConstraintNames{pin, apart, together};
+    request.closure = closure == "none" ? std::string() : closure;
     request.write.names = names == "merged" ? AvatarNames::Merged : AvatarNames::Original;
     request.write.targetNormals = targetNormals;
     request.write.maxTargets = maxTargets;
-    request.freqFile = freqFile.value_or(std::filesystem::path());
-    request.mapFile = mapFile.value_or(std::filesystem::path());
     request.gltfpack = gltfpack;
-    std::string reduced, report;
+    std::string bytes(glb), reduced, report;
     {
         py::gil_scoped_release release;
-        request.bundledTable = bundledPhonemeFrequencies(VISEMELAB_ASSETS_DIR, "oculus");
-        AvatarReduceRun run = runAvatarReduce(request);
-        report = avatarReduceReport(run, request, output);
+        const std::filesystem::path assets = VISEMELAB_ASSETS_DIR;
+        const BundledFrequencies bundled{loadFrequencyFile(defaultPhonemeTablePath(assets)),
+                                         bundledPhonemeFrequencies(assets, "oculus")};
+        ReduceTimings timings;
+        const auto t0 = std::chrono::steady_clock::now();
+        const GltfDocument doc =
+            parseGltfDocument(std::move(bytes), name, std::filesystem::path(name).parent_path());
+        const AvatarScan scan = scanAvatar(doc, {targets});
+        std::string chosen;
+        const FrequencySource frequencies = avatarReduceFrequencies(request, scan, bundled, chosen);
+        timings.loadMs = millisecondsSince(t0);
+        const auto t1 = std::chrono::steady_clock::now();
+        AvatarReduceResult run = runAvatarReduce(doc, scan, frequencies, request);
+        timings.reduceMs = millisecondsSince(t1);
+        report =
+            avatarReductionReport(run.reduction, scan, run.settings, request.write, timings, name, output);
         reduced = std::move(run.reduction.glb);
     }
     return py::make_tuple(toBytes(reduced), report);
