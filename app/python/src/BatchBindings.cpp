@@ -50,7 +50,8 @@ std::string withoutNewline(std::string line) {
 // The result lines of `lines`, numbered from `firstLine` in the jobs file, in line order (blank lines
 // hold no job and get none). threads 1: in the calling thread, one job after the other (a Dask worker
 // thread); 0: all cores, as `visemelab batch`.
-std::vector<std::string> runJobs(const std::vector<std::string>& lines, const std::filesystem::path& outFolder,
+std::vector<std::string> runJobs(const std::vector<std::string>& lines,
+                                 const std::filesystem::path& outFolder,
                                  const std::filesystem::path& jobsFile, std::size_t firstLine, int threads,
                                  bool resume) {
     if (firstLine < 1) throw py::value_error("first_line is 1-based");
@@ -69,8 +70,9 @@ std::vector<std::string> runJobs(const std::vector<std::string>& lines, const st
     numbered.insert(numbered.end(), lines.begin(), lines.end());
     tbb::task_arena arena(threads == 0 ? tbb::task_arena::automatic : threads);
     arena.execute([&] {
-        batch::runBatchLines(context, numbered,
-                             [&](const batch::JobResult& result) { results.push_back(withoutNewline(result.json())); });
+        batch::runBatchLines(context, numbered, [&](const batch::JobResult& result) {
+            results.push_back(withoutNewline(result.json()));
+        });
     });
     return results;
 }

@@ -8,4 +8,5 @@ PYBIND11_MODULE(_core, m) {
     vl::python::registerErrors(m);
     vl::python::bindVisemes(m);
     vl::python::bindAvatar(m);
+    vl::python::bindSay(m);
 }

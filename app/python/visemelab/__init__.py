@@ -13,4 +13,5 @@ from ._core import (  # noqa: F401 (the package's API)
     load_visemes,
     reduce_avatar,
     reduce_visemes,
+    say,
 )
