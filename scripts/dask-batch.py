@@ -8,7 +8,8 @@ scheduler round trip); each chunk runs visemelab.run_jobs on a worker, whose pro
 projects and avatars between chunks. The result lines are written in line order to the standard
 output (or --results FILE), exactly as `visemelab batch` writes them; the exit status is 0 only when
 every job succeeded. Outputs go to DIR, which every worker must see at the same path (a shared
-filesystem on a cluster); relative paths in the jobs are read from the jobs file's folder (--base).
+filesystem on a cluster); relative paths in the jobs are read from the jobs file's folder, so on a
+cluster name the jobs file by a path every worker resolves alike (absolute, on the shared filesystem).
 
 Without --scheduler a LocalCluster of --workers processes (one thread each) runs on this machine.
 The workers import visemelab from their own PYTHONPATH (a build tree: build/release/app/python).
@@ -27,11 +28,12 @@ def chunks_of(lines, size):
     return [(start + 1, lines[start:start + size]) for start in range(0, len(lines), size)]
 
 
-def run_chunk(first_line, lines, out_dir, base_dir):
-    """One task: a chunk of lines through the worker process's cached context."""
+def run_chunk(first_line, lines, out_dir, jobs_file):
+    """One task: a chunk of lines, one job after the other in this worker thread (Dask runs the
+    threads and processes in parallel), through the worker process's cached context."""
     import visemelab
 
-    return visemelab.run_jobs(lines, out_dir, base_dir, first_line=first_line)
+    return visemelab.run_jobs(lines, out_dir, jobs_file, first_line=first_line, threads=1)
 
 
 def warm_worker():
@@ -58,17 +60,16 @@ def main(argv=None):
                         help="Without --scheduler: local worker processes (default: one per core)")
     parser.add_argument("--threads-per-worker", type=int, default=1, help="Local workers' threads (default 1)")
     parser.add_argument("--chunk", type=int, default=0, help="Lines per task (default: about 4 tasks per thread)")
-    parser.add_argument("--base", help="Folder relative job paths are read from (default: the jobs file's)")
     parser.add_argument("--results", help="Write the result lines here instead of the standard output")
     parser.add_argument("--timings", help="Write {startup_s, run_s, jobs, tasks} as JSON here")
     args = parser.parse_args(argv)
 
     from dask.distributed import Client, LocalCluster
 
-    jobs_file = pathlib.Path(args.jobs)
-    lines = jobs_file.read_text(encoding="utf-8").splitlines()
-    out_dir = str(pathlib.Path(args.out).resolve())
-    base_dir = str(pathlib.Path(args.base).resolve() if args.base else jobs_file.resolve().parent)
+    # Named as given (the result lines name it as `visemelab batch` does); the workers resolve it.
+    jobs_file = args.jobs
+    lines = pathlib.Path(jobs_file).read_text(encoding="utf-8").splitlines()
+    out_dir = args.out
 
     started = time.perf_counter()
     cluster = None
@@ -85,7 +86,7 @@ def main(argv=None):
 
         started = time.perf_counter()
         pieces = chunks_of(lines, chunk_size_for(len(lines), slots, args.chunk))
-        futures = [client.submit(run_chunk, first, chunk, out_dir, base_dir, pure=False)
+        futures = [client.submit(run_chunk, first, chunk, out_dir, jobs_file, pure=False)
                    for first, chunk in pieces]
         results = [line for chunk in client.gather(futures) for line in chunk]
         run = time.perf_counter() - started
@@ -107,7 +108,7 @@ def main(argv=None):
             {"startup_s": startup, "run_s": run, "jobs": len(lines), "tasks": len(pieces), "slots": slots}))
     print(f"dask-batch: {len(lines)} lines in {len(pieces)} tasks on {slots} worker threads: "
           f"{run:.2f} s (cluster start-up {startup:.2f} s, not counted)", file=sys.stderr)
-    failed = sum(1 for line in results if not json.loads(line).get("ok", False))
+    failed = sum(1 for line in results if json.loads(line).get("status") == "error")
     return 0 if failed == 0 else 3
 
 
