@@ -44,5 +44,6 @@ void addFaceCommand(CLI::App& app, CommandRunner& run);
 void addFaceMouthCommand(CLI::App& face, CommandRunner& run); // `face mouth`, added by addFaceCommand
 void addAvatarCommand(CLI::App& app, CommandRunner& run);
 void addSayCommand(CLI::App& app, CommandRunner& run);
+void addBatchCommand(CLI::App& app, CommandRunner& run);
 
 } // namespace vl::cli

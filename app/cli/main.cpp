@@ -62,6 +62,7 @@ int main(int argc, char** argv) {
     vl::cli::addFaceCommand(app, run);
     vl::cli::addAvatarCommand(app, run);
     vl::cli::addSayCommand(app, run);
+    vl::cli::addBatchCommand(app, run);
     app.set_version_flag("--version", std::string("visemelab ") + VISEMELAB_VERSION);
 
     // A first argument that is neither an option nor a command is named as such (CLI11 would only

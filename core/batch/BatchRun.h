@@ -23,7 +23,7 @@ enum class JobStatus { Ok, Error, Skipped };
 
 struct JobResult {
     std::size_t line = 0;
-    std::string id;                   // empty when the line has none
+    std::string id; // empty when the line has none
     JobStatus status = JobStatus::Ok;
     std::vector<std::string> outputs; // relative to the output folder
     std::string error;                // with Error: "<jobs file>:<line>: <culprit>: <what>"
