@@ -4,6 +4,7 @@
 // files' content, so a file replaced between chunks is loaded again).
 #include "app/python/src/Bindings.h"
 #include "core/batch/BatchContext.h"
+#include "core/batch/BatchJob.h"
 #include "core/batch/BatchRun.h"
 #include "core/project/SpeechCache.h"
 

@@ -9,4 +9,5 @@ PYBIND11_MODULE(_core, m) {
     vl::python::bindVisemes(m);
     vl::python::bindAvatar(m);
     vl::python::bindSay(m);
+    vl::python::bindBatch(m);
 }

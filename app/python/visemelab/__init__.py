@@ -13,5 +13,6 @@ from ._core import (  # noqa: F401 (the package's API)
     load_visemes,
     reduce_avatar,
     reduce_visemes,
+    run_jobs,
     say,
 )
