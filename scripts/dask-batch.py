@@ -43,6 +43,40 @@ def warm_worker():
     return visemelab.__version__
 
 
+# Dask's nanny starts workers with MALLOC_TRIM_THRESHOLD_=65536 (distributed.nanny.pre-spawn-environ),
+# which turns off glibc's adaptive mmap threshold: every block over 128 KiB (a sentence's audio, its
+# tracks) is then mapped and unmapped afresh, page faults included. On 2 workers x 1 thread that made
+# the same jobs about 30 % slower than without (scripts/dask-bench.py, docs/batch.md "Dask").
+TRIM_VARIABLE = "MALLOC_TRIM_THRESHOLD_"
+
+
+def local_cluster(workers, threads_per_worker):
+    """A LocalCluster whose workers keep glibc's adaptive malloc thresholds."""
+    import dask
+    from dask.distributed import LocalCluster
+
+    environ = dict(dask.config.get("distributed.nanny.pre-spawn-environ"))
+    environ.pop(TRIM_VARIABLE, None)
+    with dask.config.set({"distributed.nanny.pre-spawn-environ": environ}):
+        return LocalCluster(n_workers=workers, threads_per_worker=threads_per_worker, processes=True,
+                            dashboard_address=None)
+
+
+def worker_trim_setting():
+    import os
+
+    return os.environ.get(TRIM_VARIABLE)
+
+
+def warn_about_trimming(client):
+    """Says when workers (of a scheduler started elsewhere) run with Dask's malloc trimming."""
+    trimmed = sorted(w for w, v in client.run(worker_trim_setting).items()
+                     if v is not None and v.isdigit() and int(v) < (1 << 20))
+    if trimmed:
+        print(f"dask-batch: {len(trimmed)} workers run with {TRIM_VARIABLE} set (Dask's default 65536 costs "
+              "about 30 %): start them as docs/batch.md says", file=sys.stderr)
+
+
 def chunk_size_for(line_count, slots, requested):
     if requested > 0:
         return requested
@@ -64,7 +98,7 @@ def main(argv=None):
     parser.add_argument("--timings", help="Write {startup_s, run_s, jobs, tasks} as JSON here")
     args = parser.parse_args(argv)
 
-    from dask.distributed import Client, LocalCluster
+    from dask.distributed import Client
 
     # Named as given (the result lines name it as `visemelab batch` does); the workers resolve it.
     jobs_file = args.jobs
@@ -76,11 +110,11 @@ def main(argv=None):
     if args.scheduler:
         client = Client(args.scheduler)
     else:
-        cluster = LocalCluster(n_workers=args.workers, threads_per_worker=args.threads_per_worker,
-                               processes=True, dashboard_address=None)
+        cluster = local_cluster(args.workers, args.threads_per_worker)
         client = Client(cluster)
     try:
         client.run(warm_worker)
+        warn_about_trimming(client)
         slots = sum(client.nthreads().values())
         startup = time.perf_counter() - started
 

@@ -53,6 +53,8 @@ def main():
     parser.add_argument("--repeats", type=int, default=5)
     parser.add_argument("--workers", type=int, default=2)
     parser.add_argument("--chunk", type=int, default=0, help="Lines per Dask task (default: the runner's)")
+    parser.add_argument("--trim", action="store_true",
+                        help="Keep Dask's MALLOC_TRIM_THRESHOLD_=65536 in the workers (what it costs)")
     parser.add_argument("--cli", default=str(ROOT / "build" / "release" / "app" / "visemelab"))
     args = parser.parse_args()
 
@@ -65,18 +67,28 @@ def main():
         jobs = write_jobs(tmp, args.jobs)
         lines = jobs.read_text().splitlines()
 
+        batch_results = []
+        # The nanny leaks its pre-spawn variables into this process (--trim): not into the batch runs.
+        batch_env = {k: v for k, v in os.environ.items() if k != dask_batch.TRIM_VARIABLE}
+
         def batch_once(out):
             started = time.perf_counter()
-            subprocess.run([args.cli, "batch", str(jobs), "--out", str(out)], check=True,
-                           stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-            return time.perf_counter() - started
+            done = subprocess.run([args.cli, "batch", str(jobs), "--out", str(out)], stdout=subprocess.PIPE,
+                                  stderr=subprocess.DEVNULL, text=True, env=batch_env)
+            elapsed = time.perf_counter() - started
+            if done.returncode not in (0, 3):  # 3: some jobs' input refused; they are errors on both sides
+                raise RuntimeError(f"visemelab batch failed ({done.returncode})")
+            batch_results.append(done.stdout)
+            return elapsed
 
         batch_once(tmp / "warm")  # fills the speech cache
-        batch_times = [batch_once(tmp / f"batch{r}") for r in range(args.repeats)]
 
         started = time.perf_counter()
-        cluster = LocalCluster(n_workers=args.workers, threads_per_worker=1, processes=True,
-                               dashboard_address=None)
+        if args.trim:  # Dask's default: workers trim malloc at 64 KiB (for the comparison)
+            cluster = LocalCluster(n_workers=args.workers, threads_per_worker=1, processes=True,
+                                   dashboard_address=None)
+        else:
+            cluster = dask_batch.local_cluster(args.workers, 1)
         client = Client(cluster)
         client.run(dask_batch.warm_worker)
         startup = time.perf_counter() - started
@@ -87,17 +99,26 @@ def main():
             futures = [client.submit(dask_batch.run_chunk, first, chunk, str(out), str(jobs), pure=False)
                        for first, chunk in dask_batch.chunks_of(lines, size)]
             results = client.gather(futures)
-            assert sum(len(r) for r in results) == len(lines)
-            return time.perf_counter() - started
+            elapsed = time.perf_counter() - started
+            text = "".join(line + "\n" for chunk in results for line in chunk)
+            if text != batch_results[-1]:
+                raise RuntimeError("the Dask run's result lines differ from visemelab batch's")
+            return elapsed
 
         first = dask_once(tmp / "dask-first")
-        dask_times = [dask_once(tmp / f"dask{r}") for r in range(args.repeats)]
+        # Alternated, so that both sides see the same load of a shared machine.
+        batch_times, dask_times = [], []
+        for r in range(args.repeats):
+            batch_times.append(batch_once(tmp / f"batch{r}"))
+            dask_times.append(dask_once(tmp / f"dask{r}"))
         client.close()
         cluster.close()
 
-    print(f"{args.jobs} ten-word sentences, {args.repeats} runs each, {os.cpu_count()} cores")
+    errors = batch_results[-1].count('"status":"error"')
+    print(f"{args.jobs} ten-word sentences ({errors} refused by both), {args.repeats} runs each, "
+          f"{os.cpu_count()} cores, load average {os.getloadavg()[0]:.1f}")
     b = summary("visemelab batch", batch_times, args.jobs)
-    d = summary(f"dask {args.workers}x1 (chunks {size})", dask_times, args.jobs)
+    d = summary(f"dask {args.workers}x1{' trim' if args.trim else ''} (chunks {size})", dask_times, args.jobs)
     print(f"{'cluster start-up':>22}: {startup:6.2f} s (not in the runs); first run on fresh workers "
           f"{first:6.2f} s")
     print(f"dask / batch (medians): {d / b:.2f}x (goal <= 1.3x)")
