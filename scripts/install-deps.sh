@@ -8,6 +8,9 @@ packages=(g++ make cmake pkg-config ninja-build libglfw3-dev libimgui-dev libstb
   portaudio19-dev coinor-libclp-dev chromium espeak-ng)
 # libxxhash-dev: XXH3, compiled in (core/common/ContentHash.cpp), checks the speech cache's inputs.
 packages+=(libxxhash-dev)
+# The Python package (app/python, pybind11) and its cluster runs (scripts/dask-batch.py): Debian's
+# python3 with numpy, setuptools (pip install ./app/python) and Dask distributed.
+packages+=(pybind11-dev python3-dev python3-numpy python3-setuptools python3-dask python3-distributed)
 # espeak-ng (the command): the say benchmarks measure its own synthesis as their floor.
 # chromium: the say --html page test takes screenshots of it headless.
 # npm runs the Khronos glTF validator in the tests; a nodejs that bundles npm already provides it.
