@@ -102,7 +102,7 @@ class ByteReader {
         return false;
     }
     void raw(void* p, std::size_t n) {
-        if (!fits(n, 1)) return;
+        if (!fits(n, 1) || n == 0) return; // an empty array's data() may be null: no memcpy
         std::memcpy(p, in_.data(), n);
         in_.remove_prefix(n);
     }
