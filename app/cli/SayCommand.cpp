@@ -14,6 +14,7 @@
 #include "core/common/OutputPolicy.h"
 #include "core/export/Gltf.h"
 #include "core/gltf/TargetNames.h"
+#include "core/io/JsonWrite.h"
 #include "core/phonetics/CorpusText.h"
 #include "core/phonetics/EspeakSynthesizer.h"
 #include "core/phonetics/PhonemeMaps.h"
@@ -197,19 +198,21 @@ int sayLines(const SayOptions& o, const SpeakingFace& face, SpeechSynthesizer& s
     std::string line;
     while (std::getline(std::cin, line)) {
         ++lineNumber;
-        nlohmann::ordered_json answer{{"line", lineNumber}};
+        std::string text;
         try {
             if (!isValidUtf8(line)) throwInputError("stdin:" + std::to_string(lineNumber), "not UTF-8 text");
             Utterance utterance;
             synthesizer.speak(line, utterance, [](std::span<const std::int16_t>) {});
             requireSpeech(utterance, "stdin:" + std::to_string(lineNumber), "the line");
             const SpokenTrack spoken = spokenTrack(face, utterance, trackOptions(o, interpolation), line);
-            answer["track"] = nlohmann::ordered_json::parse(formatTrack(spoken.file, format, o.out));
+            // Spliced, not parsed again: the track is valid JSON text of our own writer.
+            text = "{\"line\":" + std::to_string(lineNumber) +
+                   ",\"track\":" + compactJsonText(formatTrack(spoken.file, format, o.out)) + "}\n";
         } catch (const InputError& e) {
-            answer["error"] = e.what();
+            const nlohmann::ordered_json answer{{"line", lineNumber}, {"error", e.what()}};
+            text = answer.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
             ++failed;
         }
-        const std::string text = answer.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
         if (file) {
             file->write(text);
         } else if (!writeToStandardOutput(text)) {

@@ -6,9 +6,14 @@
 #include "core/io/JsonRead.h"
 
 #include <string>
+#include <string_view>
 
 namespace vl {
 
 std::string formatJsonPretty(const Json& value);
+
+// The JSON text `json` on one line: every space, tab, carriage return and newline outside strings
+// removed (JSON Lines from a pretty text without parsing it again). `json` must be valid JSON.
+std::string compactJsonText(std::string_view json);
 
 } // namespace vl

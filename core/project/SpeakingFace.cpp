@@ -24,6 +24,7 @@ SpeakingFace loadSpeakingFace(const SpeakingFaceRequest& request) {
     face.full = std::make_shared<const ReducedModel>(std::move(faces.full));
     face.reduced = std::make_shared<const ReducedModel>(std::move(faces.reduced));
     face.weights = std::move(faces.weights);
+    face.errorBasis = std::make_shared<const SpeechErrorBasis>(*face.full, *face.reduced, face.weights);
     return face;
 }
 

@@ -27,8 +27,10 @@ struct SpeakingFaceRequest {
 struct SpeakingFace {
     std::shared_ptr<const ReducedModel> full, reduced;
     std::vector<double> weights; // per vertex
-    DisplacementUnit unit;       // mm for avatars and avatar projects (glTF metres), else model units
-    std::string where;           // the project or avatar, for messages
+    // What the speech error measures need of full, reduced and weights, made once for every sentence.
+    std::shared_ptr<const SpeechErrorBasis> errorBasis;
+    DisplacementUnit unit; // mm for avatars and avatar projects (glTF metres), else model units
+    std::string where;     // the project or avatar, for messages
     // With an avatar: its speech (without the faces, moved into full / reduced), for the animated GLB
     // and the frequencies it chose.
     std::shared_ptr<const AvatarSpeech> avatar;

@@ -18,9 +18,12 @@ SpokenTrack spokenTrack(const SpeakingFace& face, const Utterance& utterance, co
                        {}};
     const FaceTrack& full = spoken.full;
     const FaceTrack& reduced = spoken.reduced;
-    const UtteranceError error = measureUtteranceError(full, reduced, face.weights, o.fps);
-    const DisplacementError displacement =
-        measureDisplacementError(full, reduced, face.weights, o.fps, face.unit);
+    // A face made by hand (no basis) gets one for this sentence.
+    const std::shared_ptr<const SpeechErrorBasis> basis =
+        face.errorBasis ? face.errorBasis
+                        : std::make_shared<const SpeechErrorBasis>(*face.full, *face.reduced, face.weights);
+    const UtteranceError error = measureUtteranceError(*basis, full, reduced, o.fps);
+    const DisplacementError displacement = measureDisplacementError(*basis, full, reduced, o.fps, face.unit);
     SpeechTrackFile& track = spoken.file;
     track.metadata = {o.wav.empty() ? std::string() : projectRelativePath(o.out, o.wav).generic_string(),
                       utterance.duration(),

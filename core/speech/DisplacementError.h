@@ -7,6 +7,7 @@
 // region of nonzero weight. Over the utterance: the RMS of RMS(t) in time (trapezoid rule over
 // the frames, as the utterance error's mean) and the largest max(t) with its time.
 #include "core/speech/FaceTrack.h"
+#include "core/speech/SpeechErrorBasis.h"
 
 #include <span>
 #include <string>
@@ -38,6 +39,11 @@ struct DisplacementError {
 // vertex. Throws InputError for mismatched sizes, fps <= 0 or weights that are all 0.
 DisplacementError measureDisplacementError(const FaceTrack& full, const FaceTrack& reduced,
                                            std::span<const double> vertexWeights, double fps,
+                                           const DisplacementUnit& unit);
+// The same with the faces' basis made once (SpeechErrorBasis.h: many utterances on one face). Throws
+// InputError when `basis` was made for faces of other key or vertex counts.
+DisplacementError measureDisplacementError(const SpeechErrorBasis& basis, const FaceTrack& full,
+                                           const FaceTrack& reduced, double fps,
                                            const DisplacementUnit& unit);
 
 } // namespace vl

@@ -7,6 +7,7 @@
 // sum_i (time share of viseme i) * rho(A_i, B_group(i)), the reduction's own cost rho_f with time
 // shares for frequencies; blending adds the transitions.
 #include "core/speech/FaceTrack.h"
+#include "core/speech/SpeechErrorBasis.h"
 
 #include <span>
 #include <vector>
@@ -32,5 +33,9 @@ struct UtteranceError {
 // Throws InputError for mismatched sizes or fps <= 0.
 UtteranceError measureUtteranceError(const FaceTrack& full, const FaceTrack& reduced,
                                      std::span<const double> vertexWeights, double fps);
+// The same with the faces' basis made once (SpeechErrorBasis.h: many utterances on one face). Throws
+// InputError when `basis` was made for faces of other key or vertex counts.
+UtteranceError measureUtteranceError(const SpeechErrorBasis& basis, const FaceTrack& full,
+                                     const FaceTrack& reduced, double fps);
 
 } // namespace vl

@@ -56,5 +56,18 @@ TEST(JsonWrite, PrettyFormatIsStableAndExact) {
     EXPECT_EQ(formatJsonPretty(parseJsonStrict(text, "f")), text);
 }
 
+TEST(JsonWrite, CompactTextIsTheOneLineDumpOfThePrettyText) {
+    // Spaces, escaped quotes and backslashes inside strings stay; every layout character outside goes.
+    const std::string pretty = formatJsonPretty(parseJsonStrict(
+        R"({"text": "a \"quoted\" word,\tand a\\ back slash \n", "list": [1.5, -2, 3e-07],
+            "nested": {"empty": [], "o": {}, "s": " { [ , ] } "}, "unicode": "\u00e9 caf\u00e9"})",
+        "f.json"));
+    ASSERT_NE(pretty.find('\n'), std::string::npos);
+    const std::string compact = compactJsonText(pretty);
+    EXPECT_EQ(compact.find('\n'), std::string::npos);
+    EXPECT_EQ(compact, nlohmann::ordered_json::parse(pretty).dump()); // members in the text's order
+    EXPECT_EQ(nlohmann::ordered_json::parse(compact), nlohmann::ordered_json::parse(pretty));
+}
+
 } // namespace
 } // namespace vl

@@ -121,3 +121,45 @@ TEST(DisplacementError, NoReductionIsZero) {
         measureDisplacementError(full, full, weights, 30.0, millimetresFromMetres());
     EXPECT_EQ(itself.max, 0.0); // the same keys cancel exactly
 }
+
+TEST(DisplacementError, OneBasisServesEveryUtteranceOfItsFacesAtAnyMouthSize) {
+    // The per-frame sums run in lanes of four: mouths of 1..9 vertices cover every remainder.
+    const auto m = test::speechModels(5, {0, 1, 1, 2, 0}, 23);
+    const std::vector<std::vector<std::pair<std::string, double>>> utterances = {
+        {{"sil", 0.1}, {"P2", 0.2}, {"P5", 0.05}, {"P8", 0.3}, {"sil", 0.1}},
+        {{"P1", 0.3}, {"P3", 0.3}, {"P3", 0.2}, {"P9", 0.15}},
+    };
+    for (std::size_t mouth = 1; mouth <= 9; ++mouth) {
+        std::vector<double> weights(m.set.vertexCount(), 0.0);
+        for (std::size_t v = 0; v < mouth; ++v) weights[3 * v % weights.size()] = 1.0 + double(v);
+        const SpeechErrorBasis basis(m.full, m.reduced, weights);
+        EXPECT_EQ(basis.mouthSize(), mouth);
+        for (const auto& spoken : utterances) {
+            const auto phonemes = test::timed(spoken);
+            const FaceTrack full(m.full, phonemes, {}, "full"), reduced(m.reduced, phonemes, {}, "reduced");
+            const DisplacementError shared =
+                measureDisplacementError(basis, full, reduced, 50.0, millimetresFromMetres());
+            const UtteranceError rho = measureUtteranceError(basis, full, reduced, 50.0);
+            ASSERT_EQ(shared.maxFrames.size(), rho.frames.size());
+            for (std::size_t f = 0; f < shared.maxFrames.size(); ++f) {
+                const double t = std::min(f / 50.0, full.duration());
+                const Frame expected = bruteForce(full, reduced, weights, t);
+                ASSERT_NEAR(shared.rmsFrames[f], expected.rms, 1e-9 + 1e-5 * expected.rms)
+                    << mouth << " " << f;
+                ASSERT_NEAR(shared.maxFrames[f], expected.max, 1e-9 + 1e-5 * expected.max)
+                    << mouth << " " << f;
+            }
+        }
+    }
+}
+
+TEST(DisplacementError, RefusesABasisOfOtherFaces) {
+    const auto m = test::speechModels(4, {0, 0, 1, 1}, 3);
+    const auto other = test::speechModels(4, {0, 1, 2, 2}, 3);
+    const std::vector<double> weights(m.set.vertexCount(), 1.0);
+    const SpeechErrorBasis basis(other.full, other.reduced, weights); // 3 reduced keys, not 2
+    const auto phonemes = test::timed({{"P1", 0.2}, {"P4", 0.15}});
+    const FaceTrack full(m.full, phonemes, {}, "full"), reduced(m.reduced, phonemes, {}, "reduced");
+    EXPECT_THROW(measureDisplacementError(basis, full, reduced, 30.0, {}), InputError);
+    EXPECT_THROW(measureUtteranceError(basis, full, reduced, 30.0), InputError);
+}
