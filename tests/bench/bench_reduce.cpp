@@ -309,11 +309,7 @@ void BM_RestFreeRatio(benchmark::State& state) {
     state.SetLabel("arpabet n=" + std::to_string(n) + " m=10" + (proved ? " proved" : " NOT proved"));
 }
 BENCHMARK(BM_RestFreeRatio)
-    ->Arg(16)
-    ->Arg(20)
-    ->Arg(24)
-    ->Arg(32)
-    ->Arg(40)
+    ->DenseRange(16, 40, 4)
     ->Unit(benchmark::kMillisecond)
     ->Iterations(5)
     ->Repetitions(7)
