@@ -104,10 +104,15 @@ class SuffixSearch {
             for (int g = 0; g < s.k; ++g) {
                 const UnitMask members = s.masks[static_cast<std::size_t>(g)];
                 if (model_.conflicts[static_cast<std::size_t>(u)] & members) continue;
+                const GroupSums& before = s.sums[static_cast<std::size_t>(g)];
+                if (before.resting) { // resting costs rest_u whoever rests: no cross terms to sum
+                    const double delta = model_.rest[static_cast<std::size_t>(u)];
+                    out[static_cast<std::size_t>(count++)] = {s.partial + delta + rest, delta, 0.0, g};
+                    continue;
+                }
                 double crossSum = 0;
                 for (UnitMask bits = members; bits; bits &= bits - 1)
                     crossSum += model_.h(u, std::countr_zero(bits));
-                const GroupSums& before = s.sums[static_cast<std::size_t>(g)];
                 const double delta = before.plus(model_, u, crossSum).cost() - before.cost();
                 out[static_cast<std::size_t>(count++)] = {s.partial + delta + rest, delta, crossSum, g};
             }
@@ -222,16 +227,13 @@ class SuffixSearch {
     std::atomic<bool> stopped_{false};
 };
 
-// The order units are placed in. Units of weight 0 go last (they cost nothing, see completeFeasibly),
-// but for the rest unit, which decides what its group costs: it goes first, so the rest group's cost
-// is exact from the root on. The others farthest first: the heaviest unit, then again and again the unit
-// whose cheapest pair with the units already ordered costs most (a pair {a, b} costs F_a F_b / (F_a + F_b)
-// |x_a - x_b|^2). Every suffix is then a spread-out sample of the set, units no few groups hold cheaply, so
-// its optimum is a large share of the whole optimum and the bounds prune early; and the units placed first
-// are those whose groups decide the most. On the 40 ARPAbet meshes (area weights) this proves p = 9 in 1.1 s
+// The order units are placed in. Units of weight 0 go last (they cost nothing, see completeFeasibly).
+// The others farthest first: the heaviest unit, then again and again the unit whose cheapest pair with
+// the units already ordered costs most (a pair {a, b} costs F_a F_b / (F_a + F_b) |x_a - x_b|^2). Every
+// suffix is then a spread-out sample of the set, units no few groups hold cheaply, so its optimum is a
+// large share of the whole optimum and the bounds prune early; and the units placed first are those
+// whose groups decide the most. On the 40 ARPAbet meshes (area weights) this proves p = 9 in 1.1 s
 // where interleaving the groups of the heuristics' partition (the order before) took 53 s.
-// The rest unit takes no part in the farthest-first choice: seeded by it (the units resting dearest
-// first), the rest-free search took 1.6x the time it takes now on 32 ARPAbet meshes.
 // Units of weight 0 cost nothing in any group, except the rest unit.
 bool placedBySearch(const GroupCostModel& model, int a) {
     return model.weight[static_cast<std::size_t>(a)] > 0 || a == model.restUnit;
@@ -245,18 +247,16 @@ void heaviestTo(const GroupCostModel& model, std::vector<int>& order, std::size_
     }));
 }
 
-std::vector<int> placementOrder(const GroupCostModel& model) {
+// The farthest-first order of the keyed model (see above).
+std::vector<int> farthestFirst(const GroupCostModel& model) {
     const int n = model.size();
     std::vector<int> order, zero;
     for (int a = 0; a < n; ++a) (placedBySearch(model, a) ? order : zero).push_back(a);
     if (!order.empty()) {
-        std::size_t ordered = 0;
-        if (model.restUnit >= 0)
-            std::swap(order[ordered++], *std::find(order.begin(), order.end(), model.restUnit));
-        if (ordered < order.size()) heaviestTo(model, order, ordered++);
+        heaviestTo(model, order, 0);
         // nearest[a]: the cost of a's cheapest pair with an ordered unit; order[0..k) is ordered.
         std::vector<double> nearest(static_cast<std::size_t>(n), std::numeric_limits<double>::infinity());
-        for (std::size_t k = ordered; k < order.size(); ++k) {
+        for (std::size_t k = 1; k < order.size(); ++k) {
             const int last = order[k - 1];
             std::size_t farthest = k;
             for (std::size_t i = k; i < order.size(); ++i) {
@@ -269,6 +269,24 @@ std::vector<int> placementOrder(const GroupCostModel& model) {
         }
     }
     order.insert(order.end(), zero.begin(), zero.end());
+    return order;
+}
+
+// Rest-free: the rest unit goes first, so the rest group's cost is exact from the root on; the others
+// keep their places in the keyed model's order, where the rest viseme is an ordinary point (its shape,
+// its frequency) that joins the spread-out sample at its turn (a virtual rest unit has weight 0: the
+// others' order is the keyed one). Search nodes for p = 1..11 on the ARPAbet meshes (m = 10 keys),
+// against farthest first among the other units from the heaviest on: n = 24: 50 k (+12 %), 28: -12 %,
+// 32: 706 k (-13 %), 36: 1.96 M (-39 %). Seeding the choice with the resting costs (the rest as a
+// point of infinite weight, ordered first), or letting the rest unit enter at its turn by its resting
+// costs, did worse at n = 32 (+14 % each).
+std::vector<int> placementOrder(const GroupCostModel& model) {
+    if (model.restUnit < 0) return farthestFirst(model);
+    GroupCostModel keyed = model;
+    keyed.restUnit = -1;
+    std::vector<int> order = farthestFirst(keyed);
+    order.erase(std::find(order.begin(), order.end(), model.restUnit));
+    order.insert(order.begin(), model.restUnit);
     return order;
 }
 
@@ -393,13 +411,17 @@ Placement extended(const GroupCostModel& model, std::span<const int> order, int 
     return out;
 }
 
-// The caller's partition `start` of all units, as a placement in `order`.
-Placement givenPlacement(const GroupCostModel& model, std::span<const int> order,
-                         std::span<const UnitMask> start) {
-    Placement out{partitionCost(model, start), std::vector<std::int8_t>(order.size(), 0)};
-    for (std::size_t t = 0; t < order.size(); ++t)
-        for (std::size_t g = 0; g < start.size(); ++g)
-            if (start[g] >> order[t] & 1) out.labels[t] = static_cast<std::int8_t>(g);
+// The caller's partition `start` of all units, as a placement of order[first..] costed in `model`.
+// `openRest` as in groupsOf: its group becomes group 0, the open rest group of the suffix problem.
+Placement givenPlacement(const GroupCostModel& model, std::span<const int> order, int first,
+                         std::span<const UnitMask> start, int openRest) {
+    std::vector<UnitMask> groups(start.begin(), start.end());
+    if (openRest >= 0)
+        std::stable_partition(groups.begin(), groups.end(), [&](UnitMask g) { return g >> openRest & 1; });
+    Placement out{partitionCost(model, groups), {}};
+    for (std::size_t t = static_cast<std::size_t>(first); t < order.size(); ++t)
+        for (std::size_t g = 0; g < groups.size(); ++g)
+            if (groups[g] >> order[t] & 1) out.labels.push_back(static_cast<std::int8_t>(g));
     return out;
 }
 
@@ -447,8 +469,11 @@ UnitPartition searchPartition(const GroupCostModel& model, int p, std::span<cons
             initial = eachAlone(problem, order, first, restOpen);
         else if (!previous.labels.empty())
             initial = extended(problem, order, first, groups, previous, openRest);
-        if (first == 0 && static_cast<int>(start.size()) == p) { // the caller's partition of all units
-            Placement given = givenPlacement(model, order, start);
+        // The caller's partition of all units: for the whole problem, and in the rest-free model for
+        // the suffix of all units but the rest unit (order[0]), which is the whole problem but for
+        // the rest unit's own fixed rest cost, and the largest search of the rest-free model.
+        if (first <= (restFree ? 1 : 0) && static_cast<int>(start.size()) == p) {
+            Placement given = givenPlacement(problem, order, first, start, restOpen ? openRest : -1);
             if (given.cost < initial.cost) initial = std::move(given);
         }
         Incumbent incumbent(initial.cost);

@@ -270,9 +270,11 @@ std::uint64_t branchAndBoundShareNodes(int units, int m) {
 
 // The LP by column generation for every feasible p = 1..m, one p after another (each prices in
 // parallel), from the heuristics' partitions; p the heuristics found no partition for stays unproven.
+// `restGroups` as in solveByBranchAndBound: the watched p's entry is published to options.watch.
 UnitCurve solveByColumnGeneration(const GroupCostModel& model, const ConstraintUnits& units, int m,
                                   const ReductionOptions& options, const ProgressCallback& progress,
-                                  const UnitCurve& proven = {}) {
+                                  const UnitCurve& proven = {}, int restGroups = 0) {
+    const int watched = options.watch ? options.watch->groups + restGroups : 0;
     const auto starts = heuristicPartitions(model, m, heuristicOptionsFor(model.size()));
     SearchLimits limits;
     limits.cancelled = options.cancelled;
@@ -300,6 +302,10 @@ UnitCurve solveByColumnGeneration(const GroupCostModel& model, const ConstraintU
             curve[static_cast<std::size_t>(p)].lowerBound < kInfiniteCost)
             entry.lowerBound = std::min(
                 entry.cost, std::max(entry.lowerBound, curve[static_cast<std::size_t>(p)].lowerBound));
+        if (p == watched && !entry.groups.empty()) {
+            options.watch->bestFound = entry.cost;
+            options.watch->lowerBound = entry.optimal ? entry.cost : entry.lowerBound;
+        }
         if (progress) progress(static_cast<double>(m - p + 1) / m);
     }
     return curve;
@@ -447,7 +453,7 @@ ReductionResult reduceVisemes(const ReductionProblem& problem, const ReductionOp
                     1e-3,
                     left.timeLimitSeconds -
                         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
-            UnitCurve lp = solveByColumnGeneration(model, units, solvable, left, progress, curve);
+            UnitCurve lp = solveByColumnGeneration(model, units, solvable, left, progress, curve, restGroups);
             curve = automatic ? betterOf(std::move(lp), curve) : std::move(lp);
             result.method = ReductionMethod::ColumnGeneration;
             const double spent =

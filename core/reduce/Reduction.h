@@ -75,7 +75,7 @@ struct ReductionOptions {
     // Set from another thread to stop early: branch and bound then returns its best groupings with
     // their bounds, as at the time limit (with or without a progress callback).
     const std::atomic<bool>* cancelled = nullptr;
-    BoundWatch* watch = nullptr; // optional: kept up to date by branch and bound
+    BoundWatch* watch = nullptr; // optional: kept up to date by branch and bound and the LP
 };
 
 // groupOf() of a resting viseme (rest-free model): it has no key, all its weights stay 0.

@@ -79,6 +79,27 @@ TEST(ColumnGeneration, AnExpiredLimitReturnsTheStartWithAValidBound) {
     EXPECT_LE(lp.lowerBound, lp.cost);
 }
 
+TEST(ColumnGeneration, PublishesTheWatchedTargetsResult) {
+    // The editor's bound display (and bench_reduce BM_Certify's time to the target) reads the watch:
+    // the LP fills it for the watched number of keys, in both models (rest-free: the rest group is
+    // not a key), with the target's cost and proven bound.
+    std::mt19937 rng(29);
+    const auto inst = test::randomInstance(rng, 11, 12);
+    for (const bool restFree : {false, true}) {
+        const int m = 4;
+        BoundWatch watch(m);
+        ReductionOptions options;
+        options.method = ReductionMethod::ColumnGeneration;
+        options.watch = &watch;
+        const RestPose rest{restFree, 0, {}};
+        const auto result =
+            reduceVisemes({inst.shapes, inst.frequencies, inst.weights, m, {}, rest}, options);
+        ASSERT_TRUE(result.best().optimal) << "rest free " << restFree;
+        EXPECT_DOUBLE_EQ(watch.bestFound.load(), result.best().cost) << "rest free " << restFree;
+        EXPECT_DOUBLE_EQ(watch.lowerBound.load(), result.best().cost) << "rest free " << restFree;
+    }
+}
+
 } // namespace
 } // namespace vl
 
