@@ -24,6 +24,9 @@ SpeakingFace loadSpeakingFace(const SpeakingFaceRequest& request) {
     face.full = std::make_shared<const ReducedModel>(std::move(faces.full));
     face.reduced = std::make_shared<const ReducedModel>(std::move(faces.reduced));
     face.weights = std::move(faces.weights);
+    // Once for every sentence the face speaks (spokenTrack's tracks skip it).
+    validateReducedModel(*face.full, face.where);
+    validateReducedModel(*face.reduced, face.where);
     face.errorBasis = std::make_shared<const SpeechErrorBasis>(*face.full, *face.reduced, face.weights);
     return face;
 }

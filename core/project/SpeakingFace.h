@@ -25,8 +25,8 @@ struct SpeakingFaceRequest {
 };
 
 struct SpeakingFace {
-    std::shared_ptr<const ReducedModel> full, reduced;
-    std::vector<double> weights; // per vertex
+    std::shared_ptr<const ReducedModel> full, reduced; // validated (validateReducedModel) by the loader
+    std::vector<double> weights;                       // per vertex
     // What the speech error measures need of full, reduced and weights, made once for every sentence.
     std::shared_ptr<const SpeechErrorBasis> errorBasis;
     DisplacementUnit unit; // mm for avatars and avatar projects (glTF metres), else model units

@@ -13,8 +13,11 @@ namespace vl {
 SpokenTrack spokenTrack(const SpeakingFace& face, const Utterance& utterance, const SpokenTrackOptions& o,
                         const std::string& text) {
     const PlaybackSettings settings{o.interpolation};
-    SpokenTrack spoken{FaceTrack(face.full, utterance.phonemes, settings, face.where),
-                       FaceTrack(face.reduced, utterance.phonemes, settings, face.where),
+    // loadSpeakingFace validated the models (and made the basis); a face made by hand is checked here.
+    const auto validated =
+        face.errorBasis ? FaceTrack::ModelCheck::AlreadyValidated : FaceTrack::ModelCheck::Validate;
+    SpokenTrack spoken{FaceTrack(face.full, utterance.phonemes, settings, face.where, validated),
+                       FaceTrack(face.reduced, utterance.phonemes, settings, face.where, validated),
                        {}};
     const FaceTrack& full = spoken.full;
     const FaceTrack& reduced = spoken.reduced;

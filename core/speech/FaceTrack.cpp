@@ -14,9 +14,9 @@ FaceTrack::FaceTrack(ReducedModel model, std::span<const TimedPhoneme> phonemes,
 }
 
 FaceTrack::FaceTrack(std::shared_ptr<const ReducedModel> model, std::span<const TimedPhoneme> phonemes,
-                     const PlaybackSettings& settings, std::string_view where) {
+                     const PlaybackSettings& settings, std::string_view where, ModelCheck check) {
     keys_ = keysOfPhonemes(phonemes, *model, where);
-    init(std::move(model), phonemes, settings, where);
+    init(std::move(model), phonemes, settings, where, check);
 }
 
 FaceTrack::FaceTrack(ReducedModel model, std::span<const TimedPhoneme> phonemes, std::vector<int> keys,
@@ -26,10 +26,10 @@ FaceTrack::FaceTrack(ReducedModel model, std::span<const TimedPhoneme> phonemes,
 }
 
 void FaceTrack::init(std::shared_ptr<const ReducedModel> shared, std::span<const TimedPhoneme> phonemes,
-                     const PlaybackSettings& settings, std::string_view where) {
+                     const PlaybackSettings& settings, std::string_view where, ModelCheck check) {
     const ReducedModel& model = *shared;
     checkTimedPhonemes(phonemes, where);
-    validateReducedModel(model, where);
+    if (check == ModelCheck::Validate) validateReducedModel(model, where);
     if (model.keys.size() > runtime::kMaxKeys)
         throwInputError(where, std::to_string(model.keys.size()) + " keys; a runtime package holds at most " +
                                    std::to_string(runtime::kMaxKeys));

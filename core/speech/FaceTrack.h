@@ -27,9 +27,13 @@ class FaceTrack {
     FaceTrack(ReducedModel model, std::span<const TimedPhoneme> phonemes, std::vector<int> keys,
               const PlaybackSettings& settings, std::string_view where);
     // The first form on a model shared with other tracks: a server speaking many sentences with one
-    // face copies no keys per sentence (`say --stdin`).
+    // face copies no keys per sentence (`say --stdin`). The owner of a shared model that validated it
+    // once (validateReducedModel, as loadSpeakingFace does) passes AlreadyValidated: a sentence then
+    // does not check every key position again.
+    enum class ModelCheck { Validate, AlreadyValidated };
     FaceTrack(std::shared_ptr<const ReducedModel> model, std::span<const TimedPhoneme> phonemes,
-              const PlaybackSettings& settings, std::string_view where);
+              const PlaybackSettings& settings, std::string_view where,
+              ModelCheck check = ModelCheck::Validate);
 
     const ReducedModel& model() const { return *model_; }
     const std::vector<Cue>& cues() const { return cues_; }
@@ -46,7 +50,8 @@ class FaceTrack {
 
   private:
     void init(std::shared_ptr<const ReducedModel> model, std::span<const TimedPhoneme> phonemes,
-              const PlaybackSettings& settings, std::string_view where);
+              const PlaybackSettings& settings, std::string_view where,
+              ModelCheck check = ModelCheck::Validate);
 
     std::shared_ptr<const ReducedModel> model_; // shared: tracks are copied into the editor's state
     runtime::KeyframeCurve curve_;

@@ -7,6 +7,8 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <map>
+#include <string_view>
 #include <utility>
 
 namespace vl {
@@ -76,6 +78,26 @@ std::vector<std::size_t> mouthInSpaceOrder(const std::vector<Vec3>& neutral,
     return mouth;
 }
 
+// Each full key's partner: the reduced key its phonemes play on that face (the key of its group),
+// kNoPartner when they rest there or when no phoneme plays the key. Any partner gives exact sums;
+// the group's key gives small deviations.
+std::vector<std::size_t> partnerKeys(const ReducedModel& full, const ReducedModel& reduced) {
+    std::vector<std::size_t> partners(full.keys.size(), SpeechErrorBasis::kNoPartner);
+    std::vector<bool> assigned(full.keys.size(), false);
+    std::map<std::string_view, int> reducedKeyOf;
+    for (const auto& [phoneme, key] : reduced.phonemeToKey) reducedKeyOf.emplace(phoneme, key);
+    for (const auto& [phoneme, key] : full.phonemeToKey) {
+        if (key < 0 || static_cast<std::size_t>(key) >= partners.size() || assigned[std::size_t(key)])
+            continue;
+        const auto on = reducedKeyOf.find(phoneme);
+        if (on == reducedKeyOf.end()) continue;
+        assigned[std::size_t(key)] = true;
+        if (on->second >= 0 && static_cast<std::size_t>(on->second) < reduced.keys.size())
+            partners[std::size_t(key)] = static_cast<std::size_t>(on->second);
+    }
+    return partners;
+}
+
 } // namespace
 
 SpeechErrorBasis::SpeechErrorBasis(const ReducedModel& full, const ReducedModel& reduced,
@@ -98,6 +120,7 @@ SpeechErrorBasis::SpeechErrorBasis(const ReducedModel& full, const ReducedModel&
         return d;
     };
     // The reduced keys, then each full key as its deviation from its partner.
+    const std::vector<std::size_t> partners = partnerKeys(full, reduced);
     const std::size_t fullKeys = full.keys.size(), reducedKeys = reduced.keys.size();
     for (std::size_t g = 0; g < reducedKeys; ++g) {
         x_.push_back(displacement(reduced, reduced.keys[g], 0));
@@ -109,16 +132,7 @@ SpeechErrorBasis::SpeechErrorBasis(const ReducedModel& full, const ReducedModel&
         std::vector<double> dx = displacement(full, full.keys[k], 0),
                             dy = displacement(full, full.keys[k], 1),
                             dz = displacement(full, full.keys[k], 2);
-        std::size_t partner = kNoPartner;
-        double nearest = std::numeric_limits<double>::infinity();
-        for (std::size_t g = 0; g < reducedKeys; ++g) {
-            double distance = 0;
-            for (std::size_t i = 0; i < n; ++i) {
-                const double ex = dx[i] - x_[g][i], ey = dy[i] - y_[g][i], ez = dz[i] - z_[g][i];
-                distance += mouthWeights_[i] * (ex * ex + ey * ey + ez * ez);
-            }
-            if (distance < nearest) nearest = distance, partner = g;
-        }
+        const std::size_t partner = partners[k];
         if (partner != kNoPartner)
             for (std::size_t i = 0; i < n; ++i) {
                 dx[i] -= x_[partner][i];
@@ -140,19 +154,29 @@ SpeechErrorBasis::SpeechErrorBasis(const ReducedModel& full, const ReducedModel&
         for (std::vector<double>& v : *vectors) v.resize(padded, 0.0);
     buildTree();
 
-    // G[a][b] = sum_v w_v <d_a(v), d_b(v)>, from the weighted coordinates of a (one pass per pair).
+    // G[a][b] = sum_v w_v <b_a(v), b_b(v)>, from the weighted coordinates of a (one pass per pair).
+    // A vector that is zero (the deviation of a key the reduction left alone) has a zero row.
     const std::size_t keys = distinct();
     gram_.assign(keys * keys, 0.0);
+    std::vector<bool> zero(keys);
+    for (std::size_t a = 0; a < keys; ++a) {
+        auto isZero = [](const std::vector<double>& v) {
+            return std::all_of(v.begin(), v.end(), [](double value) { return value == 0.0; });
+        };
+        zero[a] = isZero(x_[a]) && isZero(y_[a]) && isZero(z_[a]);
+    }
     std::vector<double> wx(n), wy(n), wz(n);
     for (std::size_t a = 0; a < keys; ++a) {
+        if (zero[a]) continue;
         for (std::size_t i = 0; i < n; ++i) {
             wx[i] = mouthWeights_[i] * x_[a][i];
             wy[i] = mouthWeights_[i] * y_[a][i];
             wz[i] = mouthWeights_[i] * z_[a][i];
         }
         for (std::size_t b = a; b < keys; ++b)
-            gram_[a * keys + b] = gram_[b * keys + a] =
-                dot3(wx.data(), wy.data(), wz.data(), x_[b].data(), y_[b].data(), z_[b].data(), n);
+            if (!zero[b])
+                gram_[a * keys + b] = gram_[b * keys + a] =
+                    dot3(wx.data(), wy.data(), wz.data(), x_[b].data(), y_[b].data(), z_[b].data(), n);
     }
 }
 

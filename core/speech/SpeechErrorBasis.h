@@ -6,7 +6,7 @@
 // `say` makes one per face, `say --stdin` and `visemelab batch` one for all the sentences they speak.
 //
 // The basis: every reduced key's displacement r_g, and every full key's displacement f_k as its
-// deviation from its partner, the reduced key nearest it (f_k = e_k + r_p(k)). A frame's difference
+// deviation from its partner, the reduced key its phonemes play (f_k = e_k + r_p(k)). A frame's difference
 // F(t) - R(t) = sum_k a_k e_k + sum_g (sum_{p(k) = g} a_k - b_g) r_g, with a and b the faces' blend
 // weights: while both faces show the same phonemes the r_g coefficients cancel and what is left are
 // the small deviations e_k, whose bounds are tight (a frame's maximum visits few vertices). A key
@@ -35,7 +35,7 @@ class SpeechErrorBasis {
     const std::vector<double>& mouthWeights() const { return mouthWeights_; }
     std::size_t distinct() const { return x_.size(); } // basis vectors: reduced keys + full keys
     // The basis vector of key k of each face (e_k for the full face, r_g for the reduced one), and
-    // the partner r_p(k) of a full key (kNoPartner when the reduced face has no keys).
+    // the partner r_p(k) of a full key (kNoPartner when its phonemes rest on the reduced face).
     static constexpr std::size_t kNoPartner = static_cast<std::size_t>(-1);
     std::size_t fullIndex(std::size_t key) const { return fullIndex_[key]; }
     std::size_t fullPartner(std::size_t key) const { return fullPartner_[key]; }
