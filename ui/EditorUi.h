@@ -42,7 +42,7 @@ class EditorUi {
 
     // Start options (EditorApp). They set up the window for the document they open: once applied,
     // that document's state is the window's (startOptionsApplied), not reset on the first frame.
-    void startOptionsApplied() { documentEpoch_ = session_.documentEpoch(); }
+    void startOptionsApplied() { documentEpoch_ = session_.history().documentEpoch(); }
     void selectPanel(Panel panel);
     void setWireframe(bool on) { views_.wireframe = on; }
     void setStartView(StandardView view, bool orthographic) { views_.setStartView(view, orthographic); }
