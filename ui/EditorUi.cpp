@@ -39,7 +39,7 @@ nlohmann::json EditorUi::probeSummary() {
     for (double w : painted) paintedSum += w;
     nlohmann::json summary = {
         {"panel", panelName(activePanel_)},
-        {"document_id", session_.history().revision()},
+        {"document_revision", session_.history().revision()},
         {"undo", session_.history().undoName()},
         {"redo", session_.history().redoName()},
         {"modified", session_.history().modified()},

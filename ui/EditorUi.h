@@ -74,7 +74,7 @@ class EditorUi {
     void menuBar();
     void shortcuts();
     // The one place that says what the window drops when the document is replaced (open, import,
-    // new, sample, build face: EditorSession::documentEpoch, whose beginNewDocument clears the
+    // new, sample, build face: SessionCore::documentEpoch, whose beginNewDocument clears the
     // session's part): the speech player (timeline, playhead, shown clip), the views' framing, and
     // each panel's state of the old document (selected field, import error ...).
     void documentReplaced();

@@ -129,10 +129,9 @@ void EditorViews::syncGpu() {
     if (uploadedGeometry_ != session_.history().geometryRevision()) {
         uploadedGeometry_ = session_.history().geometryRevision();
         if (const VisemeSet* set = session_.visemes()) {
-            std::vector<std::vector<Vec3>> targets;
-            for (const auto& v : set->visemes) targets.push_back(v.positions);
             session_.attempt("Display visemes", [&] {
-                visemeMesh_.setGeometry(set->neutral.positions, set->neutral.triangles, targets);
+                visemeMesh_.setGeometry(set->neutral.positions, set->neutral.triangles,
+                                        positionSpans(set->visemes, &Viseme::positions));
                 if (const auto& colours = session_.document().visemeColours) visemeMesh_.setColors(*colours);
             });
             session_.attempt("Display materials",
@@ -151,13 +150,13 @@ void EditorViews::syncGpu() {
         }
     }
     const FaceModel& model = session_.document().face;
-    if (uploadedCascade_ != model.cascade || uploadedDomain_ != model.domain) {
-        const bool first = uploadedCascade_ == nullptr;
-        uploadedCascade_ = model.cascade;
-        uploadedDomain_ = model.domain;
+    if (uploadedFace_ != session_.face().samplesRevision()) {
+        const bool first = !uploadedFaceShown_;
+        uploadedFace_ = session_.face().samplesRevision();
+        uploadedFaceShown_ = model.cascade != nullptr;
         if (model.cascade) {
             const FaceSamples& samples = session_.face().samples();
-            faceMesh_.setGeometry(samples.rest, model.domain->triangles, samples.targets);
+            faceMesh_.setGeometry(samples.rest, model.domain->triangles, positionSpans(samples.targets));
             faceMesh_.setColors(samples.colours);
         } else {
             faceMesh_.setGeometry({}, {}, {});
@@ -172,7 +171,7 @@ void EditorViews::syncGpu() {
         const bool shown =
             uploadedParts_ && !uploadedParts_->rest.empty() && session_.attempt("Head parts", [&] {
                 partsMesh_.setGeometry(uploadedParts_->rest, uploadedParts_->triangles,
-                                       uploadedParts_->targets);
+                                       positionSpans(uploadedParts_->targets));
                 partsMesh_.setColors(uploadedParts_->colours);
             });
         if (!shown) partsMesh_.setGeometry({}, {}, {});
@@ -183,9 +182,9 @@ void EditorViews::syncGpu() {
         (uploadedMergedCurve_ != session_.reduction().curveRevision() || uploadedMergedGroups_ != groups)) {
         const VisemeSet* set = session_.visemes();
         const bool shown = session_.attempt("Merged visemes", [&] {
-            std::vector<std::vector<Vec3>> targets;
+            std::vector<PositionSpan> targets;
             if (const ReducedModel* merged = session_.reduction().reducedModel())
-                for (const KeyMesh& key : merged->keys) targets.push_back(key.positions);
+                targets = positionSpans(merged->keys, &KeyMesh::positions);
             mergedMesh_.setGeometry(set->neutral.positions, set->neutral.triangles, targets);
             if (const auto& colours = session_.document().visemeColours) mergedMesh_.setColors(*colours);
         });

@@ -5,6 +5,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <vector>
+
 namespace vl::ui {
 namespace {
 
@@ -40,6 +45,42 @@ TEST(SliderTick, ValidatesOnlyTheParametersAndKeepsTheDerivedInputs) {
     EXPECT_EQ(session.documentInputs().reductionRevision(), revision);
     EXPECT_EQ(session.history().undoName(),
               "Set " + session.document().face.cascade->parameters[0].name); // one merged step
+}
+
+// The same drag on a face of about 100,000 vertices with its generated viseme set: a tick costs the
+// edit alone (no validation of the set, no re-sampling, no geometry for the views to upload).
+// The tick times are printed (min / median / max), not checked: the machine decides them.
+TEST(SliderTick, OnAHundredThousandVertexFaceATickRevalidatesAndReuploadsNothing) {
+    EditorSession session;
+    session.reduction().setAutomatic(false);
+    session.face().load(face::Individual::Bundled, 316); // 317 x 317 (u,v) grid
+    ASSERT_GE(session.document().face.domain->uvs.size(), 100000u);
+    session.face().generateVisemes();
+    session.face().samples();
+    session.weights().values();
+    session.frequencies().values();
+    const std::uint64_t validations = reductionInputValidations();
+    const std::uint64_t evaluations = session.documentInputs().evaluations();
+    const std::uint64_t geometryRevision = session.history().geometryRevision();
+
+    std::vector<double> milliseconds;
+    const double start = session.document().face.parameters[0];
+    for (int tick = 1; tick <= 30; ++tick) {
+        const auto before = std::chrono::steady_clock::now();
+        session.beginFrame();
+        session.face().setParameter(0, start + 0.01 * tick);
+        session.poll();
+        ASSERT_TRUE(session.face().samplesReady());
+        milliseconds.push_back(
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - before).count());
+    }
+    EXPECT_EQ(reductionInputValidations(), validations);
+    EXPECT_EQ(session.documentInputs().evaluations(), evaluations);
+    EXPECT_EQ(session.history().geometryRevision(), geometryRevision);
+    std::sort(milliseconds.begin(), milliseconds.end());
+    std::printf("slider tick on %zu vertices x %zu visemes: min %.3f ms, median %.3f ms, max %.3f ms\n",
+                session.document().face.domain->uvs.size(), session.document().visemeCount(),
+                milliseconds.front(), milliseconds[milliseconds.size() / 2], milliseconds.back());
 }
 
 TEST(SliderTick, AnEditOfTheInputsValidatesAndReevaluatesWhatDependsOnIt) {

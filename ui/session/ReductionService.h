@@ -23,9 +23,8 @@ class ReductionService {
     ~ReductionService() { task_.cancel(); }
 
     // Tells the service the revision of the current document's reduction inputs
-    // (DocumentInputs::revision): a curve of another revision is not current.
+    // (DocumentInputs::reductionRevision): a curve of another revision is not current.
     void track(std::uint64_t inputsRevision) { revision_ = inputsRevision; }
-    std::uint64_t inputsRevision() const { return revision_; }
 
     // A curve known for the current inputs (e.g. the result a project file recorded).
     void seed(std::shared_ptr<const ReductionResult> curve) {
