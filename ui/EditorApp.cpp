@@ -105,12 +105,13 @@ void applyStartOptions(const EditorOptions& options, EditorSession& session, Edi
         }
     };
     const auto needFace = [&] {
-        if (!session.face().cascade) session.loadFace();
+        if (!session.document().face.cascade) session.face().load();
     };
-    step(!options.project.empty(), [&] { session.openProject(options.project); });
-    step(options.sample, [&] { session.loadSample(); });
-    step(!options.visemeFolder.empty(), [&] { session.loadVisemeFolder(options.visemeFolder); });
-    step(!options.avatar.empty(), [&] { session.importAvatar(options.avatar, options.avatarTargets); });
+    step(!options.project.empty(), [&] { session.files().openProject(options.project); });
+    step(options.sample, [&] { session.files().loadSample(); });
+    step(!options.visemeFolder.empty(), [&] { session.files().loadVisemeFolder(options.visemeFolder); });
+    step(!options.avatar.empty(),
+         [&] { session.files().importAvatar(options.avatar, options.avatarTargets); });
     step(!options.panel.empty(), [&] {
         const auto panel = panelFromName(options.panel);
         if (!panel) throwInputError("--panel", "unknown panel '" + options.panel + "'");
@@ -120,29 +121,29 @@ void applyStartOptions(const EditorOptions& options, EditorSession& session, Edi
     step(!options.viseme.empty(), [&] {
         const int index = session.visemes() ? session.visemes()->find(options.viseme) : -1;
         if (index < 0) throwInputError("--viseme", "no viseme named '" + options.viseme + "'");
-        session.selectedViseme = index;
+        session.selectViseme(index);
     });
     bool refine = false; // the refinement starts after the face's other options, if its criterion is valid
     step(!options.refine.empty(), [&] {
         needFace();
         CriterionSettings settings = session.document().refinement;
         settings.kind = parseCriterionKind(options.refine, "--refine");
-        session.setRefinementSettings(settings);
+        session.face().setRefinementSettings(settings);
         refine = true;
     });
     step(!options.individual.empty(), [&] {
         needFace();
-        session.setIndividual(face::parseIndividual(options.individual, "--individual"));
+        session.face().setIndividual(face::parseIndividual(options.individual, "--individual"));
     });
     step(!options.ownFace.empty(), [&] {
         needFace();
-        session.openOwnFace(options.ownFace);
+        session.face().openOwnFace(options.ownFace);
     });
     step(!options.preset.empty(), [&] {
         needFace();
-        session.applyVisemePreset(options.preset);
+        session.face().applyVisemePreset(options.preset);
     });
-    step(refine, [&] { session.startRefinement(RefineAction::Refine); });
+    step(refine, [&] { session.face().startRefinement(RefineAction::Refine); });
     step(!options.field.empty(), [&] {
         needFace();
         if (!ui.selectField(options.field))
@@ -160,7 +161,7 @@ void applyStartOptions(const EditorOptions& options, EditorSession& session, Edi
         const auto mode = weightModeFromString(options.weights);
         if (!mode)
             throwInputError("--weights", "expected uniform, area or painted, got '" + options.weights + "'");
-        session.setWeightMode(*mode);
+        session.weights().setMode(*mode);
     });
     step(!options.brush.empty(), [&] {
         const std::string modes[] = {"add", "subtract", "smooth"};
@@ -183,7 +184,7 @@ void applyStartOptions(const EditorOptions& options, EditorSession& session, Edi
     step(!options.say.empty(), [&] {
         SpeechSettings speech = session.document().speech;
         speech.text = options.say;
-        session.setSpeech(speech);
+        session.speech().setSettings(speech);
         ui.startSay(std::max(options.sayAt, 0.0), options.sayAt >= 0.0);
     });
 }
@@ -278,7 +279,8 @@ int runEditor(const EditorOptions& options) {
             for (int frame = 0; !glfwWindowShouldClose(window) || !ui.quitConfirmed(); ++frame) {
                 const double frameStart = glfwGetTime();
                 glfwPollEvents();
-                if (const std::string title = windowTitle(session.path(), session.modified());
+                if (const std::string title =
+                        windowTitle(session.files().path(), session.history().modified());
                     title != shownTitle) {
                     glfwSetWindowTitle(window, title.c_str());
                     shownTitle = title;

@@ -30,7 +30,7 @@ void EditorUi::enableBrush(int operation) {
 nlohmann::json EditorUi::probeSummary() {
     const Document& document = session_.document();
     nlohmann::json jobs = nlohmann::json::array(); // what the status bar shows with a Cancel
-    for (const EditorSession::JobStatus& job : session_.runningJobs()) jobs.push_back(job.label);
+    for (const SessionJobs::JobStatus& job : session_.jobs().running()) jobs.push_back(job.label);
     nlohmann::json messages = nlohmann::json::array();
     for (const StatusMessage& message : session_.messages())
         messages.push_back({{"error", message.kind == StatusMessage::Kind::Error}, {"text", message.text}});
@@ -39,18 +39,18 @@ nlohmann::json EditorUi::probeSummary() {
     for (double w : painted) paintedSum += w;
     nlohmann::json summary = {
         {"panel", panelName(activePanel_)},
-        {"document_id", session_.documentId()},
-        {"undo", session_.undoName()},
-        {"redo", session_.redoName()},
-        {"modified", session_.modified()},
-        {"project_path", session_.path().string()},
+        {"document_revision", session_.history().revision()},
+        {"undo", session_.history().undoName()},
+        {"redo", session_.history().redoName()},
+        {"modified", session_.history().modified()},
+        {"project_path", session_.files().path().string()},
         {"messages", std::move(messages)},
-        {"busy", session_.loading() || session_.saving() || session_.exporting() ||
-                     session_.refinementRunning() || session_.reductionRunning() ||
-                     session_.phonemeCountRunning() || session_.speaking()},
+        {"busy", session_.files().loading() || session_.files().saving() || session_.files().exporting() ||
+                     session_.face().refinementRunning() || session_.reduction().running() ||
+                     session_.frequencies().countRunning() || session_.speech().speaking()},
         {"jobs", jobs},
         {"visemes", document.visemeCount()},
-        {"selected_viseme", session_.selectedViseme},
+        {"selected_viseme", session_.selectedViseme()},
         {"target", document.target},
         {"constraints", document.constraints.pinned.size() + document.constraints.apart.size() +
                             document.constraints.together.size()},
@@ -77,7 +77,7 @@ nlohmann::json EditorUi::probeSummary() {
 void EditorUi::frame() {
     session_.beginFrame();
     session_.poll();
-    if (session_.documentEpoch() != documentEpoch_) documentReplaced();
+    if (session_.history().documentEpoch() != documentEpoch_) documentReplaced();
     speech_.advance();
     views_.update(activePanel_);
     if (glfwWindowShouldClose(window_) && !files_.quitConfirmed()) {
@@ -100,7 +100,7 @@ void EditorUi::frame() {
 }
 
 void EditorUi::documentReplaced() {
-    documentEpoch_ = session_.documentEpoch();
+    documentEpoch_ = session_.history().documentEpoch();
     speech_.reset();
     views_.documentReplaced();
     for (SidePanel* panel : panels_) panel->documentReplaced();
@@ -124,10 +124,10 @@ void EditorUi::shortcuts() {
                 files_.saveProject(press.shift());
                 break;
             case GLFW_KEY_Z:
-                press.shift() ? session_.redo() : session_.undo();
+                press.shift() ? session_.history().redo() : session_.history().undo();
                 break;
             case GLFW_KEY_Y:
-                session_.redo();
+                session_.history().redo();
                 break;
             case GLFW_KEY_L:
                 files_.loadSample();
@@ -187,9 +187,9 @@ void EditorUi::setSurface(const std::string& name) {
 void EditorUi::menuBar() {
     if (!ImGui::BeginMainMenuBar()) return;
     if (ctl::BeginMenu("File")) {
-        if (ctl::MenuItem("New project")) files_.guarded([this] { session_.newProject(); });
+        if (ctl::MenuItem("New project")) files_.guarded([this] { session_.files().newProject(); });
         if (ctl::MenuItem("Open project...", "Ctrl+O")) files_.openProject();
-        if (ctl::MenuItem("Save project", "Ctrl+S", false, !session_.path().empty()))
+        if (ctl::MenuItem("Save project", "Ctrl+S", false, !session_.files().path().empty()))
             files_.saveProject(false);
         if (ctl::MenuItem("Save project as...", "Ctrl+Shift+S")) files_.saveProject(true);
         ImGui::Separator();
@@ -204,10 +204,12 @@ void EditorUi::menuBar() {
         ImGui::EndMenu();
     }
     if (ctl::BeginMenu("Edit")) {
-        const std::string undo = "Undo " + session_.undoName();
-        const std::string redo = "Redo " + session_.redoName();
-        if (ctl::MenuItem(undo.c_str(), "Ctrl+Z", false, session_.canUndo())) session_.undo();
-        if (ctl::MenuItem(redo.c_str(), "Ctrl+Y", false, session_.canRedo())) session_.redo();
+        const std::string undo = "Undo " + session_.history().undoName();
+        const std::string redo = "Redo " + session_.history().redoName();
+        if (ctl::MenuItem(undo.c_str(), "Ctrl+Z", false, session_.history().canUndo()))
+            session_.history().undo();
+        if (ctl::MenuItem(redo.c_str(), "Ctrl+Y", false, session_.history().canRedo()))
+            session_.history().redo();
         ImGui::EndMenu();
     }
     if (ctl::BeginMenu("View")) {
@@ -250,7 +252,7 @@ void EditorUi::menuBar() {
         ImGui::TextUnformatted("Guide: docs/user-guide.md");
         ImGui::EndMenu();
     }
-    if (session_.modified()) {
+    if (session_.history().modified()) {
         ImGui::SameLine(ImGui::GetWindowWidth() - scaled(140.0f));
         ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.4f, 1.0f), "unsaved changes");
     }

@@ -42,7 +42,7 @@ class EditorUi {
 
     // Start options (EditorApp). They set up the window for the document they open: once applied,
     // that document's state is the window's (startOptionsApplied), not reset on the first frame.
-    void startOptionsApplied() { documentEpoch_ = session_.documentEpoch(); }
+    void startOptionsApplied() { documentEpoch_ = session_.history().documentEpoch(); }
     void selectPanel(Panel panel);
     void setWireframe(bool on) { views_.wireframe = on; }
     void setStartView(StandardView view, bool orthographic) { views_.setStartView(view, orthographic); }
@@ -74,7 +74,7 @@ class EditorUi {
     void menuBar();
     void shortcuts();
     // The one place that says what the window drops when the document is replaced (open, import,
-    // new, sample, build face: EditorSession::documentEpoch, whose beginNewDocument clears the
+    // new, sample, build face: SessionCore::documentEpoch, whose beginNewDocument clears the
     // session's part): the speech player (timeline, playhead, shown clip), the views' framing, and
     // each panel's state of the old document (selected field, import error ...).
     void documentReplaced();

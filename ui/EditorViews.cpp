@@ -108,7 +108,7 @@ nlohmann::json EditorViews::faceViewProbe() const {
         }
     }
     nlohmann::json weights = nlohmann::json::object();
-    if (const auto& cascade = session_.face().cascade)
+    if (const auto& cascade = session_.document().face.cascade)
         for (std::size_t k = 0; k < std::min(cascade->parameters.size(), shownFace_.weights.size()); ++k)
             weights[cascade->parameters[k].name] = shownFace_.weights[k];
     return {{"panel", panelName(shownFace_.panel)},
@@ -126,13 +126,12 @@ void EditorViews::syncGpu() {
         uploadedMergedCurve_ = 0;
         uploadedContext_ = nullptr;
     }
-    if (uploadedGeometry_ != session_.geometryGeneration()) {
-        uploadedGeometry_ = session_.geometryGeneration();
+    if (uploadedGeometry_ != session_.history().geometryRevision()) {
+        uploadedGeometry_ = session_.history().geometryRevision();
         if (const VisemeSet* set = session_.visemes()) {
-            std::vector<std::vector<Vec3>> targets;
-            for (const auto& v : set->visemes) targets.push_back(v.positions);
             session_.attempt("Display visemes", [&] {
-                visemeMesh_.setGeometry(set->neutral.positions, set->neutral.triangles, targets);
+                visemeMesh_.setGeometry(set->neutral.positions, set->neutral.triangles,
+                                        positionSpans(set->visemes, &Viseme::positions));
                 if (const auto& colours = session_.document().visemeColours) visemeMesh_.setColors(*colours);
             });
             session_.attempt("Display materials",
@@ -150,14 +149,14 @@ void EditorViews::syncGpu() {
             frameVisemes_ = true;
         }
     }
-    const FaceModel& model = session_.face();
-    if (uploadedCascade_ != model.cascade || uploadedDomain_ != model.domain) {
-        const bool first = uploadedCascade_ == nullptr;
-        uploadedCascade_ = model.cascade;
-        uploadedDomain_ = model.domain;
+    const FaceModel& model = session_.document().face;
+    if (uploadedFace_ != session_.face().samplesRevision()) {
+        const bool first = !uploadedFaceShown_;
+        uploadedFace_ = session_.face().samplesRevision();
+        uploadedFaceShown_ = model.cascade != nullptr;
         if (model.cascade) {
-            const FaceSamples& samples = session_.faceSamples();
-            faceMesh_.setGeometry(samples.rest, model.domain->triangles, samples.targets);
+            const FaceSamples& samples = session_.face().samples();
+            faceMesh_.setGeometry(samples.rest, model.domain->triangles, positionSpans(samples.targets));
             faceMesh_.setColors(samples.colours);
         } else {
             faceMesh_.setGeometry({}, {}, {});
@@ -167,25 +166,25 @@ void EditorViews::syncGpu() {
     }
     // The parts are made once per cascade (a refined skin keeps them); the sliders move them as
     // morph weights, like the skin.
-    if (std::shared_ptr<const HeadPartSamples> parts = session_.faceParts(); parts != uploadedParts_) {
+    if (std::shared_ptr<const HeadPartSamples> parts = session_.face().parts(); parts != uploadedParts_) {
         uploadedParts_ = std::move(parts);
         const bool shown =
             uploadedParts_ && !uploadedParts_->rest.empty() && session_.attempt("Head parts", [&] {
                 partsMesh_.setGeometry(uploadedParts_->rest, uploadedParts_->triangles,
-                                       uploadedParts_->targets);
+                                       positionSpans(uploadedParts_->targets));
                 partsMesh_.setColors(uploadedParts_->colours);
             });
         if (!shown) partsMesh_.setGeometry({}, {}, {});
     }
-    const ReductionResult* curve = session_.reductionCurve();
+    const ReductionResult* curve = session_.reduction().curve();
     const int groups = session_.document().target;
     if (curve &&
-        (uploadedMergedCurve_ != session_.reductionCurveRevision() || uploadedMergedGroups_ != groups)) {
+        (uploadedMergedCurve_ != session_.reduction().curveRevision() || uploadedMergedGroups_ != groups)) {
         const VisemeSet* set = session_.visemes();
         const bool shown = session_.attempt("Merged visemes", [&] {
-            std::vector<std::vector<Vec3>> targets;
-            if (const ReducedModel* merged = session_.reducedModel())
-                for (const KeyMesh& key : merged->keys) targets.push_back(key.positions);
+            std::vector<PositionSpan> targets;
+            if (const ReducedModel* merged = session_.reduction().reducedModel())
+                targets = positionSpans(merged->keys, &KeyMesh::positions);
             mergedMesh_.setGeometry(set->neutral.positions, set->neutral.triangles, targets);
             if (const auto& colours = session_.document().visemeColours) mergedMesh_.setColors(*colours);
         });
@@ -197,7 +196,7 @@ void EditorViews::syncGpu() {
             } catch (const std::exception&) {
             }
         }
-        uploadedMergedCurve_ = session_.reductionCurveRevision();
+        uploadedMergedCurve_ = session_.reduction().curveRevision();
         uploadedMergedGroups_ = groups;
         weightsKey_.clear(), errorKey_.clear(), influenceKey_.clear();
     }
@@ -233,7 +232,7 @@ void EditorViews::frameNewMeshes() {
     if (frameFace_) {
         if (uploadedOwnFace_)
             frameFace_ = !frameOn(faceCamera_, uploadedOwnFace_->positions);
-        else if (!session_.face().cascade || frameOn(faceCamera_, session_.faceSamples().rest))
+        else if (!session_.document().face.cascade || frameOn(faceCamera_, session_.face().samples().rest))
             frameFace_ = false;
     }
 }
@@ -242,8 +241,8 @@ void EditorViews::frameAll() {
     if (subject_ == ViewSubject::Face) {
         if (uploadedOwnFace_)
             frameOn(faceCamera_, uploadedOwnFace_->positions);
-        else if (session_.face().cascade)
-            frameOn(faceCamera_, session_.faceSamples().rest);
+        else if (session_.document().face.cascade)
+            frameOn(faceCamera_, session_.face().samples().rest);
     } else if (const VisemeSet* set = session_.visemes()) {
         frameOn(visemeCamera_, set->neutral.positions);
     }
@@ -346,8 +345,8 @@ std::vector<float> EditorViews::visemeWeights(int viseme) const {
 }
 
 std::vector<float> EditorViews::visemePartWeights(std::span<const float> weights) {
-    const std::vector<std::vector<double>>& parameters = session_.visemeFaceParameters();
-    const auto& cascade = session_.face().cascade;
+    const std::vector<std::vector<double>>& parameters = session_.authoring().visemeFaceParameters();
+    const auto& cascade = session_.document().face.cascade;
     if (parameters.empty() || !cascade || parameters.size() != weights.size()) return {};
     const std::vector<double> rest = cascade->defaults();
     std::vector<double> q = rest;
@@ -381,10 +380,10 @@ void EditorViews::drawMainView(ImVec2 size) {
         events = drawOwnFaceStep(size, style, label);
     } else if (subject_ == ViewSubject::Face) {
         std::vector<float> q;
-        for (double v : session_.face().parameters) q.push_back(static_cast<float>(v));
+        for (double v : session_.document().face.parameters) q.push_back(static_cast<float>(v));
         style.color = panels_.deformation.showInfluence() && selected.stage >= 0 ? ColorMode::Scalar
                                                                                  : ColorMode::VertexColor;
-        const auto& cascade = session_.face().cascade;
+        const auto& cascade = session_.document().face.cascade;
         const bool inset =
             active_ == Panel::Deformation && cascade && selected.stage >= 0 &&
             selected.stage < static_cast<int>(cascade->stages.size()) &&
@@ -409,14 +408,14 @@ void EditorViews::drawMainView(ImVec2 size) {
             emptyViewHint(events.imageMin, events.imageMax,
                           "No face loaded: use \"Load bundled face\" in the panel");
         else // a face built from the user's mesh is named by its mesh, not as the bundled one
-            label =
-                "Deformable face (" +
-                (builtinIndividualOf(*cascade) ? std::string(face::individualName(session_.face().individual))
-                                               : cascade->name) +
-                ")";
+            label = "Deformable face (" +
+                    (builtinIndividualOf(*cascade)
+                         ? std::string(face::individualName(session_.document().face.individual))
+                         : cascade->name) +
+                    ")";
     } else {
         std::vector<float> weights =
-            speech_.shown() ? speech_.weights(false) : visemeWeights(session_.selectedViseme);
+            speech_.shown() ? speech_.weights(false) : visemeWeights(session_.selectedViseme());
         if (weights.size() != session_.visemeCount()) weights = visemeWeights(-1);
         // Weight colours while painting; with materials switched to error colours, the merge error of
         // the selected viseme once the reduction has one.
@@ -450,9 +449,9 @@ void EditorViews::drawMainView(ImVec2 size) {
             if (panels_.weights.showColours())
                 colourLegend(events.imageMin, events.imageMax, "0", "largest weight");
         } else if (speech_.shown()) {
-            label = session_.speechClip()->label + " (full set)";
+            label = session_.speech().clip()->label + " (full set)";
         } else {
-            const int s = session_.selectedViseme;
+            const int s = session_.selectedViseme();
             label = s >= 0 ? "Viseme " + session_.visemes()->visemes[static_cast<std::size_t>(s)].name
                            : "Neutral";
             if (errorMap) {
@@ -489,9 +488,9 @@ void EditorViews::comparisonViews(ImVec2 size) {
     const bool speech = speech_.shown();
     const float timelineHeight = speech ? std::min(scaled(230.0f), 0.32f * size.y) : 0.0f;
     const ImVec2 half(std::floor(size.x * 0.5f) - 1.0f, size.y - timelineHeight);
-    const int selected = std::max(session_.selectedViseme, 0);
-    const Grouping* grouping = session_.currentGrouping();
-    const SpeechPlayback* playback = speech ? session_.speechPlayback() : nullptr;
+    const int selected = std::max(session_.selectedViseme(), 0);
+    const Grouping* grouping = session_.reduction().grouping();
+    const SpeechPlayback* playback = speech ? session_.speech().playback() : nullptr;
     std::vector<float> before = speech ? speech_.weights(false) : visemeWeights(selected);
     if (before.size() != session_.visemeCount()) before = visemeWeights(-1); // no track: the neutral
     std::vector<float> after;
@@ -618,12 +617,12 @@ void EditorViews::drawContext(const glm::mat4& view, const glm::mat4& projection
 
 bool EditorViews::mergeErrors(int selected, std::vector<float>& values) {
     const VisemeSet* set = session_.visemes();
-    const Grouping* grouping = session_.currentGrouping();
+    const Grouping* grouping = session_.reduction().grouping();
     bool done = false;
     session_.attempt("Error map", [&] {
-        const ReducedModel* merged = session_.reducedModel();
+        const ReducedModel* merged = session_.reduction().reducedModel();
         if (!set || !grouping || !merged) return;
-        const std::vector<double> w = session_.weights();
+        const std::vector<double> w = session_.weights().values();
         double scale = 0.0;
         std::vector<double> shown;
         const auto measure = [&](int member, const std::vector<Vec3>& shape) {
@@ -652,13 +651,14 @@ void EditorViews::updateScalars() {
     if (set && active_ == Panel::Weights) {
         WeightPainter& painter = panels_.weights.painter();
         const std::vector<double>* stroke = painter.strokeWeights();
-        const std::string key = "w" + std::to_string(session_.inputsGeneration()) + (stroke ? "s" : "");
+        const std::string key =
+            "w" + std::to_string(session_.documentInputs().reductionRevision()) + (stroke ? "s" : "");
         if (key != weightsKey_ || stroke) {
             std::vector<double> w;
             if (stroke) {
                 w = *stroke;
             } else {
-                session_.attempt("Weights", [&] { w = session_.weights(); });
+                session_.attempt("Weights", [&] { w = session_.weights().values(); });
                 painter.setShownWeights(w);
             }
             visemeMesh_.setScalars(normalised(w, maxOf(w)));
@@ -667,11 +667,12 @@ void EditorViews::updateScalars() {
         }
     }
     // Merge error of the selected viseme on the reduced view.
-    const Grouping* grouping = session_.currentGrouping();
+    const Grouping* grouping = session_.reduction().grouping();
     if (set && grouping && active_ == Panel::Reduction) {
-        const int selected = std::max(session_.selectedViseme, 0);
-        const std::string key = std::to_string(selected) + ":" + std::to_string(session_.inputsGeneration()) +
-                                ":" + std::to_string(grouping->groups.size());
+        const int selected = std::max(session_.selectedViseme(), 0);
+        const std::string key = std::to_string(selected) + ":" +
+                                std::to_string(session_.documentInputs().reductionRevision()) + ":" +
+                                std::to_string(grouping->groups.size());
         if (key != errorKey_) {
             std::vector<float> values;
             if (mergeErrors(selected, values)) mergedMesh_.setScalars(values);
@@ -680,23 +681,23 @@ void EditorViews::updateScalars() {
     }
     // The same on the viseme itself in the Visemes panel, when materials are switched to error colours.
     const bool mainErrors = set && grouping && active_ == Panel::Visemes && hasMaterials() &&
-                            surface == SurfaceShading::ErrorColours && session_.selectedViseme >= 0 &&
+                            surface == SurfaceShading::ErrorColours && session_.selectedViseme() >= 0 &&
                             !speech_.shown();
     if (!mainErrors) {
         mainErrorKey_.clear();
     } else {
-        const std::string key = std::to_string(session_.selectedViseme) + ":" +
-                                std::to_string(session_.inputsGeneration()) + ":" +
+        const std::string key = std::to_string(session_.selectedViseme()) + ":" +
+                                std::to_string(session_.documentInputs().reductionRevision()) + ":" +
                                 std::to_string(grouping->groups.size());
         std::vector<float> values;
-        if (key != mainErrorKey_ && mergeErrors(session_.selectedViseme, values)) {
+        if (key != mainErrorKey_ && mergeErrors(session_.selectedViseme(), values)) {
             visemeMesh_.setScalars(values);
             mainErrorKey_ = key;
             weightsKey_.clear(); // the weights are no longer there
         }
     }
     // Influence of the selected analytic field on the face.
-    const FaceModel& model = session_.face();
+    const FaceModel& model = session_.document().face;
     const DeformationPanel::Field selected = panels_.deformation.selectedField();
     if (model.cascade && selected.stage >= 0 &&
         selected.stage < static_cast<int>(model.cascade->stages.size())) {
@@ -728,10 +729,10 @@ void EditorViews::update(Panel active) {
 }
 
 std::string EditorViews::statistics() const {
-    if (subject_ == ViewSubject::Face && session_.face().cascade)
+    if (subject_ == ViewSubject::Face && session_.document().face.cascade)
         return "Face: " + std::to_string(faceMesh_.vertexCount()) + " vertices, " +
                std::to_string(faceMesh_.triangleCount()) + " triangles, " +
-               std::to_string(session_.face().parameters.size()) + " parameters";
+               std::to_string(session_.document().face.parameters.size()) + " parameters";
     if (const VisemeSet* set = session_.visemes())
         return std::to_string(set->size()) + " visemes, " + std::to_string(set->vertexCount()) +
                " vertices, " + std::to_string(set->neutral.triangles.size()) + " triangles";

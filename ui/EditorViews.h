@@ -18,6 +18,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cstdint>
 #include <memory>
 #include <span>
 #include <string>
@@ -121,8 +122,8 @@ class EditorViews {
     std::uint64_t uploadedGeometry_ = 0;
     // Caches hold what they show (shared, immutable) or its revision, never a bare address that a
     // later allocation could reuse.
-    std::shared_ptr<const DeformationCascade> uploadedCascade_;
-    std::shared_ptr<const MeshData> uploadedDomain_;
+    std::uint64_t uploadedFace_ = 0; // SessionFace::samplesRevision of the face mesh's upload
+    bool uploadedFaceShown_ = false; // that upload had a face (framed when one appears)
     std::shared_ptr<const HeadPartSamples> uploadedParts_; // what partsMesh_ holds
     std::shared_ptr<const AvatarScan> uploadedContext_;    // the scan contextMesh_ shows
     std::shared_ptr<const face::UvMesh> uploadedOwnFace_;  // the mesh ownFaceMesh_ shows

@@ -8,7 +8,7 @@
 namespace vl::ui {
 
 void FileActions::guarded(std::function<void()> action) {
-    if (!session_.modified()) {
+    if (!session_.history().modified()) {
         action();
         return;
     }
@@ -17,14 +17,14 @@ void FileActions::guarded(std::function<void()> action) {
 }
 
 void FileActions::saveProject(bool askForFile, std::function<void()> then) {
-    if (!askForFile && !session_.path().empty()) {
-        session_.attempt("Save project", [&] { session_.startSaveProject({}, std::move(then)); });
+    if (!askForFile && !session_.files().path().empty()) {
+        session_.attempt("Save project", [&] { session_.files().startSaveProject({}, std::move(then)); });
         return;
     }
     dialog_.open(
         "Save project as", FileDialog::Mode::SaveFile, {".vlproj"},
         [this, then](const auto& path) {
-            session_.attempt("Save project", [&] { session_.startSaveProject(path, then); });
+            session_.attempt("Save project", [&] { session_.files().startSaveProject(path, then); });
         },
         "project.vlproj");
 }
@@ -33,19 +33,19 @@ void FileActions::openProject() {
     guarded([this] {
         dialog_.open("Open project", FileDialog::Mode::OpenFile, {".vlproj", ".json"},
                      [this](const auto& path) {
-                         session_.attempt("Open project", [&] { session_.startOpenProject(path); });
+                         session_.attempt("Open project", [&] { session_.files().startOpenProject(path); });
                      });
     });
 }
 
 void FileActions::loadSample() {
-    guarded([this] { session_.attempt("Load sample", [&] { session_.startLoadSample(); }); });
+    guarded([this] { session_.attempt("Load sample", [&] { session_.files().startLoadSample(); }); });
 }
 
 void FileActions::openVisemeFolder() {
     guarded([this] {
         dialog_.open("Open viseme folder", FileDialog::Mode::OpenFolder, {}, [this](const auto& path) {
-            session_.attempt("Open folder", [&] { session_.startLoadVisemeFolder(path); });
+            session_.attempt("Open folder", [&] { session_.files().startLoadVisemeFolder(path); });
         });
     });
 }
@@ -53,7 +53,7 @@ void FileActions::openVisemeFolder() {
 void FileActions::importGltf(const char* dialogTitle) {
     guarded([this, dialogTitle] {
         dialog_.open(dialogTitle, FileDialog::Mode::OpenFile, {".glb", ".gltf"}, [this](const auto& path) {
-            session_.attempt("Import glTF", [&] { session_.importGltf(path); });
+            session_.attempt("Import glTF", [&] { session_.files().importGltf(path); });
         });
     });
 }
@@ -74,7 +74,7 @@ void FileActions::unsavedChangesPopup() {
     }
     if (!ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
     ImGui::TextUnformatted("The project has unsaved changes.");
-    const bool hasPath = !session_.path().empty();
+    const bool hasPath = !session_.files().path().empty();
     if (ctl::Button(hasPath ? "Save" : "Save as...", ImVec2(scaled(110), 0))) {
         ImGui::CloseCurrentPopup();
         saveProject(false, std::move(pendingGuarded_));

@@ -26,19 +26,19 @@ std::string strongestKey(const std::vector<float>& weights, const ReducedModel& 
 } // namespace
 
 void SpeechPlayer::say(double time, bool pause) {
-    if (!session_.attempt("Say", [&] { session_.say(); })) return;
+    if (!session_.attempt("Say", [&] { session_.speech().say(); })) return;
     startAt_ = time;
     startPaused_ = pause;
 }
 
 void SpeechPlayer::playSequence(std::string typed, double time) {
     sequence = std::move(typed);
-    if (session_.attempt("Playback", [&] { session_.playSequence(sequence, secondsPerKey); }))
+    if (session_.attempt("Playback", [&] { session_.speech().playSequence(sequence, secondsPerKey); }))
         startAt_ = time;
 }
 
 void SpeechPlayer::play(double from) {
-    const auto& clip = session_.speechClip();
+    const auto& clip = session_.speech().clip();
     if (!clip) return;
     time_ = std::clamp(from, 0.0, clip->duration());
     if (time_ >= clip->duration()) time_ = 0.0; // Play at the end starts again
@@ -65,7 +65,7 @@ void SpeechPlayer::reset() {
 }
 
 void SpeechPlayer::advance() {
-    const auto& clip = session_.speechClip();
+    const auto& clip = session_.speech().clip();
     if (!clip) return;
     if (clip->id != clip_) { // a new clip: show it from its start (or where a start option says)
         clip_ = clip->id;
@@ -99,14 +99,14 @@ void SpeechPlayer::advance() {
 }
 
 std::vector<float> SpeechPlayer::weights(bool reduced) const {
-    const SpeechPlayback* playback = session_.speechPlayback();
+    const SpeechPlayback* playback = session_.speech().playback();
     if (!playback) return {};
     const std::optional<FaceTrack>& track = reduced ? playback->reduced : playback->full;
     return track ? track->keyWeights(time_) : std::vector<float>{};
 }
 
 void SpeechPlayer::timeline(ImVec2 size) {
-    const SpeechPlayback* playback = session_.speechPlayback();
+    const SpeechPlayback* playback = session_.speech().playback();
     if (!playback) return;
     SpeechTimelineData data;
     data.duration = playback->clip->duration();
@@ -135,20 +135,20 @@ nlohmann::json SpeechPlayer::probe() const {
     nlohmann::json json = {{"text", speech.text},
                            {"voice", speech.voice},
                            {"rate", speech.wordsPerMinute},
-                           {"speaking", session_.speaking()},
+                           {"speaking", session_.speech().speaking()},
                            {"time", time_},
                            {"playing", playing_},
                            {"shown", shown()},
                            {"audio", audio_.status()},
                            {"audio_playing", audio_.playing()}};
-    const auto& clip = session_.speechClip();
+    const auto& clip = session_.speech().clip();
     if (!clip) return json;
     json["clip"] = clip->label;
     json["clip_id"] = clip->id;
     json["duration"] = clip->duration();
     json["phonemes"] = clip->phonemes.size();
     if (const TimedPhoneme* p = itemAt(clip->phonemes, time_)) json["phoneme"] = p->phoneme;
-    const SpeechPlayback* playback = session_.speechPlayback();
+    const SpeechPlayback* playback = session_.speech().playback();
     json["problem"] = playback->problem;
     if (playback->full) {
         if (const Cue* cue = itemAt(playback->full->cues(), time_)) json["full_cue"] = cue->value;

@@ -34,7 +34,7 @@ class SpeechPlayer {
     void reset();
     bool playing() const { return playing_; }
     double time() const { return time_; }
-    bool shown() const { return shown_ && session_.speechClip() != nullptr; }
+    bool shown() const { return shown_ && session_.speech().clip() != nullptr; }
     // Key weights of the full (visemes) or reduced (groups) face at the playhead; empty when none.
     std::vector<float> weights(bool reduced) const;
     // Phonemes, both cue rows and the error plot under the views; scrubbing moves the playhead.

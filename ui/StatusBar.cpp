@@ -43,10 +43,10 @@ float EditorUi::statusBarHeight() {
     status_.stats = views_.statistics();
     // The message column starts after the statistics and the progress bars shown this frame.
     float x = kPadding + ImGui::CalcTextSize(status_.stats.c_str()).x;
-    for (const bool running : {session_.saving(), session_.exporting()})
+    for (const bool running : {session_.files().saving(), session_.files().exporting()})
         if (running) x += kProgressGap + 200.0f;
     const float cancel = ImGui::CalcTextSize("Cancel").x + 2 * ImGui::GetStyle().FramePadding.x;
-    x += static_cast<float>(session_.runningJobs().size()) * (2 * kProgressGap + kJobBarWidth + cancel);
+    x += static_cast<float>(session_.jobs().running().size()) * (2 * kProgressGap + kJobBarWidth + cancel);
     status_.messageX = std::max(x + 30.0f, io.DisplaySize.x * 0.3f);
     status_.wrapWidth = std::max(80.0f, io.DisplaySize.x - status_.messageX - kPadding);
     const auto& messages = session_.messages();
@@ -69,15 +69,16 @@ void EditorUi::statusBar(float height) {
     ImGui::TextUnformatted(status_.stats.c_str());
     const float bar = ImGui::GetFrameHeight();
     // Every job that can be cancelled: its progress, time left and Cancel (one list, EditorSession).
-    for (const EditorSession::JobStatus& job : session_.runningJobs()) {
+    for (const SessionJobs::JobStatus& job : session_.jobs().running()) {
         ImGui::SameLine();
         const std::string cancel = "Cancel##job" + std::to_string(static_cast<int>(job.job));
         if (jobProgress(job.label, job.fraction, job.secondsLeft, cancel.c_str(), kJobBarWidth))
-            session_.cancelJob(job.job);
+            session_.jobs().cancel(job.job);
     }
     // File work runs on workers too: an indeterminate bar each while it lasts.
-    for (const auto& [running, label] : {std::pair{session_.saving(), session_.savingLabel()},
-                                         std::pair{session_.exporting(), session_.exportingLabel()}}) {
+    for (const auto& [running, label] :
+         {std::pair{session_.files().saving(), session_.files().savingLabel()},
+          std::pair{session_.files().exporting(), session_.files().exportingLabel()}}) {
         if (!running) continue;
         ImGui::SameLine();
         ImGui::ProgressBar(-1.0f * static_cast<float>(ImGui::GetTime()), ImVec2(200, bar), label.c_str());

@@ -73,8 +73,9 @@ DocumentParts changedParts(const Document& before, const Document& after) {
     if (before.weights != after.weights) parts |= kWeightPart;
     if (before.face.parameters != after.face.parameters) parts |= kFaceParameterPart;
     if (before.face.cascade != after.face.cascade || before.face.individual != after.face.individual ||
-        before.face.domain != after.face.domain || before.face.presets != after.face.presets)
+        before.face.presets != after.face.presets)
         parts |= kFacePart;
+    if (before.face.domain != after.face.domain) parts |= kFaceMeshPart;
     if (before.constraints != after.constraints || before.rest != after.rest ||
         before.restViseme != after.restViseme)
         parts |= kReductionPart;
@@ -92,7 +93,7 @@ std::uint64_t reductionInputValidations() {
 }
 
 void validateDocument(const Document& document, DocumentParts changed) {
-    if (document.face.cascade && (changed & (kFaceParameterPart | kFacePart)))
+    if (document.face.cascade && (changed & (kFaceParameterPart | kFacePart | kFaceMeshPart)))
         checkParameterValues(*document.face.cascade, document.face.parameters);
     constexpr DocumentParts reductionInputs =
         kVisemePart | kFrequencyPart | kWeightPart | kReductionPart | kTargetPart;

@@ -102,11 +102,12 @@ enum DocumentPart : unsigned {
     kFrequencyPart = 1u << 1,     // the frequency table and phoneme map
     kWeightPart = 1u << 2,        // weight mode and painted weights
     kFaceParameterPart = 1u << 3, // the face's slider values
-    kFacePart = 1u << 4,          // the rest of the face: cascade, individual, (u,v) mesh, presets
+    kFacePart = 1u << 4,          // the face's cascade, individual and presets
     kReductionPart = 1u << 5,     // constraints, rest model and rest viseme (the curve's settings)
     kTargetPart = 1u << 6,        // m: which grouping of the curve, not the curve
     kOtherPart = 1u << 7,         // refinement thresholds, speech settings, the own-face step
-    kAllDocumentParts = (1u << 8) - 1,
+    kFaceMeshPart = 1u << 8,      // the face's (u,v) display mesh (a refinement changes only it)
+    kAllDocumentParts = (1u << 9) - 1,
 };
 using DocumentParts = unsigned;
 

@@ -1,21 +1,33 @@
 #include "core/document/DocumentInputs.h"
 
+#include <algorithm>
+
 namespace vl {
 
 void DocumentInputs::reset(DocumentPtr document) {
     document_ = std::move(document);
-    ++revision_;
+    revisions_.fill(++lastRevision_);
     weights_.reset();
     frequencies_.reset();
 }
 
 void DocumentInputs::update(DocumentPtr document, DocumentParts changed) {
     document_ = std::move(document);
+    if (changed == 0) return;
+    ++lastRevision_;
+    for (std::size_t bit = 0; bit < kParts; ++bit)
+        if (changed & (1u << bit)) revisions_[bit] = lastRevision_;
     // What each derived value depends on: the weights on the neutral mesh and the weight settings,
     // the frequencies on the viseme names and the table.
     if (changed & (kVisemePart | kWeightPart)) weights_.reset();
     if (changed & (kVisemePart | kFrequencyPart)) frequencies_.reset();
-    if (changed & (kVisemePart | kFrequencyPart | kWeightPart | kReductionPart)) ++revision_;
+}
+
+std::uint64_t DocumentInputs::revision(DocumentParts parts) const {
+    std::uint64_t revision = 0;
+    for (std::size_t bit = 0; bit < kParts; ++bit)
+        if (parts & (1u << bit)) revision = std::max(revision, revisions_[bit]);
+    return revision;
 }
 
 const std::vector<double>& DocumentInputs::weights() const {

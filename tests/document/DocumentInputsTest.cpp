@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 namespace vl {
 namespace {
 
@@ -35,23 +37,50 @@ TEST(DocumentInputs, ReevaluatesOnlyWhatTheChangedPartsFeed) {
     const std::vector<double> weights = inputs.weights();
     inputs.frequencies();
     ASSERT_EQ(inputs.evaluations(), 2u);
-    const std::uint64_t revision = inputs.revision();
+    const std::uint64_t revision = inputs.reductionRevision();
 
     auto moved = std::make_shared<const Document>(edit::setParameter(*document, 0, 0.3));
     inputs.update(moved, changedParts(*document, *moved));
     inputs.weights();
     inputs.frequencies();
     EXPECT_EQ(inputs.evaluations(), 2u);
-    EXPECT_EQ(inputs.revision(), revision);
+    EXPECT_EQ(inputs.reductionRevision(), revision);
 
     auto area = std::make_shared<const Document>(edit::setWeightMode(*moved, WeightMode::Area));
     inputs.update(area, changedParts(*moved, *area));
-    EXPECT_NE(inputs.revision(), revision);
+    EXPECT_NE(inputs.reductionRevision(), revision);
     inputs.frequencies();
     EXPECT_EQ(inputs.evaluations(), 2u);
     EXPECT_NE(inputs.weights(), weights);
     EXPECT_EQ(inputs.weights(), documentWeights(*area));
     EXPECT_EQ(inputs.evaluations(), 3u);
+}
+
+// Each part's revision changes exactly when that part does: a cache keyed on the face's revision
+// (its samples) survives a slider tick, one keyed on the parameters does not.
+TEST(DocumentInputs, EachPartsRevisionChangesOnlyWithThatPart) {
+    auto document = std::make_shared<const Document>(test::faceDocument());
+    DocumentInputs inputs(document);
+    const std::uint64_t face = inputs.revision(kFacePart);
+    const std::uint64_t parameters = inputs.revision(kFaceParameterPart);
+    const std::uint64_t weights = inputs.revision(kWeightPart);
+
+    auto moved = std::make_shared<const Document>(edit::setParameter(*document, 0, 0.3));
+    inputs.update(moved, changedParts(*document, *moved));
+    EXPECT_EQ(inputs.revision(kFacePart), face);
+    EXPECT_NE(inputs.revision(kFaceParameterPart), parameters);
+    EXPECT_EQ(inputs.revision(kWeightPart), weights);
+    // Several parts: changes when any of them does.
+    EXPECT_NE(inputs.revision(kFacePart | kFaceParameterPart), std::max(face, parameters));
+
+    auto area = std::make_shared<const Document>(edit::setWeightMode(*moved, WeightMode::Area));
+    inputs.update(area, changedParts(*moved, *area));
+    EXPECT_NE(inputs.revision(kWeightPart), weights);
+    EXPECT_EQ(inputs.revision(kFacePart), face);
+
+    // A new document: every part is new, even with equal contents.
+    inputs.reset(area);
+    EXPECT_NE(inputs.revision(kFacePart), face);
 }
 
 } // namespace

@@ -120,9 +120,9 @@ TEST(AuthoringClicks, RenameDuplicateMoveAndDeleteVisemes) {
     gui.click(reveal(gui, "Delete...", "button"));
     gui.waitFrames(3);
     ASSERT_TRUE(gui.report()["popup_open"].get<bool>());
-    const auto before = gui.document()["document_id"];
+    const auto before = gui.document()["document_revision"];
     gui.click(*findIn(gui, "Delete and move the phonemes", "button", "Delete viseme"));
-    EXPECT_EQ(gui.document()["document_id"], before);
+    EXPECT_EQ(gui.document()["document_revision"], before);
     gui.click(*findIn(gui, "##phonemes-go-to", "combo", "Delete viseme"));
     gui.waitFrames(2);
     gui.click(*findIn(gui, "FF", "selectable", "##Combo"));
@@ -139,11 +139,11 @@ TEST(AuthoringClicks, RenameDuplicateMoveAndDeleteVisemes) {
     EXPECT_EQ(gui.document()["phoneme_map"]["M"], "closed");
     // A bad name is refused with the reason in the status bar and changes nothing.
     gui.click(gui.control("closed", "selectable"));
-    const auto id = gui.document()["document_id"];
+    const auto id = gui.document()["document_revision"];
     typeInto(gui, "##viseme-name", "aa");
     gui.click(reveal(gui, "Rename", "button"));
     gui.waitIdle();
-    EXPECT_EQ(gui.document()["document_id"], id);
+    EXPECT_EQ(gui.document()["document_revision"], id);
     EXPECT_TRUE(hasErrorContaining(gui, "already exists")) << gui.document()["messages"].dump();
     EXPECT_ALIVE(gui);
 }
@@ -188,10 +188,10 @@ TEST(AuthoringClicks, StoreTheSlidersAsANewAndAnExistingViseme) {
     EXPECT_DOUBLE_EQ(gui.document()["presets"]["PP"]["lip_pucker"].get<double>(), pucker);
 
     // "wide" is a viseme of the face's set: its preset is not removed on its own.
-    const auto id = gui.document()["document_id"];
+    const auto id = gui.document()["document_revision"];
     gui.click(reveal(gui, "x##remove-wide", "button"));
     gui.waitIdle();
-    EXPECT_EQ(gui.document()["document_id"], id);
+    EXPECT_EQ(gui.document()["document_revision"], id);
     EXPECT_TRUE(hasErrorContaining(gui, "remove the viseme instead")) << gui.document()["messages"].dump();
     // The preset combo above the sliders lists the face's presets, "wide" among them.
     choose(gui, "preset", "wide");
@@ -278,10 +278,10 @@ TEST(AuthoringClicks, PhonemeMapEditorStartsEditsAndSavesAMap) {
     gui.click(*findIn(gui, "One viseme per phoneme (ARPAbet)", "selectable", "##Combo"));
     gui.waitIdle();
     EXPECT_EQ(gui.document()["map_start_unassigned"], 35);
-    const auto id = gui.document()["document_id"];
+    const auto id = gui.document()["document_revision"];
     gui.click(reveal(gui, "Apply map", "button"));
     gui.waitIdle();
-    EXPECT_EQ(gui.document()["document_id"], id);
+    EXPECT_EQ(gui.document()["document_revision"], id);
     gui.click(reveal(gui, "Cancel", "button"));
     gui.waitIdle();
     EXPECT_FALSE(gui.document()["map_start_open"].get<bool>());

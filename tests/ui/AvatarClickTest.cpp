@@ -131,11 +131,11 @@ TEST(AvatarClicks, TargetPatternSelectsTheVisemesAndUndoes) {
     EXPECT_EQ(gui.document()["undo"], "Viseme targets 'viseme_[aEIOU]*'");
     EXPECT_TRUE(gui.document()["modified"].get<bool>());
     // A pattern that selects one viseme is refused with the core's message; nothing changes.
-    const auto before = gui.document()["document_id"];
+    const auto before = gui.document()["document_revision"];
     setPattern("viseme_si*");
     EXPECT_TRUE(hasError(gui));
     EXPECT_NE(lastMessage(gui).find("at least 2"), std::string::npos) << lastMessage(gui);
-    EXPECT_EQ(gui.document()["document_id"], before);
+    EXPECT_EQ(gui.document()["document_revision"], before);
     EXPECT_EQ(gui.document()["visemes"].get<int>(), 5);
     // Undo restores the Oculus selection, and the field shows it again.
     gui.key("ctrl+z");

@@ -29,13 +29,13 @@ TEST(EditorClicks, RefineTabCriterionRadiosSwitchTheCriterion) {
     for (const char* criterion : {"normals", "contour error", "depth", "contour error", "normals", "depth"}) {
         const std::string expected = std::string(criterion) == "contour error" ? "contour" : criterion;
         const bool switches = gui.document()["criterion"] != expected;
-        const auto before = documentId(gui);
+        const auto before = documentRevision(gui);
         gui.click(gui.control(criterion, "radio"));
         EXPECT_ALIVE(gui);
         gui.waitIdle();
         EXPECT_EQ(gui.document()["criterion"].get<std::string>(), expected);
         if (switches) {
-            EXPECT_NE(documentId(gui), before) << criterion;
+            EXPECT_NE(documentRevision(gui), before) << criterion;
             EXPECT_EQ(gui.document()["undo"], "Refinement thresholds") << gui.document().dump();
         }
     }
@@ -57,17 +57,17 @@ TEST(EditorClicks, RefineTabSlidersAndButtons) {
         for (const char* name : sliders) {
             // Two far apart places of the frame give two different values: the second click
             // always edits, the first unless the value was already there.
-            const auto before = documentId(gui);
+            const auto before = documentRevision(gui);
             for (const double at : {0.1, 0.9}) {
-                const auto clickedFrom = documentId(gui);
+                const auto clickedFrom = documentRevision(gui);
                 gui.click(gui.control(name, "slider"), at);
                 EXPECT_ALIVE(gui);
                 gui.waitIdle();
                 if (at > 0.5) {
-                    EXPECT_NE(documentId(gui), clickedFrom) << criterion << " / " << name;
+                    EXPECT_NE(documentRevision(gui), clickedFrom) << criterion << " / " << name;
                 }
             }
-            EXPECT_NE(documentId(gui), before) << criterion << " / " << name;
+            EXPECT_NE(documentRevision(gui), before) << criterion << " / " << name;
             const auto slider = gui.control(name, "slider");
             const double y = slider["y"].get<double>() + 0.5 * slider["height"].get<double>();
             gui.drag(slider["x"].get<double>() + 0.1 * slider["width"].get<double>(), y,
@@ -89,10 +89,10 @@ TEST(EditorClicks, RefineTabSlidersAndButtons) {
     EXPECT_FALSE(hasError(gui)) << gui.document()["messages"].dump();
 
     // Undo and redo through the keyboard walk back over the edits without a crash.
-    const auto edited = documentId(gui);
+    const auto edited = documentRevision(gui);
     for (int i = 0; i < 6; ++i) gui.key("ctrl+z");
     EXPECT_ALIVE(gui);
-    EXPECT_NE(documentId(gui), edited);
+    EXPECT_NE(documentRevision(gui), edited);
     for (int i = 0; i < 6; ++i) gui.key("ctrl+y");
     EXPECT_ALIVE(gui);
 }
@@ -184,13 +184,13 @@ TEST(EditorClicks, PaintingWeightsWithARealDrag) {
     ASSERT_EQ(gui.document()["weight_mode"], "area");
     gui.click(gui.control("Paint (left drag on the mesh; Alt + drag orbits)", "checkbox"));
     ASSERT_TRUE(gui.document()["brush"].get<bool>());
-    const auto before = documentId(gui);
+    const auto before = documentRevision(gui);
     const auto view = gui.control("main", "view");
     const double cx = view["x"].get<double>() + 0.5 * view["width"].get<double>();
     const double cy = view["y"].get<double>() + 0.5 * view["height"].get<double>();
     gui.drag(cx - 60, cy, cx + 60, cy + 20, 12);
     EXPECT_ALIVE(gui);
-    EXPECT_NE(documentId(gui), before);
+    EXPECT_NE(documentRevision(gui), before);
     EXPECT_EQ(gui.document()["undo"], "Paint stroke") << gui.document().dump();
     EXPECT_EQ(gui.document()["weight_mode"], "painted");
     gui.key("ctrl+z");

@@ -13,6 +13,7 @@
 #include "core/io/MeshIO.h"
 #include "core/paint/WeightBrush.h"
 #include "core/project/ProjectRun.h"
+#include "ui/session/BundledAssets.h"
 
 #include <gtest/gtest.h>
 
@@ -35,42 +36,42 @@ std::filesystem::path tempDir(const char* name) {
 // The face's own viseme set (spoken frequencies: the bundled table), switched to direct viseme
 // frequencies that the tests edit.
 void loadGeneratedSet(EditorSession& session) {
-    session.loadFace();
-    session.generateVisemesFromFace();
+    session.face().load();
+    session.face().generateVisemes();
     ASSERT_TRUE(session.document().frequencies.isPhonemeBased());
-    session.useDirectFrequencies();
+    session.frequencies().useDirectFrequencies();
     ASSERT_FALSE(session.document().frequencies.isPhonemeBased());
 }
 
 // The same with target m and no automatic reduction (no curve until something runs one).
 void loadUnreducedSet(EditorSession& session, int m) {
-    session.autoReduce = false;
+    session.reduction().setAutomatic(false);
     loadGeneratedSet(session);
-    session.setTarget(m);
+    session.reduction().setTarget(m);
 }
 
 TEST(EditorSession, LoadsTheSampleAsAnInterpolableVisemeSet) {
     EditorSession session;
-    session.loadSample();
+    session.files().loadSample();
     ASSERT_NE(session.visemes(), nullptr);
     EXPECT_EQ(session.visemeCount(), 15u);
     EXPECT_GT(session.visemes()->vertexCount(), 1000u);
-    EXPECT_FALSE(session.modified());
-    EXPECT_FALSE(session.canUndo());
+    EXPECT_FALSE(session.history().modified());
+    EXPECT_FALSE(session.history().canUndo());
 }
 
 TEST(EditorSession, ReductionRunsInTheBackgroundAndMatchesTheCoreReference) {
     EditorSession session;
-    session.loadSample();
-    session.setTarget(10);
-    session.startReduction();
+    session.files().loadSample();
+    session.reduction().setTarget(10);
+    session.reduction().start();
     session.finishBackgroundWork();
-    const ReductionResult* curve = session.reductionCurve();
+    const ReductionResult* curve = session.reduction().curve();
     ASSERT_NE(curve, nullptr);
     // The sample runs the default model: the rest is free and sil rests, so p = 1..n - 1 keys.
     ASSERT_TRUE(curve->restFree);
     ASSERT_EQ(curve->curve.size(), session.visemeCount() - 1); // p = 1..n - 1 for the plot
-    const Grouping* grouping = session.currentGrouping();
+    const Grouping* grouping = session.reduction().grouping();
     ASSERT_NE(grouping, nullptr);
     EXPECT_EQ(grouping->groups.size(), 10u);
     const int sil = session.visemes()->find("sil");
@@ -80,18 +81,18 @@ TEST(EditorSession, ReductionRunsInTheBackgroundAndMatchesTheCoreReference) {
     std::vector<std::vector<Vec3>> shapes;
     for (const auto& v : session.visemes()->visemes) shapes.push_back(v.positions);
     const double reference =
-        restFreeGroupingCost(shapes, session.visemeFrequencies(), session.weights(), grouping->groups,
-                             grouping->rest, session.visemes()->neutral.positions);
+        restFreeGroupingCost(shapes, session.frequencies().values(), session.weights().values(),
+                             grouping->groups, grouping->rest, session.visemes()->neutral.positions);
     EXPECT_NEAR(grouping->cost, reference, 1e-9 * std::max(1.0, reference));
     // Costs decrease with more groups and reach 0 at p = n.
     for (std::size_t p = 1; p < curve->curve.size(); ++p)
         EXPECT_LE(curve->curve[p].cost, curve->curve[p - 1].cost + 1e-12);
     EXPECT_NEAR(curve->curve.back().cost, 0.0, 1e-12);
-    const ReducedModel* merged = session.reducedModel();
+    const ReducedModel* merged = session.reduction().reducedModel();
     ASSERT_NE(merged, nullptr);
     EXPECT_EQ(merged->keys.size(), 10u);
     // The merged view is the CLI's model: same keys, names and positions, bit for bit.
-    const ReduceOutcome cli = reduceProject(session.projectSnapshot(), *session.visemes());
+    const ReduceOutcome cli = reduceProject(session.files().projectSnapshot(), *session.visemes());
     ASSERT_EQ(cli.model.keys.size(), merged->keys.size());
     for (std::size_t k = 0; k < merged->keys.size(); ++k) {
         EXPECT_EQ(merged->keys[k].name, cli.model.keys[k].name);
@@ -102,22 +103,22 @@ TEST(EditorSession, ReductionRunsInTheBackgroundAndMatchesTheCoreReference) {
 
 TEST(EditorSession, MergedViewRefusesAPhonemeMapNamingAnUnknownViseme) {
     EditorSession session;
-    session.autoReduce = false;
-    session.loadSample();
+    session.reduction().setAutomatic(false);
+    session.files().loadSample();
     ASSERT_TRUE(session.document().frequencies.isPhonemeBased());
-    session.startReduction();
+    session.reduction().start();
     session.finishBackgroundWork();
-    ASSERT_NE(session.reducedModel(), nullptr);
+    ASSERT_NE(session.reduction().reducedModel(), nullptr);
     // A map entry for a phoneme the table does not count, naming a viseme the set lacks: the
     // frequencies are still valid, but no model is built with a silently dropped entry.
     FrequencySource source = session.document().frequencies;
     source.map.entries.emplace_back("ZZ", "nope");
-    session.setFrequencySource(source, "extra map entry");
-    session.startReduction();
+    session.frequencies().setSource(source, "extra map entry");
+    session.reduction().start();
     session.finishBackgroundWork();
-    ASSERT_NE(session.currentGrouping(), nullptr);
+    ASSERT_NE(session.reduction().grouping(), nullptr);
     try {
-        session.reducedModel();
+        session.reduction().reducedModel();
         FAIL() << "an unknown viseme in the map was accepted";
     } catch (const InputError& e) {
         EXPECT_NE(std::string(e.what()).find("unknown viseme 'nope' (phonemes ZZ)"), std::string::npos)
@@ -127,84 +128,86 @@ TEST(EditorSession, MergedViewRefusesAPhonemeMapNamingAnUnknownViseme) {
 
 TEST(EditorSession, ChangingAnInputInvalidatesTheCurveUntilTheNextRun) {
     EditorSession session;
-    session.autoReduce = false;
+    session.reduction().setAutomatic(false);
     loadGeneratedSet(session);
-    session.startReduction();
+    session.reduction().start();
     session.finishBackgroundWork();
-    ASSERT_NE(session.reductionCurve(), nullptr);
-    session.setVisemeFrequency(session.visemes()->find("aa"), 5.0);
-    EXPECT_EQ(session.reductionCurve(), nullptr);
-    session.startReduction();
+    ASSERT_NE(session.reduction().curve(), nullptr);
+    session.frequencies().setVisemeFrequency(session.visemes()->find("aa"), 5.0);
+    EXPECT_EQ(session.reduction().curve(), nullptr);
+    session.reduction().start();
     session.finishBackgroundWork();
-    ASSERT_NE(session.reductionCurve(), nullptr);
+    ASSERT_NE(session.reduction().curve(), nullptr);
     // Changing only m reuses the curve: no recomputation needed.
-    session.setTarget(4);
-    ASSERT_NE(session.currentGrouping(), nullptr);
-    EXPECT_EQ(session.currentGrouping()->groups.size(), 4u);
+    session.reduction().setTarget(4);
+    ASSERT_NE(session.reduction().grouping(), nullptr);
+    EXPECT_EQ(session.reduction().grouping()->groups.size(), 4u);
 }
 
 TEST(EditorSession, AutoReduceStartsFromPoll) {
     EditorSession session;
-    session.loadSample();
+    session.files().loadSample();
     session.poll();
     session.finishBackgroundWork();
-    EXPECT_NE(session.reductionCurve(), nullptr);
+    EXPECT_NE(session.reduction().curve(), nullptr);
 }
 
 TEST(EditorSession, SliderDragIsOneUndoStep) {
     EditorSession session;
-    session.loadFace();
-    const int jaw = session.face().cascade->findParameter("jaw_open");
+    session.face().load();
+    const int jaw = session.document().face.cascade->findParameter("jaw_open");
     ASSERT_GE(jaw, 0);
-    const double before = session.face().parameters[static_cast<std::size_t>(jaw)];
+    const double before = session.document().face.parameters[static_cast<std::size_t>(jaw)];
     const std::size_t steps = 5;
-    for (std::size_t i = 1; i <= steps; ++i) session.setParameter(jaw, 0.1 * static_cast<double>(i));
-    session.endEdit();
-    EXPECT_DOUBLE_EQ(session.face().parameters[static_cast<std::size_t>(jaw)], 0.5);
-    session.undo();
-    EXPECT_DOUBLE_EQ(session.face().parameters[static_cast<std::size_t>(jaw)], before);
-    session.redo();
-    EXPECT_DOUBLE_EQ(session.face().parameters[static_cast<std::size_t>(jaw)], 0.5);
+    for (std::size_t i = 1; i <= steps; ++i) session.face().setParameter(jaw, 0.1 * static_cast<double>(i));
+    session.history().endEdit();
+    EXPECT_DOUBLE_EQ(session.document().face.parameters[static_cast<std::size_t>(jaw)], 0.5);
+    session.history().undo();
+    EXPECT_DOUBLE_EQ(session.document().face.parameters[static_cast<std::size_t>(jaw)], before);
+    session.history().redo();
+    EXPECT_DOUBLE_EQ(session.document().face.parameters[static_cast<std::size_t>(jaw)], 0.5);
 }
 
 TEST(EditorSession, OutOfRangeParameterIsRefusedAndChangesNothing) {
     EditorSession session;
-    session.loadFace();
-    const auto before = session.face().parameters;
-    EXPECT_THROW(session.setParameter(0, 1e9), InputError);
-    EXPECT_EQ(session.face().parameters, before);
+    session.face().load();
+    const auto before = session.document().face.parameters;
+    EXPECT_THROW(session.face().setParameter(0, 1e9), InputError);
+    EXPECT_EQ(session.document().face.parameters, before);
 }
 
 TEST(EditorSession, Viseme_PresetAndFieldEditsAreUndoable) {
     EditorSession session;
-    session.loadFace();
-    session.applyVisemePreset("aa");
-    const int jaw = session.face().cascade->findParameter("jaw_open");
-    EXPECT_GT(session.face().parameters[static_cast<std::size_t>(jaw)], 0.0);
+    session.face().load();
+    session.face().applyVisemePreset("aa");
+    const int jaw = session.document().face.cascade->findParameter("jaw_open");
+    EXPECT_GT(session.document().face.parameters[static_cast<std::size_t>(jaw)], 0.0);
     // Edit the first analytic region found.
-    const auto& stages = session.face().cascade->stages;
+    const auto& stages = session.document().face.cascade->stages;
     int stage = -1;
     for (std::size_t s = 0; s < stages.size() && stage < 0; ++s)
         if (!stages[s].field.influences.empty()) stage = static_cast<int>(s);
     ASSERT_GE(stage, 0);
-    const auto* cascadeBefore = session.face().cascade.get();
+    const auto* cascadeBefore = session.document().face.cascade.get();
     InfluenceField field = stages[static_cast<std::size_t>(stage)].field.influences[0];
     field.magnitude *= 2.0;
-    session.setInfluence(stage, 0, field);
-    EXPECT_DOUBLE_EQ(
-        session.face().cascade->stages[static_cast<std::size_t>(stage)].field.influences[0].magnitude,
-        field.magnitude);
-    session.undo();
-    EXPECT_EQ(session.face().cascade.get(), cascadeBefore);
+    session.face().setInfluence(stage, 0, field);
+    EXPECT_DOUBLE_EQ(session.document()
+                         .face.cascade->stages[static_cast<std::size_t>(stage)]
+                         .field.influences[0]
+                         .magnitude,
+                     field.magnitude);
+    session.history().undo();
+    EXPECT_EQ(session.document().face.cascade.get(), cascadeBefore);
     // An invalid region (zero radius) is refused.
     field.radii = Vec2(0.0, 0.0);
-    EXPECT_THROW(session.setInfluence(stage, 0, field), InputError);
-    EXPECT_EQ(session.face().cascade.get(), cascadeBefore);
+    EXPECT_THROW(session.face().setInfluence(stage, 0, field), InputError);
+    EXPECT_EQ(session.document().face.cascade.get(), cascadeBefore);
 }
 
 TEST(EditorSession, NonInterpolableImportShowsTheCoreErrorAndChangesNothing) {
     EditorSession session;
-    session.loadSample();
+    session.files().loadSample();
     const auto dir = tempDir("import");
     MeshData broken;
     broken.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
@@ -212,23 +215,24 @@ TEST(EditorSession, NonInterpolableImportShowsTheCoreErrorAndChangesNothing) {
     writeMesh(dir / "broken.obj", broken);
     const VisemeSet* before = session.visemes();
     try {
-        session.importViseme("broken", dir / "broken.obj");
+        session.authoring().importViseme("broken", dir / "broken.obj");
         FAIL() << "import of a non-interpolable mesh succeeded";
     } catch (const InputError& e) {
         EXPECT_NE(std::string(e.what()).find("not interpolable"), std::string::npos) << e.what();
     }
     EXPECT_EQ(session.visemes(), before);
-    EXPECT_FALSE(session.canUndo());
+    EXPECT_FALSE(session.history().canUndo());
     // attempt() turns the same failure into a status message, as the panels do.
-    EXPECT_FALSE(session.attempt("Import", [&] { session.importViseme("broken", dir / "broken.obj"); }));
+    EXPECT_FALSE(
+        session.attempt("Import", [&] { session.authoring().importViseme("broken", dir / "broken.obj"); }));
     ASSERT_FALSE(session.messages().empty());
     EXPECT_EQ(session.messages().back().kind, StatusMessage::Kind::Error);
 
     // An interpolable mesh (a copy of a viseme) imports, and undo removes it again.
     writeMesh(dir / "copy.obj", session.visemes()->meshOf(0));
-    session.importViseme("copy", dir / "copy.obj");
+    session.authoring().importViseme("copy", dir / "copy.obj");
     EXPECT_EQ(session.visemeCount(), 16u);
-    session.undo();
+    session.history().undo();
     EXPECT_EQ(session.visemeCount(), 15u);
     EXPECT_EQ(session.visemes(), before);
 }
@@ -236,14 +240,14 @@ TEST(EditorSession, NonInterpolableImportShowsTheCoreErrorAndChangesNothing) {
 TEST(EditorSession, NegativeFrequencyIsRefused) {
     EditorSession session;
     loadGeneratedSet(session);
-    const auto before = session.visemeFrequencies();
-    EXPECT_THROW(session.setVisemeFrequency(0, -1.0), InputError);
-    EXPECT_EQ(session.visemeFrequencies(), before);
+    const auto before = session.frequencies().values();
+    EXPECT_THROW(session.frequencies().setVisemeFrequency(0, -1.0), InputError);
+    EXPECT_EQ(session.frequencies().values(), before);
 }
 
 TEST(EditorSession, PaintStrokeIsOneUndoStep) {
     EditorSession session;
-    session.loadSample();
+    session.files().loadSample();
     const VisemeSet& set = *session.visemes();
     std::vector<double> weights(set.vertexCount(), 0.5);
     WeightBrush brush;
@@ -253,10 +257,10 @@ TEST(EditorSession, PaintStrokeIsOneUndoStep) {
         applyBrushDab(set.neutral.positions, set.neutral.triangles, brush, set.neutral.positions[100],
                       weights);
     const WeightMode before = session.document().weights.mode;
-    session.setPaintedWeights(weights, "Paint stroke");
+    session.weights().setPainted(weights, "Paint stroke");
     EXPECT_EQ(session.document().weights.mode, WeightMode::Painted);
-    EXPECT_EQ(session.weights(), weights);
-    session.undo();
+    EXPECT_EQ(session.weights().values(), weights);
+    session.history().undo();
     EXPECT_EQ(session.document().weights.mode, before);
 }
 
@@ -264,68 +268,68 @@ TEST(EditorSession, SaveAndReopenProjectKeepsTheState) {
     const auto dir = tempDir("project");
     EditorSession session;
     loadGeneratedSet(session);
-    session.setTarget(7);
-    session.setVisemeFrequency(3, 2.5);
-    session.startReduction();
+    session.reduction().setTarget(7);
+    session.frequencies().setVisemeFrequency(3, 2.5);
+    session.reduction().start();
     session.finishBackgroundWork();
-    ASSERT_TRUE(session.modified());
-    session.saveProject(dir / "p.vlproj");
-    EXPECT_FALSE(session.modified());
+    ASSERT_TRUE(session.history().modified());
+    session.files().saveProject(dir / "p.vlproj");
+    EXPECT_FALSE(session.history().modified());
 
     EditorSession reopened;
-    reopened.openProject(dir / "p.vlproj");
+    reopened.files().openProject(dir / "p.vlproj");
     ASSERT_NE(reopened.visemes(), nullptr);
     EXPECT_EQ(reopened.visemeCount(), session.visemeCount());
     EXPECT_EQ(reopened.document().target, 7);
-    EXPECT_EQ(reopened.visemeFrequencies(), session.visemeFrequencies());
+    EXPECT_EQ(reopened.frequencies().values(), session.frequencies().values());
     EXPECT_EQ(reopened.visemes()->visemes[5].positions, session.visemes()->visemes[5].positions);
     // The result the file recorded is shown at once (a fresh reduction replaces it).
-    ASSERT_NE(reopened.currentGrouping(), nullptr);
-    EXPECT_EQ(reopened.currentGrouping()->groups, session.currentGrouping()->groups);
+    ASSERT_NE(reopened.reduction().grouping(), nullptr);
+    EXPECT_EQ(reopened.reduction().grouping()->groups, session.reduction().grouping()->groups);
     // A new document is rest-free (the face's set has sil): its resting visemes come back too.
     EXPECT_EQ(reopened.document().rest, RestChoice::Auto);
-    EXPECT_TRUE(reopened.reductionCurve()->restFree);
-    EXPECT_FALSE(reopened.currentGrouping()->rest.empty());
-    EXPECT_EQ(reopened.currentGrouping()->rest, session.currentGrouping()->rest);
+    EXPECT_TRUE(reopened.reduction().curve()->restFree);
+    EXPECT_FALSE(reopened.reduction().grouping()->rest.empty());
+    EXPECT_EQ(reopened.reduction().grouping()->rest, session.reduction().grouping()->rest);
 }
 
 TEST(EditorSession, TheRestModelIsOneUndoStepTheReductionFollows) {
     EditorSession session;
     loadGeneratedSet(session);
-    session.setTarget(5);
-    session.startReduction();
+    session.reduction().setTarget(5);
+    session.reduction().start();
     session.finishBackgroundWork();
-    ASSERT_TRUE(session.reductionCurve() && session.reductionCurve()->restFree);
-    session.setRest(RestChoice::Key, "");
-    EXPECT_EQ(session.undoName(), "Rest is a key");
-    EXPECT_EQ(session.reductionCurve(), nullptr); // the inputs changed: the curve is computed again
-    session.startReduction();
+    ASSERT_TRUE(session.reduction().curve() && session.reduction().curve()->restFree);
+    session.reduction().setRest(RestChoice::Key, "");
+    EXPECT_EQ(session.history().undoName(), "Rest is a key");
+    EXPECT_EQ(session.reduction().curve(), nullptr); // the inputs changed: the curve is computed again
+    session.reduction().start();
     session.finishBackgroundWork();
-    ASSERT_NE(session.currentGrouping(), nullptr);
-    EXPECT_FALSE(session.reductionCurve()->restFree);
-    EXPECT_TRUE(session.currentGrouping()->rest.empty());
-    EXPECT_EQ(session.currentGrouping()->groups.size(), 5u);
-    session.undo();
+    ASSERT_NE(session.reduction().grouping(), nullptr);
+    EXPECT_FALSE(session.reduction().curve()->restFree);
+    EXPECT_TRUE(session.reduction().grouping()->rest.empty());
+    EXPECT_EQ(session.reduction().grouping()->groups.size(), 5u);
+    session.history().undo();
     EXPECT_EQ(session.document().rest, RestChoice::Auto);
 }
 
 TEST(EditorSession, ReopenedProjectKeepsTheRetargetingChoice) {
     const auto dir = tempDir("retarget");
     EditorSession session;
-    session.autoReduce = false;
-    session.loadFace();
-    session.setIndividual(face::Individual::Retarget);
-    session.saveProject(dir / "retarget.vlproj");
+    session.reduction().setAutomatic(false);
+    session.face().load();
+    session.face().setIndividual(face::Individual::Retarget);
+    session.files().saveProject(dir / "retarget.vlproj");
 
     EditorSession reopened;
-    reopened.openProject(dir / "retarget.vlproj");
-    ASSERT_NE(reopened.face().cascade, nullptr);
-    EXPECT_EQ(reopened.face().individual, face::Individual::Retarget);
+    reopened.files().openProject(dir / "retarget.vlproj");
+    ASSERT_NE(reopened.document().face.cascade, nullptr);
+    EXPECT_EQ(reopened.document().face.individual, face::Individual::Retarget);
     // The loaded geometry is the retargeted one, and going back to the bundled face is one edit.
-    EXPECT_EQ(reopened.face().cascade->stages[0].field.sampled.samples,
-              session.face().cascade->stages[0].field.sampled.samples);
-    reopened.setIndividual(face::Individual::Bundled);
-    EXPECT_EQ(reopened.face().cascade->stages[0].field.sampled.samples,
+    EXPECT_EQ(reopened.document().face.cascade->stages[0].field.sampled.samples,
+              session.document().face.cascade->stages[0].field.sampled.samples);
+    reopened.face().setIndividual(face::Individual::Bundled);
+    EXPECT_EQ(reopened.document().face.cascade->stages[0].field.sampled.samples,
               face::makeBundledFace().stages[0].field.sampled.samples);
 }
 
@@ -334,9 +338,9 @@ TEST(EditorSession, BrokenProjectFileIsReportedAndTheOpenProjectStays) {
     writeFileAtomically(dir / "bad.vlproj",
                         "{ \"format\": \"visemelab-project\", \"version\": 1, \"visemes\": 3 }");
     EditorSession session;
-    session.loadSample();
+    session.files().loadSample();
     const VisemeSet* before = session.visemes();
-    EXPECT_FALSE(session.attempt("Open project", [&] { session.openProject(dir / "bad.vlproj"); }));
+    EXPECT_FALSE(session.attempt("Open project", [&] { session.files().openProject(dir / "bad.vlproj"); }));
     EXPECT_EQ(session.visemes(), before);
     EXPECT_NE(session.messages().back().text.find("bad.vlproj"), std::string::npos)
         << session.messages().back().text;
@@ -350,25 +354,25 @@ namespace {
 
 TEST(EditorSession, RefinementRunsInTheBackgroundAndIsUndoable) {
     EditorSession session;
-    session.loadFace();
-    const MeshData* gridDomain = session.face().domain.get();
+    session.face().load();
+    const MeshData* gridDomain = session.document().face.domain.get();
     CriterionSettings settings = session.document().refinement;
     settings.kind = CriterionKind::Depth;
     settings.depth.depth = 3;
-    session.setRefinementSettings(settings);
-    session.startRefinement(RefineAction::Refine);
+    session.face().setRefinementSettings(settings);
+    session.face().startRefinement(RefineAction::Refine);
     session.finishBackgroundWork();
-    ASSERT_TRUE(session.lastRefinement().has_value());
-    const MeshData& refined = *session.face().domain;
+    ASSERT_TRUE(session.face().lastRefinement().has_value());
+    const MeshData& refined = *session.document().face.domain;
     EXPECT_NE(&refined, gridDomain);
-    EXPECT_EQ(refined.triangles.size(), session.lastRefinement()->triangles);
+    EXPECT_EQ(refined.triangles.size(), session.face().lastRefinement()->triangles);
     EXPECT_EQ(refined.uvs.size(), refined.positions.size());
-    EXPECT_EQ(session.lastRefinement()->maxLevel, 3);
-    session.undo();
-    EXPECT_EQ(session.face().domain.get(), gridDomain);
+    EXPECT_EQ(session.face().lastRefinement()->maxLevel, 3);
+    session.history().undo();
+    EXPECT_EQ(session.document().face.domain.get(), gridDomain);
     // Bad thresholds are refused and change nothing.
     settings.contour.averageError = -1.0;
-    EXPECT_THROW(session.setRefinementSettings(settings), InputError);
+    EXPECT_THROW(session.face().setRefinementSettings(settings), InputError);
     EXPECT_EQ(session.document().refinement.contour.averageError, CriterionSettings{}.contour.averageError);
 }
 
@@ -377,23 +381,24 @@ TEST(EditorSession, RefinementRunsInTheBackgroundAndIsUndoable) {
 // face (a new domain by undo) makes them stale until recomputed.
 TEST(EditorSession, RefinementHandsOverTheSamplesOfItsMesh) {
     EditorSession session;
-    session.loadFace();
-    (void)session.faceSamples();
-    EXPECT_TRUE(session.faceSamplesReady());
-    session.startRefinement(RefineAction::Refine);
+    session.face().load();
+    (void)session.face().samples();
+    EXPECT_TRUE(session.face().samplesReady());
+    session.face().startRefinement(RefineAction::Refine);
     session.finishBackgroundWork();
-    ASSERT_TRUE(session.lastRefinement().has_value());
-    EXPECT_TRUE(session.faceSamplesReady()); // before any evaluation on this thread
-    const FaceSamples fresh = sampleFace(*session.face().cascade, session.face().domain->uvs);
-    const FaceSamples& handed = session.faceSamples();
-    ASSERT_EQ(handed.rest.size(), session.face().domain->uvs.size());
+    ASSERT_TRUE(session.face().lastRefinement().has_value());
+    EXPECT_TRUE(session.face().samplesReady()); // before any evaluation on this thread
+    const FaceSamples fresh =
+        sampleFace(*session.document().face.cascade, session.document().face.domain->uvs);
+    const FaceSamples& handed = session.face().samples();
+    ASSERT_EQ(handed.rest.size(), session.document().face.domain->uvs.size());
     EXPECT_EQ(handed.rest, fresh.rest);
     EXPECT_EQ(handed.targets, fresh.targets);
     EXPECT_EQ(handed.colours, fresh.colours);
-    session.undo();
-    EXPECT_FALSE(session.faceSamplesReady());
-    EXPECT_EQ(session.faceSamples().rest.size(), session.face().domain->uvs.size());
-    EXPECT_TRUE(session.faceSamplesReady());
+    session.history().undo();
+    EXPECT_FALSE(session.face().samplesReady());
+    EXPECT_EQ(session.face().samples().rest.size(), session.document().face.domain->uvs.size());
+    EXPECT_TRUE(session.face().samplesReady());
 }
 
 // The parts' centre in morph form at parameters q: rest + sum q_k (target_k - rest).
@@ -414,24 +419,24 @@ Vec3 partCentre(const HeadPartSamples& samples, const std::string& name, const s
 
 TEST(EditorSession, HeadPartsAreMadeOncePerFaceAndFollowTheParametersAsMorphs) {
     EditorSession session;
-    EXPECT_EQ(session.faceParts(), nullptr);
-    session.loadFace();
-    const auto parts = session.faceParts();
+    EXPECT_EQ(session.face().parts(), nullptr);
+    session.face().load();
+    const auto parts = session.face().parts();
     ASSERT_NE(parts, nullptr);
     std::vector<std::string> names;
     for (const auto& part : parts->parts) names.push_back(part.name);
     EXPECT_EQ(names, (std::vector<std::string>{"eye_right", "eye_left", "teeth_upper", "teeth_lower",
                                                "tongue", "mouth_cavity"}));
-    ASSERT_EQ(parts->targets.size(), session.face().cascade->parameters.size());
+    ASSERT_EQ(parts->targets.size(), session.document().face.cascade->parameters.size());
     ASSERT_EQ(parts->colours.size(), parts->rest.size());
     ASSERT_FALSE(parts->triangles.empty());
     EXPECT_EQ(parts->parts.back().first + parts->parts.back().count, parts->rest.size());
 
     // The morph form is the core's evaluation at the face's parameters (here jaw_open at its max).
-    const DeformationCascade& cascade = *session.face().cascade;
+    const DeformationCascade& cascade = *session.document().face.cascade;
     const int jaw = cascade.findParameter("jaw_open");
     ASSERT_GE(jaw, 0);
-    std::vector<double> q = session.face().parameters;
+    std::vector<double> q = session.document().face.parameters;
     q[static_cast<std::size_t>(jaw)] = cascade.parameters[static_cast<std::size_t>(jaw)].max;
     const auto core = face::makeHeadParts(cascade);
     const std::vector<Vec3> expected = face::HeadPartsSampler(cascade, core).evaluate(q);
@@ -442,25 +447,25 @@ TEST(EditorSession, HeadPartsAreMadeOncePerFaceAndFollowTheParametersAsMorphs) {
         ASSERT_LT((morph - expected[i]).norm(), 1e-9) << "vertex " << i;
     }
     // jaw_open lowers the lower teeth and the tongue; the upper teeth stay with the skull.
-    const std::vector<double> rest = session.face().parameters;
+    const std::vector<double> rest = session.document().face.parameters;
     EXPECT_LT(partCentre(*parts, "teeth_lower", q)[1], partCentre(*parts, "teeth_lower", rest)[1] - 0.3);
     EXPECT_LT(partCentre(*parts, "tongue", q)[1], partCentre(*parts, "tongue", rest)[1] - 0.2);
     EXPECT_EQ(partCentre(*parts, "teeth_upper", q), partCentre(*parts, "teeth_upper", rest));
 
     // A slider and a refined skin keep them; another face (retargeting) makes them again.
-    session.setParameter(jaw, q[static_cast<std::size_t>(jaw)]);
-    EXPECT_EQ(session.faceParts(), parts);
-    session.startRefinement(RefineAction::Refine);
+    session.face().setParameter(jaw, q[static_cast<std::size_t>(jaw)]);
+    EXPECT_EQ(session.face().parts(), parts);
+    session.face().startRefinement(RefineAction::Refine);
     session.finishBackgroundWork();
-    ASSERT_TRUE(session.lastRefinement().has_value());
-    EXPECT_EQ(session.faceParts(), parts);
-    session.setIndividual(face::Individual::Retarget);
-    const auto retargeted = session.faceParts();
+    ASSERT_TRUE(session.face().lastRefinement().has_value());
+    EXPECT_EQ(session.face().parts(), parts);
+    session.face().setIndividual(face::Individual::Retarget);
+    const auto retargeted = session.face().parts();
     ASSERT_NE(retargeted, nullptr);
     EXPECT_NE(retargeted, parts);
     EXPECT_NE(retargeted->rest, parts->rest);
-    session.undo();
-    EXPECT_EQ(session.faceParts()->rest, parts->rest);
+    session.history().undo();
+    EXPECT_EQ(session.face().parts()->rest, parts->rest);
 }
 
 TEST(EditorSession, AFaceBuiltFromTheUsersMeshShowsTheCarriedParts) {
@@ -469,19 +474,19 @@ TEST(EditorSession, AFaceBuiltFromTheUsersMeshShowsTheCarriedParts) {
     if (!std::filesystem::exists(mediaPipe))
         GTEST_SKIP() << "shared data missing: " << mediaPipe << " (set VISEMELAB_SHARED_DATA_DIR)";
     EditorSession session;
-    session.loadFace();
-    const auto bundled = session.faceParts();
-    session.useOwnFace(loadOwnFaceCandidate(mediaPipe));
-    const auto parts = session.faceParts();
+    session.face().load();
+    const auto bundled = session.face().parts();
+    session.face().useOwnFace(loadOwnFaceCandidate(mediaPipe));
+    const auto parts = session.face().parts();
     ASSERT_NE(parts, nullptr);
     ASSERT_NE(parts, bundled);
     ASSERT_EQ(parts->parts.size(), bundled->parts.size());
     for (const auto& message : session.messages())
         EXPECT_NE(message.kind, StatusMessage::Kind::Error) << message.text;
     // Carried to this face: the teeth sit between its mouth corners, the eyeballs at its eyes.
-    const auto landmarks = face::baseLandmarkPositions(*session.face().cascade);
+    const auto landmarks = face::baseLandmarkPositions(*session.document().face.cascade);
     const auto at = [&](face::Landmark l) { return landmarks[static_cast<std::size_t>(l)]; };
-    const std::vector<double> q = session.face().parameters;
+    const std::vector<double> q = session.document().face.parameters;
     const Vec3 mouth = (at(face::Landmark::MouthCornerLeft) + at(face::Landmark::MouthCornerRight)) * 0.5;
     const double mouthWidth =
         (at(face::Landmark::MouthCornerLeft) - at(face::Landmark::MouthCornerRight)).norm();
@@ -492,16 +497,16 @@ TEST(EditorSession, AFaceBuiltFromTheUsersMeshShowsTheCarriedParts) {
 
 TEST(EditorSession, VisemesGeneratedOnARefinedMeshAreInterpolable) {
     EditorSession session;
-    session.loadFace();
-    session.startRefinement(RefineAction::AllVisemes);
+    session.face().load();
+    session.face().startRefinement(RefineAction::AllVisemes);
     session.finishBackgroundWork();
-    ASSERT_TRUE(session.lastRefinement().has_value());
-    session.generateVisemesFromFace();
+    ASSERT_TRUE(session.face().lastRefinement().has_value());
+    session.face().generateVisemes();
     ASSERT_NE(session.visemes(), nullptr);
-    EXPECT_EQ(session.visemes()->vertexCount(), session.face().domain->uvs.size());
-    session.startReduction();
+    EXPECT_EQ(session.visemes()->vertexCount(), session.document().face.domain->uvs.size());
+    session.reduction().start();
     session.finishBackgroundWork();
-    EXPECT_NE(session.reductionCurve(), nullptr);
+    EXPECT_NE(session.reduction().curve(), nullptr);
 }
 
 } // namespace
@@ -513,28 +518,28 @@ namespace {
 TEST(EditorSession, ExportsTheReducedModelInEveryFormat) {
     const auto dir = tempDir("export");
     EditorSession session;
-    session.loadSample();
-    session.setTarget(6);
-    session.startReduction();
+    session.files().loadSample();
+    session.reduction().setTarget(6);
+    session.reduction().start();
     session.finishBackgroundWork();
-    const auto glb = session.exportProject(ExportFormat::Glb, dir / "face.glb");
+    const auto glb = session.files().exportProject(ExportFormat::Glb, dir / "face.glb");
     ASSERT_FALSE(glb.empty());
     EXPECT_TRUE(std::filesystem::exists(dir / "face.glb"));
-    EXPECT_FALSE(session.exportProject(ExportFormat::Runtime, dir / "face.vlrt").empty());
-    EXPECT_FALSE(session.exportProject(ExportFormat::Obj, dir / "obj").empty());
-    EXPECT_FALSE(session.exportProject(ExportFormat::Vrml, dir / "vrml").empty());
+    EXPECT_FALSE(session.files().exportProject(ExportFormat::Runtime, dir / "face.vlrt").empty());
+    EXPECT_FALSE(session.files().exportProject(ExportFormat::Obj, dir / "obj").empty());
+    EXPECT_FALSE(session.files().exportProject(ExportFormat::Vrml, dir / "vrml").empty());
     // The glb comes back as a viseme set with one morph target per group.
-    session.importGltf(dir / "face.glb");
+    session.files().importGltf(dir / "face.glb");
     EXPECT_EQ(session.visemeCount(), 6u);
 }
 
 TEST(EditorSession, BundledPhonemeMapDrivesTheVisemeFrequencies) {
     EditorSession session;
-    session.loadFace();
-    session.generateVisemesFromFace(); // visemes named like the Oculus map
-    session.useBundledPhonemeMap("oculus");
+    session.face().load();
+    session.face().generateVisemes(); // visemes named like the Oculus map
+    session.frequencies().useBundledPhonemeMap("oculus");
     ASSERT_TRUE(session.document().frequencies.isPhonemeBased());
-    const auto f = session.visemeFrequencies();
+    const auto f = session.frequencies().values();
     ASSERT_EQ(f.size(), session.visemeCount());
     // Remapping a phoneme moves its frequency from one viseme to the other; undo restores it.
     const auto& table = session.document().frequencies.phonemes.entries;
@@ -542,27 +547,27 @@ TEST(EditorSession, BundledPhonemeMapDrivesTheVisemeFrequencies) {
     for (std::size_t i = 0; i < table.size(); ++i)
         if (table[i].first == "AA") aa = static_cast<int>(i);
     ASSERT_GE(aa, 0);
-    session.setPhonemeViseme(aa, "PP");
-    EXPECT_GT(session.visemeFrequencies()[static_cast<std::size_t>(session.visemes()->find("PP"))],
+    session.frequencies().setPhonemeViseme(aa, "PP");
+    EXPECT_GT(session.frequencies().values()[static_cast<std::size_t>(session.visemes()->find("PP"))],
               f[static_cast<std::size_t>(session.visemes()->find("PP"))]);
-    session.undo();
-    EXPECT_EQ(session.visemeFrequencies(), f);
-    EXPECT_THROW(session.setPhonemeViseme(aa, "no-such-viseme"), InputError);
+    session.history().undo();
+    EXPECT_EQ(session.frequencies().values(), f);
+    EXPECT_THROW(session.frequencies().setPhonemeViseme(aa, "no-such-viseme"), InputError);
 }
 
 TEST(EditorSession, CountsPhonemesOfATextFileInTheBackground) {
     const auto dir = tempDir("corpus");
     writeFileAtomically(dir / "text.txt", "Hello world. The quick brown fox jumps over the lazy dog.\n");
     EditorSession session;
-    session.loadFace();
-    session.generateVisemesFromFace();
-    session.startPhonemeCount(dir / "text.txt");
+    session.face().load();
+    session.face().generateVisemes();
+    session.frequencies().startPhonemeCount(dir / "text.txt");
     session.finishBackgroundWork();
     ASSERT_TRUE(session.document().frequencies.isPhonemeBased()) << session.messages().back().text;
     double total = 0.0;
     for (const auto& entry : session.document().frequencies.phonemes.entries) total += entry.second;
     EXPECT_GT(total, 30.0);
-    EXPECT_TRUE(session.canUndo());
+    EXPECT_TRUE(session.history().canUndo());
 }
 
 } // namespace
@@ -577,40 +582,40 @@ TEST(EditorSession, CancellingALargeReductionReturnsAtOnce) {
     // waited); "Run now" starts it again.
     const auto dir = tempDir("cancel-large-reduction");
     const auto face = face::makeBundledFace();
-    const auto visemes = bundledVisemeSet("arpabet", EditorSession::assetsDirectory(), face);
+    const auto visemes = bundledVisemeSet("arpabet", assetsDirectory(), face);
     const VisemeSet set = generateVisemeSet(face, face::faceDomainMesh(14), visemes);
     writeFileAtomically(dir / "neutral.obj", formatObj(set.neutral));
     for (std::size_t k = 0; k < set.size(); ++k)
         writeFileAtomically(dir / (set.visemes[k].name + ".obj"), formatObj(set.meshOf(k)));
     EditorSession session;
-    session.autoReduce = false;
-    session.startLoadVisemeFolder(dir);
+    session.reduction().setAutomatic(false);
+    session.files().startLoadVisemeFolder(dir);
     session.finishBackgroundWork();
     ASSERT_EQ(session.visemeCount(), 40u);
-    session.startReduction();
+    session.reduction().start();
     std::this_thread::sleep_for(std::chrono::milliseconds(300));
-    ASSERT_TRUE(session.reductionRunning()) << "finished within 0.3 s: nothing to cancel";
+    ASSERT_TRUE(session.reduction().running()) << "finished within 0.3 s: nothing to cancel";
     const auto start = std::chrono::steady_clock::now();
-    session.cancelReduction();
+    session.reduction().cancel();
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     EXPECT_LT(seconds, 1.0);
-    EXPECT_FALSE(session.reductionRunning());
-    EXPECT_EQ(session.reductionCurve(), nullptr);
-    session.startReduction();
-    EXPECT_TRUE(session.reductionRunning());
-    session.cancelReduction();
+    EXPECT_FALSE(session.reduction().running());
+    EXPECT_EQ(session.reduction().curve(), nullptr);
+    session.reduction().start();
+    EXPECT_TRUE(session.reduction().running());
+    session.reduction().cancel();
 
     // The panel's Cancel stops the search and keeps what it found: a grouping for every p with its
     // proven gap, well before the 10 s limit.
-    session.startReduction();
+    session.reduction().start();
     std::this_thread::sleep_for(std::chrono::milliseconds(300));
-    ASSERT_TRUE(session.reductionRunning());
+    ASSERT_TRUE(session.reduction().running());
     const auto stopped = std::chrono::steady_clock::now();
-    session.stopReduction();
+    session.reduction().stop();
     session.finishBackgroundWork();
     EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - stopped).count(), 5.0);
-    ASSERT_NE(session.reductionCurve(), nullptr);
-    for (const Grouping& g : session.reductionCurve()->curve) {
+    ASSERT_NE(session.reduction().curve(), nullptr);
+    for (const Grouping& g : session.reduction().curve()->curve) {
         EXPECT_TRUE(g.feasible());
         EXPECT_LE(g.lowerBound, g.cost);
     }
@@ -619,14 +624,15 @@ TEST(EditorSession, CancellingALargeReductionReturnsAtOnce) {
 
 TEST(EditorSession, OpensProjectsAndFoldersOnAWorkerThread) {
     EditorSession session;
-    session.startOpenProject(EditorSession::assetsDirectory() / "sample" / "sample.vlproj");
+    session.files().startOpenProject(assetsDirectory() / "sample" / "sample.vlproj");
     session.finishBackgroundWork();
     ASSERT_NE(session.visemes(), nullptr);
     EXPECT_EQ(session.visemeCount(), 15u);
-    EXPECT_FALSE(session.modified());
+    EXPECT_FALSE(session.history().modified());
     // A failing load reports the error and keeps the open document.
     const VisemeSet* before = session.visemes();
-    session.startLoadVisemeFolder(std::filesystem::temp_directory_path() / "visemelab-no-such-folder");
+    session.files().startLoadVisemeFolder(std::filesystem::temp_directory_path() /
+                                          "visemelab-no-such-folder");
     session.finishBackgroundWork();
     EXPECT_EQ(session.visemes(), before);
     EXPECT_EQ(session.messages().back().kind, StatusMessage::Kind::Error);
@@ -643,25 +649,25 @@ TEST(EditorSession, SavesOnAWorkerThreadTheStateOfTheRequest) {
     EditorSession session;
     loadUnreducedSet(session, 7);
     bool ranEarly = false;
-    session.startSaveProject(dir / "p.vlproj", [&] { ranEarly = true; });
-    session.setTarget(3); // after the request: not in the file, and still unsaved
+    session.files().startSaveProject(dir / "p.vlproj", [&] { ranEarly = true; });
+    session.reduction().setTarget(3); // after the request: not in the file, and still unsaved
     session.finishBackgroundWork();
-    EXPECT_FALSE(session.saving());
+    EXPECT_FALSE(session.files().saving());
     EXPECT_FALSE(ranEarly); // the guarded action waits for a save of the current document
-    EXPECT_TRUE(session.modified());
+    EXPECT_TRUE(session.history().modified());
     EXPECT_EQ(session.document().target, 3);
-    EXPECT_TRUE(session.canUndo());
+    EXPECT_TRUE(session.history().canUndo());
     EditorSession reopened;
-    reopened.openProject(dir / "p.vlproj");
+    reopened.files().openProject(dir / "p.vlproj");
     EXPECT_EQ(reopened.document().target, 7);
 
     // Without edits in between, the saved state is recorded and the held-back action runs.
     bool ran = false;
-    session.startSaveProject(dir / "q.vlproj", [&] { ran = true; });
+    session.files().startSaveProject(dir / "q.vlproj", [&] { ran = true; });
     session.finishBackgroundWork();
     EXPECT_TRUE(ran);
-    EXPECT_FALSE(session.modified());
-    EXPECT_EQ(session.path(), dir / "q.vlproj");
+    EXPECT_FALSE(session.history().modified());
+    EXPECT_EQ(session.files().path(), dir / "q.vlproj");
     EXPECT_EQ(loadProject(dir / "q.vlproj").reduction.target, 3);
 }
 
@@ -671,52 +677,52 @@ TEST(EditorSession, FailedBackgroundSaveIsReportedAndChangesNothing) {
     loadUnreducedSet(session, 5);
     bool ran = false;
     writeFileAtomically(dir / "a-file", "");
-    session.startSaveProject(dir / "a-file" / "p.vlproj", [&] { ran = true; }); // not a folder
+    session.files().startSaveProject(dir / "a-file" / "p.vlproj", [&] { ran = true; }); // not a folder
     session.finishBackgroundWork();
     EXPECT_FALSE(ran);
-    EXPECT_TRUE(session.modified());
-    EXPECT_TRUE(session.path().empty());
-    EXPECT_EQ(session.undoName(), "Target m = 5");
+    EXPECT_TRUE(session.history().modified());
+    EXPECT_TRUE(session.files().path().empty());
+    EXPECT_EQ(session.history().undoName(), "Target m = 5");
     ASSERT_FALSE(session.messages().empty());
     EXPECT_EQ(session.messages().back().kind, StatusMessage::Kind::Error);
     EXPECT_NE(session.messages().back().text.find("p.vlproj"), std::string::npos)
         << session.messages().back().text;
     // Without a file name there is nothing to save to: refused at once.
-    EXPECT_THROW(session.startSaveProject(), InputError);
+    EXPECT_THROW(session.files().startSaveProject(), InputError);
 }
 
 TEST(EditorSession, ExportsOnAWorkerThreadWithAFreshReduction) {
     const auto dir = tempDir("background-export");
     EditorSession session;
     loadUnreducedSet(session, 5);
-    ASSERT_EQ(session.reductionCurve(), nullptr); // the export runs the reduction itself
-    session.startExport(ExportFormat::Glb, dir / "face.glb");
-    session.setTarget(9); // after the request: the export keeps m = 5
+    ASSERT_EQ(session.reduction().curve(), nullptr); // the export runs the reduction itself
+    session.files().startExport(ExportFormat::Glb, dir / "face.glb");
+    session.reduction().setTarget(9); // after the request: the export keeps m = 5
     session.finishBackgroundWork();
-    EXPECT_FALSE(session.exporting());
+    EXPECT_FALSE(session.files().exporting());
     ASSERT_EQ(session.messages().back().kind, StatusMessage::Kind::Info) << session.messages().back().text;
     EditorSession check;
-    check.importGltf(dir / "face.glb");
+    check.files().importGltf(dir / "face.glb");
     EXPECT_EQ(check.visemeCount(), 5u);
     // A failing export is a message and changes nothing.
-    const std::uint64_t generation = session.inputsGeneration();
-    session.startExport(ExportFormat::Glb, dir / "face.glb" / "face.glb"); // a file is no folder
+    const std::uint64_t generation = session.documentInputs().reductionRevision();
+    session.files().startExport(ExportFormat::Glb, dir / "face.glb" / "face.glb"); // a file is no folder
     session.finishBackgroundWork();
     EXPECT_EQ(session.messages().back().kind, StatusMessage::Kind::Error);
-    EXPECT_EQ(session.inputsGeneration(), generation);
+    EXPECT_EQ(session.documentInputs().reductionRevision(), generation);
     EXPECT_EQ(session.document().target, 9);
 }
 
 TEST(EditorSession, LoadsTheSampleOnAWorkerThread) {
     EditorSession session;
     loadUnreducedSet(session, 3);
-    session.startLoadSample();
+    session.files().startLoadSample();
     EXPECT_EQ(session.document().target, 3); // the open document stays until it is loaded
     session.finishBackgroundWork();
     ASSERT_NE(session.visemes(), nullptr);
     EXPECT_EQ(session.visemeCount(), 15u);
-    EXPECT_FALSE(session.modified());
-    EXPECT_FALSE(session.canUndo());
+    EXPECT_FALSE(session.history().modified());
+    EXPECT_FALSE(session.history().canUndo());
     EXPECT_NE(session.messages().back().text.find("sample"), std::string::npos);
 }
 
@@ -740,108 +746,109 @@ bool meshShowsParameters(const FaceModel& face, const std::vector<double>& q) {
 }
 
 void waitForRefinement(const EditorSession& session) {
-    while (session.refinementRunning()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    while (session.face().refinementRunning()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
 }
 
 TEST(EditorSession, AutomaticReAdaptationIsDerivedStateAndNeverAnUndoStep) {
     EditorSession session;
-    session.autoReduce = false;
-    session.autoRefine = true;
-    session.loadFace();
-    const std::vector<double> q0 = session.face().parameters;
+    session.reduction().setAutomatic(false);
+    session.face().setAutoRefine(true);
+    session.face().load();
+    const std::vector<double> q0 = session.document().face.parameters;
     session.finishBackgroundWork();
-    ASSERT_TRUE(session.lastRefinement().has_value());
-    EXPECT_TRUE(meshShowsParameters(session.face(), q0));
-    EXPECT_EQ(session.undoName(), "Load face");
+    ASSERT_TRUE(session.face().lastRefinement().has_value());
+    EXPECT_TRUE(meshShowsParameters(session.document().face, q0));
+    EXPECT_EQ(session.history().undoName(), "Load face");
 
-    const int jaw = session.face().cascade->findParameter("jaw_open");
+    const int jaw = session.document().face.cascade->findParameter("jaw_open");
     ASSERT_GE(jaw, 0);
-    session.setParameter(jaw, 1.0);
-    session.endEdit();
-    const std::vector<double> q1 = session.face().parameters;
+    session.face().setParameter(jaw, 1.0);
+    session.history().endEdit();
+    const std::vector<double> q1 = session.document().face.parameters;
     session.finishBackgroundWork();
-    EXPECT_TRUE(meshShowsParameters(session.face(), q1));
-    EXPECT_EQ(session.undoName(), "Set jaw_open"); // no step of its own
-    EXPECT_FALSE(session.canRedo());
+    EXPECT_TRUE(meshShowsParameters(session.document().face, q1));
+    EXPECT_EQ(session.history().undoName(), "Set jaw_open"); // no step of its own
+    EXPECT_FALSE(session.history().canRedo());
 
     // Undo while the re-adaptation for q1 still runs: its result must not land on the q0 step.
-    session.setParameter(jaw, 0.5);
-    session.endEdit();
-    const std::vector<double> qHalf = session.face().parameters;
+    session.face().setParameter(jaw, 0.5);
+    session.history().endEdit();
+    const std::vector<double> qHalf = session.document().face.parameters;
     session.poll(); // starts the re-adaptation for qHalf
-    ASSERT_TRUE(session.refinementRunning());
-    session.undo();
+    ASSERT_TRUE(session.face().refinementRunning());
+    session.history().undo();
     waitForRefinement(session);
     session.poll();
-    EXPECT_EQ(session.face().parameters, q1);
-    EXPECT_FALSE(meshShowsParameters(session.face(), qHalf));
+    EXPECT_EQ(session.document().face.parameters, q1);
+    EXPECT_FALSE(meshShowsParameters(session.document().face, qHalf));
     session.finishBackgroundWork();
-    EXPECT_TRUE(meshShowsParameters(session.face(), q1)); // re-adapted to the restored values
-    EXPECT_EQ(session.undoName(), "Set jaw_open");
-    EXPECT_EQ(session.redoName(), "Set jaw_open");
+    EXPECT_TRUE(meshShowsParameters(session.document().face, q1)); // re-adapted to the restored values
+    EXPECT_EQ(session.history().undoName(), "Set jaw_open");
+    EXPECT_EQ(session.history().redoName(), "Set jaw_open");
 
     // Undo of the slider change restores q0 and the mesh follows; redo brings q1 back.
-    session.undo();
-    EXPECT_EQ(session.face().parameters, q0);
-    EXPECT_TRUE(meshShowsParameters(session.face(), q0)); // the step kept its own mesh
+    session.history().undo();
+    EXPECT_EQ(session.document().face.parameters, q0);
+    EXPECT_TRUE(meshShowsParameters(session.document().face, q0)); // the step kept its own mesh
     session.finishBackgroundWork();
-    EXPECT_TRUE(meshShowsParameters(session.face(), q0));
-    EXPECT_EQ(session.undoName(), "Load face");
-    session.redo();
-    EXPECT_EQ(session.face().parameters, q1);
-    EXPECT_TRUE(meshShowsParameters(session.face(), q1));
+    EXPECT_TRUE(meshShowsParameters(session.document().face, q0));
+    EXPECT_EQ(session.history().undoName(), "Load face");
+    session.history().redo();
+    EXPECT_EQ(session.document().face.parameters, q1);
+    EXPECT_TRUE(meshShowsParameters(session.document().face, q1));
     session.finishBackgroundWork();
-    EXPECT_TRUE(meshShowsParameters(session.face(), q1));
-    session.redo();
-    EXPECT_EQ(session.face().parameters, qHalf);
+    EXPECT_TRUE(meshShowsParameters(session.document().face, q1));
+    session.history().redo();
+    EXPECT_EQ(session.document().face.parameters, qHalf);
     session.finishBackgroundWork();
-    EXPECT_TRUE(meshShowsParameters(session.face(), qHalf));
-    EXPECT_FALSE(session.canRedo());
+    EXPECT_TRUE(meshShowsParameters(session.document().face, qHalf));
+    EXPECT_FALSE(session.history().canRedo());
     // Three steps in all: load, two slider changes.
     for (const char* name : {"Set jaw_open", "Set jaw_open", "Load face"}) {
-        EXPECT_EQ(session.undoName(), name);
-        session.undo();
+        EXPECT_EQ(session.history().undoName(), name);
+        session.history().undo();
     }
-    EXPECT_FALSE(session.canUndo());
+    EXPECT_FALSE(session.history().canUndo());
 }
 
 TEST(EditorSession, AutomaticReAdaptationLooksOnlyWhereTheSliderChangedTheFace) {
     EditorSession session;
-    session.autoReduce = false;
-    session.autoRefine = true;
+    session.reduction().setAutomatic(false);
+    session.face().setAutoRefine(true);
     CriterionSettings contour;
     contour.kind = CriterionKind::Contour;
     contour.maxDepth = 7;
-    session.loadFace();
-    session.setRefinementSettings(contour);
+    session.face().load();
+    session.face().setRefinementSettings(contour);
     session.finishBackgroundWork();
-    ASSERT_TRUE(session.lastRefinement().has_value());
-    const std::size_t triangles = session.lastRefinement()->triangles;
+    ASSERT_TRUE(session.face().lastRefinement().has_value());
+    const std::size_t triangles = session.face().lastRefinement()->triangles;
 
     // One brow: re-adapted where its field reaches, far fewer tests than faces.
-    session.setParameter(session.face().cascade->findParameter("frontalis_l"), 1.0);
-    session.endEdit();
+    session.face().setParameter(session.document().face.cascade->findParameter("frontalis_l"), 1.0);
+    session.history().endEdit();
     session.finishBackgroundWork();
-    ASSERT_TRUE(session.lastRefinement().has_value());
-    EXPECT_EQ(session.lastRefinement()->action, "re-adapted");
-    EXPECT_LT(session.lastRefinement()->stats.tests, triangles / 2);
-    EXPECT_TRUE(meshShowsParameters(session.face(), session.face().parameters));
+    ASSERT_TRUE(session.face().lastRefinement().has_value());
+    EXPECT_EQ(session.face().lastRefinement()->action, "re-adapted");
+    EXPECT_LT(session.face().lastRefinement()->stats.tests, triangles / 2);
+    EXPECT_TRUE(meshShowsParameters(session.document().face, session.document().face.parameters));
 
     // Every muscle at once reaches most of the face: refined again from the base mesh.
     std::vector<double> all;
-    for (const auto& p : session.face().cascade->parameters) all.push_back(p.max);
-    session.setParameters(all, "All");
+    for (const auto& p : session.document().face.cascade->parameters) all.push_back(p.max);
+    session.face().setParameters(all, "All");
     session.finishBackgroundWork();
-    EXPECT_TRUE(session.lastRefinement()->stats.rebuilt);
-    EXPECT_TRUE(meshShowsParameters(session.face(), all));
+    EXPECT_TRUE(session.face().lastRefinement()->stats.rebuilt);
+    EXPECT_TRUE(meshShowsParameters(session.document().face, all));
 
     // New thresholds: all of the mesh is re-adapted (no change box applies to them).
     contour.contour.averageError *= 2;
-    session.setRefinementSettings(contour);
+    session.face().setRefinementSettings(contour);
     session.finishBackgroundWork();
-    EXPECT_EQ(session.lastRefinement()->action, "re-adapted");
-    EXPECT_GE(session.lastRefinement()->stats.tests, session.lastRefinement()->trianglesBefore / 2);
-    EXPECT_TRUE(meshShowsParameters(session.face(), all));
+    EXPECT_EQ(session.face().lastRefinement()->action, "re-adapted");
+    EXPECT_GE(session.face().lastRefinement()->stats.tests,
+              session.face().lastRefinement()->trianglesBefore / 2);
+    EXPECT_TRUE(meshShowsParameters(session.document().face, all));
 }
 
 } // namespace
@@ -855,53 +862,57 @@ namespace {
 TEST(EditorSession, EveryCommandUndoesAndRedoesToTheExactDocument) {
     const auto dir = tempDir("undo-every-command");
     EditorSession session;
-    session.autoReduce = false;
-    session.loadFace(face::Individual::Bundled, 12);
-    session.generateVisemesFromFace();
-    session.useDirectFrequencies(); // "viseme frequency" below edits them
+    session.reduction().setAutomatic(false);
+    session.face().load(face::Individual::Bundled, 12);
+    session.face().generateVisemes();
+    session.frequencies().useDirectFrequencies(); // "viseme frequency" below edits them
     writeMesh(dir / "extra.obj", session.visemes()->meshOf(3));
     const std::vector<std::pair<std::string, std::function<void()>>> commands = {
-        {"target", [&] { session.setTarget(4); }},
-        {"viseme frequency", [&] { session.setVisemeFrequency(2, 4.5); }},
-        {"weight mode", [&] { session.setWeightMode(WeightMode::Area); }},
+        {"target", [&] { session.reduction().setTarget(4); }},
+        {"viseme frequency", [&] { session.frequencies().setVisemeFrequency(2, 4.5); }},
+        {"weight mode", [&] { session.weights().setMode(WeightMode::Area); }},
         {"painted weights",
          [&] {
-             session.setPaintedWeights(std::vector<double>(session.visemes()->vertexCount(), 0.4), "Paint");
+             session.weights().setPainted(std::vector<double>(session.visemes()->vertexCount(), 0.4),
+                                          "Paint");
          }},
-        {"parameter", [&] { session.setParameter(0, 0.3); }},
-        {"parameters", [&] { session.setParameters(session.face().cascade->defaults(), "Reset"); }},
-        {"preset", [&] { session.applyVisemePreset("oh"); }},
+        {"parameter", [&] { session.face().setParameter(0, 0.3); }},
+        {"parameters",
+         [&] { session.face().setParameters(session.document().face.cascade->defaults(), "Reset"); }},
+        {"preset", [&] { session.face().applyVisemePreset("oh"); }},
         {"field",
          [&] {
-             InfluenceField field = session.face().cascade->stages[1].field.influences.at(0);
+             InfluenceField field = session.document().face.cascade->stages[1].field.influences.at(0);
              field.magnitude *= 1.5;
-             session.setInfluence(1, 0, field);
+             session.face().setInfluence(1, 0, field);
          }},
-        {"retarget", [&] { session.setIndividual(face::Individual::Retarget); }},
+        {"retarget", [&] { session.face().setIndividual(face::Individual::Retarget); }},
         {"refinement settings",
          [&] {
              CriterionSettings settings = session.document().refinement;
              settings.kind = CriterionKind::Normals;
-             session.setRefinementSettings(settings);
+             session.face().setRefinementSettings(settings);
          }},
-        {"import viseme", [&] { session.importViseme("extra", dir / "extra.obj"); }},
-        {"remove viseme", [&] { session.removeViseme(static_cast<int>(session.visemeCount()) - 1); }},
-        {"bundled phoneme map", [&] { session.useBundledPhonemeMap("oculus"); }},
-        {"phoneme frequency", [&] { session.setPhonemeFrequency(0, 2.0); }},
-        {"phoneme map", [&] { session.setPhonemeViseme(0, session.visemes()->visemes[1].name); }},
-        {"generate visemes", [&] { session.generateVisemesFromFace(); }},
-        {"load face", [&] { session.loadFace(face::Individual::Bundled, 10); }},
+        {"import viseme", [&] { session.authoring().importViseme("extra", dir / "extra.obj"); }},
+        {"remove viseme",
+         [&] { session.authoring().removeViseme(static_cast<int>(session.visemeCount()) - 1); }},
+        {"bundled phoneme map", [&] { session.frequencies().useBundledPhonemeMap("oculus"); }},
+        {"phoneme frequency", [&] { session.frequencies().setPhonemeFrequency(0, 2.0); }},
+        {"phoneme map",
+         [&] { session.frequencies().setPhonemeViseme(0, session.visemes()->visemes[1].name); }},
+        {"generate visemes", [&] { session.face().generateVisemes(); }},
+        {"load face", [&] { session.face().load(face::Individual::Bundled, 10); }},
     };
     for (const auto& [what, command] : commands) {
         SCOPED_TRACE(what);
         const Document before = session.document();
         command();
-        session.endEdit();
+        session.history().endEdit();
         const Document after = session.document();
         ASSERT_NE(after, before) << "the command changed nothing";
-        session.undo();
+        session.history().undo();
         EXPECT_EQ(session.document(), before);
-        session.redo();
+        session.history().redo();
         EXPECT_EQ(session.document(), after);
     }
 }
@@ -911,26 +922,26 @@ TEST(EditorSession, ExportIsWhatTheDocumentShowsNotWhatTheDiskHolds) {
     const auto dir = tempDir("export-from-memory");
     {
         EditorSession maker;
-        maker.autoReduce = false;
-        maker.loadFace(face::Individual::Bundled, 12);
-        maker.generateVisemesFromFace();
+        maker.reduction().setAutomatic(false);
+        maker.face().load(face::Individual::Bundled, 12);
+        maker.face().generateVisemes();
         writeMesh(dir / "neutral.obj", maker.visemes()->neutral);
         for (std::size_t i = 0; i < 4; ++i)
             writeMesh(dir / (maker.visemes()->visemes[i].name + ".obj"), maker.visemes()->meshOf(i));
     }
     EditorSession session;
-    session.autoReduce = false;
-    session.loadVisemeFolder(dir);
-    session.setRest(RestChoice::Key, "");                       // sil is a key too
-    session.setTarget(static_cast<int>(session.visemeCount())); // nothing merged: keys = visemes
+    session.reduction().setAutomatic(false);
+    session.files().loadVisemeFolder(dir);
+    session.reduction().setRest(RestChoice::Key, "");                       // sil is a key too
+    session.reduction().setTarget(static_cast<int>(session.visemeCount())); // nothing merged: keys = visemes
     const VisemeSet shown = *session.visemes();
     // Another program rewrites one viseme file.
     MeshData changed = readMesh(dir / (shown.visemes[1].name + ".obj"));
     for (Vec3& p : changed.positions) p += Vec3(0.0, 1.0, 0.0);
     writeMesh(dir / (shown.visemes[1].name + ".obj"), changed);
-    session.exportProject(ExportFormat::Glb, dir / "out.glb");
+    session.files().exportProject(ExportFormat::Glb, dir / "out.glb");
     EditorSession check;
-    check.importGltf(dir / "out.glb");
+    check.files().importGltf(dir / "out.glb");
     ASSERT_EQ(check.visemeCount(), shown.size());
     for (std::size_t i = 0; i < shown.size(); ++i) {
         const int k = check.visemes()->find(shown.visemes[i].name);
@@ -948,16 +959,16 @@ TEST(EditorSession, SavingKeepsTheUndoHistory) {
     const auto dir = tempDir("save-keeps-undo");
     EditorSession session;
     loadUnreducedSet(session, 5);
-    session.endEdit(); // a new undo step, not a continued slider drag
-    session.setTarget(6);
-    session.saveProject(dir / "p.vlproj");
-    EXPECT_FALSE(session.modified());
-    ASSERT_TRUE(session.canUndo());
-    session.undo();
+    session.history().endEdit(); // a new undo step, not a continued slider drag
+    session.reduction().setTarget(6);
+    session.files().saveProject(dir / "p.vlproj");
+    EXPECT_FALSE(session.history().modified());
+    ASSERT_TRUE(session.history().canUndo());
+    session.history().undo();
     EXPECT_EQ(session.document().target, 5);
-    EXPECT_TRUE(session.modified());
-    session.redo();
-    EXPECT_FALSE(session.modified());
+    EXPECT_TRUE(session.history().modified());
+    session.history().redo();
+    EXPECT_FALSE(session.history().modified());
 }
 
 } // namespace

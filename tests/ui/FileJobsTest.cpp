@@ -39,7 +39,7 @@ TEST(FileJobs, OneJobOfAKindAtATimeAndPollReportsWhatFinished) {
     EXPECT_EQ(finished.loaded->message, "opened a");
     ASSERT_TRUE(finished.saved);
     EXPECT_EQ(*finished.saved, std::filesystem::path("p.vlproj"));
-    EXPECT_EQ(finished.savedId, 42u);
+    EXPECT_EQ(finished.savedRevision, 42u);
     ASSERT_TRUE(finished.afterSave);
     finished.afterSave();
     EXPECT_TRUE(heldBack);

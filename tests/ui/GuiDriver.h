@@ -120,9 +120,9 @@ inline std::string fileBytes(const std::filesystem::path& file) {
     return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
-// The editor's document id from the probe summary: it changes with every edit, undo and redo.
-inline std::uint64_t documentId(const GuiDriver& gui) {
-    return gui.document()["document_id"].get<std::uint64_t>();
+// The editor's document revision from the probe summary: it changes with every edit, undo and redo.
+inline std::uint64_t documentRevision(const GuiDriver& gui) {
+    return gui.document()["document_revision"].get<std::uint64_t>();
 }
 
 } // namespace vl::test

@@ -35,7 +35,7 @@ TEST(JobCancelClicks, CancelStopsRefiningForAllVisemesWithinASecondAndTheFaceKee
     gui.click(gui.control("maximum error", "slider"), 0.02);
     gui.click(gui.control("average error", "slider"), 0.02);
     gui.waitIdle();
-    const auto revision = documentId(gui);
+    const auto revision = documentRevision(gui);
     const std::string undo = gui.document()["undo"];
     // The panel's Cancel, then the status bar's (job 1: the refinement).
     for (const char* cancel : {"Cancel##refinement", "Cancel##job1"}) {
@@ -48,7 +48,7 @@ TEST(JobCancelClicks, CancelStopsRefiningForAllVisemesWithinASecondAndTheFaceKee
         EXPECT_ALIVE(gui);
         EXPECT_TRUE(gui.document()["jobs"].empty()) << cancel;
         EXPECT_FALSE(gui.document()["busy"].get<bool>()) << cancel;
-        EXPECT_EQ(documentId(gui), revision) << cancel;
+        EXPECT_EQ(documentRevision(gui), revision) << cancel;
         EXPECT_EQ(gui.document()["undo"], undo) << cancel;
         EXPECT_NE(lastMessage(gui).find("Refinement cancelled"), std::string::npos) << lastMessage(gui);
     }

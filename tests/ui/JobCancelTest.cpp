@@ -1,6 +1,7 @@
 // Cancel on the editor's background jobs (issue 32): a cancelled job leaves the document as it was,
 // the UI is idle at once, and the worker ends within a second.
 #include "ui/session/BackgroundTask.h"
+#include "ui/session/BundledAssets.h"
 #include "ui/session/EditorSession.h"
 
 #include <gtest/gtest.h>
@@ -22,11 +23,11 @@ double secondsSince(Clock::time_point start) {
 }
 
 // Waits (30 s at most) until `job` has reported some progress; false when it ended first.
-bool waitForProgress(EditorSession& session, EditorSession::Job job) {
+bool waitForProgress(EditorSession& session, SessionJobs::Job job) {
     const auto deadline = Clock::now() + std::chrono::seconds(30);
     while (Clock::now() < deadline) {
         bool running = false;
-        for (const auto& status : session.runningJobs()) {
+        for (const auto& status : session.jobs().running()) {
             if (status.job != job) continue;
             running = true;
             if (status.fraction && *status.fraction > 0) return true;
@@ -75,32 +76,32 @@ TEST(BackgroundTask, TheTimeLeftFollowsTheProgress) {
 
 TEST(JobCancel, RefiningForAllVisemesStopsWithinASecondAndTheFaceKeepsItsMesh) {
     EditorSession session;
-    session.loadFace();
+    session.face().load();
     // The finest contour thresholds: refining for all 15 visemes then takes seconds, not milliseconds.
     CriterionSettings fine = session.document().refinement;
     fine.kind = CriterionKind::Contour;
     fine.maxDepth = 12;
     fine.contour.averageError *= 0.05;
     fine.contour.maximumError *= 0.05;
-    session.setRefinementSettings(fine);
-    const auto domain = session.face().domain;
-    const auto revision = session.documentId();
-    const std::string undo = session.undoName();
-    session.startRefinement(RefineAction::AllVisemes);
-    ASSERT_TRUE(waitForProgress(session, EditorSession::Job::Refinement));
-    session.cancelJob(EditorSession::Job::Refinement);
-    EXPECT_TRUE(session.runningJobs().empty());
+    session.face().setRefinementSettings(fine);
+    const auto domain = session.document().face.domain;
+    const auto revision = session.history().revision();
+    const std::string undo = session.history().undoName();
+    session.face().startRefinement(RefineAction::AllVisemes);
+    ASSERT_TRUE(waitForProgress(session, SessionJobs::Job::Refinement));
+    session.jobs().cancel(SessionJobs::Job::Refinement);
+    EXPECT_TRUE(session.jobs().running().empty());
     const auto cancelled = Clock::now();
     session.finishBackgroundWork(); // joins the worker
     EXPECT_LT(secondsSince(cancelled), 1.0);
-    EXPECT_EQ(session.face().domain, domain);
-    EXPECT_FALSE(session.lastRefinement().has_value());
-    EXPECT_EQ(session.documentId(), revision);
-    EXPECT_EQ(session.undoName(), undo); // no step was added
+    EXPECT_EQ(session.document().face.domain, domain);
+    EXPECT_FALSE(session.face().lastRefinement().has_value());
+    EXPECT_EQ(session.history().revision(), revision);
+    EXPECT_EQ(session.history().undoName(), undo); // no step was added
     // And it runs again afterwards.
-    session.startRefinement(RefineAction::Refine);
+    session.face().startRefinement(RefineAction::Refine);
     session.finishBackgroundWork();
-    EXPECT_TRUE(session.lastRefinement().has_value());
+    EXPECT_TRUE(session.face().lastRefinement().has_value());
 }
 
 TEST(JobCancel, TranscribingACorpusStopsWithinASecondAndTheFrequenciesStay) {
@@ -113,32 +114,31 @@ TEST(JobCancel, TranscribingACorpusStopsWithinASecondAndTheFrequenciesStay) {
                       "nation.\n";
     }
     EditorSession session;
-    session.openProject(std::filesystem::path(EditorSession::assetsDirectory()) / "sample" / "sample.vlproj");
+    session.files().openProject(std::filesystem::path(assetsDirectory()) / "sample" / "sample.vlproj");
     const FrequencySource before = session.document().frequencies;
-    const std::string undo = session.undoName();
-    session.startPhonemeCount(dir / "corpus.txt");
-    ASSERT_TRUE(waitForProgress(session, EditorSession::Job::PhonemeCount));
-    session.cancelJob(EditorSession::Job::PhonemeCount);
-    EXPECT_TRUE(session.runningJobs().empty());
+    const std::string undo = session.history().undoName();
+    session.frequencies().startPhonemeCount(dir / "corpus.txt");
+    ASSERT_TRUE(waitForProgress(session, SessionJobs::Job::PhonemeCount));
+    session.jobs().cancel(SessionJobs::Job::PhonemeCount);
+    EXPECT_TRUE(session.jobs().running().empty());
     const auto cancelled = Clock::now();
     session.finishBackgroundWork();
     EXPECT_LT(secondsSince(cancelled), 1.0);
     EXPECT_EQ(session.document().frequencies, before);
-    EXPECT_EQ(session.undoName(), undo);
+    EXPECT_EQ(session.history().undoName(), undo);
     std::filesystem::remove_all(dir);
 }
 
 TEST(JobCancel, ACancelledOpenLeavesTheDocumentAsItWas) {
     EditorSession session;
-    const auto revision = session.documentId();
-    session.startOpenProject(std::filesystem::path(EditorSession::assetsDirectory()) / "sample" /
-                             "sample.vlproj");
-    ASSERT_FALSE(session.runningJobs().empty());
-    session.cancelJob(EditorSession::Job::Loading);
-    EXPECT_TRUE(session.runningJobs().empty());
+    const auto revision = session.history().revision();
+    session.files().startOpenProject(std::filesystem::path(assetsDirectory()) / "sample" / "sample.vlproj");
+    ASSERT_FALSE(session.jobs().running().empty());
+    session.jobs().cancel(SessionJobs::Job::Loading);
+    EXPECT_TRUE(session.jobs().running().empty());
     session.finishBackgroundWork();
-    EXPECT_EQ(session.documentId(), revision);
-    EXPECT_TRUE(session.path().empty());
+    EXPECT_EQ(session.history().revision(), revision);
+    EXPECT_TRUE(session.files().path().empty());
     EXPECT_EQ(session.visemes(), nullptr);
 }
 
@@ -177,30 +177,30 @@ std::filesystem::path randomVisemeFolder(const std::string& name, int count) {
 TEST(JobCancel, AReductionStopsWithinASecondAndTheDocumentStays) {
     const auto dir = randomVisemeFolder("cancel-reduction", 30);
     EditorSession session;
-    session.loadVisemeFolder(dir);
-    session.cancelJob(EditorSession::Job::Reduction); // an automatic run of the loaded set, if any
-    session.setTarget(22);                            // past any curve a first run computed
-    const auto revision = session.documentId();
-    const std::string undo = session.undoName();
-    session.startReduction();
+    session.files().loadVisemeFolder(dir);
+    session.jobs().cancel(SessionJobs::Job::Reduction); // an automatic run of the loaded set, if any
+    session.reduction().setTarget(22);                  // past any curve a first run computed
+    const auto revision = session.history().revision();
+    const std::string undo = session.history().undoName();
+    session.reduction().start();
     // The search reports its bound, not a fraction done: let it run a while, then Cancel.
     std::this_thread::sleep_for(std::chrono::milliseconds(300));
     const auto reducing = [&session] {
-        for (const auto& status : session.runningJobs())
-            if (status.job == EditorSession::Job::Reduction) return true;
+        for (const auto& status : session.jobs().running())
+            if (status.job == SessionJobs::Job::Reduction) return true;
         return false;
     };
     ASSERT_TRUE(reducing()) << "the reduction ended before it could be cancelled";
     const auto start = Clock::now();
-    session.cancelJob(EditorSession::Job::Reduction);
+    session.jobs().cancel(SessionJobs::Job::Reduction);
     EXPECT_LT(secondsSince(start), 0.2) << "Cancel returns at once";
     while (reducing() && secondsSince(start) < 5) {
         session.poll();
         std::this_thread::sleep_for(std::chrono::milliseconds(2));
     }
     EXPECT_LT(secondsSince(start), 1.0) << "the search did not stop within a second";
-    EXPECT_EQ(session.documentId(), revision);
-    EXPECT_EQ(session.undoName(), undo);
+    EXPECT_EQ(session.history().revision(), revision);
+    EXPECT_EQ(session.history().undoName(), undo);
     std::filesystem::remove_all(dir);
 }
 

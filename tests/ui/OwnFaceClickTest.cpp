@@ -34,7 +34,7 @@ TEST(OwnFaceClicks, UseMyMeshConfirmsLandmarksThenBuildsTheFace) {
     gui.waitIdle();
     const std::string bundledName = gui.document()["face_name"];
     ASSERT_FALSE(bundledName.empty()) << gui.document().dump();
-    const auto documentBefore = gui.document()["document_id"];
+    const auto documentBefore = gui.document()["document_revision"];
 
     // Cancel: the step goes away (an undo step of its own, as opening it was), the face is what it was.
     chooseFile(gui, kMediaPipe);
@@ -45,7 +45,7 @@ TEST(OwnFaceClicks, UseMyMeshConfirmsLandmarksThenBuildsTheFace) {
     EXPECT_TRUE(gui.document()["own_face_step"].is_null());
     EXPECT_EQ(gui.document()["undo"], "Cancel Use my mesh");
     EXPECT_EQ(gui.document()["face_name"], bundledName);
-    EXPECT_NE(gui.document()["document_id"], documentBefore);
+    EXPECT_NE(gui.document()["document_revision"], documentBefore);
 
     chooseFile(gui, kMediaPipe);
     auto step = gui.document()["own_face_step"];

@@ -76,10 +76,10 @@ TEST(PaintClicks, RadiusUnitsReadoutAndAStrokeThatStaysOnTheFrontFaces) {
     const double low = paintEverythingLow(gui);
     gui.click(gui.control("brush", "radio"));
     ASSERT_TRUE(gui.document()["brush"].get<bool>());
-    const auto before = documentId(gui);
+    const auto before = documentRevision(gui);
     gui.drag(c.x - 40, c.y, c.x + 40, c.y + 10, 10);
     EXPECT_ALIVE(gui);
-    EXPECT_NE(documentId(gui), before);
+    EXPECT_NE(documentRevision(gui), before);
     EXPECT_EQ(gui.document()["undo"], "Paint stroke") << gui.document().dump();
     EXPECT_GT(paint(gui)["front_mean"].get<double>(), low + 0.01);
     EXPECT_NEAR(paint(gui)["back_mean"].get<double>(), low, 1e-6) << "paint went through to the back";
@@ -116,10 +116,10 @@ TEST(PaintClicks, RegionFillAndBoxSelectionFill) {
     // Fill selection sets them (one undo step) and nothing else.
     gui.click(gui.control("select box", "radio"));
     EXPECT_EQ(paint(gui)["tool"], "select");
-    const auto before = documentId(gui);
+    const auto before = documentRevision(gui);
     gui.drag(c.x - 50, c.y - 50, c.x + 50, c.y + 50, 8);
     gui.waitFrames();
-    EXPECT_EQ(documentId(gui), before) << "selecting is not an edit";
+    EXPECT_EQ(documentRevision(gui), before) << "selecting is not an edit";
     const int selected = paint(gui)["selected"].get<int>();
     EXPECT_GT(selected, 0);
     EXPECT_LT(selected, paint(gui)["vertices"].get<int>());

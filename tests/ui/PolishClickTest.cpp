@@ -101,11 +101,11 @@ TEST(PolishClicks, RefineStatesRefinedAndCoarsenedCounts) {
     REQUIRE_GUI_TOOLS();
     GuiDriver gui({"--sample", "--panel", "Refinement"});
     gui.waitIdle();
-    const auto before = documentId(gui);
+    const auto before = documentRevision(gui);
     gui.click(gui.control("Refine", "button"));
     gui.waitIdle();
     EXPECT_ALIVE(gui);
-    EXPECT_NE(documentId(gui), before);
+    EXPECT_NE(documentRevision(gui), before);
     const auto refine = gui.document()["refine"];
     ASSERT_FALSE(refine.is_null()) << gui.document().dump();
     EXPECT_GT(refine["added"].get<int>(), 0);
@@ -137,12 +137,12 @@ TEST(PolishClicks, UvInsetMovesByItsBarAndEditsInItsSquare) {
     const double bx = bar["x"].get<double>() + 0.5 * bar["width"].get<double>();
     const double by = bar["y"].get<double>() + 0.5 * bar["height"].get<double>();
     const auto view = gui.control("main", "view");
-    const auto before = documentId(gui);
+    const auto before = documentRevision(gui);
     gui.drag(bx, by, bx - 300, by - 250, 10);
     const auto moved = gui.control("##uv-title", "button");
     EXPECT_NEAR(moved["x"].get<double>(), bar["x"].get<double>() - 300, 2.0);
     EXPECT_NEAR(moved["y"].get<double>(), bar["y"].get<double>() - 250, 2.0);
-    EXPECT_EQ(documentId(gui), before) << "moving the inset is not an edit";
+    EXPECT_EQ(documentRevision(gui), before) << "moving the inset is not an edit";
     // Far past the top-left corner: it stops at the view's edge.
     gui.drag(moved["x"].get<double>() + 20, moved["y"].get<double>() + 5, view["x"].get<double>() + 2,
              view["y"].get<double>() + 2, 10);
@@ -154,7 +154,7 @@ TEST(PolishClicks, UvInsetMovesByItsBarAndEditsInItsSquare) {
     const double sx = square["x"].get<double>(), sy = square["y"].get<double>();
     const double side = square["width"].get<double>();
     gui.drag(sx + 0.5 * side, sy + 0.5 * side, sx + 0.3 * side, sy + 0.6 * side, 6);
-    EXPECT_NE(documentId(gui), before);
+    EXPECT_NE(documentRevision(gui), before);
     EXPECT_NE(gui.document()["undo"].get<std::string>().find("field"), std::string::npos)
         << gui.document().dump();
     EXPECT_ALIVE(gui);

@@ -22,33 +22,33 @@ std::filesystem::path freshDir(const char* name) {
 TEST(GltfImport, KeepsTheFrequenciesAndIsUnsavedUntilSaved) {
     const auto dir = freshDir("import");
     EditorSession session;
-    session.loadSample();
+    session.files().loadSample();
     ASSERT_TRUE(session.document().frequencies.isPhonemeBased()) << "the sample counts phonemes";
     // Every viseme its own key: the keyed model, since with the sample's free rest sil is no key.
-    session.setRest(RestChoice::Key, "");
-    session.setTarget(static_cast<int>(session.visemeCount()));
+    session.reduction().setRest(RestChoice::Key, "");
+    session.reduction().setTarget(static_cast<int>(session.visemeCount()));
     session.finishBackgroundWork();
-    session.exportProject(ExportFormat::Glb, dir / "face.glb");
-    const std::vector<double> exported = session.visemeFrequencies();
+    session.files().exportProject(ExportFormat::Glb, dir / "face.glb");
+    const std::vector<double> exported = session.frequencies().values();
 
     EditorSession imported;
-    imported.importGltf(dir / "face.glb");
+    imported.files().importGltf(dir / "face.glb");
     ASSERT_EQ(imported.visemeCount(), session.visemeCount());
     EXPECT_TRUE(imported.document().frequencies.isPhonemeBased()) << "the phoneme table and map came back";
-    const std::vector<double> got = imported.visemeFrequencies();
+    const std::vector<double> got = imported.frequencies().values();
     ASSERT_EQ(got.size(), exported.size());
     for (std::size_t i = 0; i < got.size(); ++i) EXPECT_NEAR(got[i], exported[i], 1e-9) << i;
     // The geometry exists only in memory: unsaved, untitled, and a quit would ask first.
-    EXPECT_TRUE(imported.modified());
-    EXPECT_TRUE(imported.path().empty());
-    imported.saveProject(dir / "imported.vlproj");
-    EXPECT_FALSE(imported.modified());
+    EXPECT_TRUE(imported.history().modified());
+    EXPECT_TRUE(imported.files().path().empty());
+    imported.files().saveProject(dir / "imported.vlproj");
+    EXPECT_FALSE(imported.history().modified());
     // The saved project reopens with the same frequencies.
     EditorSession reopened;
-    reopened.openProject(dir / "imported.vlproj");
-    const std::vector<double> again = reopened.visemeFrequencies();
+    reopened.files().openProject(dir / "imported.vlproj");
+    const std::vector<double> again = reopened.frequencies().values();
     for (std::size_t i = 0; i < again.size(); ++i) EXPECT_NEAR(again[i], exported[i], 1e-9) << i;
-    EXPECT_FALSE(reopened.modified());
+    EXPECT_FALSE(reopened.history().modified());
 }
 
 TEST(StatusLine, MessagesExpireAfterTheirTimeFromWhenTheyFirstShow) {
@@ -117,27 +117,27 @@ namespace {
 // the selection, and says so by a new epoch; an edit does not.
 TEST(NewDocument, DropsTheClipAndTheSelectionOnEveryReplacement) {
     EditorSession session;
-    session.loadSample();
-    const auto loaded = session.documentEpoch();
-    session.playSequence("PP aa", 0.2);
-    ASSERT_TRUE(session.speechClip());
-    session.selectedViseme = 3;
-    session.setTarget(8);
-    EXPECT_EQ(session.documentEpoch(), loaded) << "an edit is the same document";
-    EXPECT_TRUE(session.speechClip());
-    session.loadSample();
-    EXPECT_GT(session.documentEpoch(), loaded);
-    EXPECT_FALSE(session.speechClip()) << "the old clip is not the new document's";
-    session.playSequence("", 0.2);
-    session.selectedViseme = 2;
-    session.loadFace();
-    const auto beforeBuild = session.documentEpoch();
-    session.generateVisemesFromFace();
-    EXPECT_GT(session.documentEpoch(), beforeBuild);
-    EXPECT_FALSE(session.speechClip());
-    EXPECT_EQ(session.selectedViseme, -1);
-    session.newProject();
-    EXPECT_FALSE(session.speechClip());
+    session.files().loadSample();
+    const auto loaded = session.history().documentEpoch();
+    session.speech().playSequence("PP aa", 0.2);
+    ASSERT_TRUE(session.speech().clip());
+    session.selectViseme(3);
+    session.reduction().setTarget(8);
+    EXPECT_EQ(session.history().documentEpoch(), loaded) << "an edit is the same document";
+    EXPECT_TRUE(session.speech().clip());
+    session.files().loadSample();
+    EXPECT_GT(session.history().documentEpoch(), loaded);
+    EXPECT_FALSE(session.speech().clip()) << "the old clip is not the new document's";
+    session.speech().playSequence("", 0.2);
+    session.selectViseme(2);
+    session.face().load();
+    const auto beforeBuild = session.history().documentEpoch();
+    session.face().generateVisemes();
+    EXPECT_GT(session.history().documentEpoch(), beforeBuild);
+    EXPECT_FALSE(session.speech().clip());
+    EXPECT_EQ(session.selectedViseme(), -1);
+    session.files().newProject();
+    EXPECT_FALSE(session.speech().clip());
 }
 
 // A message that starts with the action's name is not prefixed again ("Constraints: constraints:").

@@ -47,7 +47,7 @@ TEST(ViewMaterials, ObjFolderReadOnceThenDroppedWithAnotherDocument) {
     write(folder / "aa.obj", quadObj(0.2));
     write(folder / "oh.obj", quadObj(0.1));
     EditorSession session;
-    session.loadVisemeFolder(folder);
+    session.files().loadVisemeFolder(folder);
     ASSERT_NE(session.visemes(), nullptr);
     ViewMaterials shown;
     EXPECT_TRUE(refreshViewMaterials(shown, session.document(), session));
@@ -58,7 +58,7 @@ TEST(ViewMaterials, ObjFolderReadOnceThenDroppedWithAnotherDocument) {
     EXPECT_EQ(shown.summary(), "1 materials, 1 textures (0.0 MiB)");
     // The same source: nothing read again.
     EXPECT_FALSE(refreshViewMaterials(shown, session.document(), session));
-    session.loadSample();
+    session.files().loadSample();
     EXPECT_TRUE(refreshViewMaterials(shown, session.document(), session));
     EXPECT_FALSE(shown.any());
     std::filesystem::remove_all(folder);

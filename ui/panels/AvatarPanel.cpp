@@ -18,10 +18,10 @@ namespace vl::ui {
 
 void AvatarPanel::openImport() {
     files_.guarded([this] {
-        files_.dialog().open("Import avatar", FileDialog::Mode::OpenFile, {".glb", ".gltf", ".vrm"},
-                             [this](const auto& path) {
-                                 session_.attempt("Import avatar", [&] { session_.startImportAvatar(path); });
-                             });
+        files_.dialog().open(
+            "Import avatar", FileDialog::Mode::OpenFile, {".glb", ".gltf", ".vrm"}, [this](const auto& path) {
+                session_.attempt("Import avatar", [&] { session_.files().startImportAvatar(path); });
+            });
     });
 }
 
@@ -33,14 +33,14 @@ void AvatarPanel::openExport() {
     }
     std::string extension = avatar.file.extension().string();
     if (extension != ".vrm") extension = ".glb";
-    EditorSession::AvatarExport options;
+    SessionFiles::AvatarExport options;
     options.write.names = names_ == 1 ? AvatarNames::Merged : AvatarNames::Original;
     options.write.targetNormals = targetNormals_;
     options.gltfpack = gltfpackChosen();
     files_.dialog().open(
         "Export avatar", FileDialog::Mode::SaveFile, {".glb", ".vrm"},
         [this, options](const auto& path) {
-            session_.attempt("Export avatar", [&] { session_.startExportAvatar(path, options); });
+            session_.attempt("Export avatar", [&] { session_.files().startExportAvatar(path, options); });
         },
         avatar.file.stem().string() + "_reduced" + extension);
 }
@@ -66,7 +66,7 @@ void AvatarPanel::visemesSection() {
                                                 ImGuiInputTextFlags_EnterReturnsTrue);
     ImGui::SameLine();
     if (ctl::Button("Apply pattern") || entered)
-        session_.attempt("Viseme targets", [&] { session_.setAvatarPattern(pattern_); });
+        session_.attempt("Viseme targets", [&] { session_.authoring().setAvatarPattern(pattern_); });
     helpMarker("A glob over the morph target names, case-insensitive: * any text, ? one character, [AIUEO] "
                "one of, e.g. Fcl_MTH_[AIUEO] for VRoid, V_* for Character Creator. Empty: the Oculus visemes "
                "(viseme_sil ... viseme_U, with or without the prefix). Other targets (ARKit, expressions) "
@@ -139,7 +139,7 @@ void AvatarPanel::exportSection() {
     ImGui::SameLine();
     noteText("a .glb (or .vrm), never the file it was read from");
     // What the last export wrote, read back from the file: a runtime drives these targets.
-    if (const auto& lines = session_.lastAvatarExport(); !lines.empty()) {
+    if (const auto& lines = session_.files().lastAvatarExport(); !lines.empty()) {
         ImGui::TextUnformatted("Last export, which target carries which key:");
         for (const std::string& line : lines) {
             ImGui::Bullet();

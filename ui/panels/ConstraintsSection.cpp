@@ -103,7 +103,8 @@ void ConstraintsSection::draw() {
             break;
         }
     if (constraints.empty()) ImGui::TextDisabled("No constraints: the optimum over all groupings.");
-    if (changed) session_.attempt("Constraints", [&] { session_.setConstraints(std::move(constraints)); });
+    if (changed)
+        session_.attempt("Constraints", [&] { session_.reduction().setConstraints(std::move(constraints)); });
 }
 
 } // namespace vl::ui

@@ -32,12 +32,12 @@ bool dragVec2(const char* label, Vec2& v, float speed, float lo, float hi) {
 } // namespace
 
 void DeformationPanel::draw() {
-    const FaceModel& model = session_.face();
+    const FaceModel& model = session_.document().face;
     if (!model.cascade) {
         ImGui::TextWrapped(
             "The deformable face is a cascade of vector fields on the (u,v) square: a base geometry "
             "plus one field per muscle parameter.");
-        if (ctl::Button("Load bundled face")) session_.attempt("Load face", [&] { session_.loadFace(); });
+        if (ctl::Button("Load bundled face")) session_.attempt("Load face", [&] { session_.face().load(); });
         ImGui::SameLine();
         if (ctl::Button("Use my mesh...")) ownFace_.open();
         if (ownFace_.active()) ownFace_.draw();
@@ -59,15 +59,16 @@ void DeformationPanel::draw() {
     if (ownFaceLoaded_) {
         ImGui::TextWrapped("Your face: %s", cascade.name.c_str());
         if (ctl::Button("Back to the bundled face"))
-            session_.attempt("Load face", [&] { session_.loadFace(); });
+            session_.attempt("Load face", [&] { session_.face().load(); });
     } else {
         int individual = static_cast<int>(model.individual);
         bool retargeted = ctl::RadioButton("bundled", &individual, 0);
         ImGui::SameLine();
         retargeted |= ctl::RadioButton("retarget (2nd individual)", &individual, 1);
         if (retargeted)
-            session_.attempt("Retarget",
-                             [&] { session_.setIndividual(static_cast<face::Individual>(individual)); });
+            session_.attempt("Retarget", [&] {
+                session_.face().setIndividual(static_cast<face::Individual>(individual));
+            });
     }
     ImGui::SameLine();
     if (ctl::Button("Use my mesh...")) ownFace_.open();
@@ -145,8 +146,9 @@ void DeformationPanel::draw() {
             }
             ImGui::PopItemWidth();
             if (changed)
-                session_.attempt("Field",
-                                 [&] { session_.setInfluence(selected_.stage, selected_.influence, field); });
+                session_.attempt("Field", [&] {
+                    session_.face().setInfluence(selected_.stage, selected_.influence, field);
+                });
             ImGui::TextDisabled("The region is drawn on the face and in the (u,v) inset of the view.");
         }
     }
@@ -155,7 +157,7 @@ void DeformationPanel::draw() {
     ImGui::TextWrapped("Generate the face's viseme set (one mesh per viseme preset) to reduce it.");
     if (ctl::Button("Generate viseme set from face"))
         files_.guarded(
-            [this] { session_.attempt("Generate visemes", [&] { session_.generateVisemesFromFace(); }); });
+            [this] { session_.attempt("Generate visemes", [&] { session_.face().generateVisemes(); }); });
 }
 
 DeformationPanel::InsetPlace DeformationPanel::insetPlace(ImVec2 viewMin, ImVec2 viewMax) const {
@@ -199,7 +201,7 @@ void DeformationPanel::inset(const InsetPlace& place) {
 
 void DeformationPanel::uvView(float side) {
     const int stage = selected_.stage, influence = selected_.influence;
-    const FaceModel& model = session_.face();
+    const FaceModel& model = session_.document().face;
     const InfluenceField& field = model.cascade->stages[static_cast<std::size_t>(stage)]
                                       .field.influences[static_cast<std::size_t>(influence)];
     const ImVec2 origin = ImGui::GetCursorScreenPos();
@@ -245,13 +247,13 @@ void DeformationPanel::uvView(float side) {
         InfluenceField moved = field;
         moved.centre = Vec2(std::clamp((mouse.x - origin.x) / side, 0.0f, 1.0f),
                             std::clamp(1.0f - (mouse.y - origin.y) / side, 0.0f, 1.0f));
-        session_.attempt("Field", [&] { session_.setInfluence(stage, influence, moved); });
+        session_.attempt("Field", [&] { session_.face().setInfluence(stage, influence, moved); });
     }
-    if (ImGui::IsItemDeactivated()) session_.endEdit();
+    if (ImGui::IsItemDeactivated()) session_.history().endEdit();
 }
 
 bool DeformationPanel::selectField(const std::string& stageName) {
-    const auto& cascade = session_.face().cascade;
+    const auto& cascade = session_.document().face.cascade;
     if (!cascade) return false;
     for (std::size_t s = 0; s < cascade->stages.size(); ++s)
         if (cascade->stages[s].name == stageName && !cascade->stages[s].field.influences.empty()) {

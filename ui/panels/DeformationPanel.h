@@ -46,8 +46,6 @@ class DeformationPanel : public SidePanel {
     };
     InsetPlace insetPlace(ImVec2 viewMin, ImVec2 viewMax) const;
     void inset(const InsetPlace& place); // of the selected field
-    // The own-face step (Use my mesh...) is open: the view shows the user's mesh and its landmarks.
-    bool ownFaceStepOpen() const { return ownFace_.active(); }
     LandmarkHandles& landmarkHandles() { return handles_; }
 
   private:

@@ -11,9 +11,9 @@ namespace vl::ui {
 
 void ExportPanel::draw() {
     sectionHeader("Project");
-    const std::filesystem::path& file = session_.path();
+    const std::filesystem::path& file = session_.files().path();
     ImGui::TextWrapped("File: %s", file.empty() ? "(not saved yet)" : file.string().c_str());
-    if (session_.modified()) ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.4f, 1.0f), "Unsaved changes");
+    if (session_.history().modified()) ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.4f, 1.0f), "Unsaved changes");
     if (ctl::Button("Open project...")) files_.openProject();
     ImGui::SameLine();
     if (ctl::Button("Save")) files_.saveProject(false);
@@ -21,7 +21,7 @@ void ExportPanel::draw() {
     if (ctl::Button("Save as...")) files_.saveProject(true);
 
     sectionHeader("Runtime export (the reduced set)");
-    const Grouping* grouping = session_.currentGrouping();
+    const Grouping* grouping = session_.reduction().grouping();
     if (!session_.visemes()) {
         ImGui::TextDisabled("Load a viseme set first.");
         return;
@@ -51,7 +51,7 @@ void ExportPanel::draw() {
         if (ctl::Button(target.label, ImVec2(scaled(200), 0))) {
             const ExportFormat format = target.format;
             auto run = [this, format](const std::filesystem::path& out) {
-                session_.attempt("Export", [&] { session_.startExport(format, out); });
+                session_.attempt("Export", [&] { session_.files().startExport(format, out); });
             };
             if (target.folder)
                 files_.dialog().open(std::string("Export ") + target.label + ": choose a folder",

@@ -25,14 +25,14 @@ void FrequenciesPanel::draw() {
     if (ctl::Button("Load table..."))
         files_.dialog().open(
             "Load frequencies", FileDialog::Mode::OpenFile, {".csv", ".json"}, [this](const auto& path) {
-                session_.attempt("Load frequencies", [&] { session_.loadFrequencies(path); });
+                session_.attempt("Load frequencies", [&] { session_.frequencies().load(path); });
             });
     ImGui::SameLine();
     if (ctl::Button("Save as CSV..."))
         files_.dialog().open(
             "Save frequencies", FileDialog::Mode::SaveFile, {".csv"},
             [this](const auto& path) {
-                if (session_.attempt("Save frequencies", [&] { session_.saveFrequenciesCsv(path); }))
+                if (session_.attempt("Save frequencies", [&] { session_.frequencies().saveCsv(path); }))
                     session_.info("Saved " + path.string());
             },
             "frequencies.csv");
@@ -44,23 +44,24 @@ void FrequenciesPanel::draw() {
     // draw its controls a second time in this frame.
     const bool assigning = mapEditor_.assigning();
     mapEditor_.startSection();
-    const bool counting = session_.phonemeCountRunning();
+    const bool counting = session_.frequencies().countRunning();
     if (counting) ImGui::BeginDisabled();
     if (ctl::Button("Count phonemes in a text file..."))
         files_.dialog().open("Text corpus (espeak-ng, en-us)", FileDialog::Mode::OpenFile,
                              {".txt", ".md", ""}, [this](const auto& path) {
-                                 session_.attempt("Phoneme count", [&] { session_.startPhonemeCount(path); });
+                                 session_.attempt("Phoneme count",
+                                                  [&] { session_.frequencies().startPhonemeCount(path); });
                              });
     if (counting) {
         ImGui::EndDisabled();
-        for (const auto& job : session_.runningJobs())
-            if (job.job == EditorSession::Job::PhonemeCount &&
+        for (const auto& job : session_.jobs().running())
+            if (job.job == SessionJobs::Job::PhonemeCount &&
                 jobProgress(job.label, job.fraction, job.secondsLeft, "Cancel##transcription", -1))
-                session_.cancelJob(job.job);
+                session_.jobs().cancel(job.job);
     }
 
     std::vector<double> frequencies;
-    const bool ok = session_.attempt("Frequencies", [&] { frequencies = session_.visemeFrequencies(); });
+    const bool ok = session_.attempt("Frequencies", [&] { frequencies = session_.frequencies().values(); });
     sectionHeader("Viseme frequencies (normalised)");
     if (ok) {
         std::vector<std::string> names;
@@ -92,8 +93,9 @@ void FrequenciesPanel::draw() {
                 float f = value ? static_cast<float>(*value) : 0.0f;
                 ImGui::SetNextItemWidth(-1);
                 if (ctl::DragFloat("##f", &f, 0.01f, 0.0f, 1e9f, "%.3f"))
-                    session_.attempt("Frequency",
-                                     [&] { session_.setVisemeFrequency(static_cast<int>(i), f); });
+                    session_.attempt("Frequency", [&] {
+                        session_.frequencies().setVisemeFrequency(static_cast<int>(i), f);
+                    });
                 endEditOnRelease(session_);
                 ImGui::PopID();
             }

@@ -21,7 +21,7 @@ void OwnFaceStep::open() {
     files_.dialog().open("Use my mesh (with (u,v) on the face)", FileDialog::Mode::OpenFile,
                          {".obj", ".ply", ".wrl", ".vrml", ".glb", ".gltf"},
                          [this](const std::filesystem::path& path) {
-                             session_.attempt("Use my mesh", [&] { session_.openOwnFace(path); });
+                             session_.attempt("Use my mesh", [&] { session_.face().openOwnFace(path); });
                          });
 }
 
@@ -64,7 +64,8 @@ void OwnFaceStep::draw() {
             }
             endEditOnRelease(session_); // one undo step per drag
         }
-        if (moved) session_.attempt("Place landmark", [&] { session_.placeOwnFaceLandmark(landmark, uv); });
+        if (moved)
+            session_.attempt("Place landmark", [&] { session_.face().placeOwnFaceLandmark(landmark, uv); });
         ImGui::SameLine();
         if (!found.found())
             ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.35f, 1.0f), "%s",
@@ -78,9 +79,9 @@ void OwnFaceStep::draw() {
     const std::string missing = candidate.missingRequired();
     if (!missing.empty()) ImGui::TextWrapped("Still missing: %s", missing.c_str());
     if (ctl::Button("Build face from these landmarks"))
-        session_.attempt("Use my mesh", [&] { session_.buildOwnFace(); });
+        session_.attempt("Use my mesh", [&] { session_.face().buildOwnFace(); });
     ImGui::SameLine();
-    if (ctl::Button("Cancel##ownface")) session_.cancelOwnFace();
+    if (ctl::Button("Cancel##ownface")) session_.face().cancelOwnFace();
 }
 
 nlohmann::json OwnFaceStep::probe() const {

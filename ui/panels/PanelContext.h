@@ -22,7 +22,7 @@ class SidePanel {
     virtual ~SidePanel() = default;
     virtual void draw() = 0;
     virtual void addProbe(nlohmann::json& /*summary*/) const {}
-    // The document was replaced (EditorSession::documentEpoch): drop what showed the old one.
+    // The document was replaced (SessionCore::documentEpoch): drop what showed the old one.
     virtual void documentReplaced() {}
 };
 

@@ -9,7 +9,7 @@ namespace vl::ui {
 
 // Call after a slider/drag: releasing it ends the undo step the drag was merging into.
 inline void endEditOnRelease(EditorSession& session) {
-    if (ImGui::IsItemDeactivated()) session.endEdit();
+    if (ImGui::IsItemDeactivated()) session.history().endEdit();
 }
 
 inline void sectionHeader(const char* text) {

@@ -11,6 +11,7 @@
 #include "ui/FileActions.h"
 #include "ui/UiScale.h"
 #include "ui/panels/PanelWidgets.h"
+#include "ui/session/BundledAssets.h"
 #include "ui/widgets/Controls.h"
 
 #include <imgui.h>
@@ -61,9 +62,9 @@ void PhonemeMapEditor::restVisemeRow() {
                          [&] {
                              // An avatar's rest is its base mesh, carried by no target (AvatarRest.h).
                              if (session_.document().avatar.isSet())
-                                 session_.addAvatarRestViseme(restName_);
+                                 session_.authoring().addAvatarRestViseme(restName_);
                              else
-                                 session_.addRestViseme(restName_);
+                                 session_.authoring().addRestViseme(restName_);
                          }) &&
         mapStart_.open) {
         // A map being assigned: rows still unassigned take the new viseme when it fits their name.
@@ -77,7 +78,7 @@ void PhonemeMapEditor::restVisemeRow() {
 }
 
 void PhonemeMapEditor::openMapStart(std::string title, const PhonemeVisemeMap& map) {
-    mapStart_.table = session_.startingPhonemeTable();
+    mapStart_.table = session_.frequencies().startingPhonemeTable();
     mapStart_.map = map;
     mapStart_.rows = edit::suggestMapAssignment(session_.document(), mapStart_.table, map);
     mapStart_.title = std::move(title);
@@ -87,10 +88,11 @@ void PhonemeMapEditor::openMapStart(std::string title, const PhonemeVisemeMap& m
 void PhonemeMapEditor::startFrom(const std::string& id) {
     if (!session_.visemes()) throwInputError("phoneme map", "load a viseme set first");
     if (id == kPerPhoneme) {
-        openMapStart("one viseme per phoneme", edit::phonemePerVisemeMap(session_.startingPhonemeTable()));
+        openMapStart("one viseme per phoneme",
+                     edit::phonemePerVisemeMap(session_.frequencies().startingPhonemeTable()));
         return;
     }
-    for (const BundledPhonemeMap& map : bundledPhonemeMaps(EditorSession::assetsDirectory()))
+    for (const BundledPhonemeMap& map : bundledPhonemeMaps(assetsDirectory()))
         if (map.id == id) return openMapStart(map.title, loadPhonemeMapFile(map.file));
     throwInputError("phoneme map", "no bundled map '" + id + "' (or " + kPerPhoneme + ")");
 }
@@ -99,7 +101,7 @@ void PhonemeMapEditor::startSection() {
     sectionHeader("Phoneme map");
     ImGui::SetNextItemWidth(std::min(260.0f, ImGui::GetContentRegionAvail().x * 0.55f));
     if (ctl::BeginCombo("##map-start", "Start a map from...", ImGuiComboFlags_HeightLargest)) {
-        for (const BundledPhonemeMap& map : bundledPhonemeMaps(EditorSession::assetsDirectory()))
+        for (const BundledPhonemeMap& map : bundledPhonemeMaps(assetsDirectory()))
             if (ctl::Selectable(map.title.c_str()))
                 session_.attempt("Phoneme map", [&] { startFrom(map.id); });
         if (ctl::Selectable("One viseme per phoneme (ARPAbet)"))
@@ -122,13 +124,13 @@ void PhonemeMapEditor::startSection() {
         files_.dialog().open(
             "Save phoneme map", FileDialog::Mode::SaveFile, {".csv", ".json"},
             [this](const auto& path) {
-                if (session_.attempt("Save map", [&] { session_.savePhonemeMap(path); }))
+                if (session_.attempt("Save map", [&] { session_.frequencies().savePhonemeMap(path); }))
                     session_.info("Saved " + path.string());
             },
             "phoneme-map.csv");
     ImGui::SameLine();
     if (ctl::Button("Use direct frequencies"))
-        session_.attempt("Direct frequencies", [&] { session_.useDirectFrequencies(); });
+        session_.attempt("Direct frequencies", [&] { session_.frequencies().useDirectFrequencies(); });
     if (!phonemeBased) ImGui::EndDisabled();
 
     if (!mapStart_.open) return;
@@ -181,7 +183,8 @@ void PhonemeMapEditor::startSection() {
     if (unassigned > 0) ImGui::BeginDisabled();
     if (ctl::Button("Apply map"))
         if (session_.attempt("Phoneme map", [&] {
-                session_.startPhonemeMap(mapStart_.table, mapStart_.map, mapStart_.rows, mapStart_.title);
+                session_.frequencies().startPhonemeMap(mapStart_.table, mapStart_.map, mapStart_.rows,
+                                                       mapStart_.title);
             }))
             mapStart_.open = false;
     if (unassigned > 0) ImGui::EndDisabled();
@@ -231,7 +234,7 @@ void PhonemeMapEditor::editor() {
             const std::string frequencyLabel = "##freq-" + phoneme;
             if (ctl::DragFloat(frequencyLabel.c_str(), &f, 1.0f, 0.0f, 1e9f, "%.6g"))
                 session_.attempt("Phoneme frequency",
-                                 [&] { session_.setPhonemeFrequency(static_cast<int>(i), f); });
+                                 [&] { session_.frequencies().setPhonemeFrequency(static_cast<int>(i), f); });
             endEditOnRelease(session_);
             ImGui::TableNextColumn();
             ImGui::AlignTextToFramePadding();
@@ -243,8 +246,9 @@ void PhonemeMapEditor::editor() {
             const std::string mapLabel = "##map-" + phoneme;
             if (visemeNameCombo(mapLabel.c_str(), set, choice, "(unmapped)") &&
                 (!mapped || choice != *mapped))
-                session_.attempt("Phoneme map",
-                                 [&] { session_.setPhonemeViseme(static_cast<int>(i), choice); });
+                session_.attempt("Phoneme map", [&] {
+                    session_.frequencies().setPhonemeViseme(static_cast<int>(i), choice);
+                });
             ImGui::PopID();
         }
         ImGui::EndTable();
@@ -277,7 +281,7 @@ void PhonemeMapEditor::editor() {
                 ImGui::SetNextItemWidth(-1);
                 const std::string label = "##move-" + name;
                 if (visemeNameCombo(label.c_str(), set, to, "move to...") && to != name)
-                    session_.attempt("Move phonemes", [&] { session_.movePhonemes(name, to); });
+                    session_.attempt("Move phonemes", [&] { session_.frequencies().movePhonemes(name, to); });
             }
             ImGui::PopID();
         }

@@ -35,20 +35,22 @@ void ReductionPanel::draw() {
     sectionHeader("Target");
     ImGui::SetNextItemWidth(scaled(-90.0f));
     if (ctl::SliderInt("groups m", &m, 1, maxKeys))
-        session_.attempt("Target", [&] { session_.setTarget(m); });
+        session_.attempt("Target", [&] { session_.reduction().setTarget(m); });
     endEditOnRelease(session_);
-    ctl::Checkbox("Re-run automatically", &session_.autoReduce);
+    if (bool automatic = session_.reduction().automatic(); ctl::Checkbox("Re-run automatically", &automatic))
+        session_.reduction().setAutomatic(automatic);
     ImGui::SameLine();
-    if (ctl::Button("Run now")) session_.attempt("Reduction", [&] { session_.startReduction(); });
-    if (session_.reductionRunning()) {
-        ImGui::ProgressBar(static_cast<float>(session_.reductionProgress()), ImVec2(-80, 0), "reducing...");
+    if (ctl::Button("Run now")) session_.attempt("Reduction", [&] { session_.reduction().start(); });
+    if (session_.reduction().running()) {
+        ImGui::ProgressBar(static_cast<float>(session_.reduction().progress()), ImVec2(-80, 0),
+                           "reducing...");
         ImGui::SameLine();
-        if (ctl::Button("Cancel")) session_.stopReduction();
+        if (ctl::Button("Cancel")) session_.reduction().stop();
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("Stops the search. A large set keeps the best groupings found so far, "
                               "each with its proven gap.");
         // Branch and bound: how far the proven lower bound has come towards the best grouping found.
-        if (const auto bound = session_.reductionBound()) {
+        if (const auto bound = session_.reduction().bound()) {
             const double share = bound->bestFound > 0.0 ? bound->lowerBound / bound->bestFound : 1.0;
             char text[96];
             std::snprintf(text, sizeof text, "m = %d: bound %.0f %% of best found (gap %.1f %%)",
@@ -60,8 +62,8 @@ void ReductionPanel::draw() {
     restModelSection(session_);
     constraints_.draw();
 
-    const ReductionResult* curve = session_.reductionCurve();
-    const Grouping* grouping = session_.currentGrouping();
+    const ReductionResult* curve = session_.reduction().curve();
+    const Grouping* grouping = session_.reduction().grouping();
     if (!curve) {
         ImGui::TextDisabled(n > kMaxReductionVisemes ? "The reduction handles at most 64 visemes."
                                                      : "No result for the current inputs yet.");
@@ -81,7 +83,7 @@ void ReductionPanel::draw() {
                "shape of its group, averaged by frequency. 'auto' guesses the model's length unit from "
                "the size of the head (0.05 to 1 m across).");
     std::vector<double> weights;
-    session_.attempt("Weights", [&] { weights = session_.weights(); });
+    session_.attempt("Weights", [&] { weights = session_.weights().values(); });
     double weightSum = 0.0;
     for (const double w : weights) weightSum += w;
     const double millimetres = millimetresPerModelUnit();
@@ -98,8 +100,8 @@ void ReductionPanel::draw() {
     if (const int picked = costPlot("##cost", distances, options, ImVec2(0, scaled(170.0f)));
         picked > 0 && picked != m)
         session_.attempt("Target", [&] {
-            session_.setTarget(picked);
-            session_.endEdit();
+            session_.reduction().setTarget(picked);
+            session_.history().endEdit();
         });
     if (grouping && grouping->feasible()) {
         // What is proven about this grouping: optimal, or the best found with its gap to the bound.
@@ -134,7 +136,7 @@ void ReductionPanel::draw() {
     }
     sectionHeader("Groups");
     std::vector<double> frequencies;
-    session_.attempt("Frequencies", [&] { frequencies = session_.visemeFrequencies(); });
+    session_.attempt("Frequencies", [&] { frequencies = session_.frequencies().values(); });
     // A viseme no phoneme is spoken with weighs nothing: wherever it is merged costs 0, so its place
     // says nothing. Said here, where the groups are read.
     std::string unweighted;
@@ -174,7 +176,7 @@ void ReductionPanel::draw() {
                     ImGui::SameLine(0.0f, 6.0f);
                 first = false;
                 ImGui::PushID(member);
-                if (ctl::SmallButton(name.c_str())) session_.selectedViseme = member;
+                if (ctl::SmallButton(name.c_str())) session_.selectViseme(member);
                 ImGui::PopID();
                 if (static_cast<std::size_t>(member) < frequencies.size())
                     total += frequencies[static_cast<std::size_t>(member)];
@@ -194,7 +196,7 @@ void ReductionPanel::draw() {
                 if (k > 0) ImGui::SameLine(0.0f, 6.0f);
                 ImGui::PushID(1000 + member);
                 if (ctl::SmallButton(set->visemes[static_cast<std::size_t>(member)].name.c_str()))
-                    session_.selectedViseme = member;
+                    session_.selectViseme(member);
                 ImGui::PopID();
                 if (static_cast<std::size_t>(member) < frequencies.size())
                     total += frequencies[static_cast<std::size_t>(member)];
@@ -208,11 +210,11 @@ void ReductionPanel::draw() {
         ImGui::TextDisabled("Resting visemes have no key: the mouth stays at the neutral (all weights 0).");
 
     sectionHeader("Compare");
-    const int selected = std::max(session_.selectedViseme, 0);
+    const int selected = std::max(session_.selectedViseme(), 0);
     if (ctl::BeginCombo("viseme", set->visemes[static_cast<std::size_t>(selected)].name.c_str())) {
         for (int i = 0; i < n; ++i)
             if (ctl::Selectable(set->visemes[static_cast<std::size_t>(i)].name.c_str(), i == selected)) {
-                session_.selectedViseme = i;
+                session_.selectViseme(i);
                 speech_.hide(); // the views compare this viseme again
             }
         ImGui::EndCombo();
@@ -258,10 +260,10 @@ double ReductionPanel::millimetresPerModelUnit() const {
 }
 
 nlohmann::json ReductionPanel::reductionProbe() const {
-    nlohmann::json out = {{"running", session_.reductionRunning()}};
-    if (const auto bound = session_.reductionBound())
+    nlohmann::json out = {{"running", session_.reduction().running()}};
+    if (const auto bound = session_.reduction().bound())
         out["bound"] = {{"groups", bound->groups}, {"lower", bound->lowerBound}, {"best", bound->bestFound}};
-    if (const Grouping* grouping = session_.currentGrouping(); grouping && grouping->feasible()) {
+    if (const Grouping* grouping = session_.reduction().grouping(); grouping && grouping->feasible()) {
         out["current"] = {{"optimal", grouping->optimal}, {"gap", grouping->gap()}, {"cost", grouping->cost}};
         nlohmann::json resting = nlohmann::json::array();
         for (const int i : grouping->rest)
@@ -279,7 +281,7 @@ nlohmann::json ReductionPanel::reductionProbe() const {
     } catch (const InputError&) {
     }
     out["rest"] = std::move(rest);
-    out["last_avatar_export"] = session_.lastAvatarExport();
+    out["last_avatar_export"] = session_.files().lastAvatarExport();
     return out;
 }
 

@@ -31,10 +31,10 @@ std::string withMillimetres(float value, double millimetresPerUnit) {
 } // namespace
 
 void RefinementPanel::draw() {
-    const FaceModel& model = session_.face();
+    const FaceModel& model = session_.document().face;
     if (!model.cascade) {
         ImGui::TextWrapped("Adaptive refinement works on the deformable face.");
-        if (ctl::Button("Load bundled face")) session_.attempt("Load face", [&] { session_.loadFace(); });
+        if (ctl::Button("Load bundled face")) session_.attempt("Load face", [&] { session_.face().load(); });
         return;
     }
     CriterionSettings settings = session_.document().refinement;
@@ -75,7 +75,7 @@ void RefinementPanel::draw() {
         // The errors are distances in the face's model units: shown with their length in mm.
         float average = static_cast<float>(settings.contour.averageError);
         float maximum = static_cast<float>(settings.contour.maximumError);
-        const double mm = guessMillimetresPerUnit(session_.faceSamples().rest);
+        const double mm = guessMillimetresPerUnit(session_.face().samples().rest);
         const std::string averageFormat = withMillimetres(average, mm);
         const std::string maximumFormat = withMillimetres(maximum, mm);
         if (ctl::SliderFloat("average error", &average, 0.001f, 0.5f, averageFormat.c_str(),
@@ -96,38 +96,40 @@ void RefinementPanel::draw() {
     }
     }
     ImGui::PopItemWidth();
-    if (changed) session_.attempt("Thresholds", [&] { session_.setRefinementSettings(settings); });
-    if (criterionChanged) session_.endEdit(); // a criterion switch is its own undo step
+    if (changed) session_.attempt("Thresholds", [&] { session_.face().setRefinementSettings(settings); });
+    if (criterionChanged) session_.history().endEdit(); // a criterion switch is its own undo step
 
     sectionHeader("Adapt the face mesh");
-    const bool busy = session_.refinementRunning();
+    const bool busy = session_.face().refinementRunning();
     if (busy) ImGui::BeginDisabled();
     if (ctl::Button("Refine"))
-        session_.attempt("Refine", [&] { session_.startRefinement(RefineAction::Refine); });
+        session_.attempt("Refine", [&] { session_.face().startRefinement(RefineAction::Refine); });
     ImGui::SameLine();
     if (ctl::Button("Simplify"))
-        session_.attempt("Simplify", [&] { session_.startRefinement(RefineAction::Simplify); });
+        session_.attempt("Simplify", [&] { session_.face().startRefinement(RefineAction::Simplify); });
     ImGui::SameLine();
     if (ctl::Button("Re-adapt"))
-        session_.attempt("Re-adapt", [&] { session_.startRefinement(RefineAction::Adapt); });
+        session_.attempt("Re-adapt", [&] { session_.face().startRefinement(RefineAction::Adapt); });
     ImGui::SameLine();
     if (ctl::Button("For all visemes"))
-        session_.attempt("Refine", [&] { session_.startRefinement(RefineAction::AllVisemes); });
+        session_.attempt("Refine", [&] { session_.face().startRefinement(RefineAction::AllVisemes); });
     if (busy) ImGui::EndDisabled();
     helpMarker(
         "Refine splits edges where the criterion asks (for the current slider values); Simplify welds "
         "where it allows; Re-adapt does both after a change. 'For all visemes' refines one mesh for "
         "every viseme pose: Generate viseme set (Deformation panel) then gives an interpolable set on it.");
-    ctl::Checkbox("Automatic: re-adapt after every slider or threshold change", &session_.autoRefine);
+    if (bool automatic = session_.face().autoRefine();
+        ctl::Checkbox("Automatic: re-adapt after every slider or threshold change", &automatic))
+        session_.face().setAutoRefine(automatic);
     // The progress line is always there and the run's report is below the sliders: a run that
     // starts or ends (Automatic ticked) moves no control under the cursor. While a run lasts the line
     // shows its progress and Cancel.
     bool shown = false;
-    for (const auto& job : session_.runningJobs())
-        if (job.job == EditorSession::Job::Refinement) {
+    for (const auto& job : session_.jobs().running())
+        if (job.job == SessionJobs::Job::Refinement) {
             shown = true;
             if (jobProgress(job.label, job.fraction, job.secondsLeft, "Cancel##refinement", -1))
-                session_.cancelJob(job.job);
+                session_.jobs().cancel(job.job);
         }
     if (!shown) ImGui::ProgressBar(0.0f, ImVec2(-1, 0), "no refinement running");
 
@@ -139,7 +141,7 @@ void RefinementPanel::draw() {
     sectionHeader("Current mesh");
     ImGui::Text("%zu vertices, %zu triangles", model.domain->positions.size(),
                 model.domain->triangles.size());
-    if (const auto& report = session_.lastRefinement()) {
+    if (const auto& report = session_.face().lastRefinement()) {
         ImGui::Text("Last run: %s in %.1f ms", report->action.c_str(), report->milliseconds);
         // The counts a designer asks about: how big the mesh was and is, and what each way did. An
         // edge split adds one vertex, a weld removes one.
@@ -156,12 +158,12 @@ void RefinementPanel::draw() {
                             report->triangles, report->stats.tests);
         if (report->maxLevel >= 0) ImGui::Text("Deepest level: %d", report->maxLevel);
     }
-    shownNote_ = meshNote(*model.domain, domainRefined(), session_.lastRefinement().has_value());
+    shownNote_ = meshNote(*model.domain, domainRefined(), session_.face().lastRefinement().has_value());
     ImGui::TextWrapped("%s", shownNote_.c_str());
 }
 
 bool RefinementPanel::domainRefined() {
-    const auto& domain = session_.face().domain;
+    const auto& domain = session_.document().face.domain;
     if (domain != checkedDomain_) {
         checkedDomain_ = domain;
         checkedRefined_ = domain && isRefinedDomain(*domain);
@@ -176,7 +178,7 @@ bool RefinementPanel::isRefinedDomain(const MeshData& domain) {
         const MeshData base = face::faceDomainMesh(resolution, face::DomainDensity::MouthFocused);
         return base.uvs == domain.uvs && base.triangles == domain.triangles;
     };
-    return !regular(kFaceDomainResolution) && !regular(EditorSession::kEditorFaceResolution);
+    return !regular(kFaceDomainResolution) && !regular(SessionFace::kEditorResolution);
 }
 
 std::string RefinementPanel::meshNote(const MeshData& domain, bool refined, bool ranSinceOpened) {
@@ -191,7 +193,7 @@ std::string RefinementPanel::meshNote(const MeshData& domain, bool refined, bool
 void RefinementPanel::addProbe(nlohmann::json& summary) const {
     // The counts of the last run, as the panel states them.
     nlohmann::json refine;
-    if (const auto& report = session_.lastRefinement())
+    if (const auto& report = session_.face().lastRefinement())
         refine = {{"vertices_before", report->verticesBefore},
                   {"vertices_at_start", report->verticesAtStart},
                   {"from_base_mesh", report->fromBaseMesh},

@@ -65,9 +65,9 @@ void restModelSection(EditorSession& session) {
         if (ctl::Button("Add rest viseme"))
             session.attempt("Add rest viseme", [&] {
                 if (avatar)
-                    session.addAvatarRestViseme();
+                    session.authoring().addAvatarRestViseme();
                 else
-                    session.addRestViseme(kRestVisemeNames[0]);
+                    session.authoring().addRestViseme(kRestVisemeNames[0]);
             });
         ImGui::SameLine();
         helpMarker(avatar ? "Adds 'viseme_sil' (or 'sil', as the avatar spells its visemes): the base mesh, "
@@ -77,7 +77,8 @@ void restModelSection(EditorSession& session) {
                             "Frequencies panel's 'Add rest viseme' does.");
     }
     if (changed)
-        session.attempt("Rest model", [&] { session.setRest(static_cast<RestChoice>(choice), restViseme); });
+        session.attempt("Rest model",
+                        [&] { session.reduction().setRest(static_cast<RestChoice>(choice), restViseme); });
 }
 
 } // namespace vl::ui

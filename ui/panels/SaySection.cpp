@@ -33,7 +33,7 @@ void SaySection::draw() {
         if (draft_ == speech.text) return true;
         SpeechSettings next = speech;
         next.text = draft_;
-        const bool ok = session_.attempt("Say text", [&] { session_.setSpeech(next); });
+        const bool ok = session_.attempt("Say text", [&] { session_.speech().setSettings(next); });
         if (ok) syncedText_ = draft_;
         return ok;
     };
@@ -52,7 +52,7 @@ void SaySection::draw() {
             if (ctl::Selectable(voice, speech.voice == voice)) {
                 SpeechSettings next = speech;
                 next.voice = voice;
-                session_.attempt("Voice", [&] { session_.setSpeech(next); });
+                session_.attempt("Voice", [&] { session_.speech().setSettings(next); });
             }
         ImGui::EndCombo();
     }
@@ -62,12 +62,12 @@ void SaySection::draw() {
     if (ctl::SliderInt("words/min", &rate, kMinWordsPerMinute, kMaxWordsPerMinute)) {
         SpeechSettings next = speech;
         next.wordsPerMinute = rate;
-        session_.attempt("Speaking rate", [&] { session_.setSpeech(next); });
+        session_.attempt("Speaking rate", [&] { session_.speech().setSettings(next); });
     }
     endEditOnRelease(session_);
 
     if (ctl::Button("Say", ImVec2(scaled(70), 0)) && commitDraft()) speech_.say();
-    const auto& clip = session_.speechClip();
+    const auto& clip = session_.speech().clip();
     ImGui::SameLine();
     if (!clip) ImGui::BeginDisabled();
     if (ctl::Button(speech_.playing() ? "Pause" : "Play", ImVec2(scaled(70), 0))) {
@@ -79,7 +79,7 @@ void SaySection::draw() {
     ImGui::SameLine();
     if (ctl::Button("Hide", ImVec2(scaled(60), 0))) speech_.hide();
     if (!clip) ImGui::EndDisabled();
-    if (session_.speaking()) {
+    if (session_.speech().speaking()) {
         ImGui::SameLine();
         ImGui::ProgressBar(-1.0f * static_cast<float>(ImGui::GetTime()), ImVec2(-1, 0), "speaking...");
     }
@@ -93,7 +93,7 @@ void SaySection::draw() {
         ImGui::Text("Shown: %s", clip->label.c_str());
         ImGui::PopTextWrapPos();
     }
-    if (const SpeechPlayback* playback = clip ? session_.speechPlayback() : nullptr) {
+    if (const SpeechPlayback* playback = clip ? session_.speech().playback() : nullptr) {
         if (!playback->problem.empty()) {
             ImGui::PushTextWrapPos(0.0f);
             ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", playback->problem.c_str());

@@ -31,9 +31,9 @@ std::string presetSummary(const VisemeParameters& preset) {
 } // namespace
 
 void StoreSlidersSection::draw() {
-    const FaceModel& model = session_.face();
+    const FaceModel& model = session_.document().face;
     const std::vector<VisemeParameters> presets = edit::facePresets(model);
-    const bool madeByFace = session_.visemeSetMadeByFace();
+    const bool madeByFace = session_.authoring().visemeSetMadeByFace();
 
     sectionHeader("Store the sliders as a viseme");
     if (madeByFace)
@@ -48,7 +48,8 @@ void StoreSlidersSection::draw() {
                                                 ImGuiInputTextFlags_EnterReturnsTrue);
     ImGui::SameLine();
     if (ctl::Button("Store as new viseme") || entered) {
-        if (session_.attempt("Store sliders", [&] { session_.storeSlidersAsNewViseme(newViseme_); })) {
+        if (session_.attempt("Store sliders",
+                             [&] { session_.authoring().storeSlidersAsNewViseme(newViseme_); })) {
             storeInto_ = newViseme_;
             newViseme_.clear();
         }
@@ -70,7 +71,7 @@ void StoreSlidersSection::draw() {
     }
     ImGui::SameLine();
     if (ctl::Button("Store into viseme"))
-        session_.attempt("Store sliders", [&] { session_.storeSlidersInViseme(storeInto_); });
+        session_.attempt("Store sliders", [&] { session_.authoring().storeSlidersInViseme(storeInto_); });
     helpMarker("Apply a preset below, adjust the sliders, then store them into it: its parameters (and its "
                "mesh, when the set is the face's) are replaced. One undo step each.");
 
@@ -86,7 +87,7 @@ void StoreSlidersSection::draw() {
             ImGui::TableNextColumn();
             const std::string apply = preset.name + "##apply-" + preset.name;
             if (ctl::Button(apply.c_str(), ImVec2(-1, 0)))
-                if (session_.attempt("Preset", [&] { session_.applyVisemePreset(preset.name); }))
+                if (session_.attempt("Preset", [&] { session_.face().applyVisemePreset(preset.name); }))
                     storeInto_ = preset.name;
             ImGui::TableNextColumn();
             ImGui::AlignTextToFramePadding();
@@ -94,7 +95,7 @@ void StoreSlidersSection::draw() {
             ImGui::TableNextColumn();
             const std::string remove = "x##remove-" + preset.name;
             if (ctl::SmallButton(remove.c_str()))
-                session_.attempt("Remove preset", [&] { session_.removePreset(preset.name); });
+                session_.attempt("Remove preset", [&] { session_.authoring().removePreset(preset.name); });
             ImGui::PopID();
         }
         ImGui::EndTable();

@@ -80,12 +80,12 @@ void VisemeAuthoring::addProbe(nlohmann::json& summary) const {
 
 void VisemeAuthoring::draw() {
     const VisemeSet* set = session_.visemes();
-    const int selected = session_.selectedViseme;
+    const int selected = session_.selectedViseme();
     const bool has = set && selected >= 0 && selected < static_cast<int>(set->size());
     // The field shows the selected viseme's name unless the user is typing a new one.
-    if (!editingName_ && (nameFor_ != selected || nameDocument_ != session_.documentId())) {
+    if (!editingName_ && (nameFor_ != selected || nameDocument_ != session_.history().revision())) {
         nameFor_ = selected;
-        nameDocument_ = session_.documentId();
+        nameDocument_ = session_.history().revision();
         name_ = has ? set->visemes[static_cast<std::size_t>(selected)].name : std::string();
     }
     if (!has) ImGui::BeginDisabled();
@@ -95,12 +95,12 @@ void VisemeAuthoring::draw() {
     editingName_ = ImGui::IsItemActive();
     ImGui::SameLine();
     if ((ctl::Button("Rename") || entered) && has)
-        session_.attempt("Rename", [&] { session_.renameViseme(selected, name_); });
+        session_.attempt("Rename", [&] { session_.authoring().renameViseme(selected, name_); });
     ImGui::SameLine();
     if (ctl::Button("Duplicate") && has)
         session_.attempt("Duplicate", [&] {
             const std::string& name = set->visemes[static_cast<std::size_t>(selected)].name;
-            session_.duplicateViseme(selected, copyName(session_.document(), name));
+            session_.authoring().duplicateViseme(selected, copyName(session_.document(), name));
         });
     ImGui::SameLine();
     if (ctl::Button("Delete...") && has) {
@@ -108,7 +108,7 @@ void VisemeAuthoring::draw() {
         if (edit::phonemesMappedTo(session_.document().frequencies,
                                    set->visemes[static_cast<std::size_t>(selected)].name)
                 .empty()) {
-            session_.attempt("Delete viseme", [&] { session_.removeViseme(selected); });
+            session_.attempt("Delete viseme", [&] { session_.authoring().removeViseme(selected); });
         } else {
             openDelete_ = true;
             deleteIndex_ = selected;
@@ -118,12 +118,12 @@ void VisemeAuthoring::draw() {
     const int last = has ? static_cast<int>(set->size()) - 1 : 0;
     if (has && selected == 0) ImGui::BeginDisabled();
     if (ctl::Button("Move up"))
-        session_.attempt("Move viseme", [&] { session_.moveViseme(selected, selected - 1); });
+        session_.attempt("Move viseme", [&] { session_.authoring().moveViseme(selected, selected - 1); });
     if (has && selected == 0) ImGui::EndDisabled();
     ImGui::SameLine();
     if (has && selected == last) ImGui::BeginDisabled();
     if (ctl::Button("Move down"))
-        session_.attempt("Move viseme", [&] { session_.moveViseme(selected, selected + 1); });
+        session_.attempt("Move viseme", [&] { session_.authoring().moveViseme(selected, selected + 1); });
     if (has && selected == last) ImGui::EndDisabled();
     if (!has) ImGui::EndDisabled();
     helpMarker("Renames, copies and deletes keep the phoneme map, the frequencies, the constraints and the "
@@ -162,7 +162,7 @@ void VisemeAuthoring::deletePopup() {
     const bool chosen = !phonemesGoTo_.empty();
     if (!chosen) ImGui::BeginDisabled();
     if (ctl::Button("Delete and move the phonemes")) {
-        session_.attempt("Delete viseme", [&] { session_.removeViseme(index, phonemesGoTo_); });
+        session_.attempt("Delete viseme", [&] { session_.authoring().removeViseme(index, phonemesGoTo_); });
         ImGui::CloseCurrentPopup();
     }
     if (!chosen) ImGui::EndDisabled();

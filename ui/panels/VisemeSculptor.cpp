@@ -30,8 +30,8 @@ double symmetryPlane(const VisemeSet& set) {
 
 bool VisemeSculptor::active() const {
     const VisemeSet* set = session_.visemes();
-    return settings.enabled && set && session_.selectedViseme >= 0 &&
-           session_.selectedViseme < static_cast<int>(set->size());
+    return settings.enabled && set && session_.selectedViseme() >= 0 &&
+           session_.selectedViseme() < static_cast<int>(set->size());
 }
 
 SculptDab VisemeSculptor::dab(const Vec3& eye) const {
@@ -52,7 +52,7 @@ void VisemeSculptor::sculpt(const ViewportEvents& events) {
         return;
     }
     const VisemeSet& set = *session_.visemes();
-    const auto index = static_cast<std::size_t>(session_.selectedViseme);
+    const auto index = static_cast<std::size_t>(session_.selectedViseme());
     const OrbitCamera& camera = view_.camera;
     const Ray ray = camera.rayThrough(events.ndc.x, events.ndc.y, events.aspect);
     const Vec3 origin = toVec3(ray.origin), direction = toVec3(ray.direction);
@@ -70,7 +70,7 @@ void VisemeSculptor::sculpt(const ViewportEvents& events) {
         });
     if (events.leftPressed && hit && !ImGui::GetIO().KeyAlt && modelRadius_ > 0) {
         strokeActive_ = true;
-        strokeViseme_ = session_.selectedViseme;
+        strokeViseme_ = session_.selectedViseme();
         strokeStart_ = set.visemes[index].positions;
         strokeShape_ = strokeStart_;
         strokeSurface_ = shown;
@@ -81,9 +81,9 @@ void VisemeSculptor::sculpt(const ViewportEvents& events) {
         strokeDabs_ = 0;
     }
     if (!strokeActive_) return;
-    if (strokeViseme_ != session_.selectedViseme || !events.leftDown) {
+    if (strokeViseme_ != session_.selectedViseme() || !events.leftDown) {
         strokeActive_ = false;
-        session_.endEdit(); // the next stroke is its own undo step
+        session_.history().endEdit(); // the next stroke is its own undo step
         return;
     }
     const Vec3 eye = toVec3(camera.eye());
@@ -110,7 +110,7 @@ void VisemeSculptor::sculpt(const ViewportEvents& events) {
         }
         if (!changed) return;
         ++strokeDabs_;
-        session_.sculptViseme(strokeViseme_, strokeShape_, settings.tool);
+        session_.authoring().sculptViseme(strokeViseme_, strokeShape_, settings.tool);
     });
 }
 
@@ -146,7 +146,7 @@ void VisemeSculptor::controls() {
     ctl::SliderFloat("##sculpt-strength", &settings.strength, 0.05f, 1.0f, "strength %.2f");
     if (settings.enabled) {
         ImGui::SameLine();
-        ImGui::TextDisabled(session_.selectedViseme >= 0 ? "Alt+drag orbits" : "select a viseme to sculpt");
+        ImGui::TextDisabled(session_.selectedViseme() >= 0 ? "Alt+drag orbits" : "select a viseme to sculpt");
     }
     blendPopup();
 }
@@ -157,8 +157,8 @@ void VisemeSculptor::blendPopup() {
     if (openBlend_) {
         ImGui::OpenPopup("Blend visemes");
         blendWeights_.assign(set->size(), 0.0f);
-        if (session_.selectedViseme >= 0 && session_.selectedViseme < static_cast<int>(set->size()))
-            blendWeights_[static_cast<std::size_t>(session_.selectedViseme)] = 1.0f;
+        if (session_.selectedViseme() >= 0 && session_.selectedViseme() < static_cast<int>(set->size()))
+            blendWeights_[static_cast<std::size_t>(session_.selectedViseme())] = 1.0f;
         blendName_.clear();
         openBlend_ = false;
     }
@@ -180,7 +180,8 @@ void VisemeSculptor::blendPopup() {
         std::vector<std::pair<int, double>> mix;
         for (std::size_t i = 0; i < blendWeights_.size(); ++i)
             if (blendWeights_[i] != 0.0f) mix.emplace_back(static_cast<int>(i), blendWeights_[i]);
-        if (session_.attempt("Blend visemes", [&] { session_.addBlendedViseme(blendName_, mix); }))
+        if (session_.attempt("Blend visemes",
+                             [&] { session_.authoring().addBlendedViseme(blendName_, mix); }))
             ImGui::CloseCurrentPopup();
     }
     ImGui::SameLine();
@@ -193,8 +194,8 @@ nlohmann::json VisemeSculptor::probe() const {
     // reached vertices' factors times the pull.
     double ySum = 0.0;
     const VisemeSet* set = session_.visemes();
-    if (set && session_.selectedViseme >= 0 && session_.selectedViseme < static_cast<int>(set->size()))
-        for (const Vec3& p : set->visemes[static_cast<std::size_t>(session_.selectedViseme)].positions)
+    if (set && session_.selectedViseme() >= 0 && session_.selectedViseme() < static_cast<int>(set->size()))
+        for (const Vec3& p : set->visemes[static_cast<std::size_t>(session_.selectedViseme())].positions)
             ySum += p[1];
     return {{"enabled", settings.enabled},
             {"shape_y_sum", ySum},

@@ -42,8 +42,8 @@ void VisemesPanel::draw() {
 
     std::vector<double> frequencies;
     const bool frequenciesOk =
-        session_.attempt("Frequencies", [&] { frequencies = session_.visemeFrequencies(); });
-    const Grouping* grouping = session_.currentGrouping();
+        session_.attempt("Frequencies", [&] { frequencies = session_.frequencies().values(); });
+    const Grouping* grouping = session_.reduction().grouping();
     std::vector<int> groupOf(set->size(), -2); // -2: no grouping yet
     if (grouping && grouping->feasible()) groupOf = grouping->groupOf();
 
@@ -64,16 +64,17 @@ void VisemesPanel::draw() {
         ImGui::TableHeadersRow();
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
-        if (ctl::Selectable("(neutral)", session_.selectedViseme < 0, ImGuiSelectableFlags_SpanAllColumns))
-            session_.selectedViseme = -1;
+        if (ctl::Selectable("(neutral)", session_.selectedViseme() < 0, ImGuiSelectableFlags_SpanAllColumns))
+            session_.selectViseme(-1);
         for (std::size_t i = 0; i < set->size(); ++i) {
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
             ImGui::PushID(static_cast<int>(i));
             ImGui::AlignTextToFramePadding();
-            if (ctl::Selectable(set->visemes[i].name.c_str(), session_.selectedViseme == static_cast<int>(i),
+            if (ctl::Selectable(set->visemes[i].name.c_str(),
+                                session_.selectedViseme() == static_cast<int>(i),
                                 ImGuiSelectableFlags_SpanAllColumns))
-                session_.selectedViseme = static_cast<int>(i);
+                session_.selectViseme(static_cast<int>(i));
             ImGui::TableNextColumn();
             if (frequenciesOk) {
                 const float f = static_cast<float>(frequencies[i]);
@@ -102,7 +103,7 @@ void VisemesPanel::draw() {
     else
         authoring_.draw();
     ImGui::SameLine();
-    const auto& clip = session_.speechClip();
+    const auto& clip = session_.speech().clip();
     bool playAll = speech_.shown() && speech_.playing() && clip->loops && clip->sequence.empty();
     if (ctl::Checkbox("Play all", &playAll)) {
         if (playAll)
@@ -122,15 +123,16 @@ void VisemesPanel::importSection() {
         if (importName_.empty()) {
             session_.error("Import: type a name for the new viseme first");
         } else {
-            files_.dialog().open(
-                "Import viseme " + importName_, FileDialog::Mode::OpenFile, {".obj", ".ply", ".wrl", ".vrml"},
-                [this](const auto& path) {
-                    importError_.clear();
-                    if (session_.attempt("Import", [&] { session_.importViseme(importName_, path); }))
-                        importName_.clear();
-                    else
-                        importError_ = session_.messages().back().text;
-                });
+            files_.dialog().open("Import viseme " + importName_, FileDialog::Mode::OpenFile,
+                                 {".obj", ".ply", ".wrl", ".vrml"}, [this](const auto& path) {
+                                     importError_.clear();
+                                     if (session_.attempt("Import", [&] {
+                                             session_.authoring().importViseme(importName_, path);
+                                         }))
+                                         importName_.clear();
+                                     else
+                                         importError_ = session_.messages().back().text;
+                                 });
         }
     }
     ImGui::SameLine();

@@ -44,7 +44,7 @@ void WeightPainter::fill(const std::vector<std::uint32_t>& vertices, const char*
         return;
     }
     session_.attempt(action, [&] {
-        session_.setPaintedWeights(filled(startWeights(), vertices, tools.fillValue), action);
+        session_.weights().setPainted(filled(startWeights(), vertices, tools.fillValue), action);
         char text[160];
         std::snprintf(text, sizeof text, "%s: %zu vertices set to %.2f", action, vertices.size(),
                       static_cast<double>(tools.fillValue));
@@ -151,7 +151,7 @@ void WeightPainter::brushStroke(const ViewportEvents& events, const std::optiona
         lastDab_.reset();
         if (strokeWeights_ != strokeStart_)
             session_.attempt("Paint stroke",
-                             [&] { session_.setPaintedWeights(strokeWeights_, "Paint stroke"); });
+                             [&] { session_.weights().setPainted(strokeWeights_, "Paint stroke"); });
     }
 }
 

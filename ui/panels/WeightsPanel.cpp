@@ -29,7 +29,7 @@ void WeightsPanel::draw() {
     ImGui::SameLine();
     changed |= ctl::RadioButton("painted", &mode, 2);
     if (changed)
-        session_.attempt("Weight mode", [&] { session_.setWeightMode(static_cast<WeightMode>(mode)); });
+        session_.attempt("Weight mode", [&] { session_.weights().setMode(static_cast<WeightMode>(mode)); });
     ctl::Checkbox("Show weights as colours", &showColours_);
     ImGui::TextDisabled("Blue: low weight, red: the largest weight.");
     if (painter_.tools.readout)

@@ -39,25 +39,37 @@ void GpuMesh::release() {
     revision_ = nextUploadRevision();
 }
 
-void GpuMesh::setGeometry(std::span<const Vec3> rest, std::span<const Triangle> triangles,
-                          std::span<const std::vector<Vec3>> targets) {
+std::vector<Vec3> vertexNormals(PositionSpan positions, std::span<const Triangle> triangles) {
+    if (positions.packed())
+        return vl::vertexNormals(std::span<const Vec3>(positions.data, positions.count), triangles);
+    std::vector<Vec3> gathered(positions.count);
+    for (std::size_t i = 0; i < positions.count; ++i) gathered[i] = positions[i];
+    return vl::vertexNormals(std::span<const Vec3>(gathered), triangles);
+}
+
+void GpuMesh::setGeometry(PositionSpan rest, std::span<const Triangle> triangles,
+                          std::span<const PositionSpan> targets) {
     if (targets.size() > static_cast<std::size_t>(kMaxMorphTargets))
         throw std::invalid_argument("at most " + std::to_string(kMaxMorphTargets) +
                                     " morph targets can be shown");
-    for (const auto& target : targets)
+    if (rest.stride < sizeof(Vec3)) throw std::invalid_argument("position stride below one position");
+    for (const PositionSpan& target : targets) {
         if (target.size() != rest.size())
             throw std::invalid_argument("morph target size differs from the mesh");
+        if (target.stride < sizeof(Vec3)) throw std::invalid_argument("position stride below one position");
+    }
     release();
-    rest_.assign(rest.begin(), rest.end());
+    rest_.resize(rest.size());
+    for (std::size_t i = 0; i < rest.size(); ++i) rest_[i] = rest[i];
     triangles_.assign(triangles.begin(), triangles.end());
 
     const std::size_t n = rest.size();
-    const std::vector<Vec3> restNormals = vertexNormals(rest, triangles);
+    const std::vector<Vec3> restNormals = vl::vertexNormals(std::span<const Vec3>(rest_), triangles);
     std::vector<float> positions, normals;
     positions.reserve(3 * n);
     normals.reserve(3 * n);
     for (std::size_t i = 0; i < n; ++i) {
-        appendVec3(positions, rest[i]);
+        appendVec3(positions, rest_[i]);
         appendVec3(normals, restNormals[i]);
     }
     // Per target: n position deltas, then n normal deltas (layout read by mesh.vert).
@@ -65,11 +77,11 @@ void GpuMesh::setGeometry(std::span<const Vec3> rest, std::span<const Triangle> 
     texels.reserve(targets.size() * 6 * n + 3);
     deltas_.clear();
     deltas_.reserve(targets.size() * 3 * n);
-    for (const auto& target : targets) {
+    for (const PositionSpan& target : targets) {
         const std::vector<Vec3> targetNormals = vertexNormals(target, triangles);
         for (std::size_t i = 0; i < n; ++i) {
-            appendVec3(texels, target[i] - rest[i]);
-            appendVec3(deltas_, target[i] - rest[i]);
+            appendVec3(texels, target[i] - rest_[i]);
+            appendVec3(deltas_, target[i] - rest_[i]);
         }
         for (std::size_t i = 0; i < n; ++i) appendVec3(texels, targetNormals[i] - restNormals[i]);
     }

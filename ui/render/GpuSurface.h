@@ -41,7 +41,6 @@ class GpuSurface {
     void draw(const GlShader& shader) const;
 
     std::size_t vertexCount() const { return vertexCount_; }
-    std::size_t textureCount() const { return textures_.size(); }
 
   private:
     struct Range {

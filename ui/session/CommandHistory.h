@@ -17,7 +17,7 @@ namespace vl::ui {
 template <class State> class CommandHistory {
   public:
     explicit CommandHistory(State initial, std::size_t limit = 200) : limit_(limit) {
-        entries_.push_back({"Initial state", share(std::move(initial)), {}, nextId_++});
+        entries_.push_back({"Initial state", share(std::move(initial)), {}, nextRevision_++});
     }
 
     const State& current() const { return *entries_[index_].state; }
@@ -29,9 +29,10 @@ template <class State> class CommandHistory {
             !mergeKey.empty() && index_ > 0 && entries_[index_].mergeKey == mergeKey && savedIndex_ != index_;
         if (merge) {
             entries_[index_].state = share(std::move(state));
-            entries_[index_].id = nextId_++;
+            entries_[index_].revision = nextRevision_++;
         } else {
-            entries_.push_back({std::move(name), share(std::move(state)), std::move(mergeKey), nextId_++});
+            entries_.push_back(
+                {std::move(name), share(std::move(state)), std::move(mergeKey), nextRevision_++});
             ++index_;
         }
         if (entries_.size() > limit_) {
@@ -61,7 +62,7 @@ template <class State> class CommandHistory {
     // Starts over with `state` as the only entry, marked as saved (after open or new).
     void reset(State state) {
         entries_.clear();
-        entries_.push_back({"Initial state", share(std::move(state)), {}, nextId_++});
+        entries_.push_back({"Initial state", share(std::move(state)), {}, nextRevision_++});
         index_ = 0;
         savedIndex_ = 0;
     }
@@ -70,9 +71,9 @@ template <class State> class CommandHistory {
     void markUnsaved() { savedIndex_ = kNever; }
     bool modified() const { return savedIndex_ != index_; }
     std::size_t size() const { return entries_.size(); }
-    // Identifies the current document state: it changes with every commit, undo, redo and reset,
+    // Numbers the current document state: it changes with every commit, undo, redo and reset,
     // but not with amend (derived data), so a background save can tell whether it is still current.
-    std::uint64_t currentId() const { return entries_[index_].id; }
+    std::uint64_t currentRevision() const { return entries_[index_].revision; }
 
   private:
     static constexpr std::size_t kNever = static_cast<std::size_t>(-1);
@@ -83,13 +84,13 @@ template <class State> class CommandHistory {
         std::string name;
         std::shared_ptr<const State> state;
         std::string mergeKey;
-        std::uint64_t id = 0;
+        std::uint64_t revision = 0;
     };
     std::vector<Entry> entries_;
     std::size_t index_ = 0;
     std::size_t savedIndex_ = 0;
     std::size_t limit_;
-    std::uint64_t nextId_ = 1;
+    std::uint64_t nextRevision_ = 1;
 };
 
 } // namespace vl::ui

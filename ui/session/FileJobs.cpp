@@ -33,10 +33,10 @@ void FileJobs::load(std::string label, std::function<LoadedDocument()> read) {
     load_.start(std::move(label), [read = std::move(read)](const auto&) { return read(); });
 }
 
-void FileJobs::save(std::string label, std::uint64_t documentId, std::function<void()> then,
+void FileJobs::save(std::string label, std::uint64_t documentRevision, std::function<void()> then,
                     std::function<std::filesystem::path()> write) {
     startJob(save_, std::move(label), "save", "a save is still running", std::move(write));
-    saveId_ = documentId;
+    saveRevision_ = documentRevision;
     afterSave_ = std::move(then);
 }
 
@@ -60,7 +60,7 @@ FileJobs::Finished FileJobs::poll() {
         auto then = std::exchange(afterSave_, nullptr);
         if (outcome->index() == 0) {
             finished.saved = std::move(std::get<0>(*outcome));
-            finished.savedId = saveId_;
+            finished.savedRevision = saveRevision_;
             finished.afterSave = std::move(then);
         } else {
             finished.errors.push_back(save_.label() + ": " + std::get<1>(*outcome));

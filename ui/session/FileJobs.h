@@ -29,7 +29,7 @@ class FileJobs {
     struct Finished {
         std::optional<LoadedDocument> loaded;       // becomes the session's document
         std::optional<std::filesystem::path> saved; // the file a save wrote ...
-        std::uint64_t savedId = 0;                  // ... from the document with this history id
+        std::uint64_t savedRevision = 0;            // ... from the document with this history revision
         std::function<void()> afterSave;            // the action held back until that save
         std::vector<std::string> infos, errors;     // messages; errors name the job
         std::optional<std::string> avatarExported;  // a finished avatar export's message
@@ -37,9 +37,9 @@ class FileJobs {
 
     // Each throws InputError naming the job when one of its kind still runs.
     void load(std::string label, std::function<LoadedDocument()> read);
-    // `write` writes the snapshot it holds and returns the file; `documentId` is the history id of
-    // the document the snapshot was taken from, `then` runs in the session when the save recorded it.
-    void save(std::string label, std::uint64_t documentId, std::function<void()> then,
+    // `write` writes the snapshot it holds and returns the file; `documentRevision` is the history revision
+    // of the document the snapshot was taken from, `then` runs in the session when the save recorded it.
+    void save(std::string label, std::uint64_t documentRevision, std::function<void()> then,
               std::function<std::filesystem::path()> write);
     // `write` writes and returns the message that says what it wrote.
     void exportModel(std::string label, std::function<std::string()> write);
@@ -60,7 +60,7 @@ class FileJobs {
   private:
     BackgroundTask<LoadedDocument> load_;
     BackgroundTask<std::filesystem::path> save_;
-    std::uint64_t saveId_ = 0;
+    std::uint64_t saveRevision_ = 0;
     std::function<void()> afterSave_;
     BackgroundTask<std::string> model_;  // its result is the message to show
     BackgroundTask<std::string> avatar_; // its result is the message to show

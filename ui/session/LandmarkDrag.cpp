@@ -35,9 +35,9 @@ bool LandmarkDrag::end() {
     const std::optional<SurfacePoint> point = point_;
     cancel();
     if (!landmark || !point) return true;
-    const bool placed =
-        session_.attempt("Move landmark", [&] { session_.placeOwnFaceLandmark(*landmark, point->uv); });
-    session_.endEdit(); // the next drag is its own undo step
+    const bool placed = session_.attempt("Move landmark",
+                                         [&] { session_.face().placeOwnFaceLandmark(*landmark, point->uv); });
+    session_.history().endEdit(); // the next drag is its own undo step
     return placed;
 }
 

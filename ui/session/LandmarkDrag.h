@@ -2,7 +2,7 @@
 // Dragging a landmark of the own-face step (Document::ownFace) on its mesh in the 3D view: while the
 // button is held the landmark's dot follows the cursor snapped to the surface (the first triangle the
 // picking ray meets, core/paint/RayPick.h) and the document is untouched; the release places the
-// landmark at the (u,v) under the dot as ONE undo step (EditorSession::placeOwnFaceLandmark). No GL
+// landmark at the (u,v) under the dot as ONE undo step (SessionFace::placeOwnFaceLandmark). No GL
 // or ImGui: the view hands in rays, the session tests drive it alike.
 #include "core/face/Landmarks.h"
 #include "core/face/UvMesh.h"

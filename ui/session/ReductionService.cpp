@@ -8,7 +8,7 @@
 namespace vl::ui {
 
 const ReductionResult* ReductionService::curve() const {
-    return curve_.result && curve_.revision == revision_ ? curve_.result.get() : nullptr;
+    return curve_.result && curve_.inputsRevision == revision_ ? curve_.result.get() : nullptr;
 }
 
 const Grouping* ReductionService::grouping(int m) const {
@@ -20,12 +20,12 @@ const Grouping* ReductionService::grouping(int m) const {
 const ReducedModel* ReductionService::reducedModel(const Document& document) {
     const Grouping* groups = grouping(document.target);
     if (!groups || !document.visemes) return nullptr;
-    if (!model_ || modelRevision_ != revision_ || modelCurve_ != curve_.serial ||
+    if (!model_ || modelRevision_ != revision_ || modelCurve_ != curve_.revision ||
         modelGroups_ != document.target) {
         model_.reset();
         model_ = vl::reducedModel({document.visemes, document.frequencies, {}}, groups, policy());
         modelRevision_ = revision_;
-        modelCurve_ = curve_.serial;
+        modelCurve_ = curve_.revision;
         modelGroups_ = document.target;
     }
     return &*model_;
@@ -37,7 +37,7 @@ std::size_t ReductionService::curveLength(const Document& document) {
 
 void ReductionService::start(const Document& document, const DocumentInputs& inputs) {
     if (document.visemeCount() < 2) throwInputError("reduction", "load a viseme set with at least 2 visemes");
-    track(inputs.revision());
+    track(inputs.reductionRevision());
     if (complete(document)) return;
     if (task_.running() && runningRevision_ == revision_) return;
     const int n = static_cast<int>(document.visemeCount());

@@ -23,9 +23,8 @@ class ReductionService {
     ~ReductionService() { task_.cancel(); }
 
     // Tells the service the revision of the current document's reduction inputs
-    // (DocumentInputs::revision): a curve of another revision is not current.
+    // (DocumentInputs::reductionRevision): a curve of another revision is not current.
     void track(std::uint64_t inputsRevision) { revision_ = inputsRevision; }
-    std::uint64_t inputsRevision() const { return revision_; }
 
     // A curve known for the current inputs (e.g. the result a project file recorded).
     void seed(std::shared_ptr<const ReductionResult> curve) {
@@ -62,7 +61,7 @@ class ReductionService {
     const ReductionResult* curve() const;
     // Numbers every curve the service ever held (1, 2, ...; 0 = none yet): a cache of what derives
     // from the curve keys on it (with the inputs revision), never on the curve's address.
-    std::uint64_t curveRevision() const { return curve_.serial; }
+    std::uint64_t curveRevision() const { return curve_.revision; }
     bool complete(const Document& document) const {
         return curve() && curve()->curve.size() >= curveLength(document);
     }
@@ -83,12 +82,12 @@ class ReductionService {
   private:
     struct Curve {
         std::shared_ptr<const ReductionResult> result;
-        std::uint64_t revision = 0;
-        std::uint64_t serial = 0;
+        std::uint64_t inputsRevision = 0; // of the inputs it was computed for
+        std::uint64_t revision = 0;       // curveRevision()
     };
     std::uint64_t revision_ = 1;
     Curve curve_;
-    std::uint64_t curves_ = 0; // curves held so far (the last one's serial)
+    std::uint64_t curves_ = 0; // curves held so far (the last one's revision)
     std::uint64_t runningRevision_ = 0;
     BackgroundTask<std::shared_ptr<const ReductionResult>> task_;
     std::shared_ptr<BoundWatch> watch_;       // of the running task

@@ -1,0 +1,61 @@
+#pragma once
+// The session's reduction facet: the curve's settings as undoable edits (target, constraints, rest
+// model), and the reduction of the current document on a worker thread (ReductionService) with
+// its automatic re-runs.
+#include "core/document/Document.h"
+#include "ui/session/ReductionService.h"
+#include "ui/session/SessionCore.h"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace vl::ui {
+
+class SessionReduction {
+  public:
+    explicit SessionReduction(SessionCore& core);
+
+    void setTarget(int m);
+    // Pins, apart and together pairs by viseme name (validated; saved in the project).
+    void setConstraints(ConstraintNames constraints);
+    // The reduction model and rest viseme (edit::setRest), one undo step.
+    void setRest(RestChoice rest, const std::string& restViseme);
+
+    // Starts the reduction of the current inputs on a worker thread (no-op when already current).
+    void start() { service_.start(core_.document(), core_.inputs()); }
+    bool running() const { return service_.running(); }
+    // Drops a running reduction (the searches stop within one progress poll); "Run now" restarts it.
+    void cancel() { service_.cancel(); }
+    // The panel's Cancel: a large set's branch and bound stops within one progress poll and its best
+    // groupings are kept with their proven gaps; a small set's exact run is dropped.
+    void stop() { service_.stop(); }
+    double progress() const { return service_.progress(); }
+    std::optional<double> secondsLeft() const { return service_.secondsLeft(); }
+    std::optional<ReductionService::Bound> bound() const { return service_.bound(); }
+    // The curve if it is up to date with the inputs, else null.
+    const ReductionResult* curve() const { return service_.curve(); }
+    // Changes with every curve (ReductionService::curveRevision).
+    std::uint64_t curveRevision() const { return service_.curveRevision(); }
+    // Grouping into the target number of groups from the current curve, or null.
+    const Grouping* grouping() const { return service_.grouping(core_.document().target); }
+    // The reduced model of grouping() (merged keys, phoneme -> key; cached), or null without a
+    // grouping. Throws InputError when it cannot be built (ReductionService::reducedModel).
+    const ReducedModel* reducedModel() { return service_.reducedModel(core_.document()); }
+    // Re-run in the background after every input change (on by default).
+    bool automatic() const { return automatic_; }
+    void setAutomatic(bool on) { automatic_ = on; }
+
+    // For the session: a curve a loaded project recorded, collecting
+    // finished runs and starting automatic ones (once per frame), waiting for the worker.
+    void seed(const LoadedProject& loaded);
+    void poll();
+    void wait() { service_.wait(); }
+
+  private:
+    SessionCore& core_;
+    ReductionService service_;
+    bool automatic_ = true;
+};
+
+} // namespace vl::ui
