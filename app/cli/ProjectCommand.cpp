@@ -2,8 +2,8 @@
 // (the file and the meshes it references) with the JSON path of the first problem.
 #include "app/cli/Command.h"
 #include "core/common/Error.h"
-#include "core/deform/BundledFace.h"
 #include "core/document/AvatarDocument.h"
+#include "core/face/BundledFace.h"
 #include "core/gltf/TargetNames.h"
 #include "core/gltf/VisemeMapNames.h"
 #include "core/phonetics/PhonemeMaps.h"

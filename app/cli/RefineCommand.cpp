@@ -11,11 +11,11 @@
 #include "core/common/Error.h"
 #include "core/common/InputRegistry.h"
 #include "core/common/TextParsing.h"
-#include "core/deform/BundledFace.h"
-#include "core/deform/FaceDomain.h"
 #include "core/document/Commands.h"
 #include "core/document/Document.h"
 #include "core/document/VisemeCommands.h"
+#include "core/face/BundledFace.h"
+#include "core/face/FaceDomain.h"
 #include "core/io/MeshIO.h"
 #include "core/project/Project.h"
 

@@ -9,11 +9,11 @@
 // re-read from disk). What is derived from a document (the reduction curve, the refined mesh, GPU
 // samples) lives in the services that compute it, keyed by the document's inputs.
 #include "core/adaptive/Criteria.h"
-#include "core/deform/BundledFace.h"
 #include "core/deform/DeformationCascade.h"
 #include "core/deform/Visemes.h"
 #include "core/document/DocumentAvatar.h"
 #include "core/document/OwnFace.h"
+#include "core/face/BundledFace.h"
 #include "core/project/Project.h"
 #include "core/reduce/Frequencies.h"
 #include "core/reduce/Reduction.h"

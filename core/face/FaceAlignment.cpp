@@ -1,7 +1,7 @@
 #include "core/face/FaceAlignment.h"
 
 #include "core/common/Error.h"
-#include "core/deform/FaceDomain.h"
+#include "core/face/FaceDomain.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>

@@ -1,7 +1,7 @@
 #include "core/face/Landmarks.h"
 
 #include "core/common/Error.h"
-#include "core/deform/FaceDomain.h"
+#include "core/face/FaceDomain.h"
 #include "core/face/UvMesh.h"
 
 #include <limits>

@@ -39,7 +39,7 @@ inline bool isRequired(Landmark landmark) {
     return static_cast<std::size_t>(landmark) < kRequiredLandmarkCount;
 }
 
-// The landmark's position in the normalised face domain (core/deform/FaceDomain.h): the mouth
+// The landmark's position in the normalised face domain (core/face/FaceDomain.h): the mouth
 // corners and lip middles are the corners of the mouth hole.
 Vec2 canonicalPosition(Landmark landmark);
 

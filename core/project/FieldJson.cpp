@@ -1,7 +1,7 @@
 #include "core/project/FieldJson.h"
 
 #include "core/common/Error.h"
-#include "core/deform/BundledFace.h"
+#include "core/face/BundledFace.h"
 #include "core/project/BuiltinGeometry.h"
 
 #include <map>

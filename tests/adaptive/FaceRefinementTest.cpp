@@ -5,9 +5,9 @@
 #include "core/adaptive/CascadeSurface.h"
 #include "core/adaptive/ContourError.h"
 #include "core/common/Error.h"
-#include "core/deform/BundledFace.h"
-#include "core/deform/FaceDomain.h"
 #include "core/deform/Visemes.h"
+#include "core/face/BundledFace.h"
+#include "core/face/FaceDomain.h"
 
 #include <gtest/gtest.h>
 

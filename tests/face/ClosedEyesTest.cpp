@@ -2,8 +2,8 @@
 // (from VISEMELAB_SHARED_DATA_DIR, skipped loudly when absent) and the bundled faces (built in-process)
 // have no eye openings; their eye corners must come out near their own, found from the geometry and
 // said to be.
-#include "core/deform/BundledFace.h"
-#include "core/deform/FaceDomain.h"
+#include "core/face/BundledFace.h"
+#include "core/face/FaceDomain.h"
 #include "core/face/FaceFrame.h"
 #include "core/face/LandmarkFinder.h"
 

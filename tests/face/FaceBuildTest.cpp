@@ -3,9 +3,9 @@
 // geometry is known everywhere (so the sampled base geometry can be checked point by point).
 #include "core/face/FaceBuild.h"
 #include "core/common/Error.h"
-#include "core/deform/FaceShape.h"
 #include "core/face/FaceAlignment.h"
 #include "core/face/FaceFrame.h"
+#include "core/face/FaceShape.h"
 #include "core/face/ThinPlateSpline.h"
 #include "core/face/UvMesh.h"
 

@@ -4,9 +4,9 @@
 // its geometry. (The CLI end to end: tests/cli/FaceCliTest.cpp.)
 #include "core/adaptive/CascadeSurface.h"
 #include "core/adaptive/ContourError.h"
-#include "core/deform/FaceDomain.h"
 #include "core/deform/Visemes.h"
 #include "core/face/FaceBuild.h"
+#include "core/face/FaceDomain.h"
 #include "core/face/LandmarkFinder.h"
 
 #include "tests/face/SharedFaces.h"

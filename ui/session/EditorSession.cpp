@@ -4,12 +4,12 @@
 
 #include "core/common/AtomicFile.h"
 #include "core/common/Error.h"
-#include "core/deform/FaceDomain.h"
 #include "core/deform/Visemes.h"
 #include "core/document/AvatarDocument.h"
 #include "core/document/Commands.h"
 #include "core/export/Gltf.h"
 #include "core/export/ModelFrequencies.h"
+#include "core/face/FaceDomain.h"
 #include "core/gltf/AvatarKeyTargets.h"
 #include "core/gltf/AvatarScan.h"
 #include "core/gltf/Gltfpack.h"

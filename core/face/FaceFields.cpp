@@ -1,7 +1,7 @@
 // The expression fields of the bundled faces (paper section 3.4 and Figure 1), as influence regions
 // in the normalised (u,v) space: they apply unchanged to every individual (retargeting).
-#include "core/deform/FaceDomain.h"
-#include "core/deform/FaceShape.h"
+#include "core/face/FaceDomain.h"
+#include "core/face/FaceShape.h"
 
 #include <string>
 

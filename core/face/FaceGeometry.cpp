@@ -1,8 +1,8 @@
 // The base geometry of the bundled faces: an ellipse-section head front in centimetres plus smooth
 // bumps for the features, eye openings whose lids rest on the eyeballs (separate parts, see
 // core/face/HeadParts.h), sampled into a geometry image.
-#include "core/deform/FaceDomain.h"
-#include "core/deform/FaceShape.h"
+#include "core/face/FaceDomain.h"
+#include "core/face/FaceShape.h"
 
 #include "core/common/Error.h"
 
