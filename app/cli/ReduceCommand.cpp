@@ -9,7 +9,7 @@
 #include "core/common/OutputSet.h"
 #include "core/common/TextParsing.h"
 #include "core/export/ReductionOutputs.h"
-#include "core/export/Xface.h"
+#include "core/import/XfaceImport.h"
 #include "core/inspect/DistanceUnits.h"
 #include "core/project/ProjectRun.h"
 #include "core/project/ReduceInputs.h"

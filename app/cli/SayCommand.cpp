@@ -12,7 +12,7 @@
 #include "core/common/AtomicFileWriter.h"
 #include "core/common/Error.h"
 #include "core/common/OutputPolicy.h"
-#include "core/export/Gltf.h"
+#include "core/export/GltfExport.h"
 #include "core/gltf/TargetNames.h"
 #include "core/phonetics/CorpusText.h"
 #include "core/phonetics/EspeakSynthesizer.h"

@@ -7,10 +7,10 @@
 #include "core/common/Error.h"
 #include "core/common/OutputSet.h"
 #include "core/deform/Visemes.h"
-#include "core/export/VisemeFile.h"
 #include "core/face/BundledFace.h"
 #include "core/face/FaceDomain.h"
 #include "core/face/HeadParts.h"
+#include "core/import/VisemeFile.h"
 #include "core/io/MeshIO.h"
 #include "core/project/Project.h"
 

@@ -1,7 +1,7 @@
 #include "core/document/OwnFace.h"
 
 #include "core/common/Error.h"
-#include "core/export/Gltf.h"
+#include "core/import/GltfImport.h"
 #include "core/io/MeshIO.h"
 
 #include <algorithm>

@@ -3,7 +3,7 @@
 #include "core/common/AtomicFile.h"
 #include "core/common/Error.h"
 #include "core/common/OutputSet.h"
-#include "core/export/Gltf.h"
+#include "core/export/GltfExport.h"
 #include "core/export/KeyMeshFiles.h"
 #include "core/export/MappingJson.h"
 #include "core/export/RuntimePackageWriter.h"

@@ -1,4 +1,4 @@
-#include "core/export/VisemeFile.h"
+#include "core/import/VisemeFile.h"
 #include "core/common/Error.h"
 #include "core/common/Limits.h"
 #include "core/face/BundledFace.h"
