@@ -104,7 +104,7 @@ int runVisemes(const VisemesOptions& o) {
         cascade = project.deformation.cascade;
         visemes = project.deformation.visemes.empty() ? oculusVisemes() : project.deformation.visemes;
     } else {
-        cascade = face::makeFaceCascade(face::parseIndividual(o.face, "--face"));
+        cascade = face::makeFaceCascade(parseEnum<face::Individual>(o.face, "--face"));
         visemes = oculusVisemes();
     }
     if (!o.set.empty()) visemes = bundledVisemeSet(o.set, VISEMELAB_ASSETS_DIR, cascade, "--set");

@@ -11,26 +11,6 @@
 
 namespace vl {
 
-std::optional<ExportFormat> exportFormatFromString(std::string_view text) {
-    for (ExportFormat f : {ExportFormat::Glb, ExportFormat::Runtime, ExportFormat::Vrml, ExportFormat::Obj})
-        if (text == toString(f)) return f;
-    return std::nullopt;
-}
-
-const char* toString(ExportFormat format) {
-    switch (format) {
-    case ExportFormat::Glb:
-        return "glb";
-    case ExportFormat::Runtime:
-        return "runtime";
-    case ExportFormat::Vrml:
-        return "vrml";
-    case ExportFormat::Obj:
-        return "obj";
-    }
-    return "?";
-}
-
 std::vector<std::filesystem::path> exportModel(const ReducedModel& model, ExportFormat format,
                                                const std::filesystem::path& out,
                                                const ExportOptions& options) {

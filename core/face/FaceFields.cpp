@@ -119,7 +119,7 @@ std::vector<InfluenceField> lowerLipTuck() {
 
 DeformationCascade makeFaceCascade(Individual who) {
     Builder b;
-    b.cascade.name = std::string(individualName(who)) + " face";
+    b.cascade.name = std::string(toString(who)) + " face";
     DeformationStage base;
     base.kind = StageKind::Constant;
     base.name = "base_geometry";
@@ -148,7 +148,7 @@ DeformationCascade makeBundledFace() {
 DeformationCascade makeRetargetFace() {
     VectorField base;
     base.sampled = makeFaceGeometry(Individual::Retarget);
-    return retarget(makeBundledFace(), base, std::string(individualName(Individual::Retarget)) + " face");
+    return retarget(makeBundledFace(), base, std::string(toString(Individual::Retarget)) + " face");
 }
 
 } // namespace vl::face

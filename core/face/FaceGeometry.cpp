@@ -217,16 +217,6 @@ Vec3 facePoint(double u, double v, const Proportions& p) {
 
 } // namespace
 
-std::string_view individualName(Individual who) {
-    return who == Individual::Bundled ? "bundled" : "retarget";
-}
-
-Individual parseIndividual(std::string_view name, std::string_view where) {
-    if (name == "bundled") return Individual::Bundled;
-    if (name == "retarget") return Individual::Retarget;
-    throwInputError(where, "unknown face '" + std::string(name) + "' (expected bundled or retarget)");
-}
-
 Vec3 eyeballCentre(Individual who, double side) {
     return detail::eyeballCentre(proportionsOf(who), side >= 0.0 ? 1.0 : -1.0);
 }

@@ -44,7 +44,7 @@ TEST(FaceRefinement, EveryCriterionKeepsTheInvariantsAndLowersTheError) {
     const AdaptiveMesh base(surface);
     const double baseError = measureContourError(base.toMeshData(), surface).average;
     for (const auto kind : {CriterionKind::Depth, CriterionKind::Normals, CriterionKind::Contour}) {
-        SCOPED_TRACE(std::string(criterionName(kind)));
+        SCOPED_TRACE(std::string(toString(kind)));
         AdaptiveMesh mesh(surface);
         mesh.refine(*makeCriterion(settingsFor(kind)));
         EXPECT_MESH_VALID(mesh);

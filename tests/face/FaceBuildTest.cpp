@@ -172,7 +172,7 @@ TEST(FaceBuild, SamplingAnAnalyticSurfaceReproducesIt) {
                                l == Landmark::EyeInnerLeft || l == Landmark::EyeInnerRight;
         EXPECT_LT((onBase[static_cast<std::size_t>(l)] - landmarks[l].position).norm(),
                   eyeCorner ? 0.08 : 0.05)
-            << landmarkName(l);
+            << toString(l);
     }
 }
 

@@ -590,7 +590,7 @@ void EditorSession::setPaintedWeights(std::vector<double> painted, const std::st
 
 void EditorSession::loadFace(face::Individual individual, int resolution) {
     commit("Load face", edit::setFace(document(), makeFaceModel(individual, resolution)));
-    info("Loaded the " + std::string(face::individualName(individual)) + " face (" +
+    info("Loaded the " + std::string(toString(individual)) + " face (" +
          std::to_string(face().cascade->parameters.size()) + " parameters)");
 }
 
@@ -617,8 +617,7 @@ void EditorSession::setInfluence(int stage, int influence, const InfluenceField&
 
 void EditorSession::setIndividual(face::Individual individual) {
     if (face().cascade && individual == face().individual) return;
-    commit("Retarget to " + std::string(face::individualName(individual)),
-           edit::retarget(document(), individual));
+    commit("Retarget to " + std::string(toString(individual)), edit::retarget(document(), individual));
 }
 
 void EditorSession::useOwnFace(const OwnFaceCandidate& candidate) {
@@ -645,7 +644,7 @@ void EditorSession::openOwnFace(const std::filesystem::path& mesh) {
 }
 
 void EditorSession::placeOwnFaceLandmark(face::Landmark landmark, const Vec2& uv) {
-    const std::string name(face::landmarkName(landmark));
+    const std::string name(toString(landmark));
     commit("Move landmark " + name, edit::placeOwnFaceLandmark(document(), landmark, uv), "landmark:" + name);
 }
 
