@@ -44,8 +44,8 @@ struct FaceModel {
     // The (u,v) triangulation the face is shown and its visemes are generated on (positions unused):
     // the default grid, the one `face build` made, or an adopted refined mesh; saved with the project.
     std::shared_ptr<const MeshData> domain;
-    std::vector<double> parameters;         // one value per cascade parameter
-    std::vector<VisemeParameters> presets;  // empty = the Oculus presets (oculusVisemes())
+    std::vector<double> parameters;        // one value per cascade parameter
+    std::vector<VisemeParameters> presets; // empty = the Oculus presets (oculusVisemes())
 
     bool operator==(const FaceModel&) const = default;
 };
