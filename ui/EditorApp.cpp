@@ -127,13 +127,13 @@ void applyStartOptions(const EditorOptions& options, EditorSession& session, Edi
     step(!options.refine.empty(), [&] {
         needFace();
         CriterionSettings settings = session.document().refinement;
-        settings.kind = parseCriterionKind(options.refine, "--refine");
+        settings.kind = parseEnum<CriterionKind>(options.refine, "--refine");
         session.face().setRefinementSettings(settings);
         refine = true;
     });
     step(!options.individual.empty(), [&] {
         needFace();
-        session.face().setIndividual(face::parseIndividual(options.individual, "--individual"));
+        session.face().setIndividual(parseEnum<face::Individual>(options.individual, "--individual"));
     });
     step(!options.ownFace.empty(), [&] {
         needFace();
@@ -158,7 +158,7 @@ void applyStartOptions(const EditorOptions& options, EditorSession& session, Edi
         ui.setStartView(*view, options.orthographic);
     });
     step(!options.weights.empty(), [&] {
-        const auto mode = weightModeFromString(options.weights);
+        const auto mode = fromString<WeightMode>(options.weights);
         if (!mode)
             throwInputError("--weights", "expected uniform, area or painted, got '" + options.weights + "'");
         session.weights().setMode(*mode);

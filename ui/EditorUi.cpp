@@ -54,7 +54,7 @@ nlohmann::json EditorUi::probeSummary() {
         {"target", document.target},
         {"constraints", document.constraints.pinned.size() + document.constraints.apart.size() +
                             document.constraints.together.size()},
-        {"criterion", std::string(criterionName(document.refinement.kind))},
+        {"criterion", std::string(toString(document.refinement.kind))},
         {"file_dialog_open", files_.dialog().isOpen()},
         {"weight_mode", toString(document.weights.mode)},
         {"painted_mean", painted.empty() ? 0.0 : paintedSum / static_cast<double>(painted.size())},

@@ -409,9 +409,8 @@ void EditorViews::drawMainView(ImVec2 size) {
                           "No face loaded: use \"Load bundled face\" in the panel");
         else // a face built from the user's mesh is named by its mesh, not as the bundled one
             label = "Deformable face (" +
-                    (builtinIndividualOf(*cascade)
-                         ? std::string(face::individualName(session_.document().face.individual))
-                         : cascade->name) +
+                    (builtinIndividualOf(*cascade) ? std::string(toString(session_.document().face.individual))
+                                                   : cascade->name) +
                     ")";
     } else {
         std::vector<float> weights =

@@ -43,7 +43,7 @@ CriterionSettings criterionSettingsOver(const CriterionOptions& o, const Criteri
                                         const CLI::App& cmd) {
     CriterionSettings s = base;
     const auto given = [&cmd](const char* name) { return cmd.count(name) > 0; };
-    if (given("--criterion")) s.kind = parseCriterionKind(o.criterion, "--criterion");
+    if (given("--criterion")) s.kind = parseEnum<CriterionKind>(o.criterion, "--criterion");
     if (given("--depth")) s.depth.depth = o.settings.depth.depth;
     if (given("--angle")) s.normals.dihedralAngleDeg = o.settings.normals.dihedralAngleDeg;
     if (given("--normal-angle")) s.normals.normalAngleDeg = o.settings.normals.normalAngleDeg;
@@ -56,7 +56,7 @@ CriterionSettings criterionSettingsOver(const CriterionOptions& o, const Criteri
 
 CriterionSettings criterionSettings(const CriterionOptions& o) {
     CriterionSettings s = o.settings;
-    s.kind = parseCriterionKind(o.criterion, "--criterion");
+    s.kind = parseEnum<CriterionKind>(o.criterion, "--criterion");
     return checked(s);
 }
 

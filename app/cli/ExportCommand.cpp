@@ -21,7 +21,7 @@ struct ExportOptions {
 };
 
 int runExport(const ExportOptions& o) {
-    const auto format = exportFormatFromString(o.format);
+    const auto format = fromString<ExportFormat>(o.format);
     if (!format) throwInputError("--format", "expected glb, runtime, vrml or obj, got '" + o.format + "'");
     if (o.quantise && *format != ExportFormat::Runtime)
         throwInputError("--quantise", "only the runtime package can be quantised");

@@ -5,9 +5,9 @@
 #include "app/cli/Command.h"
 #include "core/common/AtomicFile.h"
 #include "core/common/Error.h"
-#include "core/deform/FaceDomain.h"
 #include "core/document/OwnFace.h"
 #include "core/face/FaceBuild.h"
+#include "core/face/FaceDomain.h"
 #include "core/face/LandmarkFinder.h"
 #include "core/io/MeshIO.h"
 #include "core/project/FaceProject.h"
@@ -40,7 +40,7 @@ face::FaceLandmarks givenLandmarks(const face::UvMesh& mesh, const std::string& 
     face::FaceLandmarks given;
     if (file.empty()) return given;
     for (const auto& [landmark, input] : readLandmarkFile(file)) {
-        const std::string where = file + ": " + std::string(face::landmarkName(landmark));
+        const std::string where = file + ": " + std::string(toString(landmark));
         given[landmark] =
             face::resolveLandmark(mesh, input, face::LandmarkSource::File, 1.0,
                                   "given in " + std::filesystem::path(file).filename().string(), where);
@@ -53,12 +53,11 @@ void printLandmarks(const face::FaceLandmarks& landmarks) {
     for (const auto l : face::allLandmarks()) {
         const auto& f = landmarks[l];
         if (!f.found()) {
-            std::printf("  %-19s %-8s %s\n", std::string(face::landmarkName(l)).c_str(), "missing",
+            std::printf("  %-19s %-8s %s\n", std::string(toString(l)).c_str(), "missing",
                         face::isRequired(l) ? "(required)" : "(optional)");
             continue;
         }
-        std::printf("  %-19s %-8s sure %3.0f%%  uv (%.4f, %.4f)  %s\n",
-                    std::string(face::landmarkName(l)).c_str(),
+        std::printf("  %-19s %-8s sure %3.0f%%  uv (%.4f, %.4f)  %s\n", std::string(toString(l)).c_str(),
                     std::string(face::sourceName(f.source)).c_str(), 100.0 * f.confidence, f.uv[0], f.uv[1],
                     f.method.c_str());
     }
@@ -115,7 +114,7 @@ nlohmann::json reportJson(const face::BuiltFace& built, const std::string& layou
             e["method"] = f.method;
             e["island"] = f.island;
         }
-        j["landmarks"][std::string(face::landmarkName(l))] = e;
+        j["landmarks"][std::string(toString(l))] = e;
     }
     for (std::size_t k = 0; k < r.islands.size(); ++k) {
         const auto& is = r.islands[k];
@@ -168,7 +167,7 @@ int runFaceBuild(const FaceBuildCliOptions& o) {
         std::string missing;
         for (const auto l : face::allLandmarks())
             if (face::isRequired(l) && !suggestion.landmarks[l].found())
-                missing += (missing.empty() ? "" : ", ") + std::string(face::landmarkName(l));
+                missing += (missing.empty() ? "" : ", ") + std::string(toString(l));
         throwInputError(o.mesh, "could not find the landmarks " + missing +
                                     ": give them with --landmarks L.json (see docs/deformable-face.md)");
     }
@@ -180,7 +179,7 @@ int runFaceBuild(const FaceBuildCliOptions& o) {
         std::string names;
         double sure = 1.0;
         for (const auto l : estimated) {
-            names += (names.empty() ? "" : ", ") + std::string(face::landmarkName(l));
+            names += (names.empty() ? "" : ", ") + std::string(toString(l));
             sure = std::min(sure, suggestion.landmarks[l].confidence);
         }
         throwInputError(

@@ -2,8 +2,8 @@
 // (the file and the meshes it references) with the JSON path of the first problem.
 #include "app/cli/Command.h"
 #include "core/common/Error.h"
-#include "core/deform/BundledFace.h"
 #include "core/document/AvatarDocument.h"
+#include "core/face/BundledFace.h"
 #include "core/gltf/TargetNames.h"
 #include "core/gltf/VisemeMapNames.h"
 #include "core/phonetics/PhonemeMaps.h"
@@ -35,7 +35,7 @@ struct NewProjectOptions {
 };
 
 RestChoice restOf(const NewProjectOptions& o) {
-    if (const auto choice = restChoiceFromString(o.rest)) return *choice;
+    if (const auto choice = fromString<RestChoice>(o.rest)) return *choice;
     throwUsage("--rest must be auto, free or key, got '" + o.rest + "'");
 }
 
@@ -128,14 +128,14 @@ int runNew(const NewProjectOptions& o, bool targetGiven) {
 
     project.visemes = reordered(std::move(project.visemes), o.order);
     project.frequencies = frequenciesOf(o);
-    const auto mode = weightModeFromString(o.weights);
+    const auto mode = fromString<WeightMode>(o.weights);
     if (!mode || *mode == WeightMode::Painted)
         throwInputError("--weights", "expected uniform or area, got '" + o.weights + "'");
     project.weights.mode = *mode;
     project.reduction.target = o.target;
 
     if (!o.face.empty()) {
-        project.deformation.cascade = face::makeFaceCascade(face::parseIndividual(o.face, "--face"));
+        project.deformation.cascade = face::makeFaceCascade(parseEnum<face::Individual>(o.face, "--face"));
         project.deformation.values = project.deformation.cascade.defaults();
         project.deformation.visemes = oculusVisemes();
     }

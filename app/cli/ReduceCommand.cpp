@@ -9,7 +9,7 @@
 #include "core/common/OutputSet.h"
 #include "core/common/TextParsing.h"
 #include "core/export/ReductionOutputs.h"
-#include "core/export/Xface.h"
+#include "core/import/XfaceImport.h"
 #include "core/inspect/DistanceUnits.h"
 #include "core/project/ProjectRun.h"
 #include "core/project/ReduceInputs.h"
@@ -119,7 +119,7 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
 }
 
 RestChoice restChoiceFlag(const std::string& text) {
-    if (const auto choice = restChoiceFromString(text)) return *choice;
+    if (const auto choice = fromString<RestChoice>(text)) return *choice;
     throwUsage("--rest must be free or key (or auto), got '" + text + "'");
 }
 
@@ -140,8 +140,8 @@ void checkFlagCombinations(const ReduceOptions& o) {
     if (!o.fdp.empty() &&
         (!o.project.empty() || !o.neutral.empty() || !o.visemes.empty() || !o.visemeDir.empty()))
         throwUsage("--fdp already names the meshes; drop --project/--neutral/--viseme/--visemes");
-    if (o.method != "auto" && o.method != "dp" && o.method != "bnb" && o.method != "lp")
-        throwUsage("--method must be auto, dp, bnb or lp, got '" + o.method + "'");
+    if (!fromString<ReductionMethod>(o.method))
+        throwUsage("--method must be " + enumNameList<ReductionMethod>() + ", got '" + o.method + "'");
     if (!(o.timeLimit >= 0)) throwUsage("--time-limit must be >= 0 seconds (0: no limit)");
     if (!o.rest.empty()) restChoiceFlag(o.rest);
     if (!keyMeshFormatsFromString(o.format, 0))
@@ -158,7 +158,7 @@ void applySolverFlags(const ReduceOptions& o, ReduceSettings& settings) {
                                          : "/reduction/constraints + --pin/--apart/--together";
         settings.constraints = combineConstraints(settings.constraints, flags);
     }
-    settings.options.method = reductionMethodFromString(o.method, "--method");
+    settings.options.method = parseEnum<ReductionMethod>(o.method, "--method");
     // A project's rest model holds unless a flag says otherwise; without a project: auto.
     if (!o.rest.empty())
         settings.rest = restChoiceFlag(o.rest);

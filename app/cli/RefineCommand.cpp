@@ -11,11 +11,11 @@
 #include "core/common/Error.h"
 #include "core/common/InputRegistry.h"
 #include "core/common/TextParsing.h"
-#include "core/deform/BundledFace.h"
-#include "core/deform/FaceDomain.h"
 #include "core/document/Commands.h"
 #include "core/document/Document.h"
 #include "core/document/VisemeCommands.h"
+#include "core/face/BundledFace.h"
+#include "core/face/FaceDomain.h"
 #include "core/io/MeshIO.h"
 #include "core/project/Project.h"
 
@@ -64,7 +64,7 @@ RefineFace loadFace(const RefineOptions& o) {
         m.source = o.project;
         m.project = std::move(project);
     } else {
-        m.cascade = face::makeFaceCascade(face::parseIndividual(o.face, "--face"));
+        m.cascade = face::makeFaceCascade(parseEnum<face::Individual>(o.face, "--face"));
         m.q = m.cascade.defaults();
         m.source = o.face;
     }
@@ -83,7 +83,7 @@ RefineFace loadFace(const RefineOptions& o) {
 }
 
 nlohmann::json settingsJson(const CriterionSettings& s) {
-    nlohmann::json j{{"criterion", criterionName(s.kind)}, {"max_depth", s.maxDepth}};
+    nlohmann::json j{{"criterion", toString(s.kind)}, {"max_depth", s.maxDepth}};
     if (s.kind == CriterionKind::Depth) j["depth"] = s.depth.depth;
     if (s.kind == CriterionKind::Normals) {
         j["angle_deg"] = s.normals.dihedralAngleDeg;

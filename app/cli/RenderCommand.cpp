@@ -3,7 +3,7 @@
 #include "app/cli/Command.h"
 #include "core/common/Error.h"
 #include "core/common/TextParsing.h"
-#include "core/deform/BundledFace.h"
+#include "core/face/BundledFace.h"
 #include "core/io/MeshIO.h"
 #include "core/preview/Renderer.h"
 

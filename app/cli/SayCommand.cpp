@@ -12,7 +12,7 @@
 #include "core/common/AtomicFileWriter.h"
 #include "core/common/Error.h"
 #include "core/common/OutputPolicy.h"
-#include "core/export/Gltf.h"
+#include "core/export/GltfExport.h"
 #include "core/gltf/TargetNames.h"
 #include "core/io/JsonWrite.h"
 #include "core/phonetics/CorpusText.h"
@@ -236,9 +236,9 @@ int runSay(const SayOptions& o) {
         throwUsage("give the text to say, or --text-file, not both");
     }
     if (!(o.fps > 0 && o.fps <= kMaxFps)) throwUsage("--fps must be in (0, 1000]");
-    const auto interpolation = interpolationFromString(o.blend);
+    const auto interpolation = fromString<runtime::Interpolation>(o.blend);
     if (!interpolation) throwUsage("--blend must be linear, cubic or dominance, not '" + o.blend + "'");
-    const auto format = trackFormatFromString(o.format);
+    const auto format = fromString<TrackFormat>(o.format);
     if (!format) throwUsage("--format must be oculus, rhubarb or talkinghead, not '" + o.format + "'");
     if (o.project.empty() == o.avatar.empty()) throwUsage("give --project or --avatar");
     const bool constrained = !o.constraints.names().empty() || o.constraints.maxErrorMm > 0;

@@ -6,11 +6,11 @@
 #include "core/adaptive/CascadeSurface.h"
 #include "core/common/Error.h"
 #include "core/common/OutputSet.h"
-#include "core/deform/BundledFace.h"
-#include "core/deform/FaceDomain.h"
 #include "core/deform/Visemes.h"
-#include "core/export/VisemeFile.h"
+#include "core/face/BundledFace.h"
+#include "core/face/FaceDomain.h"
 #include "core/face/HeadParts.h"
+#include "core/import/VisemeFile.h"
 #include "core/io/MeshIO.h"
 #include "core/project/Project.h"
 
@@ -104,7 +104,7 @@ int runVisemes(const VisemesOptions& o) {
         cascade = project.deformation.cascade;
         visemes = project.deformation.visemes.empty() ? oculusVisemes() : project.deformation.visemes;
     } else {
-        cascade = face::makeFaceCascade(face::parseIndividual(o.face, "--face"));
+        cascade = face::makeFaceCascade(parseEnum<face::Individual>(o.face, "--face"));
         visemes = oculusVisemes();
     }
     if (!o.set.empty()) visemes = bundledVisemeSet(o.set, VISEMELAB_ASSETS_DIR, cascade, "--set");

@@ -5,7 +5,7 @@
 namespace vl::cli {
 
 void applyWeightsOption(const std::string& weights, ReduceSettings& settings) {
-    if (const auto mode = weightModeFromString(weights)) {
+    if (const auto mode = fromString<WeightMode>(weights)) {
         settings.weightMode = *mode;
         if (*mode == WeightMode::Painted) throwUsage("painted weights need a file: --weights FILE");
     } else {

@@ -91,25 +91,6 @@ bool Criterion::allowsSimplification(const AdaptiveMesh& mesh,
     return true;
 }
 
-std::string_view criterionName(CriterionKind kind) {
-    switch (kind) {
-    case CriterionKind::Depth:
-        return "depth";
-    case CriterionKind::Normals:
-        return "normals";
-    case CriterionKind::Contour:
-        return "contour";
-    }
-    return "depth";
-}
-
-CriterionKind parseCriterionKind(std::string_view name, std::string_view where) {
-    for (const auto kind : {CriterionKind::Depth, CriterionKind::Normals, CriterionKind::Contour})
-        if (name == criterionName(kind)) return kind;
-    throwInputError(where,
-                    "unknown criterion '" + std::string(name) + "' (expected depth, normals or contour)");
-}
-
 void validateCriterionSettings(const CriterionSettings& s) {
     if (s.maxDepth < 0 || s.maxDepth > 30) throwInputError("maxDepth", "must be in [0, 30]");
     if (s.depth.depth < 0) throwInputError("depth", "must be >= 0");

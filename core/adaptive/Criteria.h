@@ -8,6 +8,7 @@
 //  - Contour: refine a face when its surface-contour error (|p(u,v) - P_face(u,v)| sampled over the
 //    face) has an average above one threshold or a maximum above another.
 // Simplification (edge welds) keeps a weld only if no face it changes would need refinement.
+#include "core/common/EnumNames.h"
 #include "core/mesh/Mesh.h"
 
 #include <memory>
@@ -19,6 +20,12 @@ namespace vl {
 class AdaptiveMesh;
 
 enum class CriterionKind { Depth, Normals, Contour };
+template <> struct EnumNames<CriterionKind> {
+    static constexpr const char* what = "criterion";
+    static constexpr EnumName<CriterionKind> names[] = {{CriterionKind::Depth, "depth"},
+                                                        {CriterionKind::Normals, "normals"},
+                                                        {CriterionKind::Contour, "contour"}};
+};
 
 struct DepthCriterionParams {
     int depth = 3; // levels of edge bisection below the base mesh
@@ -47,9 +54,6 @@ struct CriterionSettings {
     bool operator==(const CriterionSettings&) const = default;
 };
 
-std::string_view criterionName(CriterionKind kind); // "depth", "normals", "contour"
-// Throws InputError naming `where` for other names.
-CriterionKind parseCriterionKind(std::string_view name, std::string_view where);
 // Throws InputError naming the parameter for values out of range (negative thresholds, depth < 0,
 // maxDepth outside [0, 30], samplesPerSide outside [1, 32]).
 void validateCriterionSettings(const CriterionSettings& settings);

@@ -170,10 +170,10 @@ void parseSay(Fields& f, const std::filesystem::path& folder, const std::string&
     s.fps = f.positive("fps", 60);
     if (s.fps > kMaxFps) f.fail("fps", "must be in (0, 1000]");
     s.blend = f.text("blend", "cubic");
-    if (!interpolationFromString(s.blend))
+    if (!fromString<runtime::Interpolation>(s.blend))
         f.fail("blend", "must be linear, cubic or dominance, not '" + s.blend + "'");
     s.format = f.text("format", "oculus");
-    if (!trackFormatFromString(s.format))
+    if (!fromString<TrackFormat>(s.format))
         f.fail("format", "must be oculus, rhubarb or talkinghead, not '" + s.format + "'");
     s.out = f.output("out", id + ".json", true);
     s.wav = f.output("wav", id + ".wav");

@@ -96,7 +96,7 @@ std::vector<std::filesystem::path> runSay(BatchContext& context, const BatchJob&
         throwInputError(where + ": voice/rate", e.what());
     }
     requireSpeech(spoken.utterance, where);
-    const auto interpolation = *interpolationFromString(s.blend);
+    const auto interpolation = *fromString<runtime::Interpolation>(s.blend);
     const SpokenTrackOptions options{out / s.out,
                                      s.wav.empty() ? std::filesystem::path() : out / s.wav,
                                      "",
@@ -107,7 +107,7 @@ std::vector<std::filesystem::path> runSay(BatchContext& context, const BatchJob&
                                      s.fps};
     const SpokenTrack track = spokenTrack(*face.value, spoken.utterance, options, s.text);
     const std::string trackText =
-        formatTrack(track.file, *trackFormatFromString(s.format), (out / s.out).string());
+        formatTrack(track.file, *fromString<TrackFormat>(s.format), (out / s.out).string());
     // Written as `say` writes them: the track last.
     if (!s.wav.empty())
         writeFileAtomically(out / s.wav, formatWav(spoken.utterance.samples, spoken.utterance.sampleRate));
@@ -130,7 +130,7 @@ std::vector<std::filesystem::path> runReduce(BatchContext& context, const BatchJ
     request.targets = r.targets;
     request.freqFile = r.freqFile;
     request.mapFile = r.mapFile;
-    if (const auto mode = weightModeFromString(r.weights)) {
+    if (const auto mode = fromString<WeightMode>(r.weights)) {
         request.weightMode = *mode;
     } else {
         request.weightMode = WeightMode::Painted;

@@ -20,7 +20,6 @@ class CascadeSampler {
     CascadeSampler(const DeformationCascade& cascade, std::span<const Vec2> uvs);
 
     std::size_t vertexCount() const { return baseX_.size(); }
-    std::size_t parameterCount() const { return fields_.size(); }
     // Number of stored non-zero samples of parameter k (its support on this mesh).
     std::size_t supportSize(std::size_t parameter) const { return fields_[parameter].index.size(); }
 

@@ -43,27 +43,6 @@ double falloffWeight(Falloff kind, double t) {
     return 0.0;
 }
 
-std::string_view falloffName(Falloff kind) {
-    switch (kind) {
-    case Falloff::Linear:
-        return "linear";
-    case Falloff::Smoothstep:
-        return "smoothstep";
-    case Falloff::Cosine:
-        return "cosine";
-    case Falloff::Gaussian:
-        return "gaussian";
-    }
-    return "?";
-}
-
-Falloff parseFalloff(std::string_view name, std::string_view where) {
-    for (const Falloff f : {Falloff::Linear, Falloff::Smoothstep, Falloff::Cosine, Falloff::Gaussian})
-        if (name == falloffName(f)) return f;
-    throwInputError(where, "unknown falloff '" + std::string(name) +
-                               "' (expected linear, smoothstep, cosine or gaussian)");
-}
-
 double InfluenceField::weight(double u, double v) const {
     // Local coordinates (a,b) along the rotated ellipse axes. This is the inner loop of every cascade
     // evaluation; most regions are not rotated, and then need no sine and cosine (cos 0 = 1 and

@@ -5,6 +5,7 @@
 // - InfluenceField: an analytic elliptic influence region with a monotone falloff, zero outside.
 // A VectorField is the sum of an optional sampled part and any number of influence regions, which is
 // how composite fields (the jaw's constant chin area plus its lip opening) are described.
+#include "core/common/EnumNames.h"
 #include "core/mesh/Mesh.h"
 
 #include <string_view>
@@ -29,12 +30,16 @@ struct SampledField {
 // How an influence decreases from 1 (inner plateau) to 0 (outer ellipse); all are monotone and
 // reach exactly 0 at the border, so the field is continuous.
 enum class Falloff { Linear, Smoothstep, Cosine, Gaussian };
+template <> struct EnumNames<Falloff> {
+    static constexpr const char* what = "falloff";
+    static constexpr EnumName<Falloff> names[] = {{Falloff::Linear, "linear"},
+                                                  {Falloff::Smoothstep, "smoothstep"},
+                                                  {Falloff::Cosine, "cosine"},
+                                                  {Falloff::Gaussian, "gaussian"}};
+};
 
 // Falloff value for t in [0,1] (t <= 0 gives 1, t >= 1 gives 0).
 double falloffWeight(Falloff kind, double t);
-std::string_view falloffName(Falloff kind);
-// Parses "linear", "smoothstep", "cosine", "gaussian"; throws InputError naming `where` otherwise.
-Falloff parseFalloff(std::string_view name, std::string_view where);
 
 // An elliptic influence region. Inside the inner "plateau" ellipse the field is the full
 // magnitude * normalised(direction); between the plateau and the outer ellipse it decreases

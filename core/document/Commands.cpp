@@ -2,12 +2,12 @@
 
 #include "core/common/Error.h"
 #include "core/common/TextParsing.h"
-#include "core/deform/BundledFace.h"
-#include "core/deform/FaceDomain.h"
 #include "core/document/AvatarDocument.h"
 #include "core/document/CommandSupport.h"
 #include "core/document/PhonemeMapCommands.h"
 #include "core/document/VisemeCommands.h"
+#include "core/face/BundledFace.h"
+#include "core/face/FaceDomain.h"
 #include "core/face/FaceFrame.h"
 #include "core/gltf/AvatarReduce.h"
 #include "core/gltf/AvatarRest.h"
@@ -213,7 +213,7 @@ Document retarget(const Document& document, face::Individual individual) {
     base.sampled = face::makeFaceGeometry(individual);
     Document next = document;
     next.face.cascade = std::make_shared<const DeformationCascade>(
-        vl::retarget(*document.face.cascade, base, std::string(face::individualName(individual))));
+        vl::retarget(*document.face.cascade, base, std::string(toString(individual))));
     next.face.individual = individual;
     return checked(std::move(next));
 }
@@ -405,8 +405,7 @@ Document beginOwnFace(const Document& document, OwnFaceCandidate candidate) {
 
 Document placeOwnFaceLandmark(const Document& document, face::Landmark landmark, const Vec2& uv) {
     if (!document.ownFace)
-        throwInputError(std::string(face::landmarkName(landmark)),
-                        "no own-face step is open (Use my mesh...)");
+        throwInputError(std::string(toString(landmark)), "no own-face step is open (Use my mesh...)");
     Document next = document;
     next.ownFace = std::make_shared<const OwnFaceCandidate>(placeLandmark(*document.ownFace, landmark, uv));
     return next;

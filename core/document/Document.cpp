@@ -1,8 +1,8 @@
 #include "core/document/Document.h"
 
 #include "core/common/Error.h"
-#include "core/deform/FaceDomain.h"
 #include "core/document/AvatarDocument.h"
+#include "core/face/FaceDomain.h"
 #include "core/gltf/AvatarScan.h"
 #include "core/project/BuiltinGeometry.h"
 #include "core/project/FaceProject.h"

@@ -6,14 +6,17 @@
 //
 // A Project (core/project) is the file form of a document: documentFromProject loads the meshes it
 // names, projectFromDocument writes what the document holds (embedded geometry from memory, never
-// re-read from disk). What is derived from a document (the reduction curve, the refined mesh, GPU
-// samples) lives in the services that compute it, keyed by the document's inputs.
+// re-read from disk). What is derived from a document (the weights and frequencies of
+// DocumentInputs, the reduction curve, the adaptive mesh a refinement works on, GPU samples) lives in
+// the services that compute it, keyed by the document's inputs. A refined (u,v) mesh the designer
+// adopts is not derived data: edit::setFaceDomain makes it the face's mesh (FaceModel::domain), the
+// project saves it (ProjectDeformation::domain) and the visemes are generated on it.
 #include "core/adaptive/Criteria.h"
-#include "core/deform/BundledFace.h"
 #include "core/deform/DeformationCascade.h"
 #include "core/deform/Visemes.h"
 #include "core/document/DocumentAvatar.h"
 #include "core/document/OwnFace.h"
+#include "core/face/BundledFace.h"
 #include "core/project/Project.h"
 #include "core/reduce/Frequencies.h"
 #include "core/reduce/Reduction.h"
@@ -38,9 +41,11 @@ inline constexpr int kFaceDomainResolution = 40;
 struct FaceModel {
     std::shared_ptr<const DeformationCascade> cascade; // null = the document has no face
     face::Individual individual = face::Individual::Bundled;
-    std::shared_ptr<const MeshData> domain; // (u,v) triangulation; positions unused
-    std::vector<double> parameters;         // one value per cascade parameter
-    std::vector<VisemeParameters> presets;  // empty = the Oculus presets (oculusVisemes())
+    // The (u,v) triangulation the face is shown and its visemes are generated on (positions unused):
+    // the default grid, the one `face build` made, or an adopted refined mesh; saved with the project.
+    std::shared_ptr<const MeshData> domain;
+    std::vector<double> parameters;        // one value per cascade parameter
+    std::vector<VisemeParameters> presets; // empty = the Oculus presets (oculusVisemes())
 
     bool operator==(const FaceModel&) const = default;
 };

@@ -1,7 +1,7 @@
 #include "core/document/OwnFace.h"
 
 #include "core/common/Error.h"
-#include "core/export/Gltf.h"
+#include "core/import/GltfImport.h"
 #include "core/io/MeshIO.h"
 
 #include <algorithm>
@@ -23,7 +23,7 @@ std::string OwnFaceCandidate::missingRequired() const {
     std::string missing;
     for (const auto l : face::allLandmarks())
         if (face::isRequired(l) && !landmarks()[l].found())
-            missing += (missing.empty() ? "" : ", ") + std::string(face::landmarkName(l));
+            missing += (missing.empty() ? "" : ", ") + std::string(toString(l));
     return missing;
 }
 
@@ -42,9 +42,8 @@ OwnFaceCandidate placeLandmark(const OwnFaceCandidate& candidate, face::Landmark
     face::LandmarkInput input;
     input.uv = uv;
     OwnFaceCandidate next = candidate;
-    next.suggestion.landmarks[landmark] =
-        face::resolveLandmark(*candidate.mesh, input, face::LandmarkSource::File, 1.0, "placed by you",
-                              face::landmarkName(landmark));
+    next.suggestion.landmarks[landmark] = face::resolveLandmark(
+        *candidate.mesh, input, face::LandmarkSource::File, 1.0, "placed by you", toString(landmark));
     return next;
 }
 

@@ -3,33 +3,13 @@
 #include "core/common/AtomicFile.h"
 #include "core/common/Error.h"
 #include "core/common/OutputSet.h"
-#include "core/export/Gltf.h"
+#include "core/export/GltfExport.h"
 #include "core/export/KeyMeshFiles.h"
 #include "core/export/MappingJson.h"
 #include "core/export/RuntimePackageWriter.h"
 #include "core/export/Xface.h"
 
 namespace vl {
-
-std::optional<ExportFormat> exportFormatFromString(std::string_view text) {
-    for (ExportFormat f : {ExportFormat::Glb, ExportFormat::Runtime, ExportFormat::Vrml, ExportFormat::Obj})
-        if (text == toString(f)) return f;
-    return std::nullopt;
-}
-
-const char* toString(ExportFormat format) {
-    switch (format) {
-    case ExportFormat::Glb:
-        return "glb";
-    case ExportFormat::Runtime:
-        return "runtime";
-    case ExportFormat::Vrml:
-        return "vrml";
-    case ExportFormat::Obj:
-        return "obj";
-    }
-    return "?";
-}
 
 std::vector<std::filesystem::path> exportModel(const ReducedModel& model, ExportFormat format,
                                                const std::filesystem::path& out,

@@ -1,6 +1,7 @@
 #pragma once
 // One entry point for every export format: what `visemelab export` and the editor's export menu
 // call (the reduced model of a project comes from core/project/ProjectRun.h).
+#include "core/common/EnumNames.h"
 #include "core/reduce/ReducedModel.h"
 #include "core/reduce/VisemeSet.h"
 
@@ -12,9 +13,13 @@
 namespace vl {
 
 enum class ExportFormat { Glb, Runtime, Vrml, Obj };
-
-std::optional<ExportFormat> exportFormatFromString(std::string_view text); // "glb", "runtime", "vrml", "obj"
-const char* toString(ExportFormat format);
+template <> struct EnumNames<ExportFormat> {
+    static constexpr const char* what = "format";
+    static constexpr EnumName<ExportFormat> names[] = {{ExportFormat::Glb, "glb"},
+                                                       {ExportFormat::Runtime, "runtime"},
+                                                       {ExportFormat::Vrml, "vrml"},
+                                                       {ExportFormat::Obj, "obj"}};
+};
 
 struct ExportOptions {
     bool quantise = false;         // runtime package: 16-bit positions

@@ -1,6 +1,6 @@
+#include "core/export/GltfExport.h"
 #include "core/common/AtomicFile.h"
 #include "core/common/Error.h"
-#include "core/export/Gltf.h"
 
 #include <tiny_gltf.h>
 

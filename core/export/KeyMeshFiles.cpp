@@ -1,18 +1,10 @@
 #include "core/export/KeyMeshFiles.h"
 
 #include "core/common/Error.h"
+#include "core/common/FileNames.h"
 #include "core/io/MeshIO.h"
 
-#include <cctype>
-
 namespace vl {
-
-std::string fileSafeName(std::string_view name) {
-    std::string safe(name);
-    for (char& c : safe)
-        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_' && c != '+') c = '_';
-    return safe;
-}
 
 std::string neutralFileName(std::string_view extension) {
     return "neutral" + std::string(extension);

@@ -10,11 +10,8 @@
 
 namespace vl {
 
-// File-system safe form of a name: letters, digits, '-', '_' and '+' kept, the rest become '_'.
-std::string fileSafeName(std::string_view name);
-
 // "neutral" + extension for the neutral mesh, "reduced_<k>_<safe name>" + extension for key k
-// (the names the reduce command uses, unique through the index).
+// (the names the reduce command uses, unique through the index; fileSafeName: core/common/FileNames.h).
 std::string neutralFileName(std::string_view extension);
 std::string keyFileName(const ReducedModel& model, std::size_t key, std::string_view extension);
 

@@ -11,14 +11,9 @@
 // silence): the key "sil" was merged into, else "Rest". The VRML files use the layout XfacePlayer's
 // loader reads (core/io formatVrml).
 //
-// Import: an .fdp's entities; the neutral is the entity aliased "Rest" (else the first entity),
-// the visemes are the category="Viseme" entities in file order, each entity's mesh files (relative
-// to the .fdp) read with core/io and concatenated. <stem>.dic beside the .fdp, when present, gives
-// the phoneme map. Errors name the file, line and entity.
+// The reader is core/import/XfaceImport.h.
 #include "core/common/OutputSet.h"
-#include "core/reduce/Frequencies.h"
 #include "core/reduce/ReducedModel.h"
-#include "core/reduce/VisemeSet.h"
 
 #include <filesystem>
 #include <string>
@@ -27,29 +22,10 @@
 
 namespace vl {
 
-struct FdpEntity {
-    std::string alias;
-    std::string category;                 // "Viseme", "Expression", "Modifier", ...
-    std::vector<std::string> meshFiles;   // as written in <mesh file=...>
-    std::vector<std::string> meshFormats; // <mesh format=...>, e.g. "wrl"
-    int line = 0;
-};
-
-struct FdpDocument {
-    std::string fileVersion;                          // <head><file version=...>
-    std::vector<std::pair<std::string, double>> fapu; // <head><fapu ...> attributes in file order
-    std::vector<FdpEntity> entities;                  // <source><entity> in file order
-};
-
-// Parses the XML; throws InputError "<source>:<line>: ..." for malformed XML or a missing
-// <xfdp>/<source>, an entity without alias or mesh file.
-FdpDocument parseFdp(std::string_view text, std::string_view source);
 // The .fdp text for a model whose meshes are named by KeyMeshFiles (extension ".wrl").
 std::string formatFdp(const ReducedModel& model);
 
 // Xface phoneme dictionary: language line, then "phoneme alias" lines (blank lines ignored).
-PhonemeVisemeMap parseXfaceDictionary(std::string_view text, std::string_view source,
-                                      std::string* language = nullptr);
 std::string formatXfaceDictionary(const ReducedModel& model, std::string_view language = "english");
 
 // The alias each key gets in the .fdp and .dic: its name with white space replaced, made unique
@@ -62,12 +38,5 @@ std::vector<std::string> addXfaceFace(OutputSet& outputs, const ReducedModel& mo
 // The same written into outDir as the output set "export-vrml".
 std::vector<std::string> writeXfaceFace(const std::filesystem::path& outDir, const ReducedModel& model,
                                         std::string_view faceName = "face");
-
-struct XfaceFace {
-    VisemeSet set;
-    PhonemeVisemeMap dictionary;           // empty when no <stem>.dic exists; phonemes -> Viseme entities
-    std::vector<std::string> restPhonemes; // .dic phonemes shown by the neutral entity (pauses): not visemes
-};
-XfaceFace loadXfaceFace(const std::filesystem::path& fdpPath);
 
 } // namespace vl

@@ -1,7 +1,7 @@
 #include "core/face/FaceAlignment.h"
 
 #include "core/common/Error.h"
-#include "core/deform/FaceDomain.h"
+#include "core/face/FaceDomain.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -71,7 +71,7 @@ double squareRadius(const Vec2& c, const Vec2& d) {
 FaceAlignment::FaceAlignment(const UvMesh& mesh, const UvLocator& locator, const FaceLandmarks& landmarks) {
     for (std::size_t k = 0; k < kRequiredLandmarkCount; ++k)
         if (!landmarks.at[k].found())
-            throwInputError("landmarks", "'" + std::string(landmarkName(static_cast<Landmark>(k))) +
+            throwInputError("landmarks", "'" + std::string(toString(static_cast<Landmark>(k))) +
                                              "' is missing: the face cannot be aligned without it");
     // Step 1's lip gap: the user's gap between the lip middles in canonical units, from an affine fit
     // of the landmarks with the lips on the mouth line.
@@ -267,10 +267,6 @@ Vec2 FaceAlignment::retract(const Vec2& p) const {
 
 Vec2 FaceAlignment::canonical(const Vec2& domain) const {
     return retract(Vec2(domain[0], squeezedMouthV(domain[0], domain[1], closedGap_)));
-}
-
-Vec2 FaceAlignment::meshUV(const Vec2& domain) const {
-    return spline_(canonical(domain));
 }
 
 } // namespace vl::face

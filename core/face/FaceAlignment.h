@@ -32,8 +32,6 @@ class FaceAlignment {
     // (coincident or collinear, e.g. left and right sharing (u,v) in a mirrored layout).
     FaceAlignment(const UvMesh& mesh, const UvLocator& locator, const FaceLandmarks& landmarks);
 
-    // The mesh's (u,v) for a domain point (all three steps).
-    Vec2 meshUV(const Vec2& domain) const;
     // Steps 1 and 2 only: the canonical point a domain point is sampled at.
     Vec2 canonical(const Vec2& domain) const;
     // Step 3 only.

@@ -1,9 +1,9 @@
 #include "core/face/FaceBuild.h"
 
 #include "core/common/Error.h"
-#include "core/deform/BundledFace.h"
-#include "core/deform/FaceDomain.h"
-#include "core/deform/FaceShape.h" // the eye opening's lens, shared with the bundled face
+#include "core/face/BundledFace.h"
+#include "core/face/FaceDomain.h"
+#include "core/face/FaceShape.h" // the eye opening's lens, shared with the bundled face
 #include "core/face/HeadParts.h"
 #include "core/face/MeshGeometry.h"
 
@@ -226,7 +226,7 @@ namespace {
 // show none of the eyeballs (issue 32). Inside each eye's opening, the bundled face's lens between the
 // corners in the domain (the alignment puts the user's corners there), the skin turns back behind
 // the carried eyeball (where makeHeadParts puts it) into the socket, as the bundled face's does
-// (core/deform/FaceGeometry.cpp): first to the eyeball's front (ramped in from the lid margin), then
+// (core/face/FaceGeometry.cpp): first to the eyeball's front (ramped in from the lid margin), then
 // deeper towards the axis by the bundled socket's profile, scaled to the face. Where the alignment
 // maps the lens onto less height than the bundled face's proportion of the eye's width (a face whose
 // (u,v) crowd the eyes), the lens is taller in the domain so that the opening keeps that proportion.

@@ -1,7 +1,7 @@
 #include "core/face/FaceFrame.h"
 
 #include "core/common/Error.h"
-#include "core/deform/BundledFace.h"
+#include "core/face/BundledFace.h"
 
 namespace vl::face {
 

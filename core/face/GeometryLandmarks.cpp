@@ -11,7 +11,7 @@
 //  7. whatever is still missing, estimated from the bundled face's proportions.
 #include "core/face/GeometryLandmarks.h"
 
-#include "core/deform/BundledFace.h"
+#include "core/face/BundledFace.h"
 #include "core/face/ClosedEyes.h"
 #include "core/face/FaceFrame.h"
 #include "core/face/MeshGeometry.h"

@@ -1,9 +1,9 @@
 #include "core/face/HeadParts.h"
 
 #include "core/common/Error.h"
-#include "core/deform/BundledFace.h"
 #include "core/deform/CascadeSampler.h"
-#include "core/deform/FaceDomain.h"
+#include "core/face/BundledFace.h"
+#include "core/face/FaceDomain.h"
 #include "core/face/FaceFrame.h"
 
 #include <algorithm>
@@ -16,7 +16,7 @@ namespace vl::face {
 namespace {
 
 // Where the lower teeth, the tongue and the cavity's floor follow the jaw: the chin, inside the
-// mandible's plateau of jaw_open (core/deform/FaceFields.cpp), so they move with it rigidly.
+// mandible's plateau of jaw_open (core/face/FaceFields.cpp), so they move with it rigidly.
 constexpr Vec2 kMandibleAnchor{kMouthU, 0.16};
 
 // A part under construction: vertices with (u,v), anchors and weights added together.

@@ -1,31 +1,12 @@
 #include "core/face/Landmarks.h"
 
 #include "core/common/Error.h"
-#include "core/deform/FaceDomain.h"
+#include "core/face/FaceDomain.h"
 #include "core/face/UvMesh.h"
 
 #include <limits>
 
 namespace vl::face {
-
-namespace {
-
-constexpr std::array<std::string_view, kLandmarkCount> kNames = {
-    "mouth_corner_right", "mouth_corner_left", "upper_lip_mid",  "lower_lip_mid", "eye_outer_right",
-    "eye_inner_right",    "eye_inner_left",    "eye_outer_left", "nose_tip",      "upper_lip_right",
-    "upper_lip_left",     "lower_lip_right",   "lower_lip_left"};
-
-} // namespace
-
-std::string_view landmarkName(Landmark landmark) {
-    return kNames[static_cast<std::size_t>(landmark)];
-}
-
-std::optional<Landmark> parseLandmarkName(std::string_view name) {
-    for (std::size_t k = 0; k < kLandmarkCount; ++k)
-        if (kNames[k] == name) return static_cast<Landmark>(k);
-    return std::nullopt;
-}
 
 Vec2 canonicalPosition(Landmark landmark) {
     const double h = kMouthHalfHeight, w = kMouthHalfWidth;

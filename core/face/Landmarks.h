@@ -2,6 +2,7 @@
 // Facial landmarks that align a user's mesh with the normalised face domain: where they sit in the
 // domain (the same for every individual) and where they were found on the user's mesh, with how
 // and how sure. "Right" and "left" are the face's own (its right is the viewer's left, u < 0.5).
+#include "core/common/EnumNames.h"
 #include "core/mesh/Mesh.h"
 
 #include <array>
@@ -32,14 +33,12 @@ enum class Landmark {
 constexpr std::size_t kLandmarkCount = 13;
 constexpr std::size_t kRequiredLandmarkCount = 9; // the ones before UpperLipRight
 
-// "mouth_corner_right", "upper_lip_mid", "eye_outer_left", "nose_tip", ...
-std::string_view landmarkName(Landmark landmark);
-std::optional<Landmark> parseLandmarkName(std::string_view name);
+// Names (EnumNames below): "mouth_corner_right", "upper_lip_mid", "eye_outer_left", "nose_tip", ...
 inline bool isRequired(Landmark landmark) {
     return static_cast<std::size_t>(landmark) < kRequiredLandmarkCount;
 }
 
-// The landmark's position in the normalised face domain (core/deform/FaceDomain.h): the mouth
+// The landmark's position in the normalised face domain (core/face/FaceDomain.h): the mouth
 // corners and lip middles are the corners of the mouth hole.
 Vec2 canonicalPosition(Landmark landmark);
 
@@ -96,3 +95,24 @@ constexpr std::array<Landmark, kLandmarkCount> allLandmarks() {
 }
 
 } // namespace vl::face
+
+namespace vl {
+template <> struct EnumNames<face::Landmark> {
+    static constexpr const char* what = "landmark";
+    static constexpr EnumName<face::Landmark> names[] = {
+        {face::Landmark::MouthCornerRight, "mouth_corner_right"},
+        {face::Landmark::MouthCornerLeft, "mouth_corner_left"},
+        {face::Landmark::UpperLipMid, "upper_lip_mid"},
+        {face::Landmark::LowerLipMid, "lower_lip_mid"},
+        {face::Landmark::EyeOuterRight, "eye_outer_right"},
+        {face::Landmark::EyeInnerRight, "eye_inner_right"},
+        {face::Landmark::EyeInnerLeft, "eye_inner_left"},
+        {face::Landmark::EyeOuterLeft, "eye_outer_left"},
+        {face::Landmark::NoseTip, "nose_tip"},
+        {face::Landmark::UpperLipRight, "upper_lip_right"},
+        {face::Landmark::UpperLipLeft, "upper_lip_left"},
+        {face::Landmark::LowerLipRight, "lower_lip_right"},
+        {face::Landmark::LowerLipLeft, "lower_lip_left"}};
+};
+static_assert(std::size(EnumNames<face::Landmark>::names) == face::kLandmarkCount);
+} // namespace vl

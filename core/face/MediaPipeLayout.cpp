@@ -51,9 +51,9 @@ FaceLandmarks mediaPipeLandmarks(const UvMesh& mesh) {
         LandmarkInput input;
         input.kind = LandmarkInput::Kind::Vertex;
         input.vertex = vertex;
-        found[landmark] = resolveLandmark(mesh, input, LandmarkSource::Layout, 0.98,
-                                          "MediaPipe face topology, vertex " + std::to_string(vertex),
-                                          landmarkName(landmark));
+        found[landmark] =
+            resolveLandmark(mesh, input, LandmarkSource::Layout, 0.98,
+                            "MediaPipe face topology, vertex " + std::to_string(vertex), toString(landmark));
     }
     return found;
 }

@@ -1,7 +1,7 @@
 #include "core/face/MouthMeasures.h"
 
 #include "core/common/Error.h"
-#include "core/deform/FaceDomain.h"
+#include "core/face/FaceDomain.h"
 #include "core/face/Landmarks.h"
 
 #include <algorithm>
@@ -30,7 +30,7 @@ std::size_t landmarkVertex(const MeshData& head, Landmark landmark, std::string_
         }
     }
     if (bestDistance > 1e-5)
-        throwInputError(where, "no skin vertex at the " + std::string(landmarkName(landmark)) + " (u,v) (" +
+        throwInputError(where, "no skin vertex at the " + std::string(toString(landmark)) + " (u,v) (" +
                                    std::to_string(at[0]) + ", " + std::to_string(at[1]) +
                                    "): expected a mesh of the face domain, as `visemelab visemes` writes");
     return best;

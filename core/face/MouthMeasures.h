@@ -3,7 +3,7 @@
 // midline, how wide the mouth is, how far the lips stand forward, and how much of the teeth and the
 // tongue can be seen from the front through the opening. The mesh is a head in the bundled (u,v)
 // layout, as `visemelab visemes` writes it: the skin with (u,v) on the face domain (the mouth corners
-// and lip middles are vertices of it, core/deform/FaceDomain.h), then the head's parts with (u,v) in
+// and lip middles are vertices of it, core/face/FaceDomain.h), then the head's parts with (u,v) in
 // their tiles (face::HeadTile; the two rows of teeth are separate pieces of the teeth tile). The face
 // looks along +z with +y up (the bundled faces' frame); lengths are in the mesh's units.
 #include "core/mesh/Mesh.h"

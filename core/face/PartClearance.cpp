@@ -2,7 +2,7 @@
 
 #include "core/face/MeshGeometry.h"
 
-#include "core/deform/FaceDomain.h"
+#include "core/face/FaceDomain.h"
 
 #include <algorithm>
 #include <cmath>

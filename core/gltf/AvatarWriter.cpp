@@ -332,14 +332,6 @@ void noteStorage(const GltfDocument& doc, const StorageTally& tally, std::vector
                             "accessors or buffer views by index, those references were not renumbered)");
 }
 
-} // namespace
-
-const char* toString(AvatarNames names) {
-    return names == AvatarNames::Original ? "original" : "merged";
-}
-
-namespace {
-
 std::string write(const GltfDocument& doc, const AvatarScan& scan, const ReducedModel& model,
                   const std::vector<int>& groupOf, const std::vector<double>& frequencies,
                   const AvatarWriteOptions& options, AvatarWriteSummary* summary) {

@@ -35,6 +35,7 @@
 // removed and the rest renumbered wherever glTF 2.0, KHR_draco_mesh_compression,
 // EXT_meshopt_compression and EXT_mesh_gpu_instancing refer to them; every buffer with data
 // becomes the one GLB BIN chunk; external images are embedded.
+#include "core/common/EnumNames.h"
 #include "core/reduce/ReducedModel.h"
 
 #include <string>
@@ -46,6 +47,11 @@ class GltfDocument;
 struct AvatarScan;
 
 enum class AvatarNames { Original, Merged };
+template <> struct EnumNames<AvatarNames> {
+    static constexpr const char* what = "names";
+    static constexpr EnumName<AvatarNames> names[] = {{AvatarNames::Original, "original"},
+                                                      {AvatarNames::Merged, "merged"}};
+};
 
 struct AvatarWriteOptions {
     AvatarNames names = AvatarNames::Original;
@@ -80,7 +86,5 @@ struct AvatarWriteSummary {
 std::string writeReducedAvatar(const GltfDocument& doc, const AvatarScan& scan, const ReducedModel& model,
                                const std::vector<int>& groupOf, const std::vector<double>& frequencies,
                                const AvatarWriteOptions& options, AvatarWriteSummary* summary = nullptr);
-
-const char* toString(AvatarNames names);
 
 } // namespace vl

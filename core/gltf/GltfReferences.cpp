@@ -81,14 +81,6 @@ void forEachBufferViewReference(Json& doc, const JsonRef& visit) {
     });
 }
 
-void forEachBufferReference(Json& doc, const JsonRef& visit) {
-    eachObject(doc, "bufferViews", [&](Json& view) {
-        visitMember(view, "buffer", visit);
-        if (Json* meshopt = extension(view, "EXT_meshopt_compression"))
-            visitMember(*meshopt, "buffer", visit);
-    });
-}
-
 void renumber(Json& doc, const std::string& array, const std::vector<int>& newIndex,
               void (*forEach)(Json&, const JsonRef&)) {
     forEach(doc, [&](Json& index) {

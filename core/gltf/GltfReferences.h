@@ -17,7 +17,6 @@ using JsonRef = std::function<void(nlohmann::ordered_json& index)>;
 
 void forEachAccessorReference(nlohmann::ordered_json& doc, const JsonRef& visit);
 void forEachBufferViewReference(nlohmann::ordered_json& doc, const JsonRef& visit);
-void forEachBufferReference(nlohmann::ordered_json& doc, const JsonRef& visit);
 
 // Renumbers every reference through `newIndex` (old index -> new index; -1 never happens for a
 // reference that is kept) and rebuilds `array` (a top-level array name) keeping the entries whose

@@ -24,7 +24,6 @@ class JsonNode {
     bool isNull() const { return value_->is_null(); }
     bool isObject() const { return value_->is_object(); }
     bool isArray() const { return value_->is_array(); }
-    bool isString() const { return value_->is_string(); }
 
     // Objects. requireKeys/allowOnly check the key set; child access by key.
     void expectObject() const;

@@ -2,8 +2,8 @@
 // Which built-in individual (face::makeFaceGeometry) a cascade's base geometry is. A project stores
 // a built-in base geometry by reference ({"builtin": "retarget"}, see FieldJson.h), so the
 // retargeting choice is part of the project state and is read back from the cascade itself.
-#include "core/deform/BundledFace.h"
 #include "core/deform/DeformationCascade.h"
+#include "core/face/BundledFace.h"
 
 #include <optional>
 

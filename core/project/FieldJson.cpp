@@ -1,7 +1,7 @@
 #include "core/project/FieldJson.h"
 
 #include "core/common/Error.h"
-#include "core/deform/BundledFace.h"
+#include "core/face/BundledFace.h"
 #include "core/project/BuiltinGeometry.h"
 
 #include <map>
@@ -55,7 +55,7 @@ Json triple(const Vec3& v) {
 Json sampledToJson(const SampledField& grid) {
     if (grid.empty() && grid.width == 0 && grid.height == 0) return nullptr;
     Json json = Json::object();
-    if (const auto who = builtinOf(grid)) json["builtin"] = face::individualName(*who);
+    if (const auto who = builtinOf(grid)) json["builtin"] = toString(*who);
     json["width"] = grid.width;
     json["height"] = grid.height;
     if (!json.contains("builtin")) {
@@ -79,7 +79,7 @@ SampledField sampledFromJson(const JsonNode& node) {
     grid.height = static_cast<int>(node["height"].integerInRange(1, kMaxGridSize));
     if (builtin) {
         const JsonNode name = node["builtin"];
-        const auto who = face::parseIndividual(name.string(), name.path());
+        const auto who = parseEnum<face::Individual>(name.string(), name.path());
         if (grid.width != grid.height || grid.width < 2)
             node["height"].fail("a built-in geometry is a square grid of at least 2 x 2, found " +
                                 std::to_string(grid.width) + " x " + std::to_string(grid.height));
@@ -103,7 +103,7 @@ Json influenceToJson(const InfluenceField& r) {
     json["rotation"] = r.rotation;
     json["direction"] = triple(r.direction);
     json["magnitude"] = r.magnitude;
-    json["falloff"] = falloffName(r.falloff);
+    json["falloff"] = toString(r.falloff);
     return json;
 }
 
@@ -127,7 +127,7 @@ InfluenceField influenceFromJson(const JsonNode& node) {
     if (r.direction.norm() == 0.0) direction.fail("direction must not be the zero vector");
     r.magnitude = node["magnitude"].number();
     const JsonNode falloff = node["falloff"];
-    r.falloff = parseFalloff(falloff.string(), falloff.path());
+    r.falloff = parseEnum<Falloff>(falloff.string(), falloff.path());
     return r;
 }
 

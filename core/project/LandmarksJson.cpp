@@ -16,13 +16,10 @@ std::vector<std::pair<face::Landmark, face::LandmarkInput>> landmarksFromJsonTex
         root["format"].fail("expected \"visemelab-landmarks\"");
     std::vector<std::pair<face::Landmark, face::LandmarkInput>> result;
     for (const auto& [name, node] : root["landmarks"].members()) {
-        const auto landmark = face::parseLandmarkName(name);
-        if (!landmark) {
-            std::string known;
-            for (const auto l : face::allLandmarks())
-                known += (known.empty() ? "" : ", ") + std::string(face::landmarkName(l));
-            node.fail("unknown landmark \"" + name + "\" (known: " + known + ")");
-        }
+        const auto landmark = fromString<face::Landmark>(name);
+        if (!landmark)
+            node.fail("unknown landmark \"" + name + "\" (known: " + enumNameList<face::Landmark>(", ") +
+                      ")");
         node.expectObject();
         node.allowOnly({"vertex", "uv", "position", "source", "confidence", "method"});
         face::LandmarkInput input;
@@ -59,7 +56,7 @@ std::string landmarksToJsonText(const face::FaceLandmarks& landmarks) {
         entry["source"] = face::sourceName(found.source);
         entry["confidence"] = found.confidence;
         entry["method"] = found.method;
-        list[std::string(face::landmarkName(l))] = std::move(entry);
+        list[std::string(toString(l))] = std::move(entry);
     }
     Json root = Json::object();
     root["format"] = "visemelab-landmarks";

@@ -1,6 +1,8 @@
 #pragma once
-// A VisemeLab project: everything a designer edits, saved as one JSON document
-// ("format": "visemelab-project", "version": 1 or 2; docs/project-format.md describes every field).
+// A VisemeLab project: everything a designer edits, saved as one JSON document ("format":
+// "visemelab-project", "version": the file format's version, kProjectVersion; docs/project-format.md
+// describes every field). Versions number the file format only; what counts a document's changes is
+// a revision (core/document/DocumentInputs.h).
 // The state is plain data from the core modules; this module only reads, validates and writes it.
 #include "core/adaptive/Criteria.h"
 #include "core/deform/DeformationCascade.h"

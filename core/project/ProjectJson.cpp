@@ -118,9 +118,10 @@ ProjectWeights weightsFromJson(const JsonNode& node, const ProjectNeutral& neutr
     node.allowOnly({"mode", "painted"});
     ProjectWeights weights;
     const JsonNode mode = node["mode"];
-    const auto parsed = weightModeFromString(mode.string());
+    const auto parsed = fromString<WeightMode>(mode.string());
     if (!parsed)
-        mode.fail("unknown weight mode \"" + mode.string() + "\" (expected uniform, area or painted)");
+        mode.fail("unknown weight mode \"" + mode.string() + "\" (expected " + enumNameList<WeightMode>() +
+                  ")");
     weights.mode = *parsed;
     if (weights.mode == WeightMode::Painted || node.has("painted")) {
         const JsonNode painted = node["painted"];

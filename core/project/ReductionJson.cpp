@@ -152,7 +152,7 @@ ProjectReduction reductionFromJson(const JsonNode& node, const std::vector<std::
     if (node.has("rest")) {
         const JsonNode rest = node["rest"];
         requireVersion3(rest);
-        const auto choice = restChoiceFromString(rest.string());
+        const auto choice = fromString<RestChoice>(rest.string());
         if (!choice)
             rest.fail("unknown rest model \"" + rest.string() +
                       "\" (expected \"free\", \"key\" or \"auto\")");
@@ -183,12 +183,12 @@ ProjectReduction reductionFromJson(const JsonNode& node, const std::vector<std::
     for (std::size_t i = 0; i < visemeNames.size(); ++i) indexOf.emplace(visemeNames[i], i);
     ReductionResult parsed;
     if (result.has("method")) {
+        // A recorded result names the solver that ran: never "auto".
         const std::string method = result["method"].string();
-        if (method != "dp" && method != "bnb" && method != "lp")
+        const auto ran = fromString<ReductionMethod>(method);
+        if (!ran || *ran == ReductionMethod::Auto)
             result["method"].fail("expected \"dp\", \"bnb\" or \"lp\", found \"" + method + "\"");
-        parsed.method = method == "bnb"  ? ReductionMethod::BranchAndBound
-                        : method == "lp" ? ReductionMethod::ColumnGeneration
-                                         : ReductionMethod::SubsetDp;
+        parsed.method = *ran;
     }
     if (result.has("restFree")) {
         const JsonNode restFree = result["restFree"];

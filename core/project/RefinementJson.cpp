@@ -8,7 +8,7 @@ namespace vl {
 
 Json refinementToJson(const CriterionSettings& s) {
     Json json = Json::object();
-    json["criterion"] = criterionName(s.kind);
+    json["criterion"] = toString(s.kind);
     json["maxDepth"] = s.maxDepth;
     json["depth"] = Json{{"depth", s.depth.depth}};
     json["normals"] =
@@ -23,7 +23,7 @@ CriterionSettings refinementFromJson(const JsonNode& node) {
     node.allowOnly({"criterion", "maxDepth", "depth", "normals", "contour"});
     CriterionSettings s;
     const JsonNode criterion = node["criterion"];
-    s.kind = parseCriterionKind(criterion.string(), criterion.path());
+    s.kind = parseEnum<CriterionKind>(criterion.string(), criterion.path());
     s.maxDepth = static_cast<int>(node["maxDepth"].integerInRange(0, 30));
     if (node.has("depth")) {
         const JsonNode depth = node["depth"];

@@ -1,6 +1,6 @@
 #include "core/project/SpokenTrack.h"
 
-#include "core/export/Gltf.h"
+#include "core/export/GltfExport.h"
 #include "core/project/AvatarSpeechGlb.h"
 #include "core/project/Project.h"
 #include "core/speech/DisplacementError.h"

@@ -31,24 +31,6 @@ MapGrouping groupingFromMap(const std::vector<std::string>& visemeNames, const P
     return out;
 }
 
-const char* toString(RestChoice choice) {
-    switch (choice) {
-    case RestChoice::Auto:
-        return "auto";
-    case RestChoice::Free:
-        return "free";
-    case RestChoice::Key:
-        return "key";
-    }
-    return "auto";
-}
-
-std::optional<RestChoice> restChoiceFromString(std::string_view text) {
-    for (const RestChoice choice : {RestChoice::Auto, RestChoice::Free, RestChoice::Key})
-        if (text == toString(choice)) return choice;
-    return std::nullopt;
-}
-
 int restVisemeIndex(const std::vector<std::string>& names, const std::string& named, std::string_view where) {
     const auto indexOf = [&](std::string_view name) {
         const auto it = std::find(names.begin(), names.end(), name);

@@ -2,6 +2,7 @@
 // One reduction run from user-level inputs (viseme set, frequencies, weight mode, target) to the
 // reduced model (buildReducedModel). Shared by the CLI, projects and avatars so all behave
 // identically; its files and report are written by core/export/ReductionOutputs.h.
+#include "core/common/EnumNames.h"
 #include "core/reduce/Frequencies.h"
 #include "core/reduce/ReducedModel.h"
 #include "core/reduce/Reduction.h"
@@ -20,8 +21,11 @@ namespace vl {
 // Key, the rest is a key like any other (the model before issue 29); Auto, Free when the set has a
 // rest viseme, else Key.
 enum class RestChoice { Auto, Free, Key };
-const char* toString(RestChoice choice);                               // "auto", "free", "key"
-std::optional<RestChoice> restChoiceFromString(std::string_view text); // the inverse; nullopt otherwise
+template <> struct EnumNames<RestChoice> {
+    static constexpr const char* what = "rest model";
+    static constexpr EnumName<RestChoice> names[] = {
+        {RestChoice::Auto, "auto"}, {RestChoice::Free, "free"}, {RestChoice::Key, "key"}};
+};
 
 // The rest viseme names a set may use, in order of preference (the sample's and the Oculus one).
 inline constexpr const char* kRestVisemeNames[] = {"sil", "viseme_sil"};

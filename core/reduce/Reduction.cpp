@@ -330,27 +330,6 @@ UnitCurve betterOf(UnitCurve first, const UnitCurve& second) {
 
 } // namespace
 
-const char* toString(ReductionMethod method) {
-    switch (method) {
-    case ReductionMethod::Auto:
-        return "auto";
-    case ReductionMethod::SubsetDp:
-        return "dp";
-    case ReductionMethod::BranchAndBound:
-        return "bnb";
-    case ReductionMethod::ColumnGeneration:
-        return "lp";
-    }
-    return "auto";
-}
-
-ReductionMethod reductionMethodFromString(std::string_view text, std::string_view where) {
-    for (const auto method : {ReductionMethod::Auto, ReductionMethod::SubsetDp,
-                              ReductionMethod::BranchAndBound, ReductionMethod::ColumnGeneration})
-        if (text == toString(method)) return method;
-    throwInputError(where, "unknown method '" + std::string(text) + "' (expected auto, dp, bnb or lp)");
-}
-
 double Grouping::gap() const {
     if (optimal) return 0.0;
     if (!(cost < kInfiniteCost) || cost <= 0) return cost <= 0 ? 0.0 : 1.0;

@@ -9,6 +9,7 @@
 // fastest up to ~16 visemes, and repetitive branch and bound (BranchAndBound.h) for larger sets, up
 // to 64. Every result carries its certificate: `optimal` only with a proof, otherwise the best grouping
 // found with a proven lower bound and the relative gap.
+#include "core/common/EnumNames.h"
 #include "core/mesh/Mesh.h"
 #include "core/reduce/ReductionConstraints.h"
 #include "core/reduce/ShapeView.h"
@@ -36,9 +37,13 @@ enum class ReductionMethod {
     ColumnGeneration, // the set-partitioning LP by column generation
 };
 
-const char* toString(ReductionMethod method); // "auto", "dp", "bnb", "lp"
-// Throws InputError at `where` for anything else.
-ReductionMethod reductionMethodFromString(std::string_view text, std::string_view where);
+template <> struct EnumNames<ReductionMethod> {
+    static constexpr const char* what = "method";
+    static constexpr EnumName<ReductionMethod> names[] = {{ReductionMethod::Auto, "auto"},
+                                                          {ReductionMethod::SubsetDp, "dp"},
+                                                          {ReductionMethod::BranchAndBound, "bnb"},
+                                                          {ReductionMethod::ColumnGeneration, "lp"}};
+};
 
 // The rest-free model (issue 29): in a morph-target runtime the rest pose (all weights 0) is free, so
 // the neutral is an extra key at zero displacement that costs nothing. Each viseme joins one of the m

@@ -10,25 +10,6 @@
 
 namespace vl {
 
-const char* toString(WeightMode mode) {
-    switch (mode) {
-    case WeightMode::Uniform:
-        return "uniform";
-    case WeightMode::Area:
-        return "area";
-    case WeightMode::Painted:
-        return "painted";
-    }
-    return "uniform";
-}
-
-std::optional<WeightMode> weightModeFromString(std::string_view text) {
-    if (text == "uniform") return WeightMode::Uniform;
-    if (text == "area") return WeightMode::Area;
-    if (text == "painted") return WeightMode::Painted;
-    return std::nullopt;
-}
-
 static void validateWeights(const std::vector<double>& weights, std::size_t vertexCount,
                             std::string_view where) {
     if (weights.size() != vertexCount)

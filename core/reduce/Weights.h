@@ -1,5 +1,6 @@
 #pragma once
 // Per-vertex weights w_k of the dissimilarity rho(A,B) = sum_k w_k |a_k - b_k|^2.
+#include "core/common/EnumNames.h"
 #include "core/mesh/Mesh.h"
 
 #include <filesystem>
@@ -10,9 +11,11 @@
 namespace vl {
 
 enum class WeightMode { Uniform, Area, Painted };
-
-const char* toString(WeightMode mode);
-std::optional<WeightMode> weightModeFromString(std::string_view text);
+template <> struct EnumNames<WeightMode> {
+    static constexpr const char* what = "weight mode";
+    static constexpr EnumName<WeightMode> names[] = {
+        {WeightMode::Uniform, "uniform"}, {WeightMode::Area, "area"}, {WeightMode::Painted, "painted"}};
+};
 
 // uniform: all ones (the paper's rho1); area: summed incident triangle area of the neutral mesh
 // (rho2); painted: `painted` as given. Validates count and that every weight is finite and >= 0 and

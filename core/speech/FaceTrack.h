@@ -37,7 +37,6 @@ class FaceTrack {
 
     const ReducedModel& model() const { return *model_; }
     const std::vector<Cue>& cues() const { return cues_; }
-    const std::vector<int>& phonemeKeys() const { return keys_; } // per phoneme, kNeutralKey for rest
     // The runtime's evaluator of this face's keyframes.
     const runtime::KeyframeCurve& curve() const { return curve_; }
     std::size_t keyCount() const { return model_->keys.size(); }

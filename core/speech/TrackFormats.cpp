@@ -1,6 +1,5 @@
 #include "core/speech/TrackFormats.h"
 
-#include "core/common/AtomicFile.h"
 #include "core/common/Error.h"
 #include "core/common/JsonParse.h"
 #include "core/gltf/TargetNames.h"
@@ -102,25 +101,6 @@ std::string talkingHeadJson(const SpeechTrackFile& track, std::string_view where
 
 } // namespace
 
-std::optional<TrackFormat> trackFormatFromString(std::string_view text) {
-    if (text == "oculus") return TrackFormat::Oculus;
-    if (text == "rhubarb") return TrackFormat::Rhubarb;
-    if (text == "talkinghead") return TrackFormat::TalkingHead;
-    return std::nullopt;
-}
-
-const char* toString(TrackFormat format) {
-    switch (format) {
-    case TrackFormat::Oculus:
-        return "oculus";
-    case TrackFormat::Rhubarb:
-        return "rhubarb";
-    case TrackFormat::TalkingHead:
-        return "talkinghead";
-    }
-    return "oculus";
-}
-
 char rhubarbShapeOfOculus(std::string_view oculus) {
     for (const auto& [name, shape] : kOculusToRhubarb)
         if (name == oculus) return shape;
@@ -144,10 +124,6 @@ std::string formatTrack(const SpeechTrackFile& track, TrackFormat format, std::s
         break;
     }
     return formatTrackJson(track);
-}
-
-void saveTrack(const std::filesystem::path& path, const SpeechTrackFile& track, TrackFormat format) {
-    writeFileAtomically(path, formatTrack(track, format, path.string()));
 }
 
 } // namespace vl

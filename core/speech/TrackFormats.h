@@ -9,6 +9,7 @@
 //   one shape are joined, so every cue a Rhubarb consumer reads is one of its nine shapes.
 // - "talkinghead": TalkingHead's lip-sync object {"visemes", "vtimes", "vdurations"} with times in
 //   milliseconds and its viseme names (Oculus names without "viseme_", I/O/U for ih/oh/ou).
+#include "core/common/EnumNames.h"
 #include "core/speech/TrackJson.h"
 
 #include <optional>
@@ -18,9 +19,12 @@
 namespace vl {
 
 enum class TrackFormat { Oculus, Rhubarb, TalkingHead };
-
-std::optional<TrackFormat> trackFormatFromString(std::string_view text); // "oculus", "rhubarb", "talkinghead"
-const char* toString(TrackFormat format);
+template <> struct EnumNames<TrackFormat> {
+    static constexpr const char* what = "track format";
+    static constexpr EnumName<TrackFormat> names[] = {{TrackFormat::Oculus, "oculus"},
+                                                      {TrackFormat::Rhubarb, "rhubarb"},
+                                                      {TrackFormat::TalkingHead, "talkinghead"}};
+};
 
 // Rhubarb's shape for a canonical Oculus viseme name ("sil" -> 'X', "PP" -> 'A', ...).
 char rhubarbShapeOfOculus(std::string_view oculus);
@@ -30,6 +34,5 @@ std::string talkingHeadVisemeOfOculus(std::string_view oculus);
 // The track's full-face cues (mouthCues) in the format. Throws InputError at `where` naming the
 // first cue whose value has no shape in the format (a viseme that is neither Oculus nor Rhubarb).
 std::string formatTrack(const SpeechTrackFile& track, TrackFormat format, std::string_view where);
-void saveTrack(const std::filesystem::path& path, const SpeechTrackFile& track, TrackFormat format); // atomic
 
 } // namespace vl

@@ -180,10 +180,6 @@ std::string formatTrackJson(const SpeechTrackFile& track) {
     return text + "\n}\n";
 }
 
-void saveTrackJson(const std::filesystem::path& path, const SpeechTrackFile& track) {
-    writeFileAtomically(path, formatTrackJson(track));
-}
-
 SpeechTrackFile parseTrackJson(std::string_view text, std::string_view source) {
     const Json doc = parseJsonStrict(text, source);
     const JsonNode root(doc, std::string(source) + ":");

@@ -67,7 +67,6 @@ struct SpeechTrackFile {
 
 // Doubles are written so that they read back exactly.
 std::string formatTrackJson(const SpeechTrackFile& track);
-void saveTrackJson(const std::filesystem::path& path, const SpeechTrackFile& track); // atomic
 
 // Throws InputError "<source>:<JSON path>: <what>" for malformed JSON, missing or mistyped fields,
 // cues or phonemes that are not contiguous, negative or non-finite errors. Unknown metadata and

@@ -7,25 +7,6 @@
 
 namespace vl {
 
-std::optional<runtime::Interpolation> interpolationFromString(std::string_view text) {
-    if (text == "linear") return runtime::Interpolation::Linear;
-    if (text == "cubic") return runtime::Interpolation::Cubic;
-    if (text == "dominance") return runtime::Interpolation::Dominance;
-    return std::nullopt;
-}
-
-const char* toString(runtime::Interpolation interpolation) {
-    switch (interpolation) {
-    case runtime::Interpolation::Linear:
-        return "linear";
-    case runtime::Interpolation::Cubic:
-        return "cubic";
-    case runtime::Interpolation::Dominance:
-        return "dominance";
-    }
-    return "cubic";
-}
-
 float phonemeDominance(std::string_view phoneme) {
     // Design values (not fitted to data): visible articulations high, hidden ones low.
     static const std::unordered_map<std::string_view, float> alpha = {

@@ -2,6 +2,7 @@
 // Keyframes for the runtime's KeyframeAnimation from timed phonemes: the one place that decides
 // how speech is played, so the CLI, the glTF animation, the utterance error and the editor all
 // show the same motion.
+#include "core/common/EnumNames.h"
 #include "core/runtime/Animation.h"
 #include "core/runtime/PackageFormat.h"
 #include "core/speech/Utterance.h"
@@ -21,9 +22,13 @@ struct PlaybackSettings {
     double dominanceRate = runtime::kDefaultDominanceRate; // 1/s, for Interpolation::Dominance
 };
 
-// "linear", "cubic", "dominance".
-std::optional<runtime::Interpolation> interpolationFromString(std::string_view text);
-const char* toString(runtime::Interpolation interpolation);
+template <> struct EnumNames<runtime::Interpolation> {
+    static constexpr const char* what = "interpolation";
+    static constexpr EnumName<runtime::Interpolation> names[] = {
+        {runtime::Interpolation::Linear, "linear"},
+        {runtime::Interpolation::Cubic, "cubic"},
+        {runtime::Interpolation::Dominance, "dominance"}};
+};
 
 // The dominance magnitude alpha of a phoneme (Cohen and Massaro): how strongly its mouth shape
 // resists its neighbours. Lip closure (P B M) and lip-teeth contact (F V) must be seen, so they

@@ -18,7 +18,7 @@ FacePlayback playbackOf(const FaceTrack& face) {
 
 runtime::KeyframeCurve curveOf(const FacePlayback& face, const TrackPlayback& playback,
                                std::string_view where) {
-    const auto interpolation = interpolationFromString(playback.interpolation);
+    const auto interpolation = fromString<runtime::Interpolation>(playback.interpolation);
     if (!interpolation)
         throwInputError(where, "interpolation must be linear, cubic or dominance, not '" +
                                    playback.interpolation + "'");

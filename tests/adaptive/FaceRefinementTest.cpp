@@ -5,9 +5,9 @@
 #include "core/adaptive/CascadeSurface.h"
 #include "core/adaptive/ContourError.h"
 #include "core/common/Error.h"
-#include "core/deform/BundledFace.h"
-#include "core/deform/FaceDomain.h"
 #include "core/deform/Visemes.h"
+#include "core/face/BundledFace.h"
+#include "core/face/FaceDomain.h"
 
 #include <gtest/gtest.h>
 
@@ -44,7 +44,7 @@ TEST(FaceRefinement, EveryCriterionKeepsTheInvariantsAndLowersTheError) {
     const AdaptiveMesh base(surface);
     const double baseError = measureContourError(base.toMeshData(), surface).average;
     for (const auto kind : {CriterionKind::Depth, CriterionKind::Normals, CriterionKind::Contour}) {
-        SCOPED_TRACE(std::string(criterionName(kind)));
+        SCOPED_TRACE(std::string(toString(kind)));
         AdaptiveMesh mesh(surface);
         mesh.refine(*makeCriterion(settingsFor(kind)));
         EXPECT_MESH_VALID(mesh);

@@ -303,14 +303,14 @@ TEST(Refinement, MaxDepthCapsEveryCriterion) {
         s.normals.dihedralAngleDeg = s.normals.normalAngleDeg = 0.0;
         AdaptiveMesh am(surface);
         am.refine(*makeCriterion(s));
-        EXPECT_EQ(am.maxLevel(), 4) << criterionName(kind);
-        EXPECT_EQ(am.faceCount(), am.base().triangles.size() << 4) << criterionName(kind);
+        EXPECT_EQ(am.maxLevel(), 4) << toString(kind);
+        EXPECT_EQ(am.faceCount(), am.base().triangles.size() << 4) << toString(kind);
     }
 }
 
 TEST(Refinement, SettingsAreValidatedAndNamed) {
-    EXPECT_EQ(parseCriterionKind("contour", "--criterion"), CriterionKind::Contour);
-    EXPECT_THROW(parseCriterionKind("curvature", "--criterion"), InputError);
+    EXPECT_EQ(parseEnum<CriterionKind>("contour", "--criterion"), CriterionKind::Contour);
+    EXPECT_THROW(parseEnum<CriterionKind>("curvature", "--criterion"), InputError);
     CriterionSettings s;
     s.maxDepth = 31;
     EXPECT_THROW(makeCriterion(s), InputError);

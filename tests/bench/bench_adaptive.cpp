@@ -3,8 +3,8 @@
 // refinement (goal <= 30 ms), and re-adaptation after a slider change. Each iteration builds the
 // RBMT base mesh from the domain and refines it, as `visemelab refine` does.
 #include "core/adaptive/CascadeSurface.h"
-#include "core/deform/BundledFace.h"
-#include "core/deform/FaceDomain.h"
+#include "core/face/BundledFace.h"
+#include "core/face/FaceDomain.h"
 
 #include <benchmark/benchmark.h>
 

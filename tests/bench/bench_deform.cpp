@@ -1,9 +1,9 @@
 // Deformation cascade benchmarks: re-evaluating a ~100,000-vertex deformed face after a slider change
 // (goal <= 2 ms on the 2-core CI machine), against the per-point reference and a dense worst case.
-#include "core/deform/BundledFace.h"
 #include "core/deform/CascadeSampler.h"
-#include "core/deform/FaceDomain.h"
 #include "core/deform/Visemes.h"
+#include "core/face/BundledFace.h"
+#include "core/face/FaceDomain.h"
 
 #include <benchmark/benchmark.h>
 

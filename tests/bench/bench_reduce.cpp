@@ -1,10 +1,10 @@
 // Reduction benchmarks: the goal case n = 16, m = 10 at 1,500 vertices (goal <= 50 ms on
 // 2 cores; the paper took 318 s in Java), plus the scaling in n. The CPU column counts every thread.
-#include "core/deform/BundledFace.h"
-#include "core/deform/FaceDomain.h"
 #include "core/export/ReductionOutputs.h"
-#include "core/export/VisemeFile.h"
+#include "core/face/BundledFace.h"
+#include "core/face/FaceDomain.h"
 #include "core/face/HeadParts.h"
+#include "core/import/VisemeFile.h"
 #include "core/reduce/Frequencies.h"
 #include "core/reduce/GramMatrix.h"
 #include "core/reduce/ReduceRun.h"

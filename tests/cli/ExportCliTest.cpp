@@ -1,7 +1,7 @@
 // `visemelab export` end to end on a small project written here.
 #include "core/common/AtomicFile.h"
-#include "core/export/Gltf.h"
-#include "core/export/Xface.h"
+#include "core/import/GltfImport.h"
+#include "core/import/XfaceImport.h"
 #include "core/io/MeshIO.h"
 #include "core/runtime/Package.h"
 #include "tests/export/TestModels.h"

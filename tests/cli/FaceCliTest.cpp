@@ -5,7 +5,7 @@
 // exports it (OBJ, glb, runtime); a mesh without (u,v) is a data error naming the file.
 #include "core/common/AtomicFile.h"
 #include "core/document/Document.h"
-#include "core/export/Gltf.h"
+#include "core/import/GltfImport.h"
 #include "core/io/MeshIO.h"
 #include "core/project/Project.h"
 #include "core/runtime/Package.h"

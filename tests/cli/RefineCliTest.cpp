@@ -1,6 +1,6 @@
 #include "core/adaptive/CascadeSurface.h"
-#include "core/deform/BundledFace.h"
 #include "core/deform/Visemes.h"
+#include "core/face/BundledFace.h"
 #include "core/io/MeshIO.h"
 #include "core/project/Project.h"
 #include "core/reduce/VisemeSet.h"

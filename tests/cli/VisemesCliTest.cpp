@@ -1,4 +1,4 @@
-#include "core/deform/FaceDomain.h"
+#include "core/face/FaceDomain.h"
 #include "core/io/MeshIO.h"
 #include "core/reduce/VisemeSet.h"
 #include "tests/cli/CliRunner.h"

@@ -1,8 +1,8 @@
 #include "core/common/Error.h"
-#include "core/deform/BundledFace.h"
 #include "core/deform/CascadeAtPose.h"
 #include "core/deform/CascadeSampler.h"
 #include "core/deform/DeformationCascade.h"
+#include "core/face/BundledFace.h"
 #include "tests/deform/ErrorMessage.h"
 
 #include <gtest/gtest.h>

@@ -48,20 +48,20 @@ TEST(SampledField, EmptyGridIsZero) {
 
 TEST(Falloff, EveryKindIsMonotoneFromOneToZero) {
     for (const Falloff f : {Falloff::Linear, Falloff::Smoothstep, Falloff::Cosine, Falloff::Gaussian}) {
-        EXPECT_DOUBLE_EQ(falloffWeight(f, 0.0), 1.0) << falloffName(f);
-        EXPECT_DOUBLE_EQ(falloffWeight(f, 1.0), 0.0) << falloffName(f);
-        EXPECT_DOUBLE_EQ(falloffWeight(f, 1.5), 0.0) << falloffName(f);
+        EXPECT_DOUBLE_EQ(falloffWeight(f, 0.0), 1.0) << toString(f);
+        EXPECT_DOUBLE_EQ(falloffWeight(f, 1.0), 0.0) << toString(f);
+        EXPECT_DOUBLE_EQ(falloffWeight(f, 1.5), 0.0) << toString(f);
         double previous = 1.0;
         for (int k = 1; k <= 1000; ++k) {
             const double w = falloffWeight(f, k / 1000.0);
-            EXPECT_LE(w, previous) << falloffName(f) << " at " << k;
+            EXPECT_LE(w, previous) << toString(f) << " at " << k;
             EXPECT_GE(w, 0.0);
             previous = w;
         }
-        EXPECT_LT(falloffWeight(f, 0.999), 0.01) << falloffName(f) << " must approach 0 continuously";
-        EXPECT_EQ(parseFalloff(falloffName(f), "test"), f);
+        EXPECT_LT(falloffWeight(f, 0.999), 0.01) << toString(f) << " must approach 0 continuously";
+        EXPECT_EQ(parseEnum<Falloff>(toString(f), "test"), f);
     }
-    EXPECT_THROW(parseFalloff("quadratic", "field.falloff"), InputError);
+    EXPECT_THROW(parseEnum<Falloff>("quadratic", "field.falloff"), InputError);
 }
 
 InfluenceField sampleRegion() {

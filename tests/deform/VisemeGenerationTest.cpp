@@ -1,7 +1,7 @@
 #include "core/common/Error.h"
-#include "core/deform/BundledFace.h"
-#include "core/deform/FaceDomain.h"
 #include "core/deform/Visemes.h"
+#include "core/face/BundledFace.h"
+#include "core/face/FaceDomain.h"
 #include "tests/deform/ErrorMessage.h"
 
 #include <gtest/gtest.h>

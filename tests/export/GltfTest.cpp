@@ -1,5 +1,6 @@
-#include "core/export/Gltf.h"
 #include "core/common/Error.h"
+#include "core/export/GltfExport.h"
+#include "core/import/GltfImport.h"
 #include "tests/export/TestModels.h"
 
 #include <gtest/gtest.h>

@@ -1,7 +1,8 @@
 // A glTF written by VisemeLab and read back keeps its frequencies: the phoneme table and map when it
 // has them, else the keys' own frequencies; uniform only when the file carries none.
-#include "core/export/ModelFrequencies.h"
-#include "core/export/Gltf.h"
+#include "core/import/ModelFrequencies.h"
+#include "core/export/GltfExport.h"
+#include "core/import/GltfImport.h"
 #include "tests/export/TestModels.h"
 
 #include <gtest/gtest.h>

@@ -52,10 +52,5 @@ TEST(KeyMeshFiles, OneObjPerKeyReadsBackAsTheSameFloat32Numbers) {
     std::filesystem::remove_all(dir);
 }
 
-TEST(KeyMeshFiles, NamesAreFileSafe) {
-    EXPECT_EQ(fileSafeName("f+th"), "f+th");
-    EXPECT_EQ(fileSafeName("a b/c\\d:e"), "a_b_c_d_e");
-}
-
 } // namespace
 } // namespace vl

@@ -2,7 +2,7 @@
 // textured face with 16-bit indices, a 66,000-vertex one with 32-bit indices, and the bundled
 // sample's reduction (assets/sample/sample.vlproj).
 #include "core/export/Export.h"
-#include "core/export/Gltf.h"
+#include "core/export/GltfExport.h"
 #include "core/project/Project.h"
 #include "core/project/ProjectRun.h"
 #include "tests/export/TestModels.h"

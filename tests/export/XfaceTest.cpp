@@ -1,6 +1,7 @@
 #include "core/export/Xface.h"
 #include "core/common/AtomicFile.h"
 #include "core/common/Error.h"
+#include "core/import/XfaceImport.h"
 #include "tests/export/TestModels.h"
 #include "tests/io/MeshIOTestUtil.h"
 

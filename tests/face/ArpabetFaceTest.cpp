@@ -3,10 +3,10 @@
 // articulation phonetics gives it, measured on the generated face and head parts (lip gap, mouth
 // width, lip protrusion, lower lip against the upper teeth, tongue tip).
 #include "core/common/Error.h"
-#include "core/deform/BundledFace.h"
-#include "core/export/VisemeFile.h"
+#include "core/face/BundledFace.h"
 #include "core/face/HeadParts.h"
 #include "core/face/Landmarks.h"
+#include "core/import/VisemeFile.h"
 #include "core/reduce/Frequencies.h"
 
 #include <gtest/gtest.h>

@@ -2,8 +2,8 @@
 // (from VISEMELAB_SHARED_DATA_DIR, skipped loudly when absent) and the bundled faces (built in-process)
 // have no eye openings; their eye corners must come out near their own, found from the geometry and
 // said to be.
-#include "core/deform/BundledFace.h"
-#include "core/deform/FaceDomain.h"
+#include "core/face/BundledFace.h"
+#include "core/face/FaceDomain.h"
 #include "core/face/FaceFrame.h"
 #include "core/face/LandmarkFinder.h"
 
@@ -33,12 +33,11 @@ void expectEyeCorners(const FaceLandmarks& found, const std::array<Vec3, kLandma
         const bool isInner = l == Landmark::EyeInnerRight || l == Landmark::EyeInnerLeft;
         if (std::getenv("VL_DEBUG"))
             std::printf("%-16s %-9s %3.0f%%  %.3f inner eye distances off  (%s)\n",
-                        std::string(landmarkName(l)).c_str(),
-                        std::string(sourceName(found[l].source)).c_str(), 100.0 * found[l].confidence, error,
-                        found[l].method.c_str());
-        EXPECT_EQ(found[l].source, LandmarkSource::Geometry) << landmarkName(l) << ": " << found[l].method;
-        EXPECT_LT(error, isInner ? inner : outer) << landmarkName(l) << ": " << found[l].method;
-        EXPECT_LE(found[l].confidence, 0.6) << landmarkName(l); // below what an opening earns
+                        std::string(toString(l)).c_str(), std::string(sourceName(found[l].source)).c_str(),
+                        100.0 * found[l].confidence, error, found[l].method.c_str());
+        EXPECT_EQ(found[l].source, LandmarkSource::Geometry) << toString(l) << ": " << found[l].method;
+        EXPECT_LT(error, isInner ? inner : outer) << toString(l) << ": " << found[l].method;
+        EXPECT_LE(found[l].confidence, 0.6) << toString(l); // below what an opening earns
     }
 }
 
@@ -70,7 +69,7 @@ UvMesh bundledFaceMesh(Individual who, int resolution) {
 TEST(ClosedEyes, BundledFacesEyeCornersFromTheirGeometry) {
     for (const Individual who : {Individual::Bundled, Individual::Retarget})
         for (const int grid : {40, 60, 150, 300}) {
-            SCOPED_TRACE(std::string(individualName(who)) + " face, " + std::to_string(grid) + " cells");
+            SCOPED_TRACE(std::string(toString(who)) + " face, " + std::to_string(grid) + " cells");
             const UvMesh mesh = bundledFaceMesh(who, grid);
             const auto truth = baseLandmarkPositions(makeFaceCascade(who));
             expectEyeCorners(suggestLandmarks(mesh, {}, false).landmarks, truth, 0.15, 0.2);

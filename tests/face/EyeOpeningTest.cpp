@@ -6,11 +6,11 @@
 // bundled sample's neutral (assets/sample) and the MediaPipe canonical face (shared data, skipped loudly
 // when absent).
 #include "core/common/Error.h"
-#include "core/deform/BundledFace.h"
-#include "core/deform/FaceDomain.h"
-#include "core/deform/FaceShape.h"
+#include "core/face/BundledFace.h"
 #include "core/face/FaceBuild.h"
+#include "core/face/FaceDomain.h"
 #include "core/face/FaceFrame.h"
+#include "core/face/FaceShape.h"
 #include "core/face/HeadParts.h"
 #include "core/face/LandmarkFinder.h"
 #include "core/paint/RayPick.h"

@@ -3,9 +3,9 @@
 // geometry is known everywhere (so the sampled base geometry can be checked point by point).
 #include "core/face/FaceBuild.h"
 #include "core/common/Error.h"
-#include "core/deform/FaceShape.h"
 #include "core/face/FaceAlignment.h"
 #include "core/face/FaceFrame.h"
+#include "core/face/FaceShape.h"
 #include "core/face/ThinPlateSpline.h"
 #include "core/face/UvMesh.h"
 
@@ -172,7 +172,7 @@ TEST(FaceBuild, SamplingAnAnalyticSurfaceReproducesIt) {
                                l == Landmark::EyeInnerLeft || l == Landmark::EyeInnerRight;
         EXPECT_LT((onBase[static_cast<std::size_t>(l)] - landmarks[l].position).norm(),
                   eyeCorner ? 0.08 : 0.05)
-            << landmarkName(l);
+            << toString(l);
     }
 }
 

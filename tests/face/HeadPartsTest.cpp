@@ -1,7 +1,7 @@
 #include "core/face/HeadParts.h"
 #include "core/common/Error.h"
-#include "core/deform/BundledFace.h"
-#include "core/deform/FaceDomain.h"
+#include "core/face/BundledFace.h"
+#include "core/face/FaceDomain.h"
 #include "core/face/FaceFrame.h"
 #include "core/face/PartClearance.h"
 

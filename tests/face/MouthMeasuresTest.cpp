@@ -3,8 +3,8 @@
 // visemes have the mouth shapes their references give (docs/viseme-review.md).
 #include "core/face/MouthMeasures.h"
 #include "core/common/Error.h"
-#include "core/deform/BundledFace.h"
-#include "core/deform/FaceDomain.h"
+#include "core/face/BundledFace.h"
+#include "core/face/FaceDomain.h"
 #include "core/face/HeadParts.h"
 #include "core/face/Landmarks.h"
 #include "core/io/MeshIO.h"

@@ -2,8 +2,8 @@
 // when absent): built as `visemelab face build` builds them (landmarks suggested, then buildFace), the
 // teeth and tongue never pass through the skin and stay behind the lips and the skin around the mouth
 // in the neutral face and every bundled Oculus viseme.
-#include "core/deform/FaceDomain.h"
 #include "core/face/FaceBuild.h"
+#include "core/face/FaceDomain.h"
 #include "core/face/HeadParts.h"
 #include "core/face/LandmarkFinder.h"
 #include "core/face/PartClearance.h"

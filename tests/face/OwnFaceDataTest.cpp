@@ -4,9 +4,9 @@
 // its geometry. (The CLI end to end: tests/cli/FaceCliTest.cpp.)
 #include "core/adaptive/CascadeSurface.h"
 #include "core/adaptive/ContourError.h"
-#include "core/deform/FaceDomain.h"
 #include "core/deform/Visemes.h"
 #include "core/face/FaceBuild.h"
+#include "core/face/FaceDomain.h"
 #include "core/face/LandmarkFinder.h"
 
 #include "tests/face/SharedFaces.h"
@@ -45,12 +45,12 @@ TEST(OwnFaceData, MediaPipeLayoutAndGeometryFinderAgree) {
         if (!isRequired(l)) continue;
         const auto& found = geometry.landmarks[l];
         if (found.source == LandmarkSource::Estimate) {
-            EXPECT_LE(found.confidence, 0.35) << landmarkName(l);
+            EXPECT_LE(found.confidence, 0.35) << toString(l);
             continue;
         }
-        EXPECT_EQ(found.source, LandmarkSource::Geometry) << landmarkName(l);
+        EXPECT_EQ(found.source, LandmarkSource::Geometry) << toString(l);
         EXPECT_LT((found.position - layout.landmarks[l].position).norm(), 0.2 * eyes)
-            << landmarkName(l) << ": " << found.method;
+            << toString(l) << ": " << found.method;
     }
     EXPECT_EQ(geometry.landmarks[Landmark::NoseTip].source, LandmarkSource::Geometry);
     EXPECT_EQ(geometry.landmarks[Landmark::MouthCornerLeft].source, LandmarkSource::Geometry);

@@ -97,10 +97,10 @@ void expectSameLandmarks(const UvMesh& mesh, const UvMesh& variant, const Simila
     for (const auto l : allLandmarks()) {
         if (!original[l].found()) continue;
         EXPECT_EQ(sourceName(found[l].source), sourceName(original[l].source))
-            << t.name << ", " << landmarkName(l);
+            << t.name << ", " << toString(l);
         EXPECT_LT((found[l].position - t(original[l].position)).norm(), tolerance * eyes)
-            << t.name << ", " << landmarkName(l) << ": " << found[l].method;
-        EXPECT_NEAR(found[l].confidence, original[l].confidence, 0.15) << t.name << ", " << landmarkName(l);
+            << t.name << ", " << toString(l) << ": " << found[l].method;
+        EXPECT_NEAR(found[l].confidence, original[l].confidence, 0.15) << t.name << ", " << toString(l);
     }
 }
 
@@ -144,10 +144,10 @@ TEST(OwnFaceRobustness, MediaPipeFaceCutFourTimesFinerGivesTheSameClosedEyes) {
     const double eyes = eyeDistance(original);
     for (const auto l :
          {Landmark::EyeOuterRight, Landmark::EyeInnerRight, Landmark::EyeInnerLeft, Landmark::EyeOuterLeft}) {
-        EXPECT_EQ(sourceName(fine[l].source), "geometry") << landmarkName(l);
+        EXPECT_EQ(sourceName(fine[l].source), "geometry") << toString(l);
         EXPECT_LT((fine[l].position - original[l].position).norm(), 0.05 * eyes)
-            << landmarkName(l) << ": " << fine[l].method;
-        EXPECT_NEAR(fine[l].confidence, original[l].confidence, 0.15) << landmarkName(l);
+            << toString(l) << ": " << fine[l].method;
+        EXPECT_NEAR(fine[l].confidence, original[l].confidence, 0.15) << toString(l);
     }
 }
 

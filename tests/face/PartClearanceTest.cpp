@@ -2,7 +2,7 @@
 // the domain's mouth hole, and a sharp ridge where the side of the skin cannot be read from one
 // triangle's normal.
 #include "core/face/PartClearance.h"
-#include "core/deform/FaceDomain.h"
+#include "core/face/FaceDomain.h"
 
 #include <gtest/gtest.h>
 

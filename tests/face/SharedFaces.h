@@ -30,7 +30,7 @@ inline FaceLandmarks canonicalLandmarks(const UvMesh& mesh) {
     for (const auto l : allLandmarks()) {
         LandmarkInput input;
         input.uv = canonicalPosition(l);
-        landmarks[l] = resolveLandmark(mesh, input, LandmarkSource::File, 1.0, "test", landmarkName(l));
+        landmarks[l] = resolveLandmark(mesh, input, LandmarkSource::File, 1.0, "test", toString(l));
     }
     return landmarks;
 }

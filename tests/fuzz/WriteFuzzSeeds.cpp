@@ -4,7 +4,7 @@
 // speech track). Run by hand after a format changes: `fuzz_seeds tests/fuzz/corpus`; the output is
 // committed, the fuzz tests never write into the repository.
 #include "core/common/AtomicFile.h"
-#include "core/export/Gltf.h"
+#include "core/export/GltfExport.h"
 #include "core/export/RuntimePackageWriter.h"
 #include "core/export/Xface.h"
 #include "core/gltf/AvatarReduce.h"

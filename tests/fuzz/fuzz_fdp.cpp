@@ -1,6 +1,6 @@
 // libFuzzer target: Xface face definition files (core/export parseFdp).
 #include "FuzzSupport.h"
-#include "core/export/Xface.h"
+#include "core/import/XfaceImport.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     vl::fuzz::expectLoadedOrDataError("fuzz.fdp",

@@ -1,7 +1,7 @@
 // libFuzzer target: glTF import of a reduced model (core/export parseGltf), GLB or JSON glTF chosen by
 // the GLB magic, as readGltf chooses by extension.
 #include "FuzzSupport.h"
-#include "core/export/Gltf.h"
+#include "core/import/GltfImport.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const std::string_view bytes = vl::fuzz::asText(data, size);

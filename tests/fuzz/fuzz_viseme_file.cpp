@@ -1,8 +1,8 @@
 // libFuzzer target: viseme parameter files, visemes.json (core/export parseVisemeFile) for the
 // bundled face's parameters, and the parameter vectors `visemelab visemes` builds from them.
 #include "FuzzSupport.h"
-#include "core/deform/BundledFace.h"
-#include "core/export/VisemeFile.h"
+#include "core/face/BundledFace.h"
+#include "core/import/VisemeFile.h"
 
 #include <cmath>
 

@@ -4,8 +4,8 @@
 #include "ProjectTestUtil.h"
 
 #include "core/common/AtomicFile.h"
-#include "core/deform/BundledFace.h"
-#include "core/deform/FaceDomain.h"
+#include "core/face/BundledFace.h"
+#include "core/face/FaceDomain.h"
 #include "core/io/JsonRead.h"
 #include "core/project/BuiltinGeometry.h"
 #include "core/project/FaceProject.h"

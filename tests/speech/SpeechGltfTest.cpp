@@ -1,6 +1,6 @@
 #include "SpeechTestModels.h"
 
-#include "core/export/Gltf.h"
+#include "core/export/GltfExport.h"
 #include "core/speech/SpeechGltf.h"
 
 #include <gtest/gtest.h>

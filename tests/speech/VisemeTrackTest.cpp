@@ -70,7 +70,7 @@ TEST(TrackKeyframes, ShortPhonemesOneKeyframeLongOnesHold) {
     EXPECT_EQ(keyframes[2].key, 1u);
     EXPECT_GT(keyframes[2].dominance, keyframes[5].dominance); // P dominates, HH yields
     for (std::size_t i = 1; i < keyframes.size(); ++i) EXPECT_GT(keyframes[i].time, keyframes[i - 1].time);
-    EXPECT_EQ(interpolationFromString("dominance"), runtime::Interpolation::Dominance);
+    EXPECT_EQ(fromString<runtime::Interpolation>("dominance"), runtime::Interpolation::Dominance);
     // A phoneme of 2,646 samples at 22,050 Hz (0.12 s = 2 x hold, a hair more after rounding) after
     // 1,436 samples: its hold times round to reversed ones; one keyframe instead (issue 34: 3 % of
     // ten-word sentences failed with "time does not increase").
@@ -78,5 +78,5 @@ TEST(TrackKeyframes, ShortPhonemesOneKeyframeLongOnesHold) {
                                             {"P", 1436 / 22050.0, 4082 / 22050.0}};
     const auto held = keyframesOf(edge, std::vector<int>{kNeutralKey, 1}, settings);
     for (std::size_t i = 1; i < held.size(); ++i) EXPECT_GT(held[i].time, held[i - 1].time) << i;
-    EXPECT_FALSE(interpolationFromString("spline"));
+    EXPECT_FALSE(fromString<runtime::Interpolation>("spline"));
 }

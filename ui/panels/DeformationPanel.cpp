@@ -134,10 +134,10 @@ void DeformationPanel::draw() {
             }
             endEditOnRelease(session_);
             int falloff = static_cast<int>(field.falloff);
-            const std::string current(falloffName(field.falloff));
+            const std::string current(toString(field.falloff));
             if (ctl::BeginCombo("falloff", current.c_str())) {
                 for (Falloff kind : kFalloffs)
-                    if (ctl::Selectable(std::string(falloffName(kind)).c_str(),
+                    if (ctl::Selectable(std::string(toString(kind)).c_str(),
                                         static_cast<int>(kind) == falloff)) {
                         field.falloff = kind;
                         changed = true;

@@ -96,7 +96,7 @@ void LandmarkHandles::handle(const OrbitCamera& camera, const ViewportEvents& ev
         const Vec3 position = dragged && drag_.point() ? drag_.point()->position : found.position;
         const std::optional<ImVec2> at = onScreen(camera, events.imageMin, events.imageMax, position);
         if (!at) continue;
-        const std::string name(face::landmarkName(landmark));
+        const std::string name(toString(landmark));
         const bool lit = dragged || hovered_ == landmark;
         // Required landmarks yellow, the optional lip points cyan; the one under the cursor white.
         const ImU32 fill = lit                          ? IM_COL32(255, 255, 255, 255)
@@ -134,9 +134,8 @@ void LandmarkHandles::handle(const OrbitCamera& camera, const ViewportEvents& ev
 
 nlohmann::json LandmarkHandles::probe() const {
     return {{"dots", drawn_},
-            {"hovered", hovered_ ? nlohmann::json(face::landmarkName(*hovered_)) : nlohmann::json()},
-            {"dragged",
-             drag_.landmark() ? nlohmann::json(face::landmarkName(*drag_.landmark())) : nlohmann::json()}};
+            {"hovered", hovered_ ? nlohmann::json(toString(*hovered_)) : nlohmann::json()},
+            {"dragged", drag_.landmark() ? nlohmann::json(toString(*drag_.landmark())) : nlohmann::json()}};
 }
 
 } // namespace vl::ui

@@ -49,7 +49,7 @@ void OwnFaceStep::draw() {
     const float dragWidth = std::max(60.0f, (ImGui::GetContentRegionAvail().x - column) * 0.28f);
     for (const face::Landmark landmark : face::allLandmarks()) {
         const face::FoundLandmark& found = candidate.landmarks()[landmark];
-        const std::string name(face::landmarkName(landmark));
+        const std::string name(toString(landmark));
         ImGui::TextUnformatted(name.c_str());
         Vec2 uv = found.uv;
         bool moved = false;
@@ -90,7 +90,7 @@ nlohmann::json OwnFaceStep::probe() const {
     nlohmann::json landmarks = nlohmann::json::object();
     for (const face::Landmark landmark : face::allLandmarks()) {
         const face::FoundLandmark& found = step->landmarks()[landmark];
-        landmarks[std::string(face::landmarkName(landmark))] = {
+        landmarks[std::string(toString(landmark))] = {
             {"source", face::sourceName(found.source)}, {"u", found.uv[0]}, {"v", found.uv[1]}};
     }
     return {{"file", step->file.string()}, {"missing", step->missingRequired()}, {"landmarks", landmarks}};

@@ -4,8 +4,8 @@
 #include "ui/panels/RefinementPanel.h"
 #include "ui/UiScale.h"
 
-#include "core/deform/FaceDomain.h"
 #include "core/document/Document.h"
+#include "core/face/FaceDomain.h"
 #include "core/inspect/DistanceUnits.h"
 #include "ui/panels/PanelWidgets.h"
 #include "ui/panels/ParameterSliders.h"

@@ -1,7 +1,7 @@
 #include "ui/session/FaceSamples.h"
 
-#include "core/deform/BundledFace.h"
 #include "core/deform/CascadeSampler.h"
+#include "core/face/BundledFace.h"
 #include "core/face/HeadParts.h"
 
 #include <algorithm>

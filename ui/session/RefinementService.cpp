@@ -2,7 +2,7 @@
 
 #include "core/adaptive/CascadeSurface.h"
 #include "core/common/Error.h"
-#include "core/deform/FaceDomain.h"
+#include "core/face/FaceDomain.h"
 
 #include <chrono>
 #include <optional>

@@ -13,7 +13,7 @@ SessionFace::SessionFace(SessionCore& core) : core_(core) {
 
 void SessionFace::load(face::Individual individual, int resolution) {
     core_.commit("Load face", edit::setFace(core_.document(), makeFaceModel(individual, resolution)));
-    core_.messages().info("Loaded the " + std::string(face::individualName(individual)) + " face (" +
+    core_.messages().info("Loaded the " + std::string(toString(individual)) + " face (" +
                           std::to_string(core_.document().face.cascade->parameters.size()) + " parameters)");
 }
 
@@ -42,7 +42,7 @@ void SessionFace::setInfluence(int stage, int influence, const InfluenceField& f
 void SessionFace::setIndividual(face::Individual individual) {
     const FaceModel& face = core_.document().face;
     if (face.cascade && individual == face.individual) return;
-    core_.commit("Retarget to " + std::string(face::individualName(individual)),
+    core_.commit("Retarget to " + std::string(toString(individual)),
                  edit::retarget(core_.document(), individual));
 }
 
@@ -72,7 +72,7 @@ void SessionFace::openOwnFace(const std::filesystem::path& mesh) {
 }
 
 void SessionFace::placeOwnFaceLandmark(face::Landmark landmark, const Vec2& uv) {
-    const std::string name(face::landmarkName(landmark));
+    const std::string name(toString(landmark));
     core_.commit("Move landmark " + name, edit::placeOwnFaceLandmark(core_.document(), landmark, uv),
                  "landmark:" + name);
 }

@@ -12,7 +12,7 @@ namespace vl::python {
 void applyWeights(const py::object& weights, ReduceSettings& settings) {
     if (py::isinstance<py::str>(weights)) {
         const std::string text = weights.cast<std::string>();
-        if (const auto mode = weightModeFromString(text); mode && *mode != WeightMode::Painted) {
+        if (const auto mode = fromString<WeightMode>(text); mode && *mode != WeightMode::Painted) {
             settings.weightMode = *mode;
             return;
         }
@@ -36,7 +36,7 @@ PhonemeVisemeMap phonemeMapFrom(const py::object& map) {
 }
 
 RestChoice restChoiceFrom(const std::string& text, std::string_view where) {
-    const auto choice = restChoiceFromString(text);
+    const auto choice = fromString<RestChoice>(text);
     if (!choice) throwInputError(where, "must be auto, free or key, not '" + quoteInput(text) + "'");
     return *choice;
 }

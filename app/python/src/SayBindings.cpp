@@ -86,9 +86,9 @@ void checkArguments(const SayArguments& a) {
 
 py::dict say(const SayArguments& a) {
     checkArguments(a);
-    const auto interpolation = interpolationFromString(a.blend);
+    const auto interpolation = fromString<runtime::Interpolation>(a.blend);
     if (!interpolation) throw py::value_error("blend must be linear, cubic or dominance");
-    const auto format = trackFormatFromString(a.format);
+    const auto format = fromString<TrackFormat>(a.format);
     if (!format) throw py::value_error("format must be oculus, rhubarb or talkinghead");
     std::string track, wav, glb;
     {

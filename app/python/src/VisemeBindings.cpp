@@ -195,7 +195,7 @@ py::dict reduceVisemeSet(const SetPtr& set, int m, const py::object& frequencies
     settings.restVisemeSource = "rest_viseme";
     settings.closure = closure;
     settings.maxErrorMm = maxErrorMm;
-    settings.options.method = reductionMethodFromString(method, "method");
+    settings.options.method = parseEnum<ReductionMethod>(method, "method");
     settings.millimetresPerUnit = guessMillimetresPerUnit(set->neutral.positions);
     ReduceOutcome outcome;
     {

@@ -1,8 +1,8 @@
 // The committed sample (assets/sample) must be what scripts/generate-sample.sh makes from the current
 // face model: a change to the fields or visemes without regenerating the sample fails here.
-#include "core/deform/BundledFace.h"
-#include "core/deform/FaceDomain.h"
 #include "core/deform/Visemes.h"
+#include "core/face/BundledFace.h"
+#include "core/face/FaceDomain.h"
 #include "core/face/HeadParts.h"
 #include "core/io/MeshIO.h"
 

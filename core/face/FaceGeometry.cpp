@@ -1,8 +1,8 @@
 // The base geometry of the bundled faces: an ellipse-section head front in centimetres plus smooth
 // bumps for the features, eye openings whose lids rest on the eyeballs (separate parts, see
 // core/face/HeadParts.h), sampled into a geometry image.
-#include "core/deform/FaceDomain.h"
-#include "core/deform/FaceShape.h"
+#include "core/face/FaceDomain.h"
+#include "core/face/FaceShape.h"
 
 #include "core/common/Error.h"
 
@@ -216,16 +216,6 @@ Vec3 facePoint(double u, double v, const Proportions& p) {
 }
 
 } // namespace
-
-std::string_view individualName(Individual who) {
-    return who == Individual::Bundled ? "bundled" : "retarget";
-}
-
-Individual parseIndividual(std::string_view name, std::string_view where) {
-    if (name == "bundled") return Individual::Bundled;
-    if (name == "retarget") return Individual::Retarget;
-    throwInputError(where, "unknown face '" + std::string(name) + "' (expected bundled or retarget)");
-}
 
 Vec3 eyeballCentre(Individual who, double side) {
     return detail::eyeballCentre(proportionsOf(who), side >= 0.0 ? 1.0 : -1.0);

@@ -1,7 +1,7 @@
 #pragma once
 // Internal to the bundled face: the analytic shapes behind its geometry image and preview colours.
-#include "core/deform/BundledFace.h"
-#include "core/deform/FaceDomain.h"
+#include "core/face/BundledFace.h"
+#include "core/face/FaceDomain.h"
 #include "core/mesh/Mesh.h"
 
 #include <cmath>
@@ -31,7 +31,7 @@ inline double bump(double u, double v, double cu, double cv, double ru, double r
 }
 
 // Feature positions in the normalised (u,v) space (the same for every individual); the eye corners,
-// mouth and nose tip are the landmarks of core/deform/FaceDomain.h.
+// mouth and nose tip are the landmarks of core/face/FaceDomain.h.
 constexpr double kEyeCentreU = 0.5 * (kEyeInnerU + kEyeOuterU); // eye centres at 0.5 -/+ this
 constexpr double kEyeCentreV = 0.5 * (kEyeInnerV + kEyeOuterV);
 constexpr double kEyeHalfLength = 0.5 * (kEyeOuterU - kEyeInnerU); // in u

@@ -1,4 +1,4 @@
-#include "core/deform/FaceDomain.h"
+#include "core/face/FaceDomain.h"
 
 #include "core/common/Error.h"
 

@@ -1,9 +1,9 @@
-#include "core/export/VisemeFile.h"
+#include "core/import/VisemeFile.h"
 
 #include "core/common/AtomicFile.h"
 #include "core/common/Error.h"
+#include "core/common/FileNames.h"
 #include "core/common/TextParsing.h"
-#include "core/export/KeyMeshFiles.h"
 #include "core/io/JsonRead.h"
 #include "core/reduce/VisemeSet.h"
 

@@ -1,6 +1,6 @@
+#include "core/import/GltfImport.h"
 #include "core/common/AtomicFile.h"
 #include "core/common/Error.h"
-#include "core/export/Gltf.h"
 
 #include "core/gltf/Accessors.h"
 #include "core/gltf/BufferViews.h"

@@ -1,7 +1,7 @@
 // Preview colours of the bundled head: skin with lips, brows, nostrils and the eye openings tinted;
 // the other parts by their (u,v) tile (eyeballs with iris and pupil, teeth with gums, tongue, mouth
 // cavity), so renders read as a face at a glance.
-#include "core/deform/FaceShape.h"
+#include "core/face/FaceShape.h"
 
 #include <algorithm>
 

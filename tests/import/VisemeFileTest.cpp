@@ -1,7 +1,7 @@
-#include "core/export/VisemeFile.h"
+#include "core/import/VisemeFile.h"
 #include "core/common/Error.h"
 #include "core/common/Limits.h"
-#include "core/deform/BundledFace.h"
+#include "core/face/BundledFace.h"
 
 #include <gtest/gtest.h>
 

@@ -5,6 +5,7 @@
 // the muscles that visemes need, split left/right where the paper does. A second individual (other
 // proportions) reuses the same fields unchanged: retargeting. Units are centimetres; the face looks
 // along +z, +y is up, +x is the viewer's right (the face's left).
+#include "core/common/EnumNames.h"
 #include "core/deform/DeformationCascade.h"
 
 #include <span>
@@ -14,10 +15,6 @@
 namespace vl::face {
 
 enum class Individual { Bundled, Retarget };
-
-std::string_view individualName(Individual who); // "bundled", "retarget"
-// Throws InputError naming `where` for anything but "bundled" / "retarget".
-Individual parseIndividual(std::string_view name, std::string_view where);
 
 // Base geometry image of an individual, sampled on a gridSize x gridSize grid.
 SampledField makeFaceGeometry(Individual who, int gridSize = 301);
@@ -39,3 +36,11 @@ constexpr double kEyeballRadius = 1.2;
 std::vector<Vec3> faceColours(std::span<const Vec2> uvs);
 
 } // namespace vl::face
+
+namespace vl {
+template <> struct EnumNames<face::Individual> {
+    static constexpr const char* what = "face";
+    static constexpr EnumName<face::Individual> names[] = {{face::Individual::Bundled, "bundled"},
+                                                           {face::Individual::Retarget, "retarget"}};
+};
+} // namespace vl

@@ -1,4 +1,4 @@
-#include "core/export/ModelFrequencies.h"
+#include "core/import/ModelFrequencies.h"
 
 #include "core/common/Error.h"
 

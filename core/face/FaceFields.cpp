@@ -1,7 +1,7 @@
 // The expression fields of the bundled faces (paper section 3.4 and Figure 1), as influence regions
 // in the normalised (u,v) space: they apply unchanged to every individual (retargeting).
-#include "core/deform/FaceDomain.h"
-#include "core/deform/FaceShape.h"
+#include "core/face/FaceDomain.h"
+#include "core/face/FaceShape.h"
 
 #include <string>
 
@@ -119,7 +119,7 @@ std::vector<InfluenceField> lowerLipTuck() {
 
 DeformationCascade makeFaceCascade(Individual who) {
     Builder b;
-    b.cascade.name = std::string(individualName(who)) + " face";
+    b.cascade.name = std::string(toString(who)) + " face";
     DeformationStage base;
     base.kind = StageKind::Constant;
     base.name = "base_geometry";
@@ -148,7 +148,7 @@ DeformationCascade makeBundledFace() {
 DeformationCascade makeRetargetFace() {
     VectorField base;
     base.sampled = makeFaceGeometry(Individual::Retarget);
-    return retarget(makeBundledFace(), base, std::string(individualName(Individual::Retarget)) + " face");
+    return retarget(makeBundledFace(), base, std::string(toString(Individual::Retarget)) + " face");
 }
 
 } // namespace vl::face
