@@ -11,6 +11,7 @@
 #include "core/export/ReductionOutputs.h"
 #include "core/export/Xface.h"
 #include "core/inspect/DistanceUnits.h"
+#include "core/io/VisemeSetFiles.h"
 #include "core/project/ProjectRun.h"
 #include "core/project/ReduceInputs.h"
 #include "core/reduce/ReduceRun.h"

@@ -1,8 +1,8 @@
 #pragma once
 // One entry point for every export format: what `visemelab export` and the editor's export menu
 // call (the reduced model of a project comes from core/project/ProjectRun.h).
+#include "core/mesh/VisemeSet.h"
 #include "core/reduce/ReducedModel.h"
-#include "core/reduce/VisemeSet.h"
 
 #include <filesystem>
 #include <optional>

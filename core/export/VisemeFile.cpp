@@ -5,7 +5,7 @@
 #include "core/common/TextParsing.h"
 #include "core/export/KeyMeshFiles.h"
 #include "core/io/JsonRead.h"
-#include "core/reduce/VisemeSet.h"
+#include "core/mesh/VisemeSet.h"
 
 #include <unordered_set>
 

@@ -16,9 +16,9 @@
 // to the .fdp) read with core/io and concatenated. <stem>.dic beside the .fdp, when present, gives
 // the phoneme map. Errors name the file, line and entity.
 #include "core/common/OutputSet.h"
+#include "core/mesh/VisemeSet.h"
 #include "core/reduce/Frequencies.h"
 #include "core/reduce/ReducedModel.h"
-#include "core/reduce/VisemeSet.h"
 
 #include <filesystem>
 #include <string>

@@ -2,11 +2,11 @@
 // One reduction run from user-level inputs (viseme set, frequencies, weight mode, target) to the
 // reduced model (buildReducedModel). Shared by the CLI, projects and avatars so all behave
 // identically; its files and report are written by core/export/ReductionOutputs.h.
+#include "core/mesh/VisemeSet.h"
 #include "core/reduce/Frequencies.h"
 #include "core/reduce/ReducedModel.h"
 #include "core/reduce/Reduction.h"
 #include "core/reduce/VisemeErrors.h"
-#include "core/reduce/VisemeSet.h"
 #include "core/reduce/Weights.h"
 
 #include <optional>

@@ -1,9 +1,9 @@
 #include "core/reduce/ReducedModel.h"
 
 #include "core/common/Error.h"
+#include "core/mesh/VisemeSet.h"
 #include "core/reduce/Frequencies.h"
 #include "core/reduce/Reduction.h"
-#include "core/reduce/VisemeSet.h"
 
 #include <algorithm>
 #include <cmath>

@@ -5,11 +5,11 @@
 #include "core/export/ReductionOutputs.h"
 #include "core/export/VisemeFile.h"
 #include "core/face/HeadParts.h"
+#include "core/io/VisemeSetFiles.h"
 #include "core/reduce/Frequencies.h"
 #include "core/reduce/GramMatrix.h"
 #include "core/reduce/ReduceRun.h"
 #include "core/reduce/Reduction.h"
-#include "core/reduce/VisemeSet.h"
 #include "core/reduce/Weights.h"
 #include "tests/reduce/RandomShapes.h"
 

@@ -14,6 +14,7 @@
 #include "core/gltf/AvatarScan.h"
 #include "core/gltf/Gltfpack.h"
 #include "core/io/MeshIO.h"
+#include "core/io/VisemeSetFiles.h"
 #include "core/phonetics/PhonemeMaps.h"
 #include "core/phonetics/PhonemeTableIO.h"
 #include "core/project/ProjectRun.h"
@@ -193,7 +194,7 @@ EditorSession::Loaded EditorSession::loadFolder(const std::filesystem::path& fol
     const auto files = listVisemeFolder(folder, neutralFile);
     auto set = std::make_shared<const VisemeSet>(loadVisemeSet(neutralFile, files));
     std::vector<std::filesystem::path> visemeFiles;
-    for (const auto& viseme : set->visemes) visemeFiles.push_back(std::filesystem::absolute(viseme.source));
+    for (const auto& file : files) visemeFiles.push_back(std::filesystem::absolute(file.second));
     Loaded loaded;
     loaded.project.document =
         documentOfSet(set, std::filesystem::absolute(neutralFile), std::move(visemeFiles));

@@ -10,11 +10,11 @@
 #include "core/document/PhonemeMapCommands.h"
 #include "core/export/Export.h"
 #include "core/gltf/AvatarWriter.h"
+#include "core/mesh/VisemeSet.h"
 #include "core/paint/SculptBrush.h"
 #include "core/phonetics/PhonemeCounting.h"
 #include "core/project/Project.h"
 #include "core/reduce/Reduction.h"
-#include "core/reduce/VisemeSet.h"
 #include "ui/session/BackgroundTask.h"
 #include "ui/session/CommandHistory.h"
 #include "ui/session/FaceSamples.h"
@@ -74,7 +74,7 @@ class EditorSession {
     void startSaveProject(const std::filesystem::path& file = {}, std::function<void()> then = {});
     bool saving() const { return files_.saving(); }
     std::string savingLabel() const { return files_.savingLabel(); }
-    // A folder of meshes: the neutral by findNeutralMesh (core/reduce/VisemeSet.h), the others are
+    // A folder of meshes: the neutral by findNeutralMesh (core/io/VisemeSetFiles.h), the others are
     // visemes sorted by name; frequencies start uniform.
     void loadVisemeFolder(const std::filesystem::path& folder);
     // The bundled sample (assets/), whatever form the core ships it in.

@@ -1,19 +1,19 @@
 #pragma once
 // An interpolable viseme set: a neutral mesh (topology, (u,v), neutral positions) plus n named
-// visemes that differ from it only in vertex positions.
+// visemes that differ from it only in vertex positions. Which file a viseme came from is not part of
+// the set: the document keeps it (Document::visemeFiles), loaders pass it to the checks below.
 #include "core/mesh/Mesh.h"
 
 #include <filesystem>
+#include <span>
 #include <string>
-#include <utility>
 #include <vector>
 
 namespace vl {
 
 struct Viseme {
     std::string name;
-    std::filesystem::path source; // file it was loaded from; empty when generated
-    std::vector<Vec3> positions;  // one per vertex of the neutral mesh, same order
+    std::vector<Vec3> positions; // one per vertex of the neutral mesh, same order
 };
 
 struct VisemeSet {
@@ -45,23 +45,9 @@ inline constexpr double kMaxVisemeCoordinate = 1e30;
 
 // Throws InputError naming the mesh file (or `where` for embedded shapes) and the vertex when a
 // coordinate of the set is beyond kMaxVisemeCoordinate or not finite, or naming the viseme when
-// its name is not valid UTF-8 (shown escaped).
-void checkVisemeSetValues(const VisemeSet& set, std::string_view where);
-
-// Loads the neutral mesh and each (name, file) viseme, checking interpolability, unique non-empty
-// names and n >= 2.
-VisemeSet loadVisemeSet(const std::filesystem::path& neutral,
-                        const std::vector<std::pair<std::string, std::filesystem::path>>& visemes);
-
-// All mesh files of a folder sorted by file name, named by their stem (the neutral file excluded).
-std::vector<std::pair<std::string, std::filesystem::path>>
-listVisemeFolder(const std::filesystem::path& folder, const std::filesystem::path& excluded = {});
-
-// The one rule for which mesh of a folder is the neutral (`reduce --visemes`, `project new`, the
-// editor's Open folder): the mesh file whose stem is "neutral" in any case (neutral.obj, Neutral.PLY);
-// failing that, the one whose stem contains "neutral" (face_neutral.obj). Throws InputError naming the
-// folder when no file qualifies, and naming the candidates when several do at the same rank (a
-// neutral.obj beside a neutral.ply must not be decided by the order of a listing).
-std::filesystem::path findNeutralMesh(const std::filesystem::path& folder);
+// its name is not valid UTF-8 (shown escaped). `visemeFiles` holds the file each viseme was read
+// from (empty paths, or no list at all, for generated or embedded shapes).
+void checkVisemeSetValues(const VisemeSet& set, std::string_view where,
+                          std::span<const std::filesystem::path> visemeFiles = {});
 
 } // namespace vl

@@ -1,0 +1,93 @@
+#include "core/io/VisemeSetFiles.h"
+
+#include "core/common/Error.h"
+#include "core/common/InputRegistry.h"
+#include "core/io/MeshIO.h"
+
+#include <algorithm>
+#include <cctype>
+#include <unordered_set>
+
+namespace vl {
+
+VisemeSet loadVisemeSet(const std::filesystem::path& neutral,
+                        const std::vector<std::pair<std::string, std::filesystem::path>>& visemes) {
+    if (visemes.size() < 2)
+        throwInputError("viseme set of " + neutral.string(),
+                        "needs at least 2 visemes besides the neutral mesh, got " +
+                            std::to_string(visemes.size()));
+    VisemeSet set;
+    set.neutralSource = neutral;
+    ReferenceMesh reference = readReferenceMesh(neutral);
+    set.neutral = reference.mesh;
+    checkVisemeSetSize(visemes.size(), set.vertexCount(), "viseme set of " + neutral.string());
+    std::unordered_set<std::string> names;
+    std::vector<std::filesystem::path> files;
+    for (const auto& [name, file] : visemes) {
+        if (name.empty()) throwInputError(file.string(), "viseme has an empty name");
+        if (!names.insert(name).second)
+            throwInputError(file.string(), "duplicate viseme name '" + name + "'");
+        // Parses only the positions of a typical export, whose faces are then the neutral's.
+        MeshLike read = readPositionsLike(file, reference);
+        if (!read.sameTopology) checkInterpolable(set.neutral, neutral.string(), read.mesh, file.string());
+        set.visemes.push_back({name, std::move(read.mesh.positions)});
+        files.push_back(file);
+    }
+    checkVisemeSetValues(set, "viseme set of " + neutral.string(), files);
+    return set;
+}
+
+std::vector<std::pair<std::string, std::filesystem::path>>
+listVisemeFolder(const std::filesystem::path& folder, const std::filesystem::path& excluded) {
+    std::error_code ec;
+    if (!std::filesystem::is_directory(folder, ec)) throwInputError(folder.string(), "not a folder");
+    noteInputFolder(folder); // its files are inputs, and outputs must not go into it
+    std::vector<std::filesystem::path> files;
+    // A symlink loop or a dangling link in the folder is not a mesh (is_regular_file would throw).
+    for (const auto& entry : std::filesystem::directory_iterator(folder, ec))
+        if (std::error_code fileError; entry.is_regular_file(fileError) && isMeshFile(entry.path()))
+            files.push_back(entry.path());
+    std::sort(files.begin(), files.end());
+    std::vector<std::pair<std::string, std::filesystem::path>> result;
+    for (const auto& file : files) {
+        if (!excluded.empty() && std::filesystem::equivalent(file, excluded, ec)) continue;
+        result.emplace_back(file.stem().string(), file);
+        noteInputFile(file); // named as an input even by commands that do not read it (project new)
+    }
+    if (result.empty()) throwInputError(folder.string(), "contains no mesh files (.obj, .ply, .wrl)");
+    return result;
+}
+
+std::filesystem::path findNeutralMesh(const std::filesystem::path& folder) {
+    std::error_code ec;
+    if (!std::filesystem::is_directory(folder, ec)) throwInputError(folder.string(), "not a folder");
+    std::vector<std::filesystem::path> exact, containing;
+    for (const auto& entry : std::filesystem::directory_iterator(folder, ec)) {
+        std::error_code fileError;
+        if (!entry.is_regular_file(fileError) || !isMeshFile(entry.path())) continue;
+        std::string stem = entry.path().stem().string();
+        std::transform(stem.begin(), stem.end(), stem.begin(),
+                       [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+        if (stem == "neutral")
+            exact.push_back(entry.path());
+        else if (stem.find("neutral") != std::string::npos)
+            containing.push_back(entry.path());
+    }
+    const std::vector<std::filesystem::path>& found = exact.empty() ? containing : exact;
+    if (found.empty())
+        throwInputError(folder.string(),
+                        "no neutral mesh in the folder (a mesh file named neutral.obj, "
+                        ".ply or .wrl, or with 'neutral' in its name); give it with --neutral");
+    if (found.size() > 1) {
+        std::vector<std::string> names;
+        for (const auto& file : found) names.push_back(file.filename().string());
+        std::sort(names.begin(), names.end());
+        std::string list;
+        for (const auto& name : names) list += (list.empty() ? "" : ", ") + name;
+        throwInputError(folder.string(),
+                        "several meshes could be the neutral (" + list + "); give it with --neutral");
+    }
+    return found.front();
+}
+
+} // namespace vl
