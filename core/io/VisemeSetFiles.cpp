@@ -1,8 +1,10 @@
 #include "core/io/VisemeSetFiles.h"
 
+#include "core/common/AtomicFile.h"
 #include "core/common/Error.h"
 #include "core/common/InputRegistry.h"
 #include "core/io/MeshIO.h"
+#include "core/io/PlyFastPath.h"
 
 #include <algorithm>
 #include <cctype>
@@ -10,23 +12,93 @@
 
 namespace vl {
 
+namespace {
+
+void requireTwoVisemes(const std::filesystem::path& neutral, std::size_t count) {
+    if (count < 2)
+        throwInputError("viseme set of " + neutral.string(),
+                        "needs at least 2 visemes besides the neutral mesh, got " + std::to_string(count));
+}
+
+void requireNewName(std::unordered_set<std::string>& names, const std::string& name,
+                    const std::filesystem::path& file) {
+    if (name.empty()) throwInputError(file.string(), "viseme has an empty name");
+    if (!names.insert(name).second) throwInputError(file.string(), "duplicate viseme name '" + name + "'");
+}
+
+// A binary float32 PLY of the neutral's layout straight into `out`, its faces compared (no doubles).
+// `bytes` is reused from file to file.
+bool readFloatsLike(const std::filesystem::path& file, const ReferenceMesh& reference, std::span<float> out,
+                    FileBytes& bytes) {
+    if (meshFormatFromPath(file) != MeshFormat::Ply || !reference.mesh.uvs.empty()) return false;
+    readFileBytesInto(file, bytes);
+    const std::string_view view = bytes.view();
+    if (view.empty()) return false; // the general reader reports it
+    return meshio::readPlyFloatsMatching(view, meshio::parsePlyHeader(view, file.string()),
+                                         reference.mesh.triangles, out);
+}
+
+} // namespace
+
+FloatVisemeSet loadFloatVisemeSet(const std::filesystem::path& neutral,
+                                  const std::vector<std::pair<std::string, std::filesystem::path>>& visemes) {
+    requireTwoVisemes(neutral, visemes.size());
+    return loadFloatVisemeSet(neutral, readReferenceMesh(neutral), visemes);
+}
+
+FloatVisemeSet loadFloatVisemeSet(const std::filesystem::path& neutral, ReferenceMesh reference,
+                                  const std::vector<std::pair<std::string, std::filesystem::path>>& visemes) {
+    requireTwoVisemes(neutral, visemes.size());
+    FloatVisemeSet set;
+    set.neutralSource = neutral;
+    const MeshData& neutralMesh = reference.mesh; // moved into the set at the end: never held twice
+    const std::string where = "viseme set of " + neutral.string();
+    checkVisemeSetSize(visemes.size(), neutralMesh.positions.size(), where);
+    checkVisemeValues(neutralMesh.positions, neutral.string());
+    const std::size_t floats = 3 * neutralMesh.positions.size();
+    set.positions = std::make_unique_for_overwrite<float[]>(visemes.size() * floats); // every float is read
+    std::unordered_set<std::string> names;
+    FileBytes bytes;
+    for (std::size_t i = 0; i < visemes.size(); ++i) {
+        const auto& [name, file] = visemes[i];
+        requireNewName(names, name, file);
+        checkVisemeName(name, file.string());
+        const std::span<float> out(set.positions.get() + i * floats, floats);
+        if (!readFloatsLike(file, reference, out, bytes)) {
+            MeshLike read = readPositionsLike(file, reference);
+            if (!read.sameTopology)
+                checkInterpolable(neutralMesh, neutral.string(), read.mesh, file.string());
+            checkVisemeValues(read.mesh.positions,
+                              file.string()); // before rounding: beyond float32 is refused
+            for (std::size_t v = 0; v < read.mesh.positions.size(); ++v)
+                for (int axis = 0; axis < 3; ++axis)
+                    out[3 * v + static_cast<std::size_t>(axis)] =
+                        static_cast<float>(read.mesh.positions[v][axis]);
+        }
+        checkVisemeValues(out, file.string());
+        set.names.push_back(name);
+    }
+    set.neutral = std::move(reference.mesh);
+    return set;
+}
+
 VisemeSet loadVisemeSet(const std::filesystem::path& neutral,
                         const std::vector<std::pair<std::string, std::filesystem::path>>& visemes) {
-    if (visemes.size() < 2)
-        throwInputError("viseme set of " + neutral.string(),
-                        "needs at least 2 visemes besides the neutral mesh, got " +
-                            std::to_string(visemes.size()));
+    requireTwoVisemes(neutral, visemes.size());
+    return loadVisemeSet(neutral, readReferenceMesh(neutral), visemes);
+}
+
+VisemeSet loadVisemeSet(const std::filesystem::path& neutral, ReferenceMesh reference,
+                        const std::vector<std::pair<std::string, std::filesystem::path>>& visemes) {
+    requireTwoVisemes(neutral, visemes.size());
     VisemeSet set;
     set.neutralSource = neutral;
-    ReferenceMesh reference = readReferenceMesh(neutral);
     set.neutral = reference.mesh;
     checkVisemeSetSize(visemes.size(), set.vertexCount(), "viseme set of " + neutral.string());
     std::unordered_set<std::string> names;
     std::vector<std::filesystem::path> files;
     for (const auto& [name, file] : visemes) {
-        if (name.empty()) throwInputError(file.string(), "viseme has an empty name");
-        if (!names.insert(name).second)
-            throwInputError(file.string(), "duplicate viseme name '" + name + "'");
+        requireNewName(names, name, file);
         // Parses only the positions of a typical export, whose faces are then the neutral's.
         MeshLike read = readPositionsLike(file, reference);
         if (!read.sameTopology) checkInterpolable(set.neutral, neutral.string(), read.mesh, file.string());

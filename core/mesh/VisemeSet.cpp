@@ -64,13 +64,10 @@ void checkVisemeSetSize(std::size_t visemeCount, std::size_t vertexCount, std::s
 
 namespace {
 
-void checkCoordinates(std::span<const Vec3> positions, const std::string& source) {
-    for (std::size_t v = 0; v < positions.size(); ++v)
-        for (const double c : {positions[v][0], positions[v][1], positions[v][2]})
-            if (!(std::abs(c) <= kMaxVisemeCoordinate))
-                throwInputError(quoteInput(source), "vertex " + std::to_string(v + 1) + ": coordinate " +
-                                                        formatDouble(c) +
-                                                        " beyond +-1e30 (squared distances would overflow)");
+[[noreturn]] void throwCoordinateError(std::string_view source, std::size_t vertex, double c) {
+    throwInputError(quoteInput(source), "vertex " + std::to_string(vertex + 1) + ": coordinate " +
+                                            formatDouble(c) +
+                                            " beyond +-1e30 (squared distances would overflow)");
 }
 
 std::string sourceOr(const std::filesystem::path& file, std::string_view where, std::string_view shape) {
@@ -79,17 +76,32 @@ std::string sourceOr(const std::filesystem::path& file, std::string_view where, 
 
 } // namespace
 
+void checkVisemeValues(std::span<const Vec3> positions, std::string_view source) {
+    for (std::size_t v = 0; v < positions.size(); ++v)
+        for (const double c : {positions[v][0], positions[v][1], positions[v][2]})
+            if (!(std::abs(c) <= kMaxVisemeCoordinate)) throwCoordinateError(source, v, c);
+}
+
+void checkVisemeValues(std::span<const float> xyz, std::string_view source) {
+    for (std::size_t k = 0; k < xyz.size(); ++k)
+        if (!(std::abs(static_cast<double>(xyz[k])) <= kMaxVisemeCoordinate)) // as the doubles are checked
+            throwCoordinateError(source, k / 3, xyz[k]);
+}
+
+void checkVisemeName(const std::string& name, std::string_view source) {
+    if (!isValidUtf8(name))
+        throwInputError(quoteInput(source), "viseme name \"" + quoteInput(name) + "\" is not valid UTF-8");
+}
+
 void checkVisemeSetValues(const VisemeSet& set, std::string_view where,
                           std::span<const std::filesystem::path> visemeFiles) {
-    checkCoordinates(set.neutral.positions, sourceOr(set.neutralSource, where, "neutral"));
+    checkVisemeValues(set.neutral.positions, sourceOr(set.neutralSource, where, "neutral"));
     for (std::size_t i = 0; i < set.visemes.size(); ++i) {
         const Viseme& viseme = set.visemes[i];
         const std::filesystem::path file = i < visemeFiles.size() ? visemeFiles[i] : std::filesystem::path();
         const std::string source = sourceOr(file, where, "viseme " + quoteInput(viseme.name));
-        if (!isValidUtf8(viseme.name))
-            throwInputError(quoteInput(source),
-                            "viseme name \"" + quoteInput(viseme.name) + "\" is not valid UTF-8");
-        checkCoordinates(viseme.positions, source);
+        checkVisemeName(viseme.name, source);
+        checkVisemeValues(viseme.positions, source);
     }
 }
 

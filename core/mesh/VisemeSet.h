@@ -5,6 +5,7 @@
 #include "core/mesh/Mesh.h"
 
 #include <filesystem>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -29,6 +30,27 @@ struct VisemeSet {
     MeshData meshOf(std::size_t viseme) const;
 };
 
+// A viseme set of large meshes as `reduce` holds it (docs/performance.md, issue 33): the visemes'
+// positions as float32 x, y, z in one block (12 bytes a position, not 24, and no vector per viseme),
+// the neutral as a mesh (weights, rest pose and the keys' topology need it whole).
+// Precision: a float32 input file is held exactly. A double input (OBJ text, double PLY) is rounded
+// once, each coordinate by a relative error u <= 2^-24; every sum over the positions is then
+// accumulated in double (ShapeView.h), so a squared distance |a - b|^2 moves by at most
+// 2u |a - b| (|a| + |b|) + u^2 (|a| + |b|)^2 from its value on the unrounded inputs: relative to it,
+// about 2^-23 (|a| + |b|) / |a - b| (1.2e-7 times the coordinates' size over the distance).
+struct FloatVisemeSet {
+    MeshData neutral;
+    std::filesystem::path neutralSource;
+    std::vector<std::string> names;
+    std::unique_ptr<float[]> positions; // names.size() x vertexCount() x 3, viseme after viseme
+
+    std::size_t size() const { return names.size(); }
+    std::size_t vertexCount() const { return neutral.positions.size(); }
+    const float* visemePositions(std::size_t viseme) const {
+        return positions.get() + 3 * viseme * vertexCount();
+    }
+};
+
 // Throws InputError naming `otherSource` and the first mismatch (vertex count, face count, or the
 // first differing face) when `other` is not interpolable with `reference`.
 void checkInterpolable(const MeshData& reference, std::string_view referenceSource, const MeshData& other,
@@ -49,5 +71,9 @@ inline constexpr double kMaxVisemeCoordinate = 1e30;
 // from (empty paths, or no list at all, for generated or embedded shapes).
 void checkVisemeSetValues(const VisemeSet& set, std::string_view where,
                           std::span<const std::filesystem::path> visemeFiles = {});
+// The same checks for one shape (`source` names it in errors): coordinates, then the name.
+void checkVisemeValues(std::span<const Vec3> positions, std::string_view source);
+void checkVisemeValues(std::span<const float> xyz, std::string_view source);
+void checkVisemeName(const std::string& name, std::string_view source);
 
 } // namespace vl

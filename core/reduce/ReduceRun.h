@@ -6,6 +6,7 @@
 #include "core/reduce/Frequencies.h"
 #include "core/reduce/ReducedModel.h"
 #include "core/reduce/Reduction.h"
+#include "core/reduce/SetShapes.h"
 #include "core/reduce/VisemeErrors.h"
 #include "core/reduce/Weights.h"
 
@@ -110,5 +111,11 @@ struct ReduceOutcome {
 
 ReduceOutcome runReduction(const VisemeSet& set, const FrequencySource& frequencies,
                            const ReduceSettings& settings, const ProgressCallback& progress = {});
+// The same on a view of the set (a VisemeSet or a FloatVisemeSet). With KeyPositions::Deferred the
+// model's keys have names but no positions (a writer merges each as it writes it, mergeKeyInto) and
+// its neutral is empty (the set's serves): a large set's keys are never held as doubles.
+ReduceOutcome runReduction(const SetShapes& set, const FrequencySource& frequencies,
+                           const ReduceSettings& settings, const ProgressCallback& progress = {},
+                           KeyPositions keyPositions = KeyPositions::Merged);
 
 } // namespace vl
