@@ -6,6 +6,7 @@
 #include "core/face/BundledFace.h"
 #include "core/gltf/TargetNames.h"
 #include "core/gltf/VisemeMapNames.h"
+#include "core/io/VisemeSetFiles.h"
 #include "core/phonetics/PhonemeMaps.h"
 #include "core/project/ProjectRun.h"
 

@@ -11,6 +11,7 @@
 #include "core/export/ReductionOutputs.h"
 #include "core/import/XfaceImport.h"
 #include "core/inspect/DistanceUnits.h"
+#include "core/io/VisemeSetFiles.h"
 #include "core/project/ProjectRun.h"
 #include "core/project/ReduceInputs.h"
 #include "core/reduce/ReduceRun.h"
@@ -55,10 +56,23 @@ std::pair<std::string, std::string> splitAssignment(const std::string& text, con
     return {text.substr(0, eq), text.substr(eq + 1)};
 }
 
-VisemeSet loadSet(const ReduceOptions& o, XfaceFace& xface) {
+// The set as the run holds it: a VisemeSet (doubles), or for keys written as binary PLY only (large
+// sets: --format auto above kBinaryKeyMeshVertices, or ply) a FloatVisemeSet, whose keys are merged
+// one at a time as they are written (docs/performance.md, issue 33: 12 bytes a position, not 24,
+// and no key held as doubles). `view` reads whichever is loaded.
+struct LoadedSet {
+    std::shared_ptr<const VisemeSet> doubles;
+    FloatVisemeSet floats;
+    SetShapes view;
+    bool deferredKeys() const { return !doubles; }
+};
+
+void loadFlagSet(const ReduceOptions& o, XfaceFace& xface, LoadedSet& loaded) {
     if (!o.fdp.empty()) { // the "Rest" entity and the Viseme entities; <stem>.dic as phoneme map
         xface = loadXfaceFace(o.fdp);
-        return std::move(xface.set);
+        loaded.doubles = std::make_shared<const VisemeSet>(std::move(xface.set));
+        loaded.view = shapesOf(*loaded.doubles);
+        return;
     }
     std::filesystem::path neutral = o.neutral;
     std::vector<std::pair<std::string, std::filesystem::path>> files;
@@ -68,10 +82,23 @@ VisemeSet loadSet(const ReduceOptions& o, XfaceFace& xface) {
     } else {
         for (const auto& v : o.visemes) files.emplace_back(splitAssignment(v, "--viseme"));
     }
-    return loadVisemeSet(neutral, files);
+    if (files.size() < 2) { // the loader's error, before the neutral is read
+        loaded.doubles = std::make_shared<const VisemeSet>(loadVisemeSet(neutral, files));
+        return;
+    }
+    ReferenceMesh reference = readReferenceMesh(neutral);
+    const KeyMeshFormats formats = *keyMeshFormatsFromString(o.format, reference.mesh.positions.size());
+    if (!formats.obj && !formats.wrl) {
+        loaded.floats = loadFloatVisemeSet(neutral, std::move(reference), files);
+        loaded.view = shapesOf(loaded.floats);
+    } else {
+        loaded.doubles =
+            std::make_shared<const VisemeSet>(loadVisemeSet(neutral, std::move(reference), files));
+        loaded.view = shapesOf(*loaded.doubles);
+    }
 }
 
-FrequencySource loadFrequencies(const ReduceOptions& o, const VisemeSet& set, const XfaceFace& xface = {}) {
+FrequencySource loadFrequencies(const ReduceOptions& o, const SetShapes& set, const XfaceFace& xface = {}) {
     FrequencySource source;
     if (!o.freqFile.empty()) {
         source = loadFrequencyFile(o.freqFile);
@@ -83,7 +110,7 @@ FrequencySource loadFrequencies(const ReduceOptions& o, const VisemeSet& set, co
     } else {
         std::fprintf(stderr,
                      "visemelab: no frequencies given (--freq-file / --freq): using equal frequencies\n");
-        for (const auto& v : set.visemes) source.visemeFrequencies.entries.emplace_back(v.name, 1.0);
+        for (const auto& name : set.names) source.visemeFrequencies.entries.emplace_back(name, 1.0);
     }
     if (!o.mapFile.empty()) source = withPhonemeMap(std::move(source), loadPhonemeMapFile(o.mapFile));
     // An Xface face's .dic maps a phoneme table given without --map (a table that names only the
@@ -173,23 +200,26 @@ void applySolverFlags(const ReduceOptions& o, ReduceSettings& settings) {
     for (const auto& file : o.compareMaps) settings.compareMaps.push_back(loadPhonemeMapFile(file));
 }
 
-// Everything a run needs, from a project file (flags given alongside override it) or from flags.
-ReduceInputs loadInputs(const ReduceOptions& o, bool weightsGiven) {
+// Everything a run needs, from a project file (flags given alongside override it) or from flags;
+// in.set is the loaded set's doubles (null for a FloatVisemeSet).
+ReduceInputs loadInputs(const ReduceOptions& o, bool weightsGiven, LoadedSet& loaded) {
     checkFlagCombinations(o);
     ReduceInputs in;
     if (o.project.empty()) {
         XfaceFace xface;
-        in.set = std::make_shared<const VisemeSet>(loadSet(o, xface));
-        in.frequencies = loadFrequencies(o, *in.set, xface);
+        loadFlagSet(o, xface, loaded);
+        in.set = loaded.doubles;
+        in.frequencies = loadFrequencies(o, loaded.view, xface);
         in.settings = loadSettings(o);
         applySolverFlags(o, in.settings);
-        in.settings.millimetresPerUnit = guessMillimetresPerUnit(in.set->neutral.positions);
+        in.settings.millimetresPerUnit = guessMillimetresPerUnit(loaded.view.neutral->positions);
         return in;
     }
     const Project project = loadProject(o.project);
-    in.set = std::make_shared<const VisemeSet>(loadProjectVisemeSet(project));
+    in.set = loaded.doubles = std::make_shared<const VisemeSet>(loadProjectVisemeSet(project));
+    loaded.view = shapesOf(*in.set);
     in.frequencies =
-        (o.freqFile.empty() && o.freqs.empty()) ? project.frequencies : loadFrequencies(o, *in.set);
+        (o.freqFile.empty() && o.freqs.empty()) ? project.frequencies : loadFrequencies(o, loaded.view);
     in.settings = weightsGiven ? loadSettings(o) : projectReduceSettings(project);
     in.settings.target = o.target != kTargetNotGiven ? o.target : project.reduction.target;
     if (weightsGiven) { // the project's constraints apply whatever the weights
@@ -207,15 +237,21 @@ ReduceInputs loadInputs(const ReduceOptions& o, bool weightsGiven) {
 
 int runReduce(const ReduceOptions& o, bool weightsGiven) {
     const auto t0 = std::chrono::steady_clock::now();
-    const ReduceInputs inputs = loadInputs(o, weightsGiven);
-    const VisemeSet& set = *inputs.set;
+    LoadedSet loaded;
+    const ReduceInputs inputs = loadInputs(o, weightsGiven, loaded);
+    const SetShapes& set = loaded.view;
     const ReduceSettings& settings = inputs.settings;
     ReduceTimings timings;
     timings.loadMs = millisecondsSince(t0);
 
     const auto t1 = std::chrono::steady_clock::now();
     ProgressLine progress("reducing");
-    const ReduceOutcome outcome = reduce(inputs, ReducePolicy::batch(o.timeLimit), progress.callback());
+    const ReduceOutcome outcome =
+        loaded.deferredKeys()
+            ? runReduction(set, inputs.frequencies,
+                           withPolicy(settings, ReducePolicy::batch(o.timeLimit), set.size()),
+                           progress.callback(), KeyPositions::Deferred)
+            : reduce(inputs, ReducePolicy::batch(o.timeLimit), progress.callback());
     progress.finish();
     timings.reduceMs = millisecondsSince(t1);
 
@@ -226,8 +262,12 @@ int runReduce(const ReduceOptions& o, bool weightsGiven) {
     refuseOverwritingInput(reportPath, "--report"); // before any output changes
     // The meshes, mapping.json and the default report replace the last run's as one set.
     OutputSet files(outDir, "reduce");
-    const KeyMeshFormats formats = *keyMeshFormatsFromString(o.format, set.vertexCount());
-    auto outputs = writeReductionOutputs(files, outcome, formats);
+    const KeyMeshFormats formats = *keyMeshFormatsFromString(o.format, set.neutral->positions.size());
+    if (loaded
+            .deferredKeys()) // the keys' writer needs the neutral's faces, not its positions: 24 MB a million
+        std::vector<Vec3>().swap(loaded.floats.neutral.positions);
+    auto outputs = loaded.deferredKeys() ? writeReductionOutputs(files, outcome, formats, set)
+                                         : writeReductionOutputs(files, outcome, formats);
     timings.writeMs = millisecondsSince(t2);
     const std::string report = reductionReportJson(outcome, settings.weightMode, timings, outputs);
     if (o.report.empty()) files.add("report.json", report);

@@ -9,6 +9,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <new>
 #include <system_error>
@@ -71,11 +72,20 @@ std::string readFileToString(const std::filesystem::path& path) {
 
 FileBytes readFileBytes(const std::filesystem::path& path) {
     FileBytes bytes;
-    bytes.size = readWholeFile(path, [&](std::size_t size) {
-        bytes.data = std::make_unique_for_overwrite<char[]>(size);
-        return bytes.data.get();
-    });
+    readFileBytesInto(path, bytes);
     return bytes;
+}
+
+void readFileBytesInto(const std::filesystem::path& path, FileBytes& buffer) {
+    buffer.size = readWholeFile(path, [&](std::size_t size) {
+        if (size > buffer.capacity || !buffer.data) {
+            buffer.data.reset(); // the old buffer goes before the new one is taken
+            buffer.capacity = 0;
+            buffer.data = std::make_unique_for_overwrite<char[]>(std::max<std::size_t>(size, 1));
+            buffer.capacity = size;
+        }
+        return buffer.data.get();
+    });
 }
 
 void writeFileAtomically(const std::filesystem::path& path, std::string_view contents) {

@@ -17,9 +17,13 @@ std::string readFileToString(const std::filesystem::path& path);
 struct FileBytes {
     std::unique_ptr<char[]> data;
     std::size_t size = 0;
+    std::size_t capacity = 0; // bytes `data` holds (>= size)
     std::string_view view() const { return {data.get(), size}; }
 };
 FileBytes readFileBytes(const std::filesystem::path& path);
+// The same into `buffer`, whose memory is reused when it holds enough: a loader reading many files of
+// one size has fresh pages cleared by the kernel once, not once per file.
+void readFileBytesInto(const std::filesystem::path& path, FileBytes& buffer);
 
 // Writes `contents` to a temporary file beside `path`, fsyncs it, renames it over `path` and fsyncs
 // the folder, so a crash, kill -9 or a full disk never leaves a half-written file where the old one

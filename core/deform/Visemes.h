@@ -3,7 +3,7 @@
 // gives meshes that share vertex order and triangles: an interpolable set by construction, ready for
 // the reduction (core/reduce).
 #include "core/deform/DeformationCascade.h"
-#include "core/reduce/VisemeSet.h"
+#include "core/mesh/VisemeSet.h"
 
 #include <span>
 #include <string>

@@ -44,7 +44,7 @@ Document addViseme(const Document& document, const std::string& name, const Mesh
     checkInterpolable(document.visemes->neutral, document.visemes->neutralSource.string(), mesh, where);
     Document next = document;
     auto set = std::make_shared<VisemeSet>(*document.visemes);
-    set->visemes.push_back({name, file, mesh.positions});
+    set->visemes.push_back({name, mesh.positions});
     next.visemes = std::move(set);
     next.visemeFiles.push_back(file.empty() ? file : std::filesystem::absolute(file));
     if (!next.frequencies.isPhonemeBased())

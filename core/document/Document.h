@@ -17,11 +17,11 @@
 #include "core/document/DocumentAvatar.h"
 #include "core/document/OwnFace.h"
 #include "core/face/BundledFace.h"
+#include "core/mesh/VisemeSet.h"
 #include "core/project/Project.h"
 #include "core/reduce/Frequencies.h"
 #include "core/reduce/Reduction.h"
 #include "core/reduce/ReductionConstraints.h"
-#include "core/reduce/VisemeSet.h"
 #include "core/reduce/Weights.h"
 
 #include <cstdint>

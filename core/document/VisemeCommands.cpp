@@ -186,7 +186,7 @@ Document addRestViseme(const Document& document, const std::string& name) {
     refuseAvatar(document, "rest viseme");
     checkNewVisemeName(document, name, "rest viseme");
     Document next = document;
-    insertViseme(next, next.visemeCount(), Viseme{name, {}, document.visemes->neutral.positions}, {});
+    insertViseme(next, next.visemeCount(), Viseme{name, document.visemes->neutral.positions}, {});
     if (!next.frequencies.isPhonemeBased())
         next.frequencies.visemeFrequencies.entries.emplace_back(name, 1.0);
     return checked(std::move(next));
@@ -218,7 +218,6 @@ Document setVisemeShape(const Document& document, int index, std::vector<Vec3> p
     Document next = document;
     auto set = std::make_shared<VisemeSet>(*next.visemes);
     set->visemes[i].positions = std::move(positions);
-    set->visemes[i].source.clear();
     next.visemes = std::move(set);
     next.visemeFiles[i].clear(); // embedded: the file no longer holds this shape
     return checked(std::move(next));
@@ -243,7 +242,7 @@ Document addBlendedViseme(const Document& document, const std::string& name,
         last = std::max(last, i);
     }
     Document next = document;
-    insertViseme(next, last + 1, Viseme{name, {}, std::move(positions)}, {});
+    insertViseme(next, last + 1, Viseme{name, std::move(positions)}, {});
     if (!next.frequencies.isPhonemeBased()) {
         auto& entries = next.frequencies.visemeFrequencies.entries;
         entries.emplace_back(name, 1.0);
@@ -300,7 +299,7 @@ Document storeSlidersAsNewViseme(const Document& document, const std::string& na
     next.face.presets.push_back(presetOfSliders(document.face, name));
     if (visemeSetMadeByFace(document)) {
         insertViseme(next, next.visemeCount(),
-                     Viseme{name, {}, faceOnSetMesh(document, document.face.parameters)}, {});
+                     Viseme{name, faceOnSetMesh(document, document.face.parameters)}, {});
         if (!next.frequencies.isPhonemeBased())
             next.frequencies.visemeFrequencies.entries.emplace_back(name, 1.0);
     }
@@ -325,7 +324,6 @@ Document storeSlidersInViseme(const Document& document, const std::string& name)
         auto set = std::make_shared<VisemeSet>(*document.visemes);
         Viseme& viseme = set->visemes[static_cast<std::size_t>(index)];
         viseme.positions = faceOnSetMesh(document, document.face.parameters);
-        viseme.source.clear();
         next.visemes = std::move(set);
         next.visemeFiles[static_cast<std::size_t>(index)].clear(); // embedded from now on
     }

@@ -58,7 +58,7 @@ VisemeSet toVisemeSet(const ReducedModel& model, const std::filesystem::path& so
     VisemeSet set;
     set.neutral = model.neutral;
     set.neutralSource = source;
-    for (const KeyMesh& key : model.keys) set.visemes.push_back({key.name, source, key.positions});
+    for (const KeyMesh& key : model.keys) set.visemes.push_back({key.name, key.positions});
     return set;
 }
 

@@ -2,8 +2,8 @@
 // One entry point for every export format: what `visemelab export` and the editor's export menu
 // call (the reduced model of a project comes from core/project/ProjectRun.h).
 #include "core/common/EnumNames.h"
+#include "core/mesh/VisemeSet.h"
 #include "core/reduce/ReducedModel.h"
-#include "core/reduce/VisemeSet.h"
 
 #include <filesystem>
 #include <optional>

@@ -7,7 +7,12 @@
 namespace vl {
 
 std::string formatMappingJson(const ReducedModel& model, const std::vector<KeyFileField>& keyFiles) {
-    validateReducedModel(model, "mapping.json");
+    // Names only: a model whose keys a writer merges as it writes them (KeyPositions::Deferred, no
+    // neutral either) maps as well.
+    if (model.neutral.positions.empty())
+        validateDeferredModel(model, "mapping.json");
+    else
+        validateReducedModel(model, "mapping.json");
     nlohmann::ordered_json visemes = nlohmann::ordered_json::object(),
                            reduced = nlohmann::ordered_json::array();
     for (std::size_t k = 0; k < model.keys.size(); ++k) {

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <span>
+#include <stdexcept>
 
 namespace vl {
 
@@ -61,14 +62,40 @@ void writePlyKeys(OutputSet& outputs, const ReducedModel& model, std::vector<std
     }
 }
 
-} // namespace
+// Keys deferred (KeyPositions::Deferred): each merged from the set into one float32 buffer and written.
+void writeDeferredPlyKeys(OutputSet& outputs, const ReduceOutcome& outcome, const SetShapes& set,
+                          std::vector<std::string>& written) {
+    const ReducedModel& model = outcome.model;
+    const std::size_t vertices = set.shapes.empty() ? 0 : set.shapes[0].size();
+    const PlyKeyWriter ply(vertices, set.neutral->triangles, set.neutral->uvs);
+    const std::vector<int> groupOf = outcome.result.groupOf();
+    std::vector<float> key(3 * vertices); // one key at a time, reused
+    std::vector<int> members;
+    std::string bytes;
+    for (std::size_t k = 0; k < model.keys.size(); ++k) {
+        members.clear();
+        for (std::size_t i = 0; i < groupOf.size(); ++i)
+            if (groupOf[i] == static_cast<int>(k)) members.push_back(static_cast<int>(i));
+        mergeKeyInto(set.shapes, outcome.frequencies, members, key);
+        written.push_back(keyFileName(model, k, ".ply"));
+        outputs.add(written.back(),
+                    {ply.head(), ply.positions(std::span<const float>(key), bytes), ply.faces()});
+    }
+}
 
-std::vector<std::string> writeReductionOutputs(OutputSet& outputs, const ReduceOutcome& outcome,
-                                               KeyMeshFormats formats) {
+std::vector<std::string> writeOutputs(OutputSet& outputs, const ReduceOutcome& outcome,
+                                      KeyMeshFormats formats, const SetShapes* deferred) {
     const ReducedModel& model = outcome.model;
     std::vector<std::string> written;
-    if (formats.obj || formats.wrl) writeTextKeys(outputs, model, formats, written);
-    if (formats.ply) writePlyKeys(outputs, model, written);
+    if (deferred) {
+        if (formats.obj || formats.wrl)
+            throw std::invalid_argument(
+                "writeReductionOutputs: deferred keys are written as binary PLY only");
+        writeDeferredPlyKeys(outputs, outcome, *deferred, written);
+    } else {
+        if (formats.obj || formats.wrl) writeTextKeys(outputs, model, formats, written);
+        if (formats.ply) writePlyKeys(outputs, model, written);
+    }
     std::vector<KeyFileField> fields;
     if (formats.obj) fields.push_back({"obj", ".obj"});
     if (formats.wrl) fields.push_back({"wrl", ".wrl"});
@@ -76,6 +103,18 @@ std::vector<std::string> writeReductionOutputs(OutputSet& outputs, const ReduceO
     written.emplace_back("mapping.json");
     outputs.add(written.back(), formatMappingJson(model, fields));
     return written;
+}
+
+} // namespace
+
+std::vector<std::string> writeReductionOutputs(OutputSet& outputs, const ReduceOutcome& outcome,
+                                               KeyMeshFormats formats) {
+    return writeOutputs(outputs, outcome, formats, nullptr);
+}
+
+std::vector<std::string> writeReductionOutputs(OutputSet& outputs, const ReduceOutcome& outcome,
+                                               KeyMeshFormats formats, const SetShapes& set) {
+    return writeOutputs(outputs, outcome, formats, &set);
 }
 
 namespace {

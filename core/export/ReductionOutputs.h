@@ -35,6 +35,11 @@ std::optional<KeyMeshFormats> keyMeshFormatsFromString(std::string_view text, st
 // "wrl" and "ply" as written). Returns the staged file names (relative to the folder).
 std::vector<std::string> writeReductionOutputs(OutputSet& outputs, const ReduceOutcome& outcome,
                                                KeyMeshFormats formats = {});
+// The same for an outcome of runReduction(set, ..., KeyPositions::Deferred): each key is merged from
+// `set` (mergeKeyInto) into one float32 buffer as it is written, so no key is held as doubles; the
+// bytes equal those of the merged model's PLY. Binary PLY only (formats.ply; obj or wrl throw).
+std::vector<std::string> writeReductionOutputs(OutputSet& outputs, const ReduceOutcome& outcome,
+                                               KeyMeshFormats formats, const SetShapes& set);
 
 // How far one viseme moves after the reduction (the largest vertex displacement from the neutral,
 // in mm for a glTF avatar in metres), against before: its key's shape, or nothing when it rests.

@@ -15,7 +15,7 @@
 #include "core/deform/DeformationCascade.h"
 #include "core/deform/Visemes.h"
 #include "core/face/Landmarks.h"
-#include "core/reduce/VisemeSet.h"
+#include "core/mesh/VisemeSet.h"
 
 #include <array>
 #include <span>

@@ -41,7 +41,7 @@ void addAvatarRest(AvatarScan& scan, const std::string& name) {
         throwInputError(where, "the avatar has " + std::to_string(kMaxAvatarVisemes) + " visemes already");
     scan.visemes.push_back(name);
     scan.visemeKeys.push_back(visemeJoinKey(name));
-    scan.set.visemes.push_back(Viseme{name, {}, scan.set.neutral.positions});
+    scan.set.visemes.push_back(Viseme{name, scan.set.neutral.positions});
     scan.addedRest = name;
 }
 

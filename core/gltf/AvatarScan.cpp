@@ -381,7 +381,7 @@ AvatarScan scan(const GltfDocument& doc, const AvatarSelection& selection) {
     const std::size_t total = scan.set.neutral.positions.size();
     for (std::size_t i = 0; i < n; ++i) {
         for (std::size_t v = 0; v < total; ++v) deltas[i][v] += scan.set.neutral.positions[v];
-        scan.set.visemes.push_back({scan.visemes[i], doc.source, std::move(deltas[i])});
+        scan.set.visemes.push_back({scan.visemes[i], std::move(deltas[i])});
     }
     return scan;
 }

@@ -10,7 +10,7 @@
 // viseme contributes zero displacement to it. Per-vertex weights and costs are measured on that
 // geometry; the writer never bakes the transforms into its output.
 #include "core/gltf/OwnOutput.h"
-#include "core/reduce/VisemeSet.h"
+#include "core/mesh/VisemeSet.h"
 
 #include <string>
 #include <vector>

@@ -5,7 +5,7 @@
 #include "core/common/FileNames.h"
 #include "core/common/TextParsing.h"
 #include "core/io/JsonRead.h"
-#include "core/reduce/VisemeSet.h"
+#include "core/mesh/VisemeSet.h"
 
 #include <unordered_set>
 

@@ -145,7 +145,7 @@ XfaceFace loadXfaceFace(const std::filesystem::path& fdpPath) {
         const MeshData mesh = readEntityMeshes(e, fdpPath);
         checkInterpolable(face.set.neutral, face.set.neutralSource.string(), mesh,
                           where + ": entity '" + e.alias + "'");
-        face.set.visemes.push_back({e.alias, fdpPath.parent_path() / e.meshFiles.front(), mesh.positions});
+        face.set.visemes.push_back({e.alias, mesh.positions});
     }
     if (face.set.visemes.size() < 2)
         throwInputError(fdpPath.string(), "needs at least 2 entities with category=\"Viseme\", found " +

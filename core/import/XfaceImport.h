@@ -7,7 +7,7 @@
 // read with core/io and concatenated. <stem>.dic beside the .fdp, when present, gives the phoneme
 // map. Errors name the file, line and entity.
 #include "core/reduce/Frequencies.h"
-#include "core/reduce/VisemeSet.h"
+#include "core/mesh/VisemeSet.h"
 
 #include <filesystem>
 #include <string>

@@ -88,10 +88,14 @@ bool readTriangle(const char* record, std::size_t vertexCount, Triangle& t) {
     return t[0] != t[1] && t[1] != t[2] && t[0] != t[2];
 }
 
-} // namespace
+// The file's data when it has the bulk layout: counts checked against the bytes.
+struct FastPly {
+    VertexLayout layout;
+    std::size_t vertices = 0, faces = 0;
+    const char* data = nullptr; // the vertex records, then the face records
+};
 
-std::optional<MeshData> readPlyFast(std::string_view bytes, const PlyHeader& header,
-                                    const std::vector<Triangle>* expected) {
+std::optional<FastPly> fastPly(std::string_view bytes, const PlyHeader& header) {
     const bool littleFile = header.encoding == PlyEncoding::BinaryLittleEndian;
     if (header.encoding == PlyEncoding::Ascii || littleFile != (std::endian::native == std::endian::little))
         return std::nullopt;
@@ -107,21 +111,75 @@ std::optional<MeshData> readPlyFast(std::string_view bytes, const PlyHeader& hea
     if (vertices == 0 || faces == 0 || vertices > available / layout->stride ||
         faces > (available - vertices * layout->stride) / kFaceRecord)
         return std::nullopt;
-    if (expected && expected->size() != faces) return std::nullopt;
-    MeshData mesh;
-    const char* data = bytes.data() + header.dataOffset;
-    if (!readVertices(data, vertices, *layout, mesh.positions)) return std::nullopt;
-    const char* faceData = data + vertices * layout->stride;
-    if (!expected) mesh.triangles.reserve(faces);
-    for (std::size_t f = 0; f < faces; ++f) {
+    return FastPly{*layout, vertices, faces, bytes.data() + header.dataOffset};
+}
+
+// Whether the file's faces are `expected`, each one a triangle the general reader would read as is.
+bool facesEqual(const FastPly& ply, const std::vector<Triangle>& expected) {
+    if (expected.size() != ply.faces) return false;
+    const char* faceData = ply.data + ply.vertices * ply.layout.stride;
+    if constexpr (std::endian::native == std::endian::little &&
+                  sizeof(Triangle) == 3 * sizeof(std::int32_t)) {
+        // The records' bytes against the expected triangles' (a count of 3, then the same three indices
+        // in the same byte order): 13 bytes compared a face instead of decoded and range-checked. Equal
+        // bytes are the same triangles, so the file's are valid exactly when the expected ones are.
+        for (std::size_t f = 0; f < ply.faces; ++f) {
+            const char* record = faceData + f * kFaceRecord;
+            if (record[0] != 3 || std::memcmp(record + 1, expected[f].data(), sizeof(Triangle)) != 0)
+                return false;
+        }
+        for (const Triangle& t : expected) // as readTriangle checks them
+            if (t[0] >= ply.vertices || t[1] >= ply.vertices || t[2] >= ply.vertices || t[0] == t[1] ||
+                t[1] == t[2] || t[0] == t[2] || t[0] > 0x7fffffffu || t[1] > 0x7fffffffu ||
+                t[2] > 0x7fffffffu)
+                return false;
+        return true;
+    }
+    for (std::size_t f = 0; f < ply.faces; ++f) {
         Triangle t;
-        if (!readTriangle(faceData + f * kFaceRecord, vertices, t)) return std::nullopt;
-        if (!expected)
-            mesh.triangles.push_back(t);
-        else if (t != (*expected)[f])
-            return std::nullopt;
+        if (!readTriangle(faceData + f * kFaceRecord, ply.vertices, t) || t != expected[f]) return false;
+    }
+    return true;
+}
+
+} // namespace
+
+std::optional<MeshData> readPlyFast(std::string_view bytes, const PlyHeader& header,
+                                    const std::vector<Triangle>* expected) {
+    const auto ply = fastPly(bytes, header);
+    if (!ply || (expected && !facesEqual(*ply, *expected))) return std::nullopt;
+    MeshData mesh;
+    if (!readVertices(ply->data, ply->vertices, ply->layout, mesh.positions)) return std::nullopt;
+    if (expected) return mesh;
+    const char* faceData = ply->data + ply->vertices * ply->layout.stride;
+    mesh.triangles.reserve(ply->faces);
+    for (std::size_t f = 0; f < ply->faces; ++f) {
+        Triangle t;
+        if (!readTriangle(faceData + f * kFaceRecord, ply->vertices, t)) return std::nullopt;
+        mesh.triangles.push_back(t);
     }
     return mesh;
+}
+
+bool readPlyFloatsMatching(std::string_view bytes, const PlyHeader& header,
+                           const std::vector<Triangle>& triangles, std::span<float> out) {
+    const auto ply = fastPly(bytes, header);
+    if (!ply || ply->vertices * 3 != out.size()) return false;
+    const VertexLayout& layout = ply->layout;
+    if (layout.isDouble[0] || layout.isDouble[1] || layout.isDouble[2]) return false; // would be rounded
+    if (!facesEqual(*ply, triangles)) return false;
+    if (layout.stride == 3 * sizeof(float) && layout.offset[0] == 0 && layout.offset[1] == 4 &&
+        layout.offset[2] == 8) {
+        std::memcpy(out.data(), ply->data, out.size() * sizeof(float)); // x y z records: one copy
+    } else {
+        for (std::size_t i = 0; i < ply->vertices; ++i)
+            for (int axis = 0; axis < 3; ++axis)
+                std::memcpy(&out[3 * i + static_cast<std::size_t>(axis)],
+                            ply->data + i * layout.stride + layout.offset[axis], sizeof(float));
+    }
+    for (const float c : out)
+        if (!std::isfinite(c)) return false; // the general reader names the vertex
+    return true;
 }
 
 } // namespace vl::meshio

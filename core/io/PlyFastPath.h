@@ -20,6 +20,13 @@ namespace vl::meshio {
 std::optional<MeshData> readPlyFast(std::string_view bytes, const PlyHeader& header,
                                     const std::vector<Triangle>* expected = nullptr);
 
+// The positions of `bytes` (a whole PLY file, `header` its header) as float32 x, y, z into `out`
+// (3 per vertex) when the file has the layout above with float32 coordinates (doubles would be
+// rounded), as many vertices as `out` holds, and faces equal to `triangles`; else false (read it with
+// parsePly then). The large-set loader's path (loadFloatVisemeSet): one copy from the file's bytes.
+bool readPlyFloatsMatching(std::string_view bytes, const PlyHeader& header,
+                           const std::vector<Triangle>& triangles, std::span<float> out);
+
 // The positions of the PLY file `bytes` when readPlyFast reads it and its faces equal `triangles`,
 // else nothing (read it with parsePly then); throws for a malformed header.
 std::optional<std::vector<Vec3>> parsePlyPositionsMatching(std::string_view bytes, std::string_view source,

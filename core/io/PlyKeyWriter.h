@@ -15,12 +15,16 @@ namespace vl {
 class PlyKeyWriter {
   public:
     explicit PlyKeyWriter(const MeshData& topology);
+    // The topology alone: `vertexCount` vertices (the neutral's positions need not be held).
+    PlyKeyWriter(std::size_t vertexCount, std::span<const Triangle> triangles, std::span<const Vec2> uvs);
     // The file is head() + the bytes `positions` leaves in `buffer` + faces(). Throws InputError
     // "mesh to write: ..." for a non-finite position or one beyond float32's range, or a vertex count
     // other than the topology's.
     std::string_view head() const { return head_; }
     std::string_view faces() const { return faces_; }
     std::string_view positions(std::span<const Vec3> positions, std::string& buffer) const;
+    // The same from float32 x, y, z (3 per vertex), copied as they are (keys merged by mergeKeyInto).
+    std::string_view positions(std::span<const float> xyz, std::string& buffer) const;
 
   private:
     std::size_t vertexCount_;

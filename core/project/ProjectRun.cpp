@@ -83,10 +83,11 @@ VisemeSet loadProjectVisemeSet(const Project& project) {
     }
     // Before any viseme is read: a project may name one big mesh file for thousands of visemes.
     checkVisemeSetSize(project.visemes.size(), set.vertexCount(), projectWhere(project, "/visemes"));
+    std::vector<std::filesystem::path> files(project.visemes.size()); // empty for embedded shapes
     for (std::size_t i = 0; i < project.visemes.size(); ++i) {
         const ProjectViseme& viseme = project.visemes[i];
         const std::string path = jsonPathAppend("/visemes", i);
-        Viseme loaded{viseme.name, {}, {}};
+        Viseme loaded{viseme.name, {}};
         if (viseme.isEmbedded()) {
             if (viseme.positions.size() != set.neutral.positions.size())
                 throwInputError(projectWhere(project, path + "/positions"),
@@ -97,12 +98,12 @@ VisemeSet loadProjectVisemeSet(const Project& project) {
         } else {
             MeshData mesh = readProjectMesh(project, path, viseme.file);
             checkInterpolable(set.neutral, neutralSource, mesh, meshSource(project, path, viseme.file));
-            loaded.source = resolveProjectFile(project, viseme.file);
+            files[i] = resolveProjectFile(project, viseme.file);
             loaded.positions = std::move(mesh.positions);
         }
         set.visemes.push_back(std::move(loaded));
     }
-    checkVisemeSetValues(set, projectWhere(project, "/visemes"));
+    checkVisemeSetValues(set, projectWhere(project, "/visemes"), files);
     return set;
 }
 

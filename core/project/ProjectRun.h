@@ -2,10 +2,10 @@
 // Turning a project into work: loading the meshes it references and running its reduction, so the
 // CLI (`visemelab reduce --project`) and the editor do exactly the same thing.
 #include "core/export/Export.h"
+#include "core/mesh/VisemeSet.h"
 #include "core/project/Project.h"
 #include "core/project/ReduceInputs.h"
 #include "core/reduce/ReduceRun.h"
-#include "core/reduce/VisemeSet.h"
 
 namespace vl {
 

@@ -4,8 +4,8 @@
 // comes from: a grouping already known for these inputs (a project's last result, the editor's
 // curve), else a fresh reduction under the policy. `reduce`, `avatar reduce`, `say`, `export` and
 // the editor's panel and exports all go through here.
+#include "core/mesh/VisemeSet.h"
 #include "core/reduce/ReduceRun.h"
-#include "core/reduce/VisemeSet.h"
 
 #include <cstddef>
 #include <memory>

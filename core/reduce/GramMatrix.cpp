@@ -18,16 +18,22 @@ void addBlock(const ShapeView& shapes, std::span<const double> frequencies, std:
               double total, std::size_t begin, std::size_t end, std::vector<double>& gram) {
     const std::size_t n = shapes.size();
     const std::size_t count = end - begin;
+    // The block's positions, each read once (a float32 row widened here, not at every use).
+    std::vector<Vec3> block(n * count);
+    for (std::size_t i = 0; i < n; ++i) {
+        const ShapeRow shape = shapes[i];
+        for (std::size_t k = 0; k < count; ++k) block[i * count + k] = shape[begin + k];
+    }
     // Centred, sqrt(w)-scaled coordinates, one row of 3 * count values per shape.
     std::vector<double> rows(n * 3 * count);
     for (std::size_t k = 0; k < count; ++k) {
         const std::size_t v = begin + k;
         Vec3 centre(0, 0, 0);
-        for (std::size_t i = 0; i < n; ++i) centre += frequencies[i] * shapes[i][v];
+        for (std::size_t i = 0; i < n; ++i) centre += frequencies[i] * block[i * count + k];
         centre /= total;
         const double s = std::sqrt(weights[v]);
         for (std::size_t i = 0; i < n; ++i) {
-            const Vec3 d = (shapes[i][v] - centre) * s;
+            const Vec3 d = (block[i * count + k] - centre) * s;
             double* row = &rows[i * 3 * count + 3 * k];
             row[0] = d[0], row[1] = d[1], row[2] = d[2];
         }
@@ -37,9 +43,14 @@ void addBlock(const ShapeView& shapes, std::span<const double> frequencies, std:
         const double* a = &rows[i * length];
         for (std::size_t j = i; j < n; ++j) {
             const double* b = &rows[j * length];
-            double sum = 0;
-            for (std::size_t t = 0; t < length; ++t) sum += a[t] * b[t];
-            gram[i * n + j] += sum;
+            // Four partial sums, combined in a fixed order: the additions no longer wait on one another
+            // (the sum is latency-bound otherwise), and the result stays independent of scheduling.
+            double sum[4] = {0, 0, 0, 0};
+            std::size_t t = 0;
+            for (; t + 4 <= length; t += 4)
+                for (std::size_t lane = 0; lane < 4; ++lane) sum[lane] += a[t + lane] * b[t + lane];
+            for (; t < length; ++t) sum[0] += a[t] * b[t];
+            gram[i * n + j] += (sum[0] + sum[1]) + (sum[2] + sum[3]);
         }
     }
 }

@@ -53,7 +53,7 @@ bool restIsFree(RestChoice choice, int restViseme) {
 namespace {
 
 // The index of the lips-closed viseme settings.closure names (-1: no rule, or auto and none in the set).
-int closureVisemeOf(const VisemeSet& set, const ReduceSettings& settings) {
+int closureVisemeOf(const SetShapes& set, const ReduceSettings& settings) {
     if (settings.closure.empty()) return -1;
     if (settings.closure != kClosureAuto) {
         const int index = set.find(settings.closure);
@@ -73,12 +73,12 @@ bool mentions(const std::vector<std::pair<std::string, std::string>>& pairs, con
 
 // settings.constraints plus the closure pin (ReduceSettings::closure) when the rest is free and the
 // designer left the closure viseme unconstrained; sets out.closureViseme or out.closureNote.
-ConstraintNames constraintsWithClosure(const VisemeSet& set, const ReduceSettings& settings, bool restFree,
+ConstraintNames constraintsWithClosure(const SetShapes& set, const ReduceSettings& settings, bool restFree,
                                        int restViseme, ReduceOutcome& out) {
     ConstraintNames names = settings.constraints;
     const int closure = closureVisemeOf(set, settings);
     if (closure < 0) return names;
-    const std::string& name = set.visemes[static_cast<std::size_t>(closure)].name;
+    const std::string& name = set.names[static_cast<std::size_t>(closure)];
     const std::string leftAlone = ": " + name + " is left to the optimiser";
     if (!restFree)
         out.closureNote = "the rest is a key" + leftAlone;
@@ -161,19 +161,24 @@ ReductionResult reduceWithinMaxError(const ShapeView& shapes, std::span<const Ve
 
 ReduceOutcome runReduction(const VisemeSet& set, const FrequencySource& frequencies,
                            const ReduceSettings& settings, const ProgressCallback& progress) {
+    return runReduction(shapesOf(set), frequencies, settings, progress);
+}
+
+ReduceOutcome runReduction(const SetShapes& set, const FrequencySource& frequencies,
+                           const ReduceSettings& settings, const ProgressCallback& progress,
+                           KeyPositions keyPositions) {
     ReduceOutcome out;
-    for (const auto& v : set.visemes) out.visemeNames.push_back(v.name);
+    out.visemeNames = set.names;
     out.frequencies = visemeFrequencies(frequencies, out.visemeNames);
-    out.weights = computeWeights(settings.weightMode, set.neutral, settings.paintedWeights,
-                                 settings.paintedWeightsSource);
+    const MeshData& neutral = *set.neutral;
+    out.weights =
+        computeWeights(settings.weightMode, neutral, settings.paintedWeights, settings.paintedWeightsSource);
     requireKnownVisemes(set, frequencies); // before the reduction, not after it
 
-    std::vector<std::span<const Vec3>> rows; // a view of the set's positions: no copy of the shapes
-    for (const auto& v : set.visemes) rows.emplace_back(v.positions);
-    const ShapeView shapes(rows);
+    const ShapeView& shapes = set.shapes;
     // The rest pose of a morph-target runtime is the neutral mesh: the rest-free model's free key.
     const int restViseme = restVisemeIndex(out.visemeNames, settings.restViseme, settings.restVisemeSource);
-    const RestPose rest{restIsFree(settings.rest, restViseme), restViseme, set.neutral.positions};
+    const RestPose rest{restIsFree(settings.rest, restViseme), restViseme, neutral.positions};
     const bool restFree = rest.free;
     const bool targetGiven = settings.target >= 1 && static_cast<std::size_t>(settings.target) <= set.size();
     ConstraintNames constraintNames = constraintsWithClosure(set, settings, restFree, restViseme, out);
@@ -202,11 +207,11 @@ ReduceOutcome runReduction(const VisemeSet& set, const FrequencySource& frequenc
         if (!keys.feasible(settings.target))
             throwInfeasibleTarget(keys, settings.target, settings.constraintsSource);
     }
-    if (restViseme >= 0) out.restViseme = set.visemes[static_cast<std::size_t>(restViseme)].name;
+    if (restViseme >= 0) out.restViseme = set.names[static_cast<std::size_t>(restViseme)];
     out.millimetresPerUnit = settings.millimetresPerUnit;
     if (settings.maxErrorMm > 0) {
-        out.result = reduceWithinMaxError(shapes, set.neutral.positions, out, settings, constraints, units,
-                                          rest, progress);
+        out.result = reduceWithinMaxError(shapes, neutral.positions, out, settings, constraints, units, rest,
+                                          progress);
     } else {
         out.result = reduceVisemes({shapes, out.frequencies, out.weights, settings.target, constraints, rest},
                                    settings.options, progress);
@@ -223,11 +228,16 @@ ReduceOutcome runReduction(const VisemeSet& set, const FrequencySource& frequenc
     }
 
     const std::vector<int> groupOf = out.result.groupOf();
-    out.model = buildReducedModel(set, out.frequencies, groupOf, frequencies);
+    out.model = buildReducedModel(set, out.frequencies, groupOf, frequencies, keyPositions);
+    if (keyPositions == KeyPositions::Deferred) {
+        // The keys merged one at a time for their members' errors (memory for one key, as doubles).
+        out.visemeErrors = visemeErrors(shapes, neutral.positions, out.frequencies, out.weights, groupOf);
+        return out;
+    }
     // Errors against the model's own key meshes: the keys are merged once, not again here.
     std::vector<std::span<const Vec3>> keyRows;
     for (const KeyMesh& key : out.model.keys) keyRows.emplace_back(key.positions);
-    out.visemeErrors = visemeErrors(shapes, set.neutral.positions, out.weights, groupOf, ShapeView(keyRows));
+    out.visemeErrors = visemeErrors(shapes, neutral.positions, out.weights, groupOf, ShapeView(keyRows));
     return out;
 }
 

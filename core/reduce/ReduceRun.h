@@ -3,11 +3,12 @@
 // reduced model (buildReducedModel). Shared by the CLI, projects and avatars so all behave
 // identically; its files and report are written by core/export/ReductionOutputs.h.
 #include "core/common/EnumNames.h"
+#include "core/mesh/VisemeSet.h"
 #include "core/reduce/Frequencies.h"
 #include "core/reduce/ReducedModel.h"
 #include "core/reduce/Reduction.h"
+#include "core/reduce/SetShapes.h"
 #include "core/reduce/VisemeErrors.h"
-#include "core/reduce/VisemeSet.h"
 #include "core/reduce/Weights.h"
 
 #include <optional>
@@ -114,5 +115,11 @@ struct ReduceOutcome {
 
 ReduceOutcome runReduction(const VisemeSet& set, const FrequencySource& frequencies,
                            const ReduceSettings& settings, const ProgressCallback& progress = {});
+// The same on a view of the set (a VisemeSet or a FloatVisemeSet). With KeyPositions::Deferred the
+// model's keys have names but no positions (a writer merges each as it writes it, mergeKeyInto) and
+// its neutral is empty (the set's serves): a large set's keys are never held as doubles.
+ReduceOutcome runReduction(const SetShapes& set, const FrequencySource& frequencies,
+                           const ReduceSettings& settings, const ProgressCallback& progress = {},
+                           KeyPositions keyPositions = KeyPositions::Merged);
 
 } // namespace vl

@@ -1,9 +1,10 @@
 #include "core/reduce/ReducedModel.h"
 
 #include "core/common/Error.h"
+#include "core/mesh/VisemeSet.h"
 #include "core/reduce/Frequencies.h"
 #include "core/reduce/Reduction.h"
-#include "core/reduce/VisemeSet.h"
+#include "core/reduce/SetShapes.h"
 
 #include <algorithm>
 #include <cmath>
@@ -25,8 +26,12 @@ std::string mergedKeyName(const std::vector<std::string>& members) {
     return name;
 }
 
-// Every map entry whose viseme the set lacks, as one error: "unknown viseme 'x' (phonemes A, B)".
 void requireKnownVisemes(const VisemeSet& set, const FrequencySource& source) {
+    requireKnownVisemes(shapesOf(set), source);
+}
+
+// Every map entry whose viseme the set lacks, as one error: "unknown viseme 'x' (phonemes A, B)".
+void requireKnownVisemes(const SetShapes& set, const FrequencySource& source) {
     if (!source.isPhonemeBased()) return;
     std::map<std::string, std::string> unknown; // viseme -> its phonemes, joined
     for (const auto& [phoneme, viseme] : source.map.entries)
@@ -45,6 +50,12 @@ void requireKnownVisemes(const VisemeSet& set, const FrequencySource& source) {
 
 ReducedModel buildReducedModel(const VisemeSet& set, const std::vector<double>& frequencies,
                                const std::vector<int>& groupOf, const FrequencySource& source) {
+    return buildReducedModel(shapesOf(set), frequencies, groupOf, source);
+}
+
+ReducedModel buildReducedModel(const SetShapes& set, const std::vector<double>& frequencies,
+                               const std::vector<int>& groupOf, const FrequencySource& source,
+                               KeyPositions positions) {
     const std::size_t n = set.size();
     if (frequencies.size() != n || groupOf.size() != n)
         throwInputError("reduced model", "frequencies and grouping must have one entry per viseme");
@@ -60,27 +71,26 @@ ReducedModel buildReducedModel(const VisemeSet& set, const std::vector<double>& 
         if (groupOf[i] != kRestGroup)
             members[static_cast<std::size_t>(groupOf[i])].push_back(static_cast<int>(i));
 
-    std::vector<std::span<const Vec3>> rows; // a view of the set's positions: no copy of the shapes
-    rows.reserve(n);
-    for (const Viseme& v : set.visemes) rows.emplace_back(v.positions);
-    const ShapeView shapes(rows);
-
     ReducedModel model;
-    model.neutral = set.neutral;
+    if (positions == KeyPositions::Merged) model.neutral = *set.neutral; // deferred: the set's serves
     for (std::size_t i = 0; i < n; ++i)
-        if (groupOf[i] == kRestGroup) model.resting.push_back(set.visemes[i].name);
+        if (groupOf[i] == kRestGroup) model.resting.push_back(set.names[i]);
     for (std::size_t g = 0; g < members.size(); ++g) {
         if (members[g].empty())
             throwInputError("reduced model", "group " + std::to_string(g) + " has no member");
         KeyMesh key;
         for (int i : members[g]) {
-            key.members.push_back(set.visemes[static_cast<std::size_t>(i)].name);
+            key.members.push_back(set.names[static_cast<std::size_t>(i)]);
             key.frequency += frequencies[static_cast<std::size_t>(i)];
         }
         key.name = mergedKeyName(key.members);
-        key.positions = members[g].size() == 1
-                            ? set.visemes[static_cast<std::size_t>(members[g][0])].positions
-                            : mergeGroup(shapes, frequencies, members[g]);
+        if (positions == KeyPositions::Merged && members[g].size() == 1) {
+            const ShapeRow own = set.shapes[static_cast<std::size_t>(members[g][0])];
+            key.positions.reserve(own.size()); // its own shape, bit for bit (a sum would turn -0 into 0)
+            for (std::size_t v = 0; v < own.size(); ++v) key.positions.push_back(own[v]);
+        } else if (positions == KeyPositions::Merged) {
+            key.positions = mergeGroup(set.shapes, frequencies, members[g]);
+        }
         model.keys.push_back(std::move(key));
     }
 
@@ -89,9 +99,12 @@ ReducedModel buildReducedModel(const VisemeSet& set, const std::vector<double>& 
             model.phonemeToKey.emplace_back(phoneme, groupOf[static_cast<std::size_t>(set.find(viseme))]);
         model.phonemeFrequencies = source.phonemes.entries;
     } else {
-        for (std::size_t i = 0; i < n; ++i) model.phonemeToKey.emplace_back(set.visemes[i].name, groupOf[i]);
+        for (std::size_t i = 0; i < n; ++i) model.phonemeToKey.emplace_back(set.names[i], groupOf[i]);
     }
-    validateReducedModel(model, "reduced model");
+    if (positions == KeyPositions::Merged)
+        validateReducedModel(model, "reduced model");
+    else
+        validateDeferredModel(model, "reduced model");
     return model;
 }
 
@@ -102,9 +115,12 @@ ReducedModel unreducedModel(const VisemeSet& set, const std::vector<double>& fre
     return buildReducedModel(set, frequencies, identity, source);
 }
 
-void validateReducedModel(const ReducedModel& model, std::string_view where) {
+namespace {
+
+void validate(const ReducedModel& model, std::string_view where, KeyPositions positions) {
     const std::size_t v = model.neutral.positions.size();
-    if (v == 0 || model.neutral.triangles.empty()) throwInputError(where, "the neutral mesh is empty");
+    if (positions == KeyPositions::Merged && (v == 0 || model.neutral.triangles.empty()))
+        throwInputError(where, "the neutral mesh is empty");
     if (model.keys.empty()) throwInputError(where, "no key meshes");
     std::set<std::string> names;
     for (std::size_t k = 0; k < model.keys.size(); ++k) {
@@ -112,6 +128,10 @@ void validateReducedModel(const ReducedModel& model, std::string_view where) {
         const std::string what = "key " + std::to_string(k) + " ('" + key.name + "')";
         if (key.name.empty()) throwInputError(where, "key " + std::to_string(k) + " has no name");
         if (!names.insert(key.name).second) throwInputError(where, what + ": duplicate name");
+        if (positions == KeyPositions::Deferred) {
+            if (!key.positions.empty()) throwInputError(where, what + ": positions given where deferred");
+            continue;
+        }
         if (key.positions.size() != v)
             throwInputError(where, what + ": " + std::to_string(key.positions.size()) +
                                        " positions, the neutral has " + std::to_string(v));
@@ -128,6 +148,16 @@ void validateReducedModel(const ReducedModel& model, std::string_view where) {
             throwInputError(where, "phoneme '" + phoneme + "' maps to key " + std::to_string(key) + " of " +
                                        std::to_string(model.keys.size()));
     }
+}
+
+} // namespace
+
+void validateReducedModel(const ReducedModel& model, std::string_view where) {
+    validate(model, where, KeyPositions::Merged);
+}
+
+void validateDeferredModel(const ReducedModel& model, std::string_view where) {
+    validate(model, where, KeyPositions::Deferred);
 }
 
 } // namespace vl

@@ -14,6 +14,7 @@
 namespace vl {
 
 struct VisemeSet;
+struct SetShapes;
 struct FrequencySource;
 
 struct KeyMesh {
@@ -51,9 +52,19 @@ std::string mergedKeyName(const std::vector<std::string>& members);
 ReducedModel buildReducedModel(const VisemeSet& set, const std::vector<double>& frequencies,
                                const std::vector<int>& groupOf, const FrequencySource& source);
 
+// Whether buildReducedModel merges the keys' positions, or leaves them and the model's neutral empty
+// for a writer that merges each key from the set as it writes it (mergeKeyInto: `reduce` of large
+// meshes holds no key as doubles and no second copy of the neutral).
+enum class KeyPositions { Merged, Deferred };
+// The same from a view of the set (SetShapes.h: a VisemeSet or a FloatVisemeSet).
+ReducedModel buildReducedModel(const SetShapes& set, const std::vector<double>& frequencies,
+                               const std::vector<int>& groupOf, const FrequencySource& source,
+                               KeyPositions positions = KeyPositions::Merged);
+
 // The name policy alone, for a caller that wants it before a long run: throws the InputError
 // buildReducedModel would throw when the (phoneme-based) source maps a phoneme to a viseme the set lacks.
 void requireKnownVisemes(const VisemeSet& set, const FrequencySource& source);
+void requireKnownVisemes(const SetShapes& set, const FrequencySource& source);
 
 // The unreduced set as a model: one key per viseme (groupOf = identity).
 ReducedModel unreducedModel(const VisemeSet& set, const std::vector<double>& frequencies,
@@ -62,5 +73,7 @@ ReducedModel unreducedModel(const VisemeSet& set, const std::vector<double>& fre
 // Throws InputError naming `where` when keys are empty, unnamed, duplicated, of the wrong vertex
 // count or non-finite, or a phoneme maps outside the keys or is listed twice.
 void validateReducedModel(const ReducedModel& model, std::string_view where);
+// The same for a model whose keys' positions and neutral are deferred (empty): names and phonemes only.
+void validateDeferredModel(const ReducedModel& model, std::string_view where);
 
 } // namespace vl

@@ -143,8 +143,8 @@ namespace {
 // f_i rho(A_i, neutral) per viseme (in double, from the meshes, not the centred Gram).
 std::vector<double> visemeRestCosts(const ReductionProblem& problem) {
     const RestPose& rest = problem.rest;
-    const std::span<const Vec3> neutral =
-        rest.neutral.empty() ? problem.shapes[static_cast<std::size_t>(rest.viseme)] : rest.neutral;
+    const ShapeRow neutral =
+        rest.neutral.empty() ? problem.shapes[static_cast<std::size_t>(rest.viseme)] : ShapeRow(rest.neutral);
     std::vector<double> costs;
     for (std::size_t i = 0; i < problem.shapes.size(); ++i)
         costs.push_back(problem.frequencies[i] * dissimilarity(problem.shapes[i], neutral, problem.weights));
@@ -482,7 +482,7 @@ std::vector<Vec3> mergeGroup(const ShapeView& shapes, std::span<const double> fr
     return merged;
 }
 
-double dissimilarity(std::span<const Vec3> a, std::span<const Vec3> b, std::span<const double> weights) {
+double dissimilarity(ShapeRow a, ShapeRow b, std::span<const double> weights) {
     double sum = 0;
     for (std::size_t k = 0; k < a.size(); ++k) sum += weights[k] * (a[k] - b[k]).sqrnorm();
     return sum;

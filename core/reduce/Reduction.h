@@ -141,7 +141,7 @@ double restFreeGroupingCost(const ShapeView& shapes, std::span<const double> fre
                             std::span<const int> resting, std::span<const Vec3> neutral);
 
 // rho(A,B) with per-vertex weights.
-double dissimilarity(std::span<const Vec3> a, std::span<const Vec3> b, std::span<const double> weights);
+double dissimilarity(ShapeRow a, ShapeRow b, std::span<const double> weights);
 
 // rho_f of each grouping through the weighted Gram matrix, with the solvers' summation (one O(n^2 |V|)
 // pass, then O(n^2) per grouping): the numbers the solvers report for the same groups, so a given

@@ -4,7 +4,13 @@ namespace vl {
 
 ShapeView::ShapeView(const Vec3* data, std::size_t count, std::size_t vertices) {
     rows_.reserve(count);
-    for (std::size_t i = 0; i < count; ++i) rows_.emplace_back(data + i * vertices, vertices);
+    for (std::size_t i = 0; i < count; ++i)
+        rows_.emplace_back(std::span<const Vec3>(data + i * vertices, vertices));
+}
+
+ShapeView::ShapeView(const float* xyz, std::size_t count, std::size_t vertices) {
+    rows_.reserve(count);
+    for (std::size_t i = 0; i < count; ++i) rows_.emplace_back(xyz + 3 * i * vertices, vertices);
 }
 
 ShapeView::ShapeView(std::span<const std::vector<Vec3>> shapes) {

@@ -17,7 +17,7 @@ struct VisemeError {
 // Per viseme i: the distances between a_i and the shape it is shown with, B = the frequency-weighted
 // mean of its key's members (eq. 19; the plain mean when their frequencies sum to 0), or the rest
 // pose when groupOf[i] < 0. Only vertices with weight > 0 count. `rest` may be empty when no viseme
-// rests. O(n |V|).
+// rests. O(n |V|); the keys are merged one at a time (memory for one key, not m: a million-vertex set).
 std::vector<VisemeError> visemeErrors(const ShapeView& shapes, std::span<const Vec3> rest,
                                       std::span<const double> frequencies, std::span<const double> weights,
                                       std::span<const int> groupOf);

@@ -17,12 +17,12 @@
 #include "core/export/KeyMeshFiles.h"
 #include "core/export/RuntimePackageWriter.h"
 #include "core/io/MeshIO.h"
+#include "core/io/VisemeSetFiles.h"
 #include "core/project/Project.h"
 #include "core/project/ProjectRun.h"
 #include "core/reduce/Frequencies.h"
 #include "core/reduce/ReducedModel.h"
 #include "core/reduce/Reduction.h"
-#include "core/reduce/VisemeSet.h"
 #include "core/runtime/Animation.h"
 
 #include <benchmark/benchmark.h>
@@ -86,7 +86,7 @@ VisemeSet syntheticSet() {
     for (int v = 0; v < 16; ++v) {
         // A smooth bump around a random centre: how a mouth shape moves a region.
         const Vec3 centre(0.5 + 0.2 * u(rng), 0.3 + 0.1 * u(rng), 0), direction(u(rng), u(rng), u(rng));
-        Viseme viseme{"v" + std::to_string(v), {}, set.neutral.positions};
+        Viseme viseme{"v" + std::to_string(v), set.neutral.positions};
         for (Vec3& p : viseme.positions) {
             const double d2 = (p - centre).sqrnorm();
             p += 0.05 * std::exp(-d2 / 0.02) * direction;
@@ -109,7 +109,7 @@ std::optional<VisemeSet> ictSet() {
     for (const auto& pair : pairs) {
         const Viseme& a = set.visemes[static_cast<std::size_t>(pair[0])];
         const Viseme& b = set.visemes[static_cast<std::size_t>(pair[1])];
-        Viseme blend{a.name + "&" + b.name, {}, set.neutral.positions};
+        Viseme blend{a.name + "&" + b.name, set.neutral.positions};
         for (std::size_t i = 0; i < blend.positions.size(); ++i)
             blend.positions[i] += 0.6 * (a.positions[i] - set.neutral.positions[i]) +
                                   0.6 * (b.positions[i] - set.neutral.positions[i]);

@@ -82,8 +82,15 @@ TEST(CliReduce, FormatChoosesTheKeyMeshFiles) {
     EXPECT_FALSE(fs::exists(out / "reduced_0_a+b.obj"));
     EXPECT_FLOAT_EQ(static_cast<float>(readMesh(out / "reduced_0_a+b.ply").positions[2][2]), 0.15f);
     EXPECT_EQ(readJson(out / "mapping.json")["reduced"][0]["ply"], "reduced_0_a+b.ply");
+    // Binary PLY only: the set held as float32 (FloatVisemeSet), this OBJ text rounded to it; groups and
+    // costs are the double path's within the bound of core/mesh/VisemeSet.h.
+    const auto floatReport = readJson(out / "report.json");
     r = test::runCli(args + " --format obj --out " + out.string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
+    const auto doubleReport = readJson(out / "report.json");
+    EXPECT_EQ(floatReport["groups"], doubleReport["groups"]);
+    EXPECT_NEAR(floatReport["cost"].get<double>(), doubleReport["cost"].get<double>(),
+                1e-6 * doubleReport["cost"].get<double>());
     EXPECT_TRUE(fs::exists(out / "reduced_0_a+b.obj"));
     EXPECT_FALSE(fs::exists(out / "reduced_0_a+b.wrl") || fs::exists(out / "reduced_0_a+b.ply"));
     r = test::runCli(args + " --format stl --out " + out.string());

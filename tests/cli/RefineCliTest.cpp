@@ -2,8 +2,8 @@
 #include "core/deform/Visemes.h"
 #include "core/face/BundledFace.h"
 #include "core/io/MeshIO.h"
+#include "core/io/VisemeSetFiles.h"
 #include "core/project/Project.h"
-#include "core/reduce/VisemeSet.h"
 #include "tests/cli/CliRunner.h"
 
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 #include "core/face/FaceDomain.h"
 #include "core/io/MeshIO.h"
-#include "core/reduce/VisemeSet.h"
+#include "core/io/VisemeSetFiles.h"
 #include "tests/cli/CliRunner.h"
 
 #include <gtest/gtest.h>

@@ -5,9 +5,9 @@
 #include "core/common/Error.h"
 #include "core/document/Commands.h"
 #include "core/document/VisemeCommands.h"
+#include "core/io/VisemeSetFiles.h"
 #include "core/phonetics/PhonemeMaps.h"
 #include "core/phonetics/PhonemeTableIO.h"
-#include "core/reduce/VisemeSet.h"
 
 #include "DocumentTestSupport.h"
 

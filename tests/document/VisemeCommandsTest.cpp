@@ -275,7 +275,6 @@ TEST(VisemeCommands, ASculptedShapeReplacesTheVisemeAndIsEmbedded) {
     EXPECT_EQ(sculpted.visemes->visemes[3].positions, shape);
     EXPECT_EQ(sculpted.visemes->visemes[3].name, document.visemes->visemes[3].name);
     EXPECT_TRUE(sculpted.visemeFiles[3].empty());
-    EXPECT_TRUE(sculpted.visemes->visemes[3].source.empty());
     EXPECT_EQ(document.visemes->visemes[3].positions[7], faceDocument().visemes->visemes[3].positions[7]);
     EXPECT_NE(refusal([&] { edit::setVisemeShape(document, 3, {}); }).find("vertices"), std::string::npos);
     shape[2][1] = std::nan("");

@@ -5,6 +5,7 @@
 #include "core/face/FaceDomain.h"
 #include "core/face/HeadParts.h"
 #include "core/io/MeshIO.h"
+#include "core/io/VisemeSetFiles.h"
 
 #include <gtest/gtest.h>
 

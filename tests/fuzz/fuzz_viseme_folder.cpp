@@ -1,5 +1,5 @@
 // libFuzzer target: a viseme folder as `visemelab reduce --visemes DIR` and `project new` load it
-// (core/reduce listVisemeFolder + loadVisemeSet): the neutral mesh and every other mesh file of the
+// (core/io listVisemeFolder + loadVisemeSet): the neutral mesh and every other mesh file of the
 // folder, each read by its extension's reader and checked to be interpolable with the neutral.
 // An input is a small archive of the folder: lines "=== <file name>" start each file, e.g.
 //   === neutral.obj
@@ -7,7 +7,7 @@
 //   === aa.ply
 //   ply ...
 #include "FuzzSupport.h"
-#include "core/reduce/VisemeSet.h"
+#include "core/io/VisemeSetFiles.h"
 
 #include <algorithm>
 #include <cctype>

@@ -4,6 +4,7 @@
 
 #include "core/common/AtomicFile.h"
 #include "core/io/MeshIO.h"
+#include "core/io/VisemeSetFiles.h"
 #include "core/project/ProjectRun.h"
 
 namespace vl {
@@ -61,7 +62,6 @@ TEST_F(ProjectRun, ReductionEqualsThePlainApiOnTheSameFiles) {
     Project loaded = loadProject(project.path);
     const VisemeSet set = loadProjectVisemeSet(loaded);
     ASSERT_EQ(set.size(), 5u);
-    EXPECT_EQ(set.visemes[2].source, dir / "meshes" / "E.wrl");
 
     std::vector<std::pair<std::string, std::filesystem::path>> files;
     for (const auto& v : project.visemes) files.emplace_back(v.name, dir / v.file);

@@ -17,7 +17,7 @@ ReduceInputs smallInputs(int target) {
         {"sil", 0.0}, {"A", 1.0}, {"B", 1.1}, {"C", 5.0}, {"D", 5.2}};
     ReduceInputs inputs;
     for (const auto& [name, dz] : shapes) {
-        Viseme viseme{name, {}, set->neutral.positions};
+        Viseme viseme{name, set->neutral.positions};
         viseme.positions[0] = Vec3(0, 0, dz);
         set->visemes.push_back(viseme);
         inputs.frequencies.visemeFrequencies.entries.emplace_back(name, 1.0);

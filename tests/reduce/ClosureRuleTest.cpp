@@ -23,7 +23,7 @@ VisemeSet closureSet() {
                                                     {"E", Vec3(3, -1, 0)},
                                                     {"O", Vec3(-3, -2, 1)}};
     for (const auto& [name, offset] : visemes) {
-        Viseme viseme{name, {}, set.neutral.positions};
+        Viseme viseme{name, set.neutral.positions};
         for (Vec3& p : viseme.positions) p += offset;
         set.visemes.push_back(viseme);
     }

@@ -1,8 +1,8 @@
 #include "core/reduce/ReducedModel.h"
 #include "core/common/Error.h"
+#include "core/mesh/VisemeSet.h"
 #include "core/reduce/Frequencies.h"
 #include "core/reduce/ReduceRun.h"
-#include "core/reduce/VisemeSet.h"
 #include "tests/export/TestModels.h"
 #include "tests/reduce/InputErrorText.h"
 
@@ -16,7 +16,7 @@ VisemeSet fourVisemes() {
     set.neutral = test::gridMesh(3, 3, true);
     const char* names[] = {"aa", "f", "oh", "th"};
     for (int v = 0; v < 4; ++v) {
-        Viseme viseme{names[v], {}, set.neutral.positions};
+        Viseme viseme{names[v], set.neutral.positions};
         for (Vec3& p : viseme.positions) p += Vec3(v, 2.0 * v, -v);
         set.visemes.push_back(viseme);
     }

@@ -2,10 +2,10 @@
 // A small viseme set with a phoneme map, its unreduced model and a reduction of it, for the
 // speech tests: visemes v0..v(n-1) on a grid, phonemes P0..P(2n-1) two per viseme, sil -> v0.
 #include "core/export/RuntimePackageWriter.h"
+#include "core/mesh/VisemeSet.h"
 #include "core/reduce/Frequencies.h"
 #include "core/reduce/ReducedModel.h"
 #include "core/reduce/Reduction.h"
-#include "core/reduce/VisemeSet.h"
 #include "core/runtime/Animation.h"
 #include "core/speech/FaceTrack.h"
 #include "core/speech/Utterance.h"
@@ -31,7 +31,7 @@ inline SpeechModels speechModels(int visemes, const std::vector<int>& groupOf, u
     SpeechModels m;
     m.set.neutral = gridMesh(5, 4, false);
     for (int v = 0; v < visemes; ++v) {
-        Viseme viseme{"v" + std::to_string(v), {}, {}};
+        Viseme viseme{"v" + std::to_string(v), {}};
         for (const Vec3& p : m.set.neutral.positions)
             viseme.positions.push_back(p + Vec3(d(rng), d(rng), d(rng)));
         m.set.visemes.push_back(std::move(viseme));

@@ -90,9 +90,11 @@ void VisemesPanel::draw() {
             else
                 ImGui::TextDisabled("-");
             ImGui::TableNextColumn();
-            ImGui::TextDisabled("%s", set->visemes[i].source.empty()
-                                          ? "generated"
-                                          : set->visemes[i].source.filename().string().c_str());
+            // An avatar's visemes are morph targets of its file (the set's neutral source).
+            const std::filesystem::path& file = session_.document().visemeFiles.at(i);
+            const std::filesystem::path& shown =
+                file.empty() && session_.document().avatar.isSet() ? set->neutralSource : file;
+            ImGui::TextDisabled("%s", shown.empty() ? "generated" : shown.filename().string().c_str());
             ImGui::PopID();
         }
         ImGui::EndTable();

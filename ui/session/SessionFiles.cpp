@@ -8,6 +8,7 @@
 #include "core/export/GltfExport.h"
 #include "core/import/GltfImport.h"
 #include "core/import/ModelFrequencies.h"
+#include "core/io/VisemeSetFiles.h"
 #include "core/gltf/AvatarKeyTargets.h"
 #include "core/gltf/AvatarScan.h"
 #include "core/gltf/Gltfpack.h"
@@ -76,7 +77,7 @@ SessionFiles::Loaded SessionFiles::loadFolder(const std::filesystem::path& folde
     const auto files = listVisemeFolder(folder, neutralFile);
     auto set = std::make_shared<const VisemeSet>(loadVisemeSet(neutralFile, files));
     std::vector<std::filesystem::path> visemeFiles;
-    for (const auto& viseme : set->visemes) visemeFiles.push_back(std::filesystem::absolute(viseme.source));
+    for (const auto& file : files) visemeFiles.push_back(std::filesystem::absolute(file.second));
     Loaded loaded;
     loaded.project.document =
         documentOfSet(set, std::filesystem::absolute(neutralFile), std::move(visemeFiles));

@@ -26,7 +26,7 @@ class SessionFiles {
     const std::filesystem::path& path() const { return path_; }
     void newProject();
     void openProject(const std::filesystem::path& file);
-    // A folder of meshes: the neutral by findNeutralMesh (core/reduce/VisemeSet.h), the others are
+    // A folder of meshes: the neutral by findNeutralMesh (core/io/VisemeSetFiles.h), the others are
     // visemes sorted by name; frequencies start uniform.
     void loadVisemeFolder(const std::filesystem::path& folder);
     // The bundled sample (assets/), whatever form the core ships it in.

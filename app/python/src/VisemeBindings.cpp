@@ -5,6 +5,7 @@
 #include "app/python/src/Options.h"
 #include "core/common/Error.h"
 #include "core/inspect/DistanceUnits.h"
+#include "core/io/VisemeSetFiles.h"
 #include "core/project/ReduceInputs.h"
 #include "core/reduce/ReduceRun.h"
 
@@ -57,7 +58,7 @@ SetPtr setFromArrays(const Float64Array& neutral, const IndexArray& triangles, c
         const std::string where = "visemes['" + quoteInput(name) + "']";
         if (name.empty()) throwInputError("visemes", "a viseme has an empty name");
         if (!seen.insert(name).second) throwInputError(where, "duplicate viseme name");
-        Viseme viseme{name, {}, positionsFrom(array, where)};
+        Viseme viseme{name, positionsFrom(array, where)};
         if (viseme.positions.size() != set->neutral.positions.size())
             throwInputError(where, "not interpolable: " + std::to_string(viseme.positions.size()) +
                                        " vertices, the neutral has " +
@@ -235,12 +236,6 @@ void bindVisemes(py::module_& m) {
                                    return toArray(s.neutral.uvs);
                                })
         .def_property_readonly("visemes", &visemesOf, "{name: (N, 3) positions}, in set order")
-        .def_property_readonly("sources",
-                               [](const VisemeSet& s) {
-                                   py::dict d;
-                                   for (const auto& v : s.visemes) d[py::str(v.name)] = v.source.string();
-                                   return d;
-                               })
         .def("__len__", &VisemeSet::size);
 
     m.def("load_visemes", &setFromFiles, py::kw_only(), py::arg("folder") = py::none(),

@@ -1,7 +1,7 @@
-#include "core/reduce/VisemeSet.h"
-#include "InputErrorText.h"
+#include "core/io/VisemeSetFiles.h"
 #include "core/common/Error.h"
 #include "core/io/MeshIO.h"
+#include "tests/reduce/InputErrorText.h"
 
 #include <gtest/gtest.h>
 
@@ -30,7 +30,7 @@ struct TempDir {
 
 } // namespace
 
-TEST(VisemeSet, LoadsInterpolableSetAndKeepsOrder) {
+TEST(VisemeSetFiles, LoadsInterpolableSetAndKeepsOrder) {
     TempDir dir("visemelab_set_ok");
     writeMesh(dir.path / "neutral.obj", quadMesh(0));
     writeMesh(dir.path / "b.obj", quadMesh(2));
@@ -46,7 +46,7 @@ TEST(VisemeSet, LoadsInterpolableSetAndKeepsOrder) {
     EXPECT_EQ(set.meshOf(0).positions[0], Vec3(0, 0, 1));
 }
 
-TEST(VisemeSet, NonInterpolableMeshesAreNamed) {
+TEST(VisemeSetFiles, NonInterpolableMeshesAreNamed) {
     TempDir dir("visemelab_set_bad");
     writeMesh(dir.path / "neutral.obj", quadMesh(0));
     auto fewer = quadMesh(1);
@@ -81,7 +81,7 @@ TEST(VisemeSet, NonInterpolableMeshesAreNamed) {
     EXPECT_NE(msg.find("missing.obj: file not found"), std::string::npos) << msg;
 }
 
-TEST(VisemeSet, OneNeutralRuleExactNameFirstThenContainingAndAmbiguityNamed) {
+TEST(VisemeSetFiles, OneNeutralRuleExactNameFirstThenContainingAndAmbiguityNamed) {
     TempDir dir("visemelab_set_neutral");
     writeMesh(dir.path / "aa.obj", quadMesh(1));
     EXPECT_NE(errorOf([&] { findNeutralMesh(dir.path); }).find("no neutral mesh in the folder"),
@@ -99,4 +99,28 @@ TEST(VisemeSet, OneNeutralRuleExactNameFirstThenContainingAndAmbiguityNamed) {
     std::filesystem::remove(dir.path / "face_neutral_v2.obj");
     std::filesystem::create_directory(dir.path / "neutral.d"); // not a mesh file: ignored
     EXPECT_EQ(findNeutralMesh(dir.path), dir.path / "neutral.obj");
+}
+
+TEST(VisemeSetFiles, ValueErrorsNameTheFileTheVisemeWasReadFrom) {
+    // The set does not record where a viseme came from: the loader passes the files to the check.
+    TempDir dir("visemelab_set_values");
+    writeMesh(dir.path / "neutral.obj", quadMesh(0));
+    writeMesh(dir.path / "ok.obj", quadMesh(1));
+    auto huge = quadMesh(1);
+    huge.positions[2][1] = 1e31;
+    writeMesh(dir.path / "huge.obj", huge);
+    const std::string msg = errorOf([&] {
+        loadVisemeSet(dir.path / "neutral.obj", {{"ok", dir.path / "ok.obj"}, {"h", dir.path / "huge.obj"}});
+    });
+    EXPECT_NE(msg.find("huge.obj: vertex 3: coordinate"), std::string::npos) << msg;
+
+    // Without files (generated or embedded shapes) the error names the set and the viseme.
+    VisemeSet set;
+    set.neutral = quadMesh(0);
+    set.visemes = {{"ok", quadMesh(1).positions}, {"h", huge.positions}};
+    const std::string embedded = errorOf([&] { checkVisemeSetValues(set, "arrays"); });
+    EXPECT_NE(embedded.find("arrays: viseme h: vertex 3"), std::string::npos) << embedded;
+    const std::vector<std::filesystem::path> files{"", "given.ply"};
+    const std::string given = errorOf([&] { checkVisemeSetValues(set, "arrays", files); });
+    EXPECT_NE(given.find("given.ply: vertex 3"), std::string::npos) << given;
 }
