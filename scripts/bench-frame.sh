@@ -1,0 +1,95 @@
+#!/usr/bin/env bash
+# Editor frame CPU while a face slider is dragged on a face of about 100,000 vertices (issue 31).
+# The real editor runs under Xvfb on a project whose deformable face has a 308-cell (u,v) domain
+# (`visemelab face build --resolution 316` on the bundled face's skin, its 15 Oculus visemes): the
+# Deformation panel open, --drag moves the jaw_open slider every frame. scripts/frame-clock.c,
+# preloaded, reads the clocks at every buffer swap, so an older editor with no hook of its own is
+# timed the same way. Each editor runs `drag` (the slider moves every frame) and `idle` (the same
+# frames, no mouse), interleaved round by round; frame times are min / median / max over every
+# dragged frame of every round, in ms of process CPU (all threads: UI, background jobs, the GL
+# driver's), main-thread CPU and wall.
+#   scripts/bench-frame.sh [--before OLD_EDITOR] [frames per run, default 250] [rounds, default 3]
+# Needs build/release/ui/visemelab-editor and build/release/app/visemelab, xvfb-run and a C compiler.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+before=""
+if [[ ${1:-} == --before ]]; then
+  before=$(realpath "$2")
+  shift 2
+fi
+frames=${1:-250}
+rounds=${2:-3}
+editor=$(realpath build/release/ui/visemelab-editor)
+cli=build/release/app/visemelab
+work=${BENCH_FRAME_DIR:-/tmp/visemelab-bench-frame}
+mkdir -p "$work"
+
+cc -O2 -Wall -Wextra -Werror -shared -fPIC -o "$work/frame-clock.so" scripts/frame-clock.c -ldl
+
+# The large face, made once: the bundled face's skin as "my own mesh", rebuilt on a fine domain.
+project=$work/face100k.vlproj
+if [[ ! -f $project ]]; then
+  "$cli" visemes --face bundled --skin-only --resolution 48 --out "$work/skin" >/dev/null
+  "$cli" face build "$work/skin/neutral.obj" --resolution 308 --out "$project" >/dev/null
+fi
+
+/usr/bin/python3 - "$work" "$project" "$frames" "$rounds" "$editor" "$before" <<'PY'
+import json, os, statistics, subprocess, sys
+work, project, frames, rounds, after, before = sys.argv[1:7]
+frames, rounds = int(frames), int(rounds)
+xvfb = ["xvfb-run", "-a", "-s", "-screen 0 1600x1000x24"]
+base = ["--project", project, "--panel", "Deformation", "--size", "1600", "1000",
+        "--screenshot", os.path.join(work, "last.png")]
+
+def run(editor, extra, frame_count, env=None):
+    subprocess.run(xvfb + [editor] + base + ["--frames", str(frame_count)] + extra, check=True,
+                   stdout=subprocess.DEVNULL, env=env)
+
+def probe(editor, extra, frame_count):
+    path = os.path.join(work, "probe.json")
+    run(editor, extra + ["--probe", path], frame_count)
+    with open(path) as f:
+        return json.load(f)
+
+# Where the slider is, and proof that the drag moves it (a probe run: the probe's own per-frame
+# JSON would weigh on the timed runs).
+start = probe(after, [], 3)
+slider = next(c for c in start["controls"] if c["kind"] == "slider" and c["label"] == "jaw_open")
+y = slider["y"] + slider["height"] / 2
+drag = ["--drag", str(slider["x"] + 10), str(y), str(slider["x"] + slider["width"] - 140), str(y)]
+editors = {"after": after} if not before else {"before": before, "after": after}
+for name, editor in editors.items():
+    moved = probe(editor, drag, 20)
+    assert moved["parameters"]["jaw_open"] > 0.0, name + ": the drag did not move jaw_open"
+vertices = start["document"]["face_view"]["skin_triangles"]
+
+times = {(name, mode): [] for name in editors for mode in ("drag", "idle")}
+for _ in range(rounds):
+    for name, editor in editors.items():  # interleaved: a change of machine load hits both editors
+        for mode in ("drag", "idle"):
+            out = os.path.join(work, "frames-%s-%s.txt" % (name, mode))
+            env = dict(os.environ, LD_PRELOAD=os.path.join(work, "frame-clock.so"), FRAME_CLOCK_OUT=out)
+            run(editor, drag if mode == "drag" else [], frames, env)
+            with open(out) as f:
+                rows = [[float(x) for x in line.split()] for line in f.readlines()[1:]]
+            # Frames 2 .. frames - 4 are those the pointer moves the slider in (scriptedDrag): the
+            # first frames upload the meshes, the last ones release the button.
+            times[(name, mode)] += rows[2:frames - 4]
+
+def cell(values):
+    return "%.1f / %.1f / %.1f" % (min(values), statistics.median(values), max(values))
+print("%d rounds x %d frames, 1600x1000 window, %d skin triangles in the face view; load average %s"
+      % (rounds, frames, vertices, " ".join(f"{x:.2f}" for x in os.getloadavg())))
+print("| editor | mode | frames | process CPU ms | main-thread CPU ms | wall ms |")
+print("|---|---|---|---|---|---|")
+for (name, mode), rows in times.items():
+    columns = list(zip(*rows))
+    print("| %s | %s | %d | %s | %s | %s |" % (name, mode, len(rows), cell(columns[0]), cell(columns[1]),
+                                              cell(columns[2])))
+if before:
+    for mode in ("drag", "idle"):
+        ratio = [statistics.median(list(zip(*times[("before", mode)]))[k]) /
+                 statistics.median(list(zip(*times[("after", mode)]))[k]) for k in range(3)]
+        print("%s: before / after medians: process CPU %.2fx, main thread %.2fx, wall %.2fx"
+              % (mode, *ratio))
+PY
