@@ -1,15 +1,17 @@
 #!/usr/bin/env bash
 # Editor frame CPU while a face slider is dragged on a face of about 100,000 vertices (issue 31).
 # The real editor runs under Xvfb on a project whose deformable face has a 308-cell (u,v) domain
-# (`visemelab face build --resolution 316` on the bundled face's skin, its 15 Oculus visemes): the
-# Deformation panel open, --drag moves the jaw_open slider every frame. scripts/frame-clock.c,
-# preloaded, reads the clocks at every buffer swap, so an older editor with no hook of its own is
-# timed the same way. Each editor runs `drag` (the slider moves every frame) and `idle` (the same
-# frames, no mouse), interleaved round by round; frame times are min / median / max over every
-# dragged frame of every round, in ms of process CPU (all threads: UI, background jobs, the GL
-# driver's), main-thread CPU and wall.
-#   scripts/bench-frame.sh [--before OLD_EDITOR] [frames per run, default 250] [rounds, default 3]
-# Needs build/release/ui/visemelab-editor and build/release/app/visemelab, xvfb-run and a C compiler.
+# (`visemelab face build --resolution 308` on the bundled face's skin: 95,576 vertices, its 15 Oculus
+# visemes; 316 would make a project JSON over the 128 MiB limit), the Deformation panel open.
+# xdotool holds the jaw_open slider and swings the pointer between two points as fast as it can (the
+# editor's --drag presses at frame 1, where the panel takes no click yet, so it moves no slider).
+# scripts/frame-clock.c, preloaded, reads the clocks at every buffer swap, so an older editor with no
+# hook of its own is timed the same way. Each editor runs `drag` and `idle` (the same frames, no
+# mouse), interleaved round by round; frame times are min / median / max over the frames of every
+# round after the first 60 (the press comes 0.3 s in), in ms of process CPU (all threads: UI,
+# background jobs, the GL driver's), main-thread CPU and wall.
+#   scripts/bench-frame.sh [--before OLD_EDITOR] [frames per run, default 300] [rounds, default 2]
+# Needs build/release/ui/visemelab-editor, build/release/app/visemelab, xvfb-run, xdotool, cc.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 before=""
@@ -17,8 +19,8 @@ if [[ ${1:-} == --before ]]; then
   before=$(realpath "$2")
   shift 2
 fi
-frames=${1:-250}
-rounds=${2:-3}
+frames=${1:-300}
+rounds=${2:-2}
 editor=$(realpath build/release/ui/visemelab-editor)
 cli=build/release/app/visemelab
 work=${BENCH_FRAME_DIR:-/tmp/visemelab-bench-frame}
@@ -41,26 +43,51 @@ xvfb = ["xvfb-run", "-a", "-s", "-screen 0 1600x1000x24"]
 base = ["--project", project, "--panel", "Deformation", "--size", "1600", "1000",
         "--screenshot", os.path.join(work, "last.png")]
 
-def run(editor, extra, frame_count, env=None):
-    subprocess.run(xvfb + [editor] + base + ["--frames", str(frame_count)] + extra, check=True,
-                   stdout=subprocess.DEVNULL, env=env)
+# One editor run inside its own Xvfb. With a drag, once the window's title names the project (the
+# project is loaded, frames are running) the pointer presses on the slider and moves along it until
+# the editor exits after its frames.
+DRIVER = r"""
+editor=$1; x0=$2; x1=$3; y=$4; shift 4
+"$editor" "$@" & pid=$!
+if [[ $x0 != none ]]; then
+  window=$(timeout 60 xdotool search --sync --pid $pid | head -1)
+  until xdotool getwindowname $window 2>/dev/null | grep -q face100k; do
+    kill -0 $pid 2>/dev/null || break; sleep 0.05; done
+  # As tests/ui/GuiDriver does: the window focused and the pointer over the slider before the press.
+  xdotool windowfocus --sync $window 2>/dev/null || true
+  xdotool mousemove --window $window $x0 $y 2>/dev/null || true
+  sleep 0.3
+  xdotool mousedown 1 2>/dev/null || true
+  while kill -0 $pid 2>/dev/null; do
+    # A random point each time: whatever number of moves lands between two frames, the next frame
+    # almost surely sees a new slider value.
+    xdotool mousemove --window $window $((x0 + RANDOM % (x1 - x0))) $y 2>/dev/null || true
+  done
+fi
+wait $pid
+"""
 
-def probe(editor, extra, frame_count):
+def run(editor, drag, frame_count, extra=(), env=None):
+    points = [str(v) for v in drag] if drag else ["none", "none", "none"]
+    subprocess.run(xvfb + ["bash", "-c", DRIVER, "driver", editor] + points + base +
+                   ["--frames", str(frame_count)] + list(extra), check=True, stdout=subprocess.DEVNULL,
+                   env=env)
+
+def probe(editor, drag, frame_count):
     path = os.path.join(work, "probe.json")
-    run(editor, extra + ["--probe", path], frame_count)
+    run(editor, drag, frame_count, ["--probe", path])
     with open(path) as f:
         return json.load(f)
 
 # Where the slider is, and proof that the drag moves it (a probe run: the probe's own per-frame
 # JSON would weigh on the timed runs).
-start = probe(after, [], 3)
+start = probe(after, None, 3)
 slider = next(c for c in start["controls"] if c["kind"] == "slider" and c["label"] == "jaw_open")
-y = slider["y"] + slider["height"] / 2
-drag = ["--drag", str(slider["x"] + 10), str(y), str(slider["x"] + slider["width"] - 140), str(y)]
+drag = (int(slider["x"] + 60), int(slider["x"] + slider["width"] - 140), int(slider["y"] + slider["height"] / 2))
 editors = {"after": after} if not before else {"before": before, "after": after}
 for name, editor in editors.items():
-    moved = probe(editor, drag, 20)
-    assert moved["parameters"]["jaw_open"] > 0.0, name + ": the drag did not move jaw_open"
+    moved = probe(editor, drag, 100)
+    assert moved["document"]["document_revision"] > start["document"]["document_revision"], name + ": the drag did not move jaw_open"
 vertices = start["document"]["face_view"]["skin_triangles"]
 
 times = {(name, mode): [] for name in editors for mode in ("drag", "idle")}
@@ -69,12 +96,10 @@ for _ in range(rounds):
         for mode in ("drag", "idle"):
             out = os.path.join(work, "frames-%s-%s.txt" % (name, mode))
             env = dict(os.environ, LD_PRELOAD=os.path.join(work, "frame-clock.so"), FRAME_CLOCK_OUT=out)
-            run(editor, drag if mode == "drag" else [], frames, env)
+            run(editor, drag if mode == "drag" else None, frames, env=env)
             with open(out) as f:
                 rows = [[float(x) for x in line.split()] for line in f.readlines()[1:]]
-            # Frames 2 .. frames - 4 are those the pointer moves the slider in (scriptedDrag): the
-            # first frames upload the meshes, the last ones release the button.
-            times[(name, mode)] += rows[2:frames - 4]
+            times[(name, mode)] += rows[60:]
 
 def cell(values):
     return "%.1f / %.1f / %.1f" % (min(values), statistics.median(values), max(values))
