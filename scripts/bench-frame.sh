@@ -8,9 +8,9 @@
 # scripts/frame-clock.c, preloaded, reads the clocks at every buffer swap, so an older editor with no
 # hook of its own is timed the same way. Each editor runs `drag` and `idle` (the same frames, no
 # mouse), interleaved round by round; frame times are min / median / max over the frames of every
-# round after the first 60 (the press comes 0.3 s in), in ms of process CPU (all threads: UI,
+# round that start after the press (or, idle, the same moment), in ms of process CPU (all threads: UI,
 # background jobs, the GL driver's), main-thread CPU and wall.
-#   scripts/bench-frame.sh [--before OLD_EDITOR] [frames per run, default 300] [rounds, default 2]
+#   scripts/bench-frame.sh [--before OLD_EDITOR] [frames per run, default 500] [rounds, default 2]
 # Needs build/release/ui/visemelab-editor, build/release/app/visemelab, xvfb-run, xdotool, cc.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -19,7 +19,7 @@ if [[ ${1:-} == --before ]]; then
   before=$(realpath "$2")
   shift 2
 fi
-frames=${1:-300}
+frames=${1:-500}
 rounds=${2:-2}
 editor=$(realpath build/release/ui/visemelab-editor)
 cli=build/release/app/visemelab
@@ -47,28 +47,29 @@ base = ["--project", project, "--panel", "Deformation", "--size", "1600", "1000"
 # project is loaded, frames are running) the pointer presses on the slider and moves along it until
 # the editor exits after its frames.
 DRIVER = r"""
-editor=$1; x0=$2; x1=$3; y=$4; shift 4
+editor=$1; x0=$2; x1=$3; y=$4; started=$5; shift 5
 "$editor" "$@" & pid=$!
-if [[ $x0 != none ]]; then
-  window=$(timeout 60 xdotool search --sync --pid $pid | head -1)
-  until xdotool getwindowname $window 2>/dev/null | grep -q face100k; do
-    kill -0 $pid 2>/dev/null || break; sleep 0.05; done
-  # As tests/ui/GuiDriver does: the window focused and the pointer over the slider before the press.
-  xdotool windowfocus --sync $window 2>/dev/null || true
-  xdotool mousemove --window $window $x0 $y 2>/dev/null || true
-  sleep 0.3
-  xdotool mousedown 1 2>/dev/null || true
-  while kill -0 $pid 2>/dev/null; do
-    # A random point each time: whatever number of moves lands between two frames, the next frame
-    # almost surely sees a new slider value.
-    xdotool mousemove --window $window $((x0 + RANDOM % (x1 - x0))) $y 2>/dev/null || true
-  done
-fi
+window=$(timeout 60 xdotool search --sync --pid $pid | head -1)
+until xdotool getwindowname $window 2>/dev/null | grep -q face100k; do
+  kill -0 $pid 2>/dev/null || break; sleep 0.05; done
+# As tests/ui/GuiDriver does: the window focused and the pointer over the slider some frames before
+# the press (a press in the frame the pointer arrives in activates nothing).
+xdotool windowfocus --sync $window 2>/dev/null || true
+[[ $x0 != none ]] && xdotool mousemove --window $window $x0 $y 2>/dev/null
+sleep 2
+[[ $x0 != none ]] && xdotool mousedown 1 2>/dev/null
+date +%s.%N > "$started" # idle runs too: the same frames are measured
+while [[ $x0 != none ]] && kill -0 $pid 2>/dev/null; do
+  # A random point each time: whatever number of moves lands between two frames, the next frame
+  # almost surely sees a new slider value.
+  xdotool mousemove --window $window $((x0 + RANDOM % (x1 - x0))) $y 2>/dev/null || true
+done
 wait $pid
 """
 
 def run(editor, drag, frame_count, extra=(), env=None):
     points = [str(v) for v in drag] if drag else ["none", "none", "none"]
+    points.append(os.path.join(work, "started"))
     subprocess.run(xvfb + ["bash", "-c", DRIVER, "driver", editor] + points + base +
                    ["--frames", str(frame_count)] + list(extra), check=True, stdout=subprocess.DEVNULL,
                    env=env)
@@ -86,8 +87,8 @@ slider = next(c for c in start["controls"] if c["kind"] == "slider" and c["label
 drag = (int(slider["x"] + 60), int(slider["x"] + slider["width"] - 140), int(slider["y"] + slider["height"] / 2))
 editors = {"after": after} if not before else {"before": before, "after": after}
 for name, editor in editors.items():
-    moved = probe(editor, drag, 100)
-    assert moved["document"]["document_revision"] > start["document"]["document_revision"], name + ": the drag did not move jaw_open"
+    moved = probe(editor, drag, 300)
+    assert moved["document"]["parameters"]["jaw_open"] != start["document"]["parameters"]["jaw_open"], name + ": the drag did not move jaw_open"
 vertices = start["document"]["face_view"]["skin_triangles"]
 
 times = {(name, mode): [] for name in editors for mode in ("drag", "idle")}
@@ -99,7 +100,9 @@ for _ in range(rounds):
             run(editor, drag if mode == "drag" else None, frames, env=env)
             with open(out) as f:
                 rows = [[float(x) for x in line.split()] for line in f.readlines()[1:]]
-            times[(name, mode)] += rows[60:]
+            with open(os.path.join(work, "started")) as f:
+                started = float(f.read())
+            times[(name, mode)] += [row[:3] for row in rows if row[3] - row[2] * 1e-3 > started]
 
 def cell(values):
     return "%.1f / %.1f / %.1f" % (min(values), statistics.median(values), max(values))

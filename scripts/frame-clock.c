@@ -1,7 +1,8 @@
 // LD_PRELOAD shim for scripts/bench-frame.sh: records the clocks at every glfwSwapBuffers of a
 // program (the editor links GLFW dynamically), so any build of the editor, old or new, can be timed
 // frame by frame without a hook of its own. At exit it writes one line per frame to $FRAME_CLOCK_OUT:
-// process CPU ms, main-thread CPU ms, wall ms, each the difference to the previous swap.
+// process CPU ms, main-thread CPU ms, wall ms, each the difference to the previous swap, and the
+// frame's end in Unix seconds (to drop the frames before a scripted press).
 #define _GNU_SOURCE
 #include <dlfcn.h>
 #include <stdio.h>
@@ -11,7 +12,7 @@
 typedef struct GLFWwindow GLFWwindow;
 
 enum { kMaxFrames = 100000 };
-static double processMs[kMaxFrames], threadMs[kMaxFrames], wallMs[kMaxFrames];
+static double processMs[kMaxFrames], threadMs[kMaxFrames], wallMs[kMaxFrames], unixMs[kMaxFrames];
 static int frames;
 
 static double clockMs(clockid_t clock) {
@@ -30,6 +31,7 @@ void glfwSwapBuffers(GLFWwindow* window) {
     processMs[frames] = clockMs(CLOCK_PROCESS_CPUTIME_ID);
     threadMs[frames] = clockMs(CLOCK_THREAD_CPUTIME_ID);
     wallMs[frames] = clockMs(CLOCK_MONOTONIC);
+    unixMs[frames] = clockMs(CLOCK_REALTIME);
     ++frames;
 }
 
@@ -41,9 +43,9 @@ __attribute__((destructor)) static void writeFrames(void) {
         fprintf(stderr, "frame-clock: cannot write %s\n", path);
         return;
     }
-    fprintf(out, "process_cpu_ms thread_cpu_ms wall_ms\n");
+    fprintf(out, "process_cpu_ms thread_cpu_ms wall_ms end_unix_s\n");
     for (int k = 1; k < frames; ++k)
-        fprintf(out, "%.4f %.4f %.4f\n", processMs[k] - processMs[k - 1], threadMs[k] - threadMs[k - 1],
-                wallMs[k] - wallMs[k - 1]);
+        fprintf(out, "%.4f %.4f %.4f %.4f\n", processMs[k] - processMs[k - 1], threadMs[k] - threadMs[k - 1],
+                wallMs[k] - wallMs[k - 1], unixMs[k] * 1e-3);
     fclose(out);
 }
