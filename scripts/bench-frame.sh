@@ -57,7 +57,7 @@ until xdotool getwindowname $window 2>/dev/null | grep -q face100k; do
 xdotool windowfocus --sync $window 2>/dev/null || true
 [[ $x0 != none ]] && xdotool mousemove --window $window $x0 $y 2>/dev/null
 sleep 2
-[[ $x0 != none ]] && xdotool mousedown 1 2>/dev/null
+[[ $x0 != none ]] && xdotool mousedown 1 2>/dev/null && sleep 0.5 # the press seen before any move
 date +%s.%N > "$started" # idle runs too: the same frames are measured
 while [[ $x0 != none ]] && kill -0 $pid 2>/dev/null; do
   # A random point each time: whatever number of moves lands between two frames, the next frame

@@ -37,7 +37,7 @@ void glfwSwapBuffers(GLFWwindow* window) {
 
 __attribute__((destructor)) static void writeFrames(void) {
     const char* path = getenv("FRAME_CLOCK_OUT");
-    if (!path) return;
+    if (!path || frames == 0) return; // xvfb-run and xdotool carry the preload too: they swap nothing
     FILE* out = fopen(path, "w");
     if (!out) {
         fprintf(stderr, "frame-clock: cannot write %s\n", path);
