@@ -87,11 +87,14 @@ class SuffixSearch {
     }
 
   private:
-    bool expired() {
-        constexpr unsigned kCheckEvery = 256;
-        thread_local unsigned counter = 0;
-        if ((++counter % kCheckEvery) != 0) return false;
-        if (limits_.expired(kCheckEvery)) stopped_.store(true, std::memory_order_relaxed);
+    // `groups`: the groups the node tries (the work SearchLimits counts).
+    bool expired(unsigned groups) {
+        constexpr unsigned kCheckEvery = 1024;
+        thread_local unsigned work = 0;
+        work += groups;
+        if (work < kCheckEvery) return false;
+        if (limits_.expired(work)) stopped_.store(true, std::memory_order_relaxed);
+        work = 0;
         return stopped_.load(std::memory_order_relaxed);
     }
 
@@ -180,7 +183,8 @@ class SuffixSearch {
             }
             return kNoBound;
         }
-        if (expired()) return s.partial + suffixBound_[static_cast<std::size_t>(t)];
+        if (expired(static_cast<unsigned>(s.k + (s.k < q_ ? 1 : 0))))
+            return s.partial + suffixBound_[static_cast<std::size_t>(t)];
         std::array<Child, kMaxSearchUnits + 1> list;
         const int count = children(s, t, list);
         const int u = order_[static_cast<std::size_t>(t)];

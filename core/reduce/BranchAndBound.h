@@ -25,16 +25,18 @@ struct SearchLimits {
     std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
     const std::atomic<bool>* cancelled = nullptr; // set by another thread to stop early
     // A work limit that, unlike the deadline, gives the same answer on a slow or loaded machine:
-    // the searches sharing `nodes` stop once they have visited about `nodeBudget` tree nodes together.
-    std::atomic<std::uint64_t>* nodes = nullptr;
-    std::uint64_t nodeBudget = 0;
+    // the searches sharing `work` stop once they have tried about `workBudget` groups together (a
+    // node tries each open group and a new one: its time is about proportional to that count, where
+    // a node count would charge a node of 11 open groups as one of 3).
+    std::atomic<std::uint64_t>* work = nullptr;
+    std::uint64_t workBudget = 0;
     // A stopped search's lower bound adds the exact optima of blocks of the units before its suffix
     // (subset DPs: milliseconds per p). Off when the caller discards a stopped search's bound anyway
     // (Auto's portfolio runs the DP next); the bound reported is then the suffix's alone, still valid.
     bool tightenStoppedBound = true;
-    // Called once per `visited` nodes of one search.
-    bool expired(std::uint64_t visited) const {
-        if (nodes && nodes->fetch_add(visited, std::memory_order_relaxed) + visited > nodeBudget) return true;
+    // Called once per `done` groups tried by one search.
+    bool expired(std::uint64_t done) const {
+        if (work && work->fetch_add(done, std::memory_order_relaxed) + done > workBudget) return true;
         return (cancelled && cancelled->load(std::memory_order_relaxed)) ||
                std::chrono::steady_clock::now() >= deadline;
     }

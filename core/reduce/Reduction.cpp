@@ -35,9 +35,13 @@ constexpr int kAutoDpUnits = 12;
 // twice as many nodes per further unit while the DP's time triples: real sets need few more nodes per
 // unit (ARPAbet meshes: 7 k nodes at n = 16, 15 k at 18, 44 k at 20; a rig's 16 shapes 12 k), and on
 // structureless ones the share is then 3 % of the DP's time at n = 20 instead of 15 %.
+// The share is work, the groups the search's nodes try (SearchLimits), at 6 per node: a node tries
+// 4.5 (ARPAbet n = 16) to 6.4 (n = 32) keyed and up to 7.8 rest free (one group more, searches of
+// more groups). Counted in nodes, the rest-free searches at n = 36 spent the same share on nodes of
+// 7.7 groups against the keyed ones' 5.4 and took 1.4x their time (issue 29).
 constexpr double kBranchAndBoundShare = 0.15;
 constexpr int kBranchAndBoundShareUnits = 16;
-constexpr double kBranchAndBoundNodesPerSecond = 2e7;
+constexpr double kBranchAndBoundWorkPerSecond = 6 * 2e7;
 // Past the DP's range Auto's first branch and bound gets at most this share of the time limit.
 constexpr double kLpRangeBranchAndBoundShare = 0.25;
 // The heuristics' k-means++ restarts per p. Up to kFewRestartsUnits units an exact search always
@@ -178,15 +182,15 @@ Grouping toGrouping(const UnitPartition& entry, const ConstraintUnits& units, in
 // `restGroups` (1 in the rest-free model, else 0): groups beyond the keys, for the watch (which counts keys).
 UnitCurve solveByBranchAndBound(const GroupCostModel& model, const ConstraintUnits& units, int m,
                                 const ReductionOptions& options, const ProgressCallback& progress,
-                                std::uint64_t nodeBudget = 0, bool tightenStoppedBound = true,
+                                std::uint64_t workBudget = 0, bool tightenStoppedBound = true,
                                 int restGroups = 0) {
     const int watched = options.watch ? options.watch->groups + restGroups : 0;
     const auto starts = heuristicPartitions(model, m, heuristicOptionsFor(model.size()));
     SearchLimits limits;
-    std::atomic<std::uint64_t> nodes{0};
-    if (nodeBudget > 0) {
-        limits.nodes = &nodes;
-        limits.nodeBudget = nodeBudget;
+    std::atomic<std::uint64_t> work{0};
+    if (workBudget > 0) {
+        limits.work = &work;
+        limits.workBudget = workBudget;
     }
     limits.tightenStoppedBound = tightenStoppedBound;
     if (options.timeLimitSeconds > 0)
@@ -259,13 +263,13 @@ double estimatedSubsetDpSeconds(int units, int m) {
     return 0.0055 * std::pow(3.0, units - 16) * std::max(1.0, m / 10.0);
 }
 
-// Auto's first share for branch and bound (kBranchAndBoundShare), in seconds and in search nodes.
+// Auto's first share for branch and bound (kBranchAndBoundShare), in seconds and in search work.
 double branchAndBoundShareSeconds(int units, int m) {
     return kBranchAndBoundShare * estimatedSubsetDpSeconds(kBranchAndBoundShareUnits, m) *
            std::pow(2.0, units - kBranchAndBoundShareUnits);
 }
-std::uint64_t branchAndBoundShareNodes(int units, int m) {
-    return static_cast<std::uint64_t>(branchAndBoundShareSeconds(units, m) * kBranchAndBoundNodesPerSecond);
+std::uint64_t branchAndBoundShareWork(int units, int m) {
+    return static_cast<std::uint64_t>(branchAndBoundShareSeconds(units, m) * kBranchAndBoundWorkPerSecond);
 }
 
 // The LP by column generation for every feasible p = 1..m, one p after another (each prices in
@@ -387,10 +391,10 @@ ReductionResult reduceVisemes(const ReductionProblem& problem, const ReductionOp
         // wins on structureless ones (all shapes about equally far apart). Branch and bound gets a
         // share of the DP's predictable time; the DP runs only when that was not enough.
         const double dpSeconds = estimatedSubsetDpSeconds(count, solvable);
-        // The share is counted in search nodes, not seconds, so that the solver chosen (and the
-        // project file recording it) is the same on a slow, loaded or instrumented machine.
+        // The share is counted in search work (groups tried), not seconds, so that the solver chosen
+        // (and the project file recording it) is the same on a slow, loaded or instrumented machine.
         const double shareSeconds = branchAndBoundShareSeconds(count, solvable);
-        const std::uint64_t budget = branchAndBoundShareNodes(count, solvable);
+        const std::uint64_t budget = branchAndBoundShareWork(count, solvable);
         const bool dpFits =
             options.timeLimitSeconds <= 0 || options.timeLimitSeconds >= shareSeconds + dpSeconds;
         // When the DP follows an unproven search, that search's bounds are discarded: skip them.
@@ -416,11 +420,11 @@ ReductionResult reduceVisemes(const ReductionProblem& problem, const ReductionOp
         if (automatic) {
             // Past the DP's range the share stops growing: the LP proves real sets faster than branch
             // and bound (ARPAbet 40, m = 10: 0.5 s instead of 2.4 s; rest-free 1.7 s instead of 7.5 s).
-            std::uint64_t share = branchAndBoundShareNodes(kMaxSubsetDpUnits, solvable);
+            std::uint64_t share = branchAndBoundShareWork(kMaxSubsetDpUnits, solvable);
             if (options.timeLimitSeconds > 0)
                 share = std::min(
                     share, static_cast<std::uint64_t>(kLpRangeBranchAndBoundShare * options.timeLimitSeconds *
-                                                      kBranchAndBoundNodesPerSecond));
+                                                      kBranchAndBoundWorkPerSecond));
             curve =
                 solveByBranchAndBound(model, units, solvable, options, progress, share, false, restGroups);
             result.method = ReductionMethod::BranchAndBound;

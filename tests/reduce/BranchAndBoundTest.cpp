@@ -1,15 +1,20 @@
 // Branch and bound against the subset DP and brute force, its certificates, and its time limit.
 #include "BruteForce.h"
 #include "RandomShapes.h"
+#include "TestModels.h"
 
+#include "core/reduce/BranchAndBound.h"
 #include "core/reduce/GramMatrix.h"
 #include "core/reduce/GroupCostModel.h"
 #include "core/reduce/ReductionHeuristics.h"
+#include "core/reduce/SubsetDp.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <thread>
 
 using namespace vl;
 
@@ -309,4 +314,39 @@ TEST(BranchAndBound, AStopRequestKeepsTheBestGroupingsWithTheirBounds) {
     for (const auto& g : result.curve) expectCertificate(g);
     EXPECT_EQ(watch.bestFound.load(), result.best().cost);
     EXPECT_LE(watch.lowerBound.load(), result.best().cost);
+}
+
+TEST(BranchAndBound, AWorkBudgetStopsTheSearchNearItWithValidBounds) {
+    // Auto's share is counted in groups tried (each open group and a new one per node): the searches
+    // sharing the counter stop once it passes the budget (each thread adds its count every 1024 groups,
+    // so it overshoots by at most that per thread), and a stopped search's bounds stay valid against
+    // the DP, in both models.
+    std::mt19937 rng(12);
+    const int n = 18, m = 8;
+    const auto inst = test::randomInstance(rng, n, 20);
+    const GroupCostModel keyed = makeGroupCostModel(centredGram(inst.shapes, inst.frequencies, inst.weights),
+                                                    inst.frequencies, constraintUnits({}, n));
+    const GroupCostModel restFree = *test::restFreeModel(inst, {}, 0, inst.shapes.front());
+    constexpr std::uint64_t kBudget = 20'000;
+    const auto threads = static_cast<std::uint64_t>(std::max(1u, std::thread::hardware_concurrency()));
+    for (const GroupCostModel* model : {&keyed, &restFree}) {
+        const UnitCurve exact = solveSubsetDp(*model, m);
+        int stopped = 0;
+        for (int p = 2; p <= m; ++p) {
+            std::atomic<std::uint64_t> work{0};
+            SearchLimits limits;
+            limits.work = &work;
+            limits.workBudget = kBudget;
+            const UnitPartition found = branchAndBound(*model, p, {}, limits);
+            const double optimum = exact[static_cast<std::size_t>(p - 1)].cost;
+            EXPECT_LE(work.load(), kBudget + threads * (1024 + kMaxReductionVisemes + 1)) << "p = " << p;
+            EXPECT_GE(found.cost, optimum * (1 - 1e-9)) << "p = " << p;
+            EXPECT_LE(found.lowerBound, optimum * (1 + 1e-9)) << "p = " << p;
+            if (!found.optimal)
+                ++stopped;
+            else
+                EXPECT_NEAR(found.cost, optimum, 1e-9 * optimum) << "p = " << p;
+        }
+        EXPECT_GT(stopped, 0) << "the budget never stopped a search: the test proves nothing";
+    }
 }
