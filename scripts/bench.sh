@@ -5,6 +5,9 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./scripts/build.sh
+# The machine's speed before and after (a fixed calibration loop): figures of a slow hour show it.
+./scripts/machine-speed.sh
+trap './scripts/machine-speed.sh' EXIT
 for b in build/release/tests/bench/bench_*; do
   [ -x "$b" ] && "$b" "$@"
 done
