@@ -408,10 +408,11 @@ void EditorViews::drawMainView(ImVec2 size) {
             emptyViewHint(events.imageMin, events.imageMax,
                           "No face loaded: use \"Load bundled face\" in the panel");
         else // a face built from the user's mesh is named by its mesh, not as the bundled one
-            label = "Deformable face (" +
-                    (builtinIndividualOf(*cascade) ? std::string(toString(session_.document().face.individual))
-                                                   : cascade->name) +
-                    ")";
+            label =
+                "Deformable face (" +
+                (builtinIndividualOf(*cascade) ? std::string(toString(session_.document().face.individual))
+                                               : cascade->name) +
+                ")";
     } else {
         std::vector<float> weights =
             speech_.shown() ? speech_.weights(false) : visemeWeights(session_.selectedViseme());

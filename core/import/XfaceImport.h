@@ -6,8 +6,8 @@
 // are the category="Viseme" entities in file order, each entity's mesh files (relative to the .fdp)
 // read with core/io and concatenated. <stem>.dic beside the .fdp, when present, gives the phoneme
 // map. Errors name the file, line and entity.
-#include "core/reduce/Frequencies.h"
 #include "core/mesh/VisemeSet.h"
+#include "core/reduce/Frequencies.h"
 
 #include <filesystem>
 #include <string>
