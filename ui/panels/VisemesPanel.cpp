@@ -25,8 +25,7 @@ void VisemesPanel::draw() {
     ImGui::SameLine();
     if (ctl::Button("Import avatar...")) avatar_.openImport();
 
-    const VisemeSet* set = session_.visemes();
-    if (!set) {
+    if (!session_.visemes()) {
         ImGui::Spacing();
         ImGui::TextWrapped("No viseme set yet. Load the sample face, open a project (Ctrl+O), a folder of "
                            "interpolable meshes (OBJ/PLY/VRML) with one file named *neutral*, or an avatar "
@@ -40,6 +39,11 @@ void VisemesPanel::draw() {
     else
         importSection();
 
+    // The table shows the document as it is after those sections: a new target pattern replaced it
+    // (another viseme count), and the set, its files, frequencies and grouping must be of one document.
+    const Document& shown = session_.document();
+    const VisemeSet* set = shown.visemes.get();
+    if (!set) return;
     std::vector<double> frequencies;
     const bool frequenciesOk =
         session_.attempt("Frequencies", [&] { frequencies = session_.frequencies().values(); });
@@ -91,10 +95,10 @@ void VisemesPanel::draw() {
                 ImGui::TextDisabled("-");
             ImGui::TableNextColumn();
             // An avatar's visemes are morph targets of its file (the set's neutral source).
-            const std::filesystem::path& file = session_.document().visemeFiles.at(i);
-            const std::filesystem::path& shown =
-                file.empty() && session_.document().avatar.isSet() ? set->neutralSource : file;
-            ImGui::TextDisabled("%s", shown.empty() ? "generated" : shown.filename().string().c_str());
+            const std::filesystem::path& file = shown.visemeFiles.at(i);
+            const std::filesystem::path& source =
+                file.empty() && shown.avatar.isSet() ? set->neutralSource : file;
+            ImGui::TextDisabled("%s", source.empty() ? "generated" : source.filename().string().c_str());
             ImGui::PopID();
         }
         ImGui::EndTable();
