@@ -10,7 +10,7 @@ namespace vl {
 
 namespace {
 
-// One distinct displacement of a frame's difference d = F(t) - R(t), with its nonzero coefficient.
+// One basis vector of a frame's difference d = F(t) - R(t), with its nonzero coefficient.
 struct FrameTerm {
     std::size_t index;
     double weight;
@@ -146,7 +146,7 @@ DisplacementError measureDisplacementError(const SpeechErrorBasis& basis, const 
     error.fps = fps;
     error.rmsFrames.resize(frameCount);
     error.maxFrames.resize(frameCount);
-    std::vector<double> fullCoefficients(basis.distinct()), reducedCoefficients(basis.distinct());
+    std::vector<double> fullCoefficients(basis.vectorCount()), reducedCoefficients(basis.vectorCount());
     std::vector<FrameColumn> columns;
     std::vector<std::pair<std::size_t, std::size_t>> stack;
     std::vector<FrameTerm> terms, previous;

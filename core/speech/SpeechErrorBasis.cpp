@@ -156,7 +156,7 @@ SpeechErrorBasis::SpeechErrorBasis(const ReducedModel& full, const ReducedModel&
 
     // G[a][b] = sum_v w_v <b_a(v), b_b(v)>, from the weighted coordinates of a (one pass per pair).
     // A vector that is zero (the deviation of a key the reduction left alone) has a zero row.
-    const std::size_t keys = distinct();
+    const std::size_t keys = vectorCount();
     gram_.assign(keys * keys, 0.0);
     std::vector<bool> zero(keys);
     for (std::size_t a = 0; a < keys; ++a) {
@@ -187,7 +187,7 @@ std::size_t SpeechErrorBasis::nodeSpan(std::size_t level) const {
 }
 
 void SpeechErrorBasis::buildTree() {
-    const std::size_t n = paddedSize(), keys = distinct();
+    const std::size_t n = paddedSize(), keys = vectorCount();
     std::vector<double> leaves(keys * (n / kLeaf), 0.0);
     for (std::size_t a = 0; a < keys; ++a)
         for (std::size_t v = 0; v < n; ++v) {

@@ -33,7 +33,7 @@ class SpeechErrorBasis {
     // leaves (paddedSize()): every leaf is kLeaf values long, which vectorises.
     std::size_t paddedSize() const { return mouthWeights_.size(); }
     const std::vector<double>& mouthWeights() const { return mouthWeights_; }
-    std::size_t distinct() const { return x_.size(); } // basis vectors: reduced keys + full keys
+    std::size_t vectorCount() const { return x_.size(); } // basis vectors: reduced keys + full keys
     // The basis vector of key k of each face (e_k for the full face, r_g for the reduced one), and
     // the partner r_p(k) of a full key (kNoPartner when its phonemes rest on the reduced face).
     static constexpr std::size_t kNoPartner = static_cast<std::size_t>(-1);
@@ -46,7 +46,7 @@ class SpeechErrorBasis {
     const double* coordinate(std::size_t a, int c) const {
         return (c == 0 ? x_ : c == 1 ? y_ : z_)[a].data();
     }
-    double gram(std::size_t a, std::size_t b) const { return gram_[a * distinct() + b]; }
+    double gram(std::size_t a, std::size_t b) const { return gram_[a * vectorCount() + b]; }
     // A tree over the mouth for a frame's maximum: leaves of kLeaf consecutive vertices, each node of
     // a level above holding kFanout nodes of the level below, up to one root. Every node has the
     // largest length of every basis vector over its vertices, so by the triangle inequality
@@ -56,12 +56,12 @@ class SpeechErrorBasis {
     // a node a patch of the face.
     static constexpr std::size_t kLeaf = 8, kFanout = 8;
     std::size_t levels() const { return lengths_.size(); } // level 0: the leaves
-    std::size_t nodeCount(std::size_t level) const { return lengths_[level].size() / distinct(); }
+    std::size_t nodeCount(std::size_t level) const { return lengths_[level].size() / vectorCount(); }
     // Vertices [first, last) of the (padded) mouth under a node.
     std::size_t nodeFirst(std::size_t level, std::size_t node) const { return node * nodeSpan(level); }
     // The largest |b_a(v)| over the node's vertices, for every a.
     const double* nodeLengths(std::size_t level, std::size_t node) const {
-        return &lengths_[level][node * distinct()];
+        return &lengths_[level][node * vectorCount()];
     }
 
   private:

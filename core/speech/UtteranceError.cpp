@@ -14,7 +14,7 @@ struct Term {
     double weight;
 };
 
-// Adds the blend of `face` at t with `sign`, one term per distinct displacement.
+// Adds the blend of `face` at t with `sign`, one term per basis vector (SpeechErrorBasis.h).
 void addBlend(const FaceTrack& face, double t, const SpeechErrorBasis& basis, bool full, double sign,
               std::vector<Term>& terms) {
     runtime::KeyWeight blend[4];
