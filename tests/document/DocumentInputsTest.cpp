@@ -2,6 +2,7 @@
 // (DocumentInputs) re-evaluate only what depends on them.
 #include "core/document/DocumentInputs.h"
 #include "core/document/Commands.h"
+#include "core/project/ReduceInputs.h"
 #include "tests/document/DocumentTestSupport.h"
 
 #include <gtest/gtest.h>
@@ -81,6 +82,68 @@ TEST(DocumentInputs, EachPartsRevisionChangesOnlyWithThatPart) {
     // A new document: every part is new, even with equal contents.
     inputs.reset(area);
     EXPECT_NE(inputs.revision(kFacePart), face);
+}
+
+// The reduction curve of the document's inputs, as a background run would deliver it.
+std::shared_ptr<const ReductionResult> curveOf(const Document& document) {
+    ReduceInputs inputs{document.visemes, document.frequencies, {}};
+    inputs.settings.target = static_cast<int>(document.visemeCount()); // the whole curve, p = 1..n
+    return std::make_shared<const ReductionResult>(reduce(inputs, ReducePolicy::batch()).result);
+}
+
+// The curve is the one input computed elsewhere: accepted only for the inputs it was computed for,
+// dropped when they change, kept when only the target does; the reduced model derives from it and
+// equals the one every front end builds (ReduceInputs.h).
+TEST(DocumentInputs, HoldTheCurveOfTheirInputsAndTheReducedModelOfTheTarget) {
+    auto document = std::make_shared<const Document>(edit::setTarget(test::faceDocument(), 3));
+    DocumentInputs inputs(document);
+    EXPECT_EQ(inputs.curve(), nullptr);
+    EXPECT_EQ(inputs.reducedModel(), nullptr);
+    const auto curve = curveOf(*document);
+
+    inputs.setCurve(curve, inputs.reductionRevision() + 1); // computed for other inputs: ignored
+    EXPECT_EQ(inputs.curve(), nullptr);
+    EXPECT_EQ(inputs.curveRevision(), 0u);
+    inputs.setCurve(curve, inputs.reductionRevision());
+    ASSERT_EQ(inputs.curve(), curve.get());
+    ASSERT_NE(inputs.grouping(), nullptr);
+    EXPECT_EQ(inputs.grouping()->groups.size(), 3u);
+    const ReducedModel* model = inputs.reducedModel();
+    ASSERT_NE(model, nullptr);
+    const ReduceInputs direct{document->visemes, document->frequencies, {}};
+    const ReducedModel expected = reducedModel(direct, &curve->curve[2], ReducePolicy::batch());
+    ASSERT_EQ(model->keys.size(), expected.keys.size());
+    EXPECT_EQ(model->keys[0].positions, expected.keys[0].positions);
+    EXPECT_EQ(inputs.reducedModel(), model); // memoized
+
+    // A slider tick keeps the curve; a new target picks another grouping of the same curve.
+    auto moved = std::make_shared<const Document>(edit::setParameter(*document, 0, 0.3));
+    inputs.update(moved, changedParts(*document, *moved));
+    EXPECT_EQ(inputs.curve(), curve.get());
+    auto two = std::make_shared<const Document>(edit::setTarget(*moved, 2));
+    inputs.update(two, changedParts(*moved, *two));
+    EXPECT_EQ(inputs.curve(), curve.get());
+    ASSERT_NE(inputs.reducedModel(), nullptr);
+    EXPECT_EQ(inputs.reducedModel()->keys.size(), 2u);
+
+    // New weights: the curve was computed for other inputs.
+    auto area = std::make_shared<const Document>(edit::setWeightMode(*two, WeightMode::Area));
+    inputs.update(area, changedParts(*two, *area));
+    EXPECT_EQ(inputs.curve(), nullptr);
+    EXPECT_EQ(inputs.grouping(), nullptr);
+    EXPECT_EQ(inputs.reducedModel(), nullptr);
+    const std::uint64_t revision = inputs.curveRevision();
+    inputs.setCurve(curveOf(*area), inputs.reductionRevision());
+    EXPECT_NE(inputs.curve(), nullptr);
+    EXPECT_GT(inputs.curveRevision(), revision);
+}
+
+TEST(DocumentInputs, TheFullModelHasOneKeyPerViseme) {
+    auto document = std::make_shared<const Document>(test::faceDocument());
+    DocumentInputs inputs(document);
+    const ReducedModel& full = inputs.fullModel();
+    EXPECT_EQ(full.keys.size(), document->visemeCount());
+    EXPECT_EQ(&inputs.fullModel(), &full);
 }
 
 } // namespace

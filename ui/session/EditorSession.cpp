@@ -3,8 +3,7 @@
 namespace vl::ui {
 
 EditorSession::EditorSession(SpeechEngines engines)
-    : frequencies_(core_, std::move(engines.transcriber)),
-      speech_(core_, reduction_, std::move(engines.synthesizer)) {}
+    : frequencies_(core_, std::move(engines.transcriber)), speech_(core_, std::move(engines.synthesizer)) {}
 
 EditorSession::~EditorSession() {
     reduction_.cancel();

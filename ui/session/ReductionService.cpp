@@ -7,39 +7,15 @@
 
 namespace vl::ui {
 
-const ReductionResult* ReductionService::curve() const {
-    return curve_.result && curve_.inputsRevision == revision_ ? curve_.result.get() : nullptr;
-}
-
-const Grouping* ReductionService::grouping(int m) const {
-    const ReductionResult* current = curve();
-    if (!current || m < 1 || m > static_cast<int>(current->curve.size())) return nullptr;
-    return &current->curve[static_cast<std::size_t>(m - 1)];
-}
-
-const ReducedModel* ReductionService::reducedModel(const Document& document) {
-    const Grouping* groups = grouping(document.target);
-    if (!groups || !document.visemes) return nullptr;
-    if (!model_ || modelRevision_ != revision_ || modelCurve_ != curve_.revision ||
-        modelGroups_ != document.target) {
-        model_.reset();
-        model_ = vl::reducedModel({document.visemes, document.frequencies, {}}, groups, policy());
-        modelRevision_ = revision_;
-        modelCurve_ = curve_.revision;
-        modelGroups_ = document.target;
-    }
-    return &*model_;
-}
-
 std::size_t ReductionService::curveLength(const Document& document) {
     return static_cast<std::size_t>(std::max(1, documentMaxKeys(document)));
 }
 
 void ReductionService::start(const Document& document, const DocumentInputs& inputs) {
     if (document.visemeCount() < 2) throwInputError("reduction", "load a viseme set with at least 2 visemes");
-    track(inputs.reductionRevision());
-    if (complete(document)) return;
-    if (task_.running() && runningRevision_ == revision_) return;
+    const std::uint64_t revision = inputs.reductionRevision();
+    if (complete(document, inputs)) return;
+    if (task_.running() && runningRevision_ == revision) return;
     const int n = static_cast<int>(document.visemeCount());
     if (n > kMaxReductionVisemes)
         throwInputError("reduction", "the reduction handles at most " + std::to_string(kMaxReductionVisemes) +
@@ -64,7 +40,7 @@ void ReductionService::start(const Document& document, const DocumentInputs& inp
     auto frequencies = std::make_shared<std::vector<double>>(inputs.frequencies());
     auto weights = std::make_shared<std::vector<double>>(inputs.weights());
     const RestPose rest = documentRestPose(document); // views set's neutral, which the worker holds
-    runningRevision_ = revision_;
+    runningRevision_ = revision;
     runningLarge_ = n > kMaxExactVisemes;
     task_.start(
         "Reducing " + std::to_string(n) + " visemes",
@@ -97,12 +73,11 @@ std::optional<ReductionService::Bound> ReductionService::bound() const {
     return Bound{watch_->groups, std::min(lower, best), best};
 }
 
-std::optional<std::string> ReductionService::poll() {
+std::optional<ReductionService::Outcome> ReductionService::poll() {
     auto outcome = task_.take();
     if (!outcome) return std::nullopt;
-    if (outcome->index() == 1) return std::get<1>(*outcome);
-    if (runningRevision_ == revision_) curve_ = {std::get<0>(*outcome), runningRevision_, ++curves_};
-    return std::nullopt;
+    if (outcome->index() == 1) return Outcome{nullptr, runningRevision_, std::get<1>(*outcome)};
+    return Outcome{std::get<0>(*outcome), runningRevision_, {}};
 }
 
 } // namespace vl::ui

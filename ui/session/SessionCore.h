@@ -26,6 +26,10 @@ class SessionCore {
     DocumentPtr documentShared() const { return history_.currentShared(); }
     // The memoized weights, frequencies and per-part revisions of the current document.
     const DocumentInputs& inputs() const { return inputs_; }
+    // A reduction curve computed for inputs of revision `inputsRevision` (DocumentInputs::setCurve).
+    void setCurve(std::shared_ptr<const ReductionResult> curve, std::uint64_t inputsRevision) {
+        inputs_.setCurve(std::move(curve), inputsRevision);
+    }
     StatusMessages& messages() { return messages_; }
     const StatusMessages& messages() const { return messages_; }
 

@@ -5,10 +5,7 @@
 
 namespace vl::ui {
 
-SessionReduction::SessionReduction(SessionCore& core) : core_(core) {
-    service_.track(core_.inputs().reductionRevision());
-    core_.onChange([this] { service_.track(core_.inputs().reductionRevision()); });
-}
+SessionReduction::SessionReduction(SessionCore& core) : core_(core) {}
 
 void SessionReduction::setTarget(int m) {
     if (m == core_.document().target) return;
@@ -36,14 +33,21 @@ void SessionReduction::seed(const LoadedProject& loaded) {
     if (const auto& stored = loaded.reduction; stored && !stored->curve.empty() &&
                                                static_cast<int>(stored->curve.size()) >= document.target &&
                                                stored->restFree == documentRestPose(document).free)
-        service_.seed(std::make_shared<const ReductionResult>(*stored));
+        core_.setCurve(std::make_shared<const ReductionResult>(*stored), core_.inputs().reductionRevision());
 }
 
 void SessionReduction::poll() {
-    if (auto failure = service_.poll()) core_.messages().error("Reduction: " + *failure);
+    if (auto outcome = service_.poll()) {
+        if (!outcome->error.empty())
+            core_.messages().error("Reduction: " + outcome->error);
+        else
+            core_.setCurve(std::move(outcome->curve), outcome->inputsRevision);
+    }
+    const DocumentInputs& inputs = core_.inputs();
     const int n = static_cast<int>(core_.document().visemeCount());
-    if (automatic_ && n >= 2 && n <= kMaxReductionVisemes && !service_.complete(core_.document()) &&
-        !service_.failedOnCurrentInputs() && !service_.running())
+    if (automatic_ && n >= 2 && n <= kMaxReductionVisemes &&
+        !ReductionService::complete(core_.document(), inputs) &&
+        !service_.ranFor(inputs.reductionRevision()) && !service_.running())
         core_.messages().attempt("Reduction", [this] { start(); });
 }
 

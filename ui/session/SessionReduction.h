@@ -1,7 +1,8 @@
 #pragma once
 // The session's reduction facet: the curve's settings as undoable edits (target, constraints, rest
 // model), and the reduction of the current document on a worker thread (ReductionService) with
-// its automatic re-runs.
+// its automatic re-runs. Finished curves go to the document's memoized inputs (DocumentInputs),
+// the one home of the curve, its groupings and the reduced model.
 #include "core/document/Document.h"
 #include "ui/session/ReductionService.h"
 #include "ui/session/SessionCore.h"
@@ -33,15 +34,15 @@ class SessionReduction {
     double progress() const { return service_.progress(); }
     std::optional<double> secondsLeft() const { return service_.secondsLeft(); }
     std::optional<ReductionService::Bound> bound() const { return service_.bound(); }
-    // The curve if it is up to date with the inputs, else null.
-    const ReductionResult* curve() const { return service_.curve(); }
-    // Changes with every curve (ReductionService::curveRevision).
-    std::uint64_t curveRevision() const { return service_.curveRevision(); }
+    // The curve if it is up to date with the inputs, else null (DocumentInputs::curve).
+    const ReductionResult* curve() const { return core_.inputs().curve(); }
+    // Changes with every curve (DocumentInputs::curveRevision).
+    std::uint64_t curveRevision() const { return core_.inputs().curveRevision(); }
     // Grouping into the target number of groups from the current curve, or null.
-    const Grouping* grouping() const { return service_.grouping(core_.document().target); }
-    // The reduced model of grouping() (merged keys, phoneme -> key; cached), or null without a
-    // grouping. Throws InputError when it cannot be built (ReductionService::reducedModel).
-    const ReducedModel* reducedModel() { return service_.reducedModel(core_.document()); }
+    const Grouping* grouping() const { return core_.inputs().grouping(); }
+    // The reduced model of grouping() (merged keys, phoneme -> key; memoized), or null without a
+    // grouping. Throws InputError when it cannot be built (DocumentInputs::reducedModel).
+    const ReducedModel* reducedModel() const { return core_.inputs().reducedModel(); }
     // Re-run in the background after every input change (on by default).
     bool automatic() const { return automatic_; }
     void setAutomatic(bool on) { automatic_ = on; }

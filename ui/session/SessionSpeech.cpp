@@ -4,9 +4,8 @@
 
 namespace vl::ui {
 
-SessionSpeech::SessionSpeech(SessionCore& core, SessionReduction& reduction,
-                             decltype(SpeechEngines::synthesizer) synthesizer)
-    : core_(core), reduction_(reduction), service_(std::move(synthesizer)) {
+SessionSpeech::SessionSpeech(SessionCore& core, decltype(SpeechEngines::synthesizer) synthesizer)
+    : core_(core), service_(std::move(synthesizer)) {
     core_.onNewDocument([this] { service_.clear(); });
 }
 
@@ -21,8 +20,7 @@ void SessionSpeech::setSettings(SpeechSettings speech) {
 }
 
 const SpeechPlayback* SessionSpeech::playback() {
-    return service_.playback(core_.document(), core_.inputs().reductionRevision(), reduction_.curveRevision(),
-                             reduction_.grouping());
+    return service_.playback(core_.document(), core_.inputs());
 }
 
 void SessionSpeech::poll() {

@@ -1,11 +1,10 @@
 #pragma once
 // The session's speech facet (Say): the document's speech settings as undoable edits, speaking them
 // or a typed sequence on a worker thread (SpeechService), and the clip's playback on the full set
-// and the current reduction.
+// and the current reduction (the document's memoized inputs: DocumentInputs).
 #include "core/document/Document.h"
 #include "core/phonetics/SpeechEngines.h"
 #include "ui/session/SessionCore.h"
-#include "ui/session/SessionReduction.h"
 #include "ui/session/SpeechService.h"
 
 #include <memory>
@@ -15,8 +14,7 @@ namespace vl::ui {
 
 class SessionSpeech {
   public:
-    SessionSpeech(SessionCore& core, SessionReduction& reduction,
-                  decltype(SpeechEngines::synthesizer) synthesizer);
+    SessionSpeech(SessionCore& core, decltype(SpeechEngines::synthesizer) synthesizer);
 
     // Text, voice and rate (validated; saved in the project). A rate change while dragging merges
     // into one undo step.
@@ -38,7 +36,6 @@ class SessionSpeech {
 
   private:
     SessionCore& core_;
-    SessionReduction& reduction_;
     SpeechService service_;
 };
 

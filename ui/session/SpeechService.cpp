@@ -109,10 +109,11 @@ void SpeechService::playSequence(const Document& document, const std::string& se
     clip_ = std::make_shared<const SpeechClip>(std::move(clip));
 }
 
-const SpeechPlayback* SpeechService::playback(const Document& document, std::uint64_t inputsRevision,
-                                              std::uint64_t curveRevision, const Grouping* grouping) {
+const SpeechPlayback* SpeechService::playback(const Document& document, const DocumentInputs& inputs) {
     if (!clip_) return nullptr;
+    const Grouping* grouping = inputs.grouping();
     const bool hasGrouping = grouping != nullptr;
+    const std::uint64_t inputsRevision = inputs.reductionRevision(), curveRevision = inputs.curveRevision();
     if (builtClip_ == clip_->id && builtRevision_ == inputsRevision && builtCurve_ == curveRevision &&
         builtGrouping_ == hasGrouping && builtTarget_ == document.target)
         return &playback_;
@@ -132,14 +133,12 @@ const SpeechPlayback* SpeechService::playback(const Document& document, std::uin
         if (clip_->visemes.empty() && !document.frequencies.isPhonemeBased())
             throwInputError("Say", "speech needs a phoneme -> viseme map; the frequencies are per viseme "
                                    "(Frequencies panel: use a phoneme table and a map)");
-        // The faces every front end gets (core/project/ReduceInputs.h): the grouping is known here.
-        const ReduceInputs inputs{document.visemes, document.frequencies, {}};
-        playback_.full.emplace(trackOf(unreducedModelOf(inputs), *clip_, "full viseme set"));
+        // The models every view of the document shows (DocumentInputs, memoized).
+        playback_.full.emplace(trackOf(inputs.fullModel(), *clip_, "full viseme set"));
         if (grouping && grouping->feasible()) {
-            playback_.reduced.emplace(
-                trackOf(reducedModel(inputs, grouping, ReducePolicy::interactive()), *clip_, "reduced set"));
+            playback_.reduced.emplace(trackOf(*inputs.reducedModel(), *clip_, "reduced set"));
             playback_.groups = static_cast<int>(grouping->groups.size());
-            const std::vector<double> weights = documentWeights(document);
+            const std::vector<double>& weights = inputs.weights();
             playback_.error =
                 measureUtteranceError(*playback_.full, *playback_.reduced, weights, kSpeechErrorFps);
             // glTF lengths are metres; mesh files carry no unit.

@@ -5,6 +5,7 @@
 // runtime's keyframe evaluator (core/speech/FaceTrack.h) and the utterance error between them. The
 // tracks are rebuilt when the clip, the reduction inputs or the grouping change.
 #include "core/document/Document.h"
+#include "core/document/DocumentInputs.h"
 #include "core/phonetics/SpeechEngines.h"
 #include "core/speech/DisplacementError.h"
 #include "core/speech/FaceTrack.h"
@@ -72,12 +73,10 @@ class SpeechService {
     // No clip and no synthesis running (a new document: the old sentence is not its own).
     void clear();
 
-    // The clip's tracks on the document's faces; `grouping` (may be null) is the current
-    // reduction into document.target groups, `inputsRevision` numbers its inputs and `curveRevision`
-    // the curve it is from (ReductionService): the tracks are kept while the clip and these are.
-    // Null without a clip.
-    const SpeechPlayback* playback(const Document& document, std::uint64_t inputsRevision,
-                                   std::uint64_t curveRevision, const Grouping* grouping);
+    // The clip's tracks on the document's full and reduced models (`inputs`: the current grouping,
+    // the models, the weights); the tracks are kept while the clip, the reduction inputs, the curve
+    // and the target are. Null without a clip.
+    const SpeechPlayback* playback(const Document& document, const DocumentInputs& inputs);
 
   private:
     std::function<std::unique_ptr<SpeechSynthesizer>(const SpeechVoice&)> synthesizer_;
