@@ -4,9 +4,9 @@
 // owning its view state; they share the session, the file actions and the speech player through a
 // PanelContext. Everything the user does goes through EditorSession.
 #include "ui/EditorViews.h"
-#include "ui/FileActions.h"
-#include "ui/Panel.h"
-#include "ui/SpeechPlayer.h"
+#include "ui/panels/FileActions.h"
+#include "ui/panels/Panel.h"
+#include "ui/panels/SpeechPlayer.h"
 #include "ui/panels/AvatarPanel.h"
 #include "ui/panels/DeformationPanel.h"
 #include "ui/panels/ExportPanel.h"

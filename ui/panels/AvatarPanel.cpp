@@ -7,8 +7,8 @@
 #include "core/gltf/AvatarReport.h"
 #include "core/gltf/AvatarScan.h"
 #include "core/gltf/Gltfpack.h"
-#include "ui/FileActions.h"
 #include "ui/UiScale.h"
+#include "ui/panels/FileActions.h"
 #include "ui/panels/PanelWidgets.h"
 #include "ui/widgets/Controls.h"
 

@@ -7,7 +7,7 @@
 #include "core/deform/Visemes.h"
 #include "core/document/VisemeCommands.h"
 #include "core/project/BuiltinGeometry.h"
-#include "ui/FileActions.h"
+#include "ui/panels/FileActions.h"
 #include "ui/panels/PanelWidgets.h"
 #include "ui/panels/ParameterSliders.h"
 #include "ui/widgets/Controls.h"

@@ -1,7 +1,7 @@
 // Export panel: project save/load and the runtime exports of the core.
 #include "ui/panels/ExportPanel.h"
-#include "ui/FileActions.h"
 #include "ui/UiScale.h"
+#include "ui/panels/FileActions.h"
 #include "ui/panels/PanelWidgets.h"
 #include "ui/widgets/Controls.h"
 

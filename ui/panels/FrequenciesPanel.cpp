@@ -4,7 +4,7 @@
 
 #include "core/phonetics/PhonemeMaps.h"
 #include "core/phonetics/PhonemeTableIO.h"
-#include "ui/FileActions.h"
+#include "ui/panels/FileActions.h"
 #include "ui/panels/PanelWidgets.h"
 #include "ui/widgets/Controls.h"
 #include "ui/widgets/FrequencyHistogram.h"

@@ -5,7 +5,7 @@
 // on the build.
 #include "ui/panels/OwnFaceStep.h"
 
-#include "ui/FileActions.h"
+#include "ui/panels/FileActions.h"
 #include "ui/panels/PanelWidgets.h"
 #include "ui/session/EditorSession.h"
 #include "ui/widgets/Controls.h"

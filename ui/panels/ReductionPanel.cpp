@@ -5,9 +5,9 @@
 
 #include "core/common/Error.h"
 #include "core/inspect/DistanceUnits.h"
-#include "ui/SpeechPlayer.h"
 #include "ui/panels/PanelWidgets.h"
 #include "ui/panels/RestModelSection.h"
+#include "ui/panels/SpeechPlayer.h"
 #include "ui/widgets/Controls.h"
 #include "ui/widgets/CostPlot.h"
 

@@ -4,8 +4,8 @@
 #include "ui/panels/SaySection.h"
 #include "ui/UiScale.h"
 
-#include "ui/SpeechPlayer.h"
 #include "ui/panels/PanelWidgets.h"
+#include "ui/panels/SpeechPlayer.h"
 #include "ui/widgets/Controls.h"
 
 #include <imgui.h>

@@ -4,9 +4,9 @@
 #include "ui/panels/VisemesPanel.h"
 #include "ui/UiScale.h"
 
-#include "ui/FileActions.h"
-#include "ui/SpeechPlayer.h"
+#include "ui/panels/FileActions.h"
 #include "ui/panels/PanelWidgets.h"
+#include "ui/panels/SpeechPlayer.h"
 #include "ui/widgets/Controls.h"
 
 #include <imgui.h>

@@ -16,7 +16,6 @@ void SessionCore::noteChange(const Document& before) {
         ++geometryRevision_;
         if (selectedViseme_ >= static_cast<int>(document().visemeCount())) selectedViseme_ = -1;
     }
-    for (const auto& follow : change_) follow();
 }
 
 void SessionCore::commit(std::string name, Document next, std::string mergeKey) {
@@ -38,7 +37,6 @@ void SessionCore::replace(Document next, bool unsaved) {
     inputs_.reset(history_.currentShared()); // new revisions: a new document never reuses an old curve
     ++geometryRevision_;
     if (selectedViseme_ >= static_cast<int>(document().visemeCount())) selectedViseme_ = -1;
-    for (const auto& follow : change_) follow();
 }
 
 void SessionCore::undo() {

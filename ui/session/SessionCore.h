@@ -60,8 +60,6 @@ class SessionCore {
     // held of the old one (onNewDocument). Called on every replacement, before it is current.
     void beginNewDocument();
     void onNewDocument(std::function<void()> drop) { newDocument_.push_back(std::move(drop)); }
-    // Runs after every change of the current document (edit, undo, redo, replacement).
-    void onChange(std::function<void()> follow) { change_.push_back(std::move(follow)); }
     // Changes whenever the mesh set changes (renderers re-upload when it differs).
     std::uint64_t geometryRevision() const { return geometryRevision_; }
 
@@ -89,7 +87,7 @@ class SessionCore {
     std::uint64_t documentEpoch_ = 1;
     std::uint64_t geometryRevision_ = 1;
     int selectedViseme_ = -1;
-    std::vector<std::function<void()>> newDocument_, change_;
+    std::vector<std::function<void()>> newDocument_;
 };
 
 } // namespace vl::ui

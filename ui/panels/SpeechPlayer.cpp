@@ -1,4 +1,4 @@
-#include "ui/SpeechPlayer.h"
+#include "ui/panels/SpeechPlayer.h"
 
 #include "ui/widgets/SpeechTimeline.h"
 

@@ -1,4 +1,4 @@
-#include "ui/FileActions.h"
+#include "ui/panels/FileActions.h"
 
 #include "ui/UiScale.h"
 #include "ui/widgets/Controls.h"

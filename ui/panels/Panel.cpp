@@ -1,4 +1,4 @@
-#include "ui/Panel.h"
+#include "ui/panels/Panel.h"
 
 #include <algorithm>
 #include <cctype>
