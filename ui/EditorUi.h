@@ -4,15 +4,15 @@
 // owning its view state; they share the session, the file actions and the speech player through a
 // PanelContext. Everything the user does goes through EditorSession.
 #include "ui/EditorViews.h"
-#include "ui/panels/FileActions.h"
-#include "ui/panels/Panel.h"
-#include "ui/panels/SpeechPlayer.h"
 #include "ui/panels/AvatarPanel.h"
 #include "ui/panels/DeformationPanel.h"
 #include "ui/panels/ExportPanel.h"
+#include "ui/panels/FileActions.h"
 #include "ui/panels/FrequenciesPanel.h"
+#include "ui/panels/Panel.h"
 #include "ui/panels/ReductionPanel.h"
 #include "ui/panels/RefinementPanel.h"
+#include "ui/panels/SpeechPlayer.h"
 #include "ui/panels/VisemesPanel.h"
 #include "ui/panels/WeightsPanel.h"
 #include "ui/session/EditorSession.h"

@@ -4,10 +4,10 @@
 // comparison with the Say timeline under it. Owns the GPU copies of the session's meshes, the
 // cameras (one per subject, kept across tabs) and the per-vertex scalars they show; asks the
 // panels what to show.
-#include "ui/panels/Panel.h"
-#include "ui/panels/SpeechPlayer.h"
 #include "ui/panels/DeformationPanel.h"
+#include "ui/panels/Panel.h"
 #include "ui/panels/ReductionPanel.h"
+#include "ui/panels/SpeechPlayer.h"
 #include "ui/panels/VisemesPanel.h"
 #include "ui/panels/WeightsPanel.h"
 #include "ui/render/GlShader.h"
