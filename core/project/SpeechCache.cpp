@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <dlfcn.h>
+#include <link.h>
 #include <optional>
 #include <sys/stat.h>
 #include <type_traits>
@@ -19,18 +20,15 @@ namespace vl {
 namespace {
 
 constexpr char kMagic[8] = {'V', 'L', 'S', 'P', 'E', 'E', 'C', 'H'};
-constexpr std::uint32_t kFormatVersion = 1;
+constexpr std::uint32_t kFormatVersion = 2; // 2: the speech error basis
 
 // Entries of another build are foreign: the solvers, maps or file formats may differ. The build is
-// the file holding this code (the CLI, the editor or the Python module) by path, size and mtime.
-std::string buildIdentity() {
-    Dl_info info{};
-    if (::dladdr(reinterpret_cast<void*>(&speechCacheFolder), &info) == 0 || info.dli_fname == nullptr)
-        return {};
+// a program file by path, size and mtime.
+std::string buildIdentity(const std::filesystem::path& build) {
     struct stat s {};
-    if (::stat(info.dli_fname, &s) != 0) return {};
-    return std::string(info.dli_fname) + '\n' + std::to_string(s.st_size) + '\n' +
-           std::to_string(s.st_mtim.tv_sec) + '.' + std::to_string(s.st_mtim.tv_nsec);
+    if (build.empty() || ::stat(build.c_str(), &s) != 0) return {};
+    return build.string() + '\n' + std::to_string(s.st_size) + '\n' + std::to_string(s.st_mtim.tv_sec) + '.' +
+           std::to_string(s.st_mtim.tv_nsec);
 }
 
 class ByteWriter {
@@ -161,8 +159,9 @@ ReducedModel readModel(ByteReader& r) {
 
 // The entry's identity: which project, which map, which build. Stored whole in the entry too, so a
 // hash collision of the file name is a miss, not a wrong answer.
-std::string entryKey(const std::filesystem::path& project, const PhonemeVisemeMap* map) {
-    std::string key = buildIdentity();
+std::string entryKey(const std::filesystem::path& project, const PhonemeVisemeMap* map,
+                     const std::filesystem::path& build) {
+    std::string key = buildIdentity(build);
     if (key.empty()) return {};
     key += '\n' + project.string() + '\n';
     if (map)
@@ -194,6 +193,11 @@ std::string encodeEntry(std::string_view key, const Entry& entry) {
     writeModel(w, entry.faces.faces.full);
     writeModel(w, entry.faces.faces.reduced);
     w.array(entry.faces.faces.weights);
+    const SpeechErrorBasis::Stored basis = entry.faces.basis->stored();
+    w.array(basis.mouth);
+    w.array(basis.gram);
+    w.u64(basis.lengths.size());
+    for (const auto& level : basis.lengths) w.array(level);
     std::string bytes = w.take();
     const std::uint64_t check = contentHash(bytes);
     bytes.append(reinterpret_cast<const char*>(&check), sizeof check);
@@ -227,7 +231,18 @@ std::optional<Entry> decodeEntry(std::string_view bytes, std::string_view key) {
     entry.faces.faces.full = readModel(r);
     entry.faces.faces.reduced = readModel(r);
     entry.faces.faces.weights = r.array<double>();
+    SpeechErrorBasis::Stored basis;
+    basis.mouth = r.array<std::size_t>();
+    basis.gram = r.array<double>();
+    for (std::uint64_t k = r.u64(); r.ok() && k > 0; --k) basis.lengths.push_back(r.array<double>());
     if (!r.atEnd()) return std::nullopt;
+    const SpeechFaces& faces = entry.faces.faces;
+    try {
+        entry.faces.basis =
+            std::make_shared<const SpeechErrorBasis>(faces.full, faces.reduced, faces.weights, basis);
+    } catch (const InputError&) {
+        return std::nullopt; // does not fit its faces: computing again
+    }
     return entry;
 }
 
@@ -239,6 +254,33 @@ std::optional<std::string> readIfPresent(const std::filesystem::path& file) {
     } catch (const InputError&) {
         return std::nullopt;
     }
+}
+
+// The entry's file and key for a project, map and build (empty when there is no cache).
+struct EntryFile {
+    std::string key;
+    std::filesystem::path file;
+};
+EntryFile entryFile(const std::filesystem::path& projectFile, const PhonemeVisemeMap* map,
+                    const std::filesystem::path& cacheFolder, const std::filesystem::path& build) {
+    std::error_code ec;
+    const std::filesystem::path absolute = std::filesystem::absolute(projectFile, ec).lexically_normal();
+    EntryFile where;
+    if (cacheFolder.empty() || ec) return where;
+    where.key = entryKey(absolute, map, build);
+    if (!where.key.empty()) where.file = cacheFolder / "speech" / (hashHex(contentHash(where.key)) + ".bin");
+    return where;
+}
+
+// The faces of a valid entry, its referenced files noted as the run's references.
+std::optional<ProjectSpeechFaces> readEntry(const std::filesystem::path& file, std::string_view key) {
+    const auto bytes = readIfPresent(file);
+    if (!bytes) return std::nullopt;
+    auto entry = decodeEntry(*bytes, key);
+    if (!entry) return std::nullopt;
+    for (const auto& referenced : entry->referenced) noteReferencedFile(referenced);
+    entry->faces.fromCache = true;
+    return std::move(entry->faces);
 }
 
 } // namespace
@@ -253,21 +295,35 @@ std::filesystem::path speechCacheFolder() {
     return {};
 }
 
+std::filesystem::path speechCacheBuildFile() {
+    Dl_info info{};
+    link_map* object = nullptr;
+    if (::dladdr1(reinterpret_cast<void*>(&speechCacheFolder), &info, reinterpret_cast<void**>(&object),
+                  RTLD_DL_LINKMAP) == 0 ||
+        object == nullptr)
+        return {};
+    // The main program's own name is empty (dladdr would give argv[0], which may be a launcher or
+    // a bare name found on PATH).
+    if (object->l_name && *object->l_name) return object->l_name;
+    std::error_code ec;
+    return std::filesystem::read_symlink("/proc/self/exe", ec);
+}
+
+std::optional<ProjectSpeechFaces> readCachedProjectSpeechFaces(const std::filesystem::path& projectFile,
+                                                               const PhonemeVisemeMap* map,
+                                                               const std::filesystem::path& cacheFolder,
+                                                               const std::filesystem::path& build) {
+    const EntryFile where = entryFile(projectFile, map, cacheFolder, build);
+    if (where.file.empty()) return std::nullopt;
+    return readEntry(where.file, where.key);
+}
+
 ProjectSpeechFaces cachedProjectSpeechFaces(const std::filesystem::path& projectFile,
                                             const PhonemeVisemeMap* map,
                                             const std::filesystem::path& cacheFolder) {
-    std::error_code ec;
-    const std::filesystem::path absolute = std::filesystem::absolute(projectFile, ec).lexically_normal();
-    const std::string key = cacheFolder.empty() || ec ? std::string() : entryKey(absolute, map);
-    const std::filesystem::path file =
-        key.empty() ? std::filesystem::path() : cacheFolder / "speech" / (hashHex(contentHash(key)) + ".bin");
-    if (!file.empty())
-        if (const auto bytes = readIfPresent(file))
-            if (auto entry = decodeEntry(*bytes, key)) {
-                for (const auto& referenced : entry->referenced) noteReferencedFile(referenced);
-                entry->faces.fromCache = true;
-                return std::move(entry->faces);
-            }
+    const EntryFile where = entryFile(projectFile, map, cacheFolder, speechCacheBuildFile());
+    if (!where.file.empty())
+        if (auto faces = readEntry(where.file, where.key)) return std::move(*faces);
 
     Entry entry;
     {
@@ -275,15 +331,18 @@ ProjectSpeechFaces cachedProjectSpeechFaces(const std::filesystem::path& project
         const Project project = loadProject(projectFile);
         entry.faces.faces = projectSpeechFaces(project, map);
         entry.faces.metres = project.avatar.isSet();
+        const SpeechFaces& faces = entry.faces.faces;
+        entry.faces.basis =
+            std::make_shared<const SpeechErrorBasis>(faces.full, faces.reduced, faces.weights);
         entry.read = watch.read();
         entry.referenced = watch.referenced();
     }
     // Hashed as they were read: a file changed while it was read gives an entry that never matches.
     const bool complete = std::all_of(entry.read.begin(), entry.read.end(),
                                       [](const InputWatch::Read& input) { return input.hashed; });
-    if (!file.empty() && complete) {
+    if (!where.file.empty() && complete) {
         try {
-            writeFileAtomically(file, encodeEntry(key, entry));
+            writeFileAtomically(where.file, encodeEntry(where.key, entry));
         } catch (const std::exception&) {
             // No cache this time (read-only or full disk).
         }

@@ -7,6 +7,7 @@
 #include "core/project/Project.h"
 #include "tests/project/ProjectTestUtil.h"
 
+#include <algorithm>
 #include <gtest/gtest.h>
 
 namespace vl {
@@ -35,6 +36,21 @@ void expectSameFaces(const ProjectSpeechFaces& got, const std::filesystem::path&
     expectSameModel(got.faces.reduced, expected.reduced);
     EXPECT_EQ(got.faces.weights, expected.weights);
     EXPECT_FALSE(got.metres);
+    // The error basis, read back from the entry or made with it, is the one the faces give.
+    ASSERT_TRUE(got.basis);
+    const SpeechErrorBasis basis(expected.full, expected.reduced, expected.weights);
+    const SpeechErrorBasis::Stored a = got.basis->stored(), b = basis.stored();
+    EXPECT_EQ(a.mouth, b.mouth);
+    EXPECT_EQ(a.gram, b.gram);
+    EXPECT_EQ(a.lengths, b.lengths);
+    ASSERT_EQ(got.basis->vectorCount(), basis.vectorCount());
+    ASSERT_EQ(got.basis->paddedSize(), basis.paddedSize());
+    EXPECT_EQ(got.basis->mouthWeights(), basis.mouthWeights());
+    for (std::size_t v = 0; v < basis.vectorCount(); ++v)
+        for (int c = 0; c < 3; ++c)
+            EXPECT_TRUE(std::equal(basis.coordinate(v, c), basis.coordinate(v, c) + basis.paddedSize(),
+                                   got.basis->coordinate(v, c)))
+                << "vector " << v << ", coordinate " << c;
 }
 
 // The bundled sample copied into a scratch folder, with a cache folder beside it.
