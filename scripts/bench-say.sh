@@ -38,9 +38,11 @@ print("say / freq (median): %.2f; goal say <= 0.3 s: %s"
 PY
 
 # Issue 33's fixed cost per call: a 10-word sentence against espeak-ng's own synthesis of it
-# (`espeak-ng -q --pho`, goal <= 1.5x), with the speech cache warm (core/project/SpeechCache.h) and
-# without it (VISEMELAB_CACHE_DIR=off); and `say --stdin` per sentence after the first (20 sentences
-# minus 1, against espeak-ng reading the same lines from a file: goal <= 1.2x).
+# (`espeak-ng -v en-us -q --pho`, say's default voice: both speak the same phonemes; espeak-ng's
+# default voice, en, costs about 5 % less; goal <= 1.5x), with the speech cache warm
+# (core/project/SpeechCache.h) and without it (VISEMELAB_CACHE_DIR=off); and `say --stdin` per
+# sentence after the first (20 sentences minus 1, against espeak-ng reading the same lines from a
+# file: goal <= 1.2x).
 python3 - "$runs" "$cli" "$out" <<'PY'
 import os, statistics, sys
 runs, cli, out = int(sys.argv[1]), sys.argv[2], sys.argv[3]
@@ -56,17 +58,18 @@ warm = dict(os.environ, VISEMELAB_CACHE_DIR=out + "/cache")
 cold = dict(os.environ, VISEMELAB_CACHE_DIR="off")
 say = [cli, "say", sentence] + project + ["--out", out + "/ten.json", "--quiet"]
 serve = [cli, "say", "--stdin"] + project + ["--out", out + "/lines.jsonl"]
+espeak = ["espeak-ng", "-v", "en-us", "-q", "--pho"]  # say's default voice (--voice en-us)
 cpu_seconds(say, env=warm)  # fills the cache
 r = {k: [] for k in ("espeak", "say cached", "say uncached", "stdin per sentence", "espeak per sentence")}
 for _ in range(runs):  # interleaved, so all see the same machine load
-    r["espeak"].append(cpu_seconds(["espeak-ng", "-q", "--pho", sentence]))
+    r["espeak"].append(cpu_seconds(espeak + [sentence]))
     r["say cached"].append(cpu_seconds(say, env=warm))
     r["say uncached"].append(cpu_seconds(say, env=cold))
     many = cpu_seconds(serve, env=warm, stdin="\n".join(lines).encode() + b"\n")
     one = cpu_seconds(serve, env=warm, stdin=lines[0].encode() + b"\n")
     r["stdin per sentence"].append((many - one) / (len(lines) - 1))
-    many = cpu_seconds(["espeak-ng", "-q", "--pho", "-f", out + "/many.txt"])
-    one = cpu_seconds(["espeak-ng", "-q", "--pho", "-f", out + "/one.txt"])
+    many = cpu_seconds(espeak + ["-f", out + "/many.txt"])
+    one = cpu_seconds(espeak + ["-f", out + "/one.txt"])
     r["espeak per sentence"].append((many - one) / (len(lines) - 1))
 for name, times in r.items():
     print("%-19s 10 words: CPU min %.1f ms, median %.1f ms, max %.1f ms (%d runs)"
