@@ -13,6 +13,7 @@
 #include <link.h>
 #include <optional>
 #include <sys/stat.h>
+#include <time.h>
 #include <type_traits>
 
 namespace vl {
@@ -20,7 +21,7 @@ namespace vl {
 namespace {
 
 constexpr char kMagic[8] = {'V', 'L', 'S', 'P', 'E', 'E', 'C', 'H'};
-constexpr std::uint32_t kFormatVersion = 2; // 2: the speech error basis
+constexpr std::uint32_t kFormatVersion = 3; // 2: the speech error basis; 3: the inputs' stamps
 
 // Entries of another build are foreign: the solvers, maps or file formats may differ. The build is
 // a program file by path, size and mtime.
@@ -171,6 +172,46 @@ std::string entryKey(const std::filesystem::path& project, const PhonemeVisemeMa
     return key;
 }
 
+// What stat says of an input: a file whose stamp is the one recorded, and whose last change (ctime)
+// was well before the entry was written, has the bytes it had then (any write since would have moved
+// its ctime past the entry's time), so its bytes need not be read and hashed again. A change within
+// the margin of the entry's writing (the clock the file system stamps with is coarse) is checked by
+// its bytes: git's "racily clean" rule.
+struct FileStamp {
+    std::uint64_t device = 0, inode = 0, size = 0;
+    std::int64_t modified = 0, changed = 0; // ns since the epoch
+    bool operator==(const FileStamp&) const = default;
+};
+constexpr std::int64_t kRacyMarginNs = 2'000'000'000;
+
+std::optional<FileStamp> stampOf(const std::filesystem::path& file) {
+    struct stat s {};
+    if (::stat(file.c_str(), &s) != 0) return std::nullopt;
+    const auto ns = [](const timespec& t) { return std::int64_t(t.tv_sec) * 1'000'000'000 + t.tv_nsec; };
+    return FileStamp{std::uint64_t(s.st_dev), std::uint64_t(s.st_ino), std::uint64_t(s.st_size),
+                     ns(s.st_mtim), ns(s.st_ctim)};
+}
+
+std::int64_t nowNs() {
+    timespec t{};
+    ::clock_gettime(CLOCK_REALTIME, &t);
+    return std::int64_t(t.tv_sec) * 1'000'000'000 + t.tv_nsec;
+}
+
+// The stamp of an input as its bytes were hashed, or none (its bytes are then checked on every read):
+// the stamp is taken now, so the bytes are hashed again between two stats that must agree (the
+// computation read them earlier, perhaps long before).
+FileStamp stampAsHashed(const InputWatch::Read& input) {
+    const auto before = stampOf(input.file);
+    if (!before) return {};
+    try {
+        if (contentHash(readFileBytes(input.file).view()) != input.hash) return {};
+    } catch (const InputError&) {
+        return {};
+    }
+    return stampOf(input.file) == before ? *before : FileStamp{};
+}
+
 struct Entry {
     std::vector<InputWatch::Read> read;
     std::vector<std::filesystem::path> referenced;
@@ -182,10 +223,15 @@ std::string encodeEntry(std::string_view key, const Entry& entry) {
     w.text(std::string_view(kMagic, sizeof kMagic));
     w.u64(kFormatVersion);
     w.text(key);
+    w.u64(static_cast<std::uint64_t>(nowNs())); // before the stamps: a change while writing is racy
     w.u64(entry.read.size());
     for (const InputWatch::Read& input : entry.read) {
         w.text(input.file.string());
         w.u64(input.hash);
+        const FileStamp stamp = stampAsHashed(input);
+        for (const std::uint64_t field : {stamp.device, stamp.inode, stamp.size,
+                                          std::uint64_t(stamp.modified), std::uint64_t(stamp.changed)})
+            w.u64(field);
     }
     w.u64(entry.referenced.size());
     for (const auto& file : entry.referenced) w.text(file.string());
@@ -215,14 +261,26 @@ std::optional<Entry> decodeEntry(std::string_view bytes, std::string_view key) {
     ByteReader r(bytes);
     if (r.text() != std::string_view(kMagic, sizeof kMagic) || r.u64() != kFormatVersion || r.text() != key)
         return std::nullopt;
+    const auto written = static_cast<std::int64_t>(r.u64());
     Entry entry;
     for (std::uint64_t k = r.u64(); r.ok() && k > 0; --k) {
         const std::filesystem::path file = r.text();
         const std::uint64_t hash = r.u64();
-        try {
-            if (!r.ok() || contentHash(readFileBytes(file).view()) != hash) return std::nullopt;
-        } catch (const InputError&) {
-            return std::nullopt; // gone or unreadable: computing names the problem
+        FileStamp stamp;
+        stamp.device = r.u64();
+        stamp.inode = r.u64();
+        stamp.size = r.u64();
+        stamp.modified = static_cast<std::int64_t>(r.u64());
+        stamp.changed = static_cast<std::int64_t>(r.u64());
+        if (!r.ok()) return std::nullopt;
+        if (stamp.changed != 0 && stamp.changed + kRacyMarginNs < written && stampOf(file) == stamp) {
+            noteInputFile(file); // the bytes it had: an input of the run all the same
+        } else {
+            try {
+                if (contentHash(readFileBytes(file).view()) != hash) return std::nullopt;
+            } catch (const InputError&) {
+                return std::nullopt; // gone or unreadable: computing names the problem
+            }
         }
         entry.read.push_back({file, hash, true});
     }

@@ -8,7 +8,9 @@
 #include "tests/project/ProjectTestUtil.h"
 
 #include <algorithm>
+#include <chrono>
 #include <gtest/gtest.h>
+#include <thread>
 
 namespace vl {
 namespace {
@@ -100,6 +102,30 @@ TEST(SpeechCache, ChangedBytesOfAMeshOrOfTheProjectAreAMiss) {
     EXPECT_FALSE(cachedProjectSpeechFaces(s.project, nullptr, s.cache).fromCache);
     EXPECT_TRUE(cachedProjectSpeechFaces(s.project, nullptr, s.cache).fromCache);
     EXPECT_EQ(s.entries().size(), 1u); // one entry per project and map, replaced
+}
+
+// Inputs last changed well before the entry was written are checked by their stat stamp, not their
+// bytes; a later edit of the same size moves the file's change time, and is a miss.
+TEST(SpeechCache, AnEditOfTheSameSizeIsAMissAfterTheStampsAreTrusted) {
+    const SampleCopy s;
+    std::this_thread::sleep_for(std::chrono::milliseconds(2100)); // past the racy margin (2 s)
+    EXPECT_FALSE(cachedProjectSpeechFaces(s.project, nullptr, s.cache).fromCache);
+    EXPECT_TRUE(cachedProjectSpeechFaces(s.project, nullptr, s.cache).fromCache);
+    const auto pp = s.project.parent_path() / "PP.obj";
+    std::string obj = readFileToString(pp);
+    const auto v = obj.find("\nv ");
+    ASSERT_NE(v, std::string::npos);
+    const std::size_t digit = obj.find_first_of("123456789", v + 3); // one digit of a vertex, same size
+    ASSERT_NE(digit, std::string::npos);
+    obj[digit] = obj[digit] == '9' ? '1' : char(obj[digit] + 1);
+    const auto size = std::filesystem::file_size(pp);
+    const auto modified = std::filesystem::last_write_time(pp);
+    test::writeText(pp, obj);
+    std::filesystem::last_write_time(pp, modified); // the edit hides its size and time; not its ctime
+    ASSERT_EQ(std::filesystem::file_size(pp), size);
+    const ProjectSpeechFaces edited = cachedProjectSpeechFaces(s.project, nullptr, s.cache);
+    EXPECT_FALSE(edited.fromCache);
+    expectSameFaces(edited, s.project);
 }
 
 TEST(SpeechCache, AnotherMapIsAnotherEntry) {
