@@ -7,15 +7,21 @@
 
 namespace vl::json_text {
 
-std::string number(double value) {
-    if (!std::isfinite(value)) return "null";
+void appendNumber(std::string& text, double value) {
+    if (!std::isfinite(value)) {
+        text += "null";
+        return;
+    }
     // Shortest round-trip digits in scientific form, d[.ddd]e±XX, then laid out as nlohmann does
     // (detail::dtoa_impl::format_buffer, min_exp -4, max_exp 15). Written into one buffer: a track
     // formats thousands of numbers.
     char scientific[32];
     const auto [end, ec] = std::to_chars(scientific, scientific + sizeof scientific, std::fabs(value),
                                          std::chars_format::scientific);
-    if (ec != std::errc()) return Json(value).dump(); // cannot happen: 32 bytes hold any double
+    if (ec != std::errc()) { // cannot happen: 32 bytes hold any double
+        text += Json(value).dump();
+        return;
+    }
     char digits[24];
     int k = 0; // digit count
     const char* p = scientific;
@@ -31,7 +37,8 @@ std::string number(double value) {
     if (std::signbit(value)) *o++ = '-';
     if (value == 0) {
         std::memcpy(o, "0.0", 3);
-        return std::string(out, std::size_t(o + 3 - out));
+        text.append(out, std::size_t(o + 3 - out));
+        return;
     }
     constexpr int kMinExp = -4, kMaxExp = 15;
     const int n = exponent + 1;   // where the decimal point falls in the digits
@@ -69,7 +76,13 @@ std::string number(double value) {
         if (magnitude < 10) *o++ = '0';
         o = std::to_chars(o, out + sizeof out, magnitude).ptr;
     }
-    return std::string(out, std::size_t(o - out));
+    text.append(out, std::size_t(o - out));
+}
+
+std::string number(double value) {
+    std::string text;
+    appendNumber(text, value);
+    return text;
 }
 
 } // namespace vl::json_text

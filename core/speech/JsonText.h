@@ -12,6 +12,7 @@ namespace vl::json_text {
 // (a track has thousands of numbers; a Json value and its serializer per number cost more than the
 // rest of the track's text).
 std::string number(double value);
+void appendNumber(std::string& text, double value); // text += number(value)
 
 inline std::string string(std::string_view text) {
     return Json(std::string(text)).dump();

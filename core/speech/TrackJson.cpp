@@ -26,7 +26,7 @@ std::string numberArray(const std::vector<double>& values) {
     text.reserve(values.size() * 22);
     for (std::size_t i = 0; i < values.size(); ++i) {
         if (i > 0) text += ", ";
-        text += json_text::number(values[i]);
+        json_text::appendNumber(text, values[i]);
     }
     return text + "]";
 }

@@ -51,6 +51,9 @@ TEST(JsonText, NumbersAreLaidOutAsNlohmannDumpsThem) {
                              0.016666666666666666,
                              2.75139e-05};
     for (const double value : values) EXPECT_EQ(json_text::number(value), reference(value)) << value;
+    std::string text = "[1.0, ";
+    json_text::appendNumber(text, 0.5);
+    EXPECT_EQ(text, "[1.0, 0.5");
     EXPECT_EQ(json_text::number(std::nan("")), "null");
     EXPECT_EQ(json_text::number(std::numeric_limits<double>::infinity()), "null");
 }
