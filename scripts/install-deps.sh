@@ -6,6 +6,8 @@ packages=(g++ make cmake pkg-config ninja-build libglfw3-dev libimgui-dev libstb
   libbenchmark-dev libtbb-dev libcli11-dev libtinygltf-dev libepoxy-dev xvfb xauth
   libgl1-mesa-dri fonts-dejavu-core libtinyxml2-dev clang libclang-rt-dev libmeshoptimizer-dev libdraco-dev xdotool clang-format ccache
   portaudio19-dev coinor-libclp-dev chromium espeak-ng)
+# lld: links visemelab-say (app/CMakeLists.txt): it drops the shared libraries only dead code calls.
+packages+=(lld)
 # libxxhash-dev: XXH3, compiled in (core/common/ContentHash.cpp), checks the speech cache's inputs.
 packages+=(libxxhash-dev)
 # The Python package (app/python, pybind11) and its cluster runs (scripts/dask-batch.py): Debian's

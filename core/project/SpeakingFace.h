@@ -5,6 +5,7 @@
 // CLI's `say` loads one per run; `visemelab batch` shares one between every job that names the same
 // face (core/batch).
 #include "core/project/AvatarSpeech.h"
+#include "core/project/SpeechCache.h"
 #include "core/reduce/ReducedModel.h"
 #include "core/speech/DisplacementError.h"
 
@@ -38,5 +39,8 @@ struct SpeakingFace {
 
 // Throws what cachedProjectSpeechFaces or avatarSpeech throw (InputError naming the file).
 SpeakingFace loadSpeakingFace(const SpeakingFaceRequest& request);
+
+// The speaking face of a project's speech faces (cachedProjectSpeechFaces), for messages `project`.
+SpeakingFace speakingProjectFace(ProjectSpeechFaces faces, const std::filesystem::path& project);
 
 } // namespace vl

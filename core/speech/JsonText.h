@@ -7,10 +7,12 @@
 
 namespace vl::json_text {
 
-// Shortest text that reads back as the same double.
-inline std::string number(double value) {
-    return Json(value).dump();
-}
+// Shortest text that reads back as the same double, laid out as nlohmann's dump (Json(value).dump():
+// "60.0", "0.001234", "1.5e-05", "1e+20"; not finite: "null"), from std::to_chars's shortest digits
+// (a track has thousands of numbers; a Json value and its serializer per number cost more than the
+// rest of the track's text).
+std::string number(double value);
+void appendNumber(std::string& text, double value); // text += number(value)
 
 inline std::string string(std::string_view text) {
     return Json(std::string(text)).dump();

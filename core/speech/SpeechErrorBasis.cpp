@@ -102,26 +102,49 @@ std::vector<std::size_t> partnerKeys(const ReducedModel& full, const ReducedMode
 
 SpeechErrorBasis::SpeechErrorBasis(const ReducedModel& full, const ReducedModel& reduced,
                                    std::span<const double> vertexWeights)
+    : SpeechErrorBasis(full, reduced, vertexWeights, nullptr) {}
+
+SpeechErrorBasis::SpeechErrorBasis(const ReducedModel& full, const ReducedModel& reduced,
+                                   std::span<const double> vertexWeights, const Stored& stored)
+    : SpeechErrorBasis(full, reduced, vertexWeights, &stored) {}
+
+SpeechErrorBasis::SpeechErrorBasis(const ReducedModel& full, const ReducedModel& reduced,
+                                   std::span<const double> vertexWeights, const Stored* stored)
     : vertexCount_(full.neutral.positions.size()) {
     if (reduced.neutral.positions.size() != vertexCount_ || vertexWeights.size() != vertexCount_)
         throwInputError("speech error",
                         "the full face, the reduced face and the weights differ in vertex count");
-    const std::vector<std::size_t> mouth = mouthInSpaceOrder(full.neutral.positions, vertexWeights);
-    for (const std::size_t v : mouth) {
-        mouthWeights_.push_back(vertexWeights[v]);
-        totalWeight_ += vertexWeights[v];
+    if (stored) {
+        const auto mouthSize =
+            std::count_if(vertexWeights.begin(), vertexWeights.end(), [](double w) { return w > 0; });
+        if (stored->mouth.size() != static_cast<std::size_t>(mouthSize) ||
+            !std::all_of(stored->mouth.begin(), stored->mouth.end(),
+                         [&](std::size_t v) { return v < vertexCount_ && vertexWeights[v] > 0; }))
+            throwInputError("speech error", "the stored basis does not fit the faces (its mouth)");
+        mouth_ = stored->mouth;
+    } else {
+        mouth_ = mouthInSpaceOrder(full.neutral.positions, vertexWeights);
+    }
+    const std::size_t n = mouth_.size();
+    // Zeros to a whole number of leaves: a padded vertex has no weight and no displacement.
+    mouthSize_ = n;
+    const std::size_t padded = (n + kLeaf - 1) / kLeaf * kLeaf;
+    mouthWeights_.assign(padded, 0.0);
+    for (std::size_t i = 0; i < n; ++i) {
+        mouthWeights_[i] = vertexWeights[mouth_[i]];
+        totalWeight_ += vertexWeights[mouth_[i]];
     }
 
-    const std::size_t n = mouth.size();
     auto displacement = [&](const ReducedModel& model, const KeyMesh& key, int c) {
-        std::vector<double> d(n);
+        std::vector<double> d(padded, 0.0);
         for (std::size_t i = 0; i < n; ++i)
-            d[i] = key.positions[mouth[i]][c] - model.neutral.positions[mouth[i]][c];
+            d[i] = key.positions[mouth_[i]][c] - model.neutral.positions[mouth_[i]][c];
         return d;
     };
     // The reduced keys, then each full key as its deviation from its partner.
     const std::vector<std::size_t> partners = partnerKeys(full, reduced);
     const std::size_t fullKeys = full.keys.size(), reducedKeys = reduced.keys.size();
+    for (auto* vectors : {&x_, &y_, &z_}) vectors->reserve(fullKeys + reducedKeys);
     for (std::size_t g = 0; g < reducedKeys; ++g) {
         x_.push_back(displacement(reduced, reduced.keys[g], 0));
         y_.push_back(displacement(reduced, reduced.keys[g], 1));
@@ -145,18 +168,37 @@ SpeechErrorBasis::SpeechErrorBasis(const ReducedModel& full, const ReducedModel&
         y_.push_back(std::move(dy));
         z_.push_back(std::move(dz));
     }
+    if (stored) {
+        adopt(*stored);
+    } else {
+        buildTree();
+        computeGram();
+    }
+}
 
-    // Zeros to a whole number of leaves: a padded vertex has no weight and no displacement.
-    mouthSize_ = n;
-    const std::size_t padded = (n + kLeaf - 1) / kLeaf * kLeaf;
-    mouthWeights_.resize(padded, 0.0);
-    for (auto* vectors : {&x_, &y_, &z_})
-        for (std::vector<double>& v : *vectors) v.resize(padded, 0.0);
-    buildTree();
+SpeechErrorBasis::Stored SpeechErrorBasis::stored() const {
+    return {mouth_, gram_, lengths_};
+}
 
-    // G[a][b] = sum_v w_v <b_a(v), b_b(v)>, from the weighted coordinates of a (one pass per pair).
-    // A vector that is zero (the deviation of a key the reduction left alone) has a zero row.
+void SpeechErrorBasis::adopt(const Stored& stored) {
     const std::size_t keys = vectorCount();
+    bool fits = stored.gram.size() == keys * keys && !stored.lengths.empty();
+    // The levels' sizes as buildTree makes them: a leaf per kLeaf vertices, a node per kFanout below.
+    for (std::size_t level = 0, nodes = paddedSize() / kLeaf; fits && level < stored.lengths.size();
+         ++level) {
+        fits = stored.lengths[level].size() == keys * nodes &&
+               (level + 1 < stored.lengths.size()) == (stored.lengths[level].size() > keys);
+        nodes = (nodes + kFanout - 1) / kFanout;
+    }
+    if (!fits) throwInputError("speech error", "the stored basis does not fit the faces (its sizes)");
+    gram_ = stored.gram;
+    lengths_ = stored.lengths;
+}
+
+// G[a][b] = sum_v w_v <b_a(v), b_b(v)>, from the weighted coordinates of a (one pass per pair).
+// A vector that is zero (the deviation of a key the reduction left alone) has a zero row.
+void SpeechErrorBasis::computeGram() {
+    const std::size_t keys = vectorCount(), n = mouthSize_;
     gram_.assign(keys * keys, 0.0);
     std::vector<bool> zero(keys);
     for (std::size_t a = 0; a < keys; ++a) {

@@ -26,6 +26,19 @@ class SpeechErrorBasis {
     SpeechErrorBasis(const ReducedModel& full, const ReducedModel& reduced,
                      std::span<const double> vertexWeights);
 
+    // What a cache keeps of a basis (core/project/SpeechCache.h): the parts that cost (the mouth's
+    // order, the Gram matrix, the tree); the displacements are taken from the faces again.
+    struct Stored {
+        std::vector<std::size_t> mouth; // the vertices of nonzero weight, in the basis's order
+        std::vector<double> gram;
+        std::vector<std::vector<double>> lengths;
+    };
+    Stored stored() const;
+    // The basis `stored` was taken from, for the same faces and weights. Throws InputError when the
+    // stored parts do not fit them (sizes, a vertex of zero weight), as a damaged store would not.
+    SpeechErrorBasis(const ReducedModel& full, const ReducedModel& reduced,
+                     std::span<const double> vertexWeights, const Stored& stored);
+
     std::size_t vertexCount() const { return vertexCount_; } // of each face
     std::size_t mouthSize() const { return mouthSize_; }     // vertices of nonzero weight
     double totalWeight() const { return totalWeight_; }      // sum of the mouth's weights
@@ -65,7 +78,10 @@ class SpeechErrorBasis {
     }
 
   private:
+    SpeechErrorBasis(const ReducedModel& full, const ReducedModel& reduced,
+                     std::span<const double> vertexWeights, const Stored* stored);
     std::size_t vertexCount_ = 0;
+    std::vector<std::size_t> mouth_; // the vertex of each mouth position
     std::size_t mouthSize_ = 0;
     std::vector<double> mouthWeights_;
     double totalWeight_ = 0;
@@ -75,6 +91,8 @@ class SpeechErrorBasis {
     std::vector<std::vector<double>> lengths_; // per level: node, basis vector
     std::size_t nodeSpan(std::size_t level) const;
     void buildTree();
+    void computeGram();
+    void adopt(const Stored& stored);
 };
 
 } // namespace vl

@@ -23,8 +23,11 @@ std::string timedArray(const std::vector<Timed>& items, ValueOf valueOf) {
 
 std::string numberArray(const std::vector<double>& values) {
     std::string text = "[";
-    for (std::size_t i = 0; i < values.size(); ++i)
-        text += (i == 0 ? "" : ", ") + json_text::number(values[i]);
+    text.reserve(values.size() * 22);
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        if (i > 0) text += ", ";
+        json_text::appendNumber(text, values[i]);
+    }
     return text + "]";
 }
 

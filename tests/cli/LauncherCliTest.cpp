@@ -43,7 +43,9 @@ TEST(Launcher, HelpAndVersionAreTheCommandsOwn) {
 TEST(Launcher, EveryOtherCallReachesTheCommandsUnchanged) {
     // A subcommand's help, an unknown command, no command and a bad option: same output and status.
     for (const char* arguments :
-         {"reduce --help", "frobnicate", "", "--help extra", "reduce -m 0 --dir /nonexistent"}) {
+         {"reduce --help", "frobnicate", "", "--help extra", "reduce -m 0 --dir /nonexistent",
+          // `say` runs visemelab-say, which hands what it does not serve to the commands.
+          "say --help", "say", "say hi --project /nonexistent.vlproj --out x.json", "say hi --frobnicate"}) {
         const CliResult launcher = run(kLauncher, arguments);
         const CliResult commands = run(kCommands, arguments);
         EXPECT_EQ(launcher.exitCode, commands.exitCode) << arguments;

@@ -211,6 +211,56 @@ TEST_F(SayCli, StdinServesOneJsonLinePerSentenceAsSayWould) {
     EXPECT_EQ(test::runCli("say --stdin --wav x.wav --project " + sampleProject() + " --out -").exitCode, 2);
 }
 
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kSanitized = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr bool kSanitized = true;
+#else
+constexpr bool kSanitized = false;
+#endif
+#else
+constexpr bool kSanitized = false;
+#endif
+
+// `visemelab say` runs the lean visemelab-say (app/cli/SayMain.cpp): a sentence on a project in the
+// speech cache is served without loading the libraries the commands link (glibc's LD_DEBUG names
+// every library a process loads); a miss is handed to the commands, which fill the cache. Both answer
+// the same, also with the standard output as the output (`--stdin --out -`, taken and given back).
+TEST_F(SayCli, ACachedSentenceLoadsNoLibraryOfTheCommands) {
+    const std::string cache = "VISEMELAB_CACHE_DIR=" + quotedPath(dir / "cache") + " ";
+    const std::string say = "say 'Paper birds move in the wind.' --project " + sampleProject() + " --out ";
+    const auto miss = test::runCliWith(cache + "LD_DEBUG=libs ", say + quotedPath(dir / "miss.json"));
+    ASSERT_EQ(miss.exitCode, 0) << miss.output;
+    EXPECT_NE(miss.output.find("libOpenMeshCore"), std::string::npos) << "the commands computed the faces";
+    const auto hit = test::runCliWith(cache + "LD_DEBUG=libs ", say + quotedPath(dir / "hit.json"));
+    ASSERT_EQ(hit.exitCode, 0) << hit.output;
+    EXPECT_NE(hit.output.find("libespeak-ng"), std::string::npos);
+    for (const char* library : {"libOpenMeshCore", "libtbb", "libdraco", "libtinygltf"})
+        EXPECT_EQ(hit.output.find(library), std::string::npos) << library << " loaded for a cached sentence";
+    if (!kSanitized) { // the sanitizers' runtimes load libstdc++ themselves
+        EXPECT_EQ(hit.output.find("libstdc++"), std::string::npos)
+            << "libstdc++ loaded for a cached sentence";
+    }
+    auto track = nlohmann::json::parse(readFileToString(dir / "hit.json"));
+    auto reference = nlohmann::json::parse(readFileToString(dir / "miss.json"));
+    track.erase("metadata");
+    reference.erase("metadata");
+    EXPECT_EQ(track, reference);
+
+    const std::string serve = "printf 'Hello world\\n' | " + cache;
+    const std::string lines = "say --stdin --project " + sampleProject() + " --out -";
+    const auto served = test::runCliWith(serve, lines);
+    EXPECT_EQ(served.exitCode, 0) << served.output;
+    EXPECT_EQ(served.output.rfind("{\"line\":1,\"track\":", 0), 0u) << served.output;
+    const auto servedMiss =
+        test::runCliWith(serve.substr(0, serve.size() - cache.size()) +
+                             "VISEMELAB_CACHE_DIR=" + quotedPath(dir / "other-cache") + " ",
+                         lines);
+    EXPECT_EQ(servedMiss.exitCode, 0) << servedMiss.output;
+    EXPECT_EQ(servedMiss.output, served.output);
+}
+
 // The speech cache (core/project/SpeechCache.h): the second call reads the faces from the cache and
 // writes the same bytes as a call without it; a mesh edited between calls is seen at once.
 TEST_F(SayCli, TheSpeechCacheChangesNoByteAndSeesAnEditedMesh) {

@@ -7,7 +7,10 @@
 #include "core/project/Project.h"
 #include "tests/project/ProjectTestUtil.h"
 
+#include <algorithm>
+#include <chrono>
 #include <gtest/gtest.h>
+#include <thread>
 
 namespace vl {
 namespace {
@@ -35,6 +38,21 @@ void expectSameFaces(const ProjectSpeechFaces& got, const std::filesystem::path&
     expectSameModel(got.faces.reduced, expected.reduced);
     EXPECT_EQ(got.faces.weights, expected.weights);
     EXPECT_FALSE(got.metres);
+    // The error basis, read back from the entry or made with it, is the one the faces give.
+    ASSERT_TRUE(got.basis);
+    const SpeechErrorBasis basis(expected.full, expected.reduced, expected.weights);
+    const SpeechErrorBasis::Stored a = got.basis->stored(), b = basis.stored();
+    EXPECT_EQ(a.mouth, b.mouth);
+    EXPECT_EQ(a.gram, b.gram);
+    EXPECT_EQ(a.lengths, b.lengths);
+    ASSERT_EQ(got.basis->vectorCount(), basis.vectorCount());
+    ASSERT_EQ(got.basis->paddedSize(), basis.paddedSize());
+    EXPECT_EQ(got.basis->mouthWeights(), basis.mouthWeights());
+    for (std::size_t v = 0; v < basis.vectorCount(); ++v)
+        for (int c = 0; c < 3; ++c)
+            EXPECT_TRUE(std::equal(basis.coordinate(v, c), basis.coordinate(v, c) + basis.paddedSize(),
+                                   got.basis->coordinate(v, c)))
+                << "vector " << v << ", coordinate " << c;
 }
 
 // The bundled sample copied into a scratch folder, with a cache folder beside it.
@@ -84,6 +102,30 @@ TEST(SpeechCache, ChangedBytesOfAMeshOrOfTheProjectAreAMiss) {
     EXPECT_FALSE(cachedProjectSpeechFaces(s.project, nullptr, s.cache).fromCache);
     EXPECT_TRUE(cachedProjectSpeechFaces(s.project, nullptr, s.cache).fromCache);
     EXPECT_EQ(s.entries().size(), 1u); // one entry per project and map, replaced
+}
+
+// Inputs last changed well before the entry was written are checked by their stat stamp, not their
+// bytes; a later edit of the same size moves the file's change time, and is a miss.
+TEST(SpeechCache, AnEditOfTheSameSizeIsAMissAfterTheStampsAreTrusted) {
+    const SampleCopy s;
+    std::this_thread::sleep_for(std::chrono::milliseconds(2100)); // past the racy margin (2 s)
+    EXPECT_FALSE(cachedProjectSpeechFaces(s.project, nullptr, s.cache).fromCache);
+    EXPECT_TRUE(cachedProjectSpeechFaces(s.project, nullptr, s.cache).fromCache);
+    const auto pp = s.project.parent_path() / "PP.obj";
+    std::string obj = readFileToString(pp);
+    const auto v = obj.find("\nv ");
+    ASSERT_NE(v, std::string::npos);
+    const std::size_t digit = obj.find_first_of("123456789", v + 3); // one digit of a vertex, same size
+    ASSERT_NE(digit, std::string::npos);
+    obj[digit] = obj[digit] == '9' ? '1' : char(obj[digit] + 1);
+    const auto size = std::filesystem::file_size(pp);
+    const auto modified = std::filesystem::last_write_time(pp);
+    test::writeText(pp, obj);
+    std::filesystem::last_write_time(pp, modified); // the edit hides its size and time; not its ctime
+    ASSERT_EQ(std::filesystem::file_size(pp), size);
+    const ProjectSpeechFaces edited = cachedProjectSpeechFaces(s.project, nullptr, s.cache);
+    EXPECT_FALSE(edited.fromCache);
+    expectSameFaces(edited, s.project);
 }
 
 TEST(SpeechCache, AnotherMapIsAnotherEntry) {

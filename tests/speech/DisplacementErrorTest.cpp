@@ -163,3 +163,35 @@ TEST(DisplacementError, RefusesABasisOfOtherFaces) {
     EXPECT_THROW(measureDisplacementError(basis, full, reduced, 30.0, {}), InputError);
     EXPECT_THROW(measureUtteranceError(basis, full, reduced, 30.0), InputError);
 }
+
+// A basis taken back from its stored parts (the speech cache keeps them) is the basis itself; parts
+// that do not fit the faces are refused.
+TEST(DisplacementError, AStoredBasisIsTheBasisAndMustFitItsFaces) {
+    const auto m = test::speechModels(5, {0, 1, 1, 2, 0}, 23);
+    std::vector<double> weights(m.set.vertexCount(), 0.0);
+    for (std::size_t v = 0; v < weights.size(); v += 2) weights[v] = 0.5 + double(v);
+    const SpeechErrorBasis basis(m.full, m.reduced, weights);
+    const SpeechErrorBasis::Stored stored = basis.stored();
+    const SpeechErrorBasis back(m.full, m.reduced, weights, stored);
+    const SpeechErrorBasis::Stored again = back.stored();
+    EXPECT_EQ(again.mouth, stored.mouth);
+    EXPECT_EQ(again.gram, stored.gram);
+    EXPECT_EQ(again.lengths, stored.lengths);
+    EXPECT_EQ(back.mouthWeights(), basis.mouthWeights());
+    EXPECT_EQ(back.totalWeight(), basis.totalWeight());
+    ASSERT_EQ(back.vectorCount(), basis.vectorCount());
+    for (std::size_t a = 0; a < basis.vectorCount(); ++a)
+        for (int c = 0; c < 3; ++c)
+            for (std::size_t v = 0; v < basis.paddedSize(); ++v)
+                ASSERT_EQ(back.coordinate(a, c)[v], basis.coordinate(a, c)[v]) << a << " " << c << " " << v;
+
+    auto wrong = stored;
+    wrong.mouth.front() = 1; // a vertex of zero weight
+    EXPECT_THROW(SpeechErrorBasis(m.full, m.reduced, weights, wrong), InputError);
+    wrong = stored;
+    wrong.gram.pop_back();
+    EXPECT_THROW(SpeechErrorBasis(m.full, m.reduced, weights, wrong), InputError);
+    wrong = stored;
+    wrong.lengths.pop_back();
+    EXPECT_THROW(SpeechErrorBasis(m.full, m.reduced, weights, wrong), InputError);
+}
