@@ -50,13 +50,22 @@ base = ["--project", project, "--panel", "Deformation", "--size", "1600", "1000"
 # starts (and the timed frames: idle runs wait for the same frames, without the mouse).
 DRIVER = r"""
 editor=$1; x0=$2; x1=$3; y=$4; started=$5; probe=$6; shift 6
-# Waits (at most 120 s) until the probe satisfies a Python condition on d (the probe's JSON).
+# Waits (at most 120 s, and while the editor runs) until the probe satisfies a Python condition on
+# d (the probe's JSON).
 until_probe() {
-  python3 - "$probe" "$1" <<'WAIT'
-import json, sys, time
-path, condition = sys.argv[1:3]
+  python3 - "$probe" "$1" $pid <<'WAIT'
+import json, os, sys, time
+path, condition, pid = sys.argv[1], sys.argv[2], int(sys.argv[3])
 end = time.time() + 120
-while time.time() < end:
+
+def running():  # an editor that exited stays a zombie until the driver waits for it
+    try:
+        with open("/proc/%d/stat" % pid) as f:
+            return f.read().rsplit(")", 1)[1].split()[0] != "Z"
+    except OSError:
+        return False
+
+while time.time() < end and running():
     try:
         with open(path) as f:
             d = json.load(f)
@@ -94,7 +103,7 @@ wait $pid
 
 # Frames an editor renders before the drag starts (the steps above): the editor stops after a frame
 # count, so each run gets these on top of the frames to time.
-PRESS_FRAMES = 60
+PRESS_FRAMES = 150
 
 def run(editor, drag, frame_count, extra=(), env=None):
     points = [str(v) for v in drag] if drag else ["none", "none", "none"]
