@@ -123,7 +123,8 @@ struct MonkeyPanel {
     int minimum; // about half the controls clicked on 2026-11-29 (215 in all): fewer means the walk broke off
 };
 
-// The test's name in gtest's and ctest's listings (not the struct's bytes).
+// The parameter as gtest lists it: gtest_discover_tests names the ctest entries
+// EveryPanel/EditorPanelClicks.EveryControlSurvivesAClick/<panel> from it (tests/TestCosts.cmake).
 void PrintTo(const MonkeyPanel& panel, std::ostream* out) {
     *out << panel.panel;
 }
@@ -200,8 +201,7 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(MonkeyPanel{"Visemes", "Visemes", 20}, MonkeyPanel{"Freq.", "Frequencies", 20},
                       MonkeyPanel{"Weights", "Weights", 13}, MonkeyPanel{"Deform", "Deformation", 20},
                       MonkeyPanel{"Refine", "Refinement", 15}, MonkeyPanel{"Reduce", "Reduction", 14},
-                      MonkeyPanel{"Export", "Export", 8}),
-    [](const ::testing::TestParamInfo<MonkeyPanel>& panel) { return std::string(panel.param.panel); });
+                      MonkeyPanel{"Export", "Export", 8}));
 
 // Painting weights with a real drag over the 3D view: the Weights panel's brush, one undo step.
 TEST(EditorClicks, PaintingWeightsWithARealDrag) {
