@@ -6,12 +6,15 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <map>
 
 #include <optional>
+#include <ostream>
 #include <set>
 #include <string>
 #include <tuple>
@@ -19,6 +22,19 @@
 
 namespace vl::test {
 namespace {
+
+// Closes whatever a click opened (a combo, a file dialog, a confirmation popup): Cancel when the
+// popup has one, else Escape; at most three levels.
+void closeWhatTheClickOpened(GuiDriver& gui) {
+    for (int i = 0;
+         i < 3 && (gui.report()["popup_open"].get<bool>() || gui.document()["file_dialog_open"].get<bool>());
+         ++i) {
+        if (const auto cancel = gui.find("Cancel", "button"))
+            gui.click(*cancel);
+        else
+            gui.key("Escape");
+    }
+}
 
 // The report of issue 14: on the Refine tab, clicking "normals" crashed the editor (a reference to
 // the face held across the commit of the new settings).
@@ -98,80 +114,94 @@ TEST(EditorClicks, RefineTabSlidersAndButtons) {
 }
 
 // Monkey test over every panel: every visible control of the side panel is clicked once (popups
-// and dialogs it opens are closed with Escape), scrolling the panel to reach the rest.
-TEST(EditorClicks, EveryControlOfEveryPanelSurvivesAClick) {
+// and dialogs it opens are closed with Escape), scrolling the panel to reach the rest. One test per
+// panel, each on its own editor: seven ctest entries that two ctest jobs can run side by side
+// (as one test it took ~170 s and ended the suite's run alone).
+struct MonkeyPanel {
+    const char* tab;   // the tab's label
+    const char* panel; // the panel's name (--panel, the probe's "panel")
+    int minimum; // about half the controls clicked on 2026-11-29 (215 in all): fewer means the walk broke off
+};
+
+// The parameter as gtest lists it: gtest_discover_tests names the ctest entries
+// EveryPanel/EditorPanelClicks.EveryControlSurvivesAClick/<panel> from it (tests/TestCosts.cmake).
+void PrintTo(const MonkeyPanel& panel, std::ostream* out) {
+    *out << panel.panel;
+}
+
+class EditorPanelClicks : public ::testing::TestWithParam<MonkeyPanel> {};
+
+TEST_P(EditorPanelClicks, EveryControlSurvivesAClick) {
     REQUIRE_GUI_TOOLS();
-    GuiDriver gui({"--sample"});
+    const auto& [tab, panel, minimum] = GetParam();
+    GuiDriver gui({"--sample", "--panel", panel});
     gui.waitIdle();
-    const std::pair<std::string, std::string> tabs[] = {
-        {"Visemes", "Visemes"},   {"Freq.", "Frequencies"}, {"Weights", "Weights"}, {"Deform", "Deformation"},
-        {"Refine", "Refinement"}, {"Reduce", "Reduction"},  {"Export", "Export"}};
-    int clicked = 0;
-    for (const auto& [tab, panel] : tabs) {
-        gui.click(gui.control(tab, "tab"));
+    ASSERT_EQ(gui.document()["panel"], panel);
+    if (const auto load = gui.find("Load bundled face", "button")) { // face-only panels
+        gui.click(*load);
         gui.waitIdle();
-        if (const auto load = gui.find("Load bundled face", "button")) { // face-only panels
-            gui.click(*load);
-            gui.waitIdle();
+    }
+    int clicked = 0;
+    std::set<std::string> done;
+    for (int pass = 0; pass < 40; ++pass) {
+        // The next visible control of the side panel not clicked yet (labels + kind + rank).
+        std::optional<nlohmann::json> next;
+        std::string nextKey;
+        std::map<std::string, int> rank;
+        for (const auto& control : gui.report()["controls"]) {
+            if (control["window"] != "##side" || control["kind"] == "tab") continue;
+            const std::string key =
+                control["kind"].get<std::string>() + "|" + control["label"].get<std::string>();
+            const std::string ranked = key + "|" + std::to_string(rank[key]++);
+            if (!control["visible"].get<bool>() || done.count(ranked)) continue;
+            next = control;
+            nextKey = ranked;
+            break;
         }
-        std::set<std::string> done;
-        for (int pass = 0; pass < 40; ++pass) {
-            // The next visible control of the side panel not clicked yet (labels + kind + rank).
-            std::optional<nlohmann::json> next;
-            std::string nextKey;
-            std::map<std::string, int> rank;
+        if (!next) {
+            // Scroll the panel body once to reveal what lies below; stop when nothing new shows.
+            const auto tabControl = gui.control(tab, "tab");
+            gui.scroll(tabControl["x"].get<double>() + 100, 400, 5);
+            bool fresh = false;
+            std::map<std::string, int> rank2;
             for (const auto& control : gui.report()["controls"]) {
                 if (control["window"] != "##side" || control["kind"] == "tab") continue;
                 const std::string key =
                     control["kind"].get<std::string>() + "|" + control["label"].get<std::string>();
-                const std::string ranked = key + "|" + std::to_string(rank[key]++);
-                if (!control["visible"].get<bool>() || done.count(ranked)) continue;
-                next = control;
-                nextKey = ranked;
-                break;
+                if (control["visible"].get<bool>() && !done.count(key + "|" + std::to_string(rank2[key]++)))
+                    fresh = true;
             }
-            if (!next) {
-                // Scroll the panel body once to reveal what lies below; stop when nothing new shows.
-                const auto tabControl = gui.control(tab, "tab");
-                gui.scroll(tabControl["x"].get<double>() + 100, 400, 5);
-                bool fresh = false;
-                std::map<std::string, int> rank2;
-                for (const auto& control : gui.report()["controls"]) {
-                    if (control["window"] != "##side" || control["kind"] == "tab") continue;
-                    const std::string key =
-                        control["kind"].get<std::string>() + "|" + control["label"].get<std::string>();
-                    if (control["visible"].get<bool>() &&
-                        !done.count(key + "|" + std::to_string(rank2[key]++)))
-                        fresh = true;
-                }
-                if (!fresh) break;
-                continue;
-            }
-            done.insert(nextKey);
-            gui.click(*next, next->value("kind", "") == "slider" ? 0.3 : 0.5);
-            EXPECT_ALIVE(gui) << " after clicking " << nextKey << " on " << tab;
-            ++clicked;
-            gui.waitIdle(120.0);
-            // Close whatever the click opened (a combo, a file dialog, a confirmation popup).
-            for (int i = 0; i < 3 && (gui.report()["popup_open"].get<bool>() ||
-                                      gui.document()["file_dialog_open"].get<bool>());
-                 ++i) {
-                if (const auto cancel = gui.find("Cancel", "button"))
-                    gui.click(*cancel);
-                else
-                    gui.key("Escape");
-            }
-            EXPECT_ALIVE(gui);
-            // The panel may have changed (a removed viseme, a new tab): keep clicking on this tab.
-            if (gui.document()["panel"] != panel) {
-                const auto tabControl = gui.find(tab, "tab");
-                if (tabControl) gui.click(*tabControl);
-            }
+            if (!fresh) break;
+            continue;
+        }
+        done.insert(nextKey);
+        gui.click(*next, next->value("kind", "") == "slider" ? 0.3 : 0.5);
+        EXPECT_ALIVE(gui) << " after clicking " << nextKey << " on " << tab;
+        ++clicked;
+        // As waitIdle(120), less its first frame: click() has waited a frame after the release already.
+        for (const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+             gui.document().value("busy", false) && std::chrono::steady_clock::now() < deadline;)
+            gui.waitFrames(1);
+        gui.waitFrames(1);
+        closeWhatTheClickOpened(gui);
+        EXPECT_ALIVE(gui);
+        // The panel may have changed (a removed viseme, a new tab): keep clicking on this tab.
+        if (gui.document()["panel"] != panel) {
+            const auto tabControl = gui.find(tab, "tab");
+            if (tabControl) gui.click(*tabControl);
         }
     }
-    EXPECT_GT(clicked, 60) << "too few controls reached";
+    std::printf("%s: %d controls clicked\n", panel, clicked);
+    EXPECT_GE(clicked, minimum) << "too few controls reached on " << panel;
     EXPECT_ALIVE(gui);
 }
+
+INSTANTIATE_TEST_SUITE_P(
+    EveryPanel, EditorPanelClicks,
+    ::testing::Values(MonkeyPanel{"Visemes", "Visemes", 20}, MonkeyPanel{"Freq.", "Frequencies", 20},
+                      MonkeyPanel{"Weights", "Weights", 13}, MonkeyPanel{"Deform", "Deformation", 20},
+                      MonkeyPanel{"Refine", "Refinement", 15}, MonkeyPanel{"Reduce", "Reduction", 14},
+                      MonkeyPanel{"Export", "Export", 8}));
 
 // Painting weights with a real drag over the 3D view: the Weights panel's brush, one undo step.
 TEST(EditorClicks, PaintingWeightsWithARealDrag) {
@@ -230,14 +260,7 @@ TEST(EditorClicks, EveryMenuItem) {
             gui.click(*entry);
             EXPECT_ALIVE(gui) << " after " << menu << " > " << item;
             gui.waitIdle(120.0);
-            for (int i = 0; i < 3 && (gui.report()["popup_open"].get<bool>() ||
-                                      gui.document()["file_dialog_open"].get<bool>());
-                 ++i) {
-                if (const auto cancel = gui.find("Cancel", "button"))
-                    gui.click(*cancel);
-                else
-                    gui.key("Escape");
-            }
+            closeWhatTheClickOpened(gui);
             EXPECT_ALIVE(gui);
         }
     }
