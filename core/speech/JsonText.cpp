@@ -79,6 +79,26 @@ void appendNumber(std::string& text, double value) {
     text.append(out, std::size_t(o - out));
 }
 
+void appendString(std::string& out, std::string_view text) {
+    // Printable ASCII without a quote or backslash is its own JSON text: most of a track's strings
+    // (viseme and phoneme names), without a Json value and serializer each. Anything else is
+    // escaped, and UTF-8 checked, by nlohmann.
+    for (const char c : text)
+        if (c < 0x20 || c > 0x7e || c == '"' || c == '\\') {
+            out += Json(std::string(text)).dump();
+            return;
+        }
+    out += '"';
+    out += text;
+    out += '"';
+}
+
+std::string string(std::string_view text) {
+    std::string out;
+    appendString(out, text);
+    return out;
+}
+
 std::string number(double value) {
     std::string text;
     appendNumber(text, value);

@@ -61,6 +61,16 @@ TEST(JsonText, NumbersAreLaidOutAsNlohmannDumpsThem) {
 // Random doubles of every magnitude a track holds (and far beyond): the text reads back as the same
 // double to the bit, and is nlohmann's text, or (where Grisu2's digits are not the shortest) no
 // longer than it and read as the same double.
+TEST(JsonText, StringsAreEscapedAsNlohmannDumpsThem) {
+    const std::string texts[] = {"",     "sil",  "PP merged", "a\"b",      "back\\slash",  "tab\tnew\nline",
+                                 "\x01", "\x7f", "~ }{",      "caf\u00e9", "\u65e5\u672c", "/slash"};
+    for (const std::string& text : texts) EXPECT_EQ(json_text::string(text), Json(text).dump()) << text;
+    std::string out = "[";
+    json_text::appendString(out, "x y");
+    EXPECT_EQ(out, "[\"x y\"");
+    EXPECT_ANY_THROW(json_text::string("bad \xff UTF-8")); // as nlohmann: not silently written
+}
+
 TEST(JsonText, RandomNumbersReadBackExactly) {
     std::mt19937_64 rng(33);
     std::uniform_real_distribution<double> mantissa(-10.0, 10.0);
