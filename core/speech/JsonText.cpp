@@ -12,6 +12,21 @@ void appendNumber(std::string& text, double value) {
         text += "null";
         return;
     }
+    // Where nlohmann writes the digits in fixed notation (decimal exponent -4 < n <= 15, n counting
+    // the digits before the point), std::to_chars's fixed form has the same shortest digits in the
+    // same place, but for the ".0" nlohmann gives whole numbers. The bounds are exact: a double is
+    // >= 1e-4 exactly when its shortest digits are (the shortest text reads back as the double, and
+    // rounding is monotone), and likewise < 1e15.
+    if (const double magnitude = std::fabs(value); magnitude >= 1e-4 && magnitude < 1e15) {
+        char fixed[40];
+        const auto [last, error] =
+            std::to_chars(fixed, fixed + sizeof fixed, value, std::chars_format::fixed);
+        if (error == std::errc()) {
+            text.append(fixed, last);
+            if (!std::memchr(fixed, '.', std::size_t(last - fixed))) text += ".0";
+            return;
+        }
+    }
     // Shortest round-trip digits in scientific form, d[.ddd]e±XX, then laid out as nlohmann does
     // (detail::dtoa_impl::format_buffer, min_exp -4, max_exp 15). Written into one buffer: a track
     // formats thousands of numbers.
