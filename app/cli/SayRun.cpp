@@ -11,7 +11,6 @@
 #include "core/common/AtomicFileWriter.h"
 #include "core/common/Error.h"
 #include "core/common/OutputPolicy.h"
-#include "core/io/JsonWrite.h"
 #include "core/phonetics/CorpusText.h"
 #include "core/phonetics/EspeakSynthesizer.h"
 #include "core/speech/DisplacementError.h"
@@ -137,8 +136,9 @@ int sayLines(const SayOptions& o, const SpeakingFace& face, SpeechSynthesizer& s
             requireSpeech(utterance, "stdin:" + std::to_string(lineNumber), "the line");
             const SpokenTrack spoken = spokenTrack(face, utterance, trackOptions(o, interpolation), line);
             // Spliced, not parsed again: the track is valid JSON text of our own writer.
-            text = "{\"line\":" + std::to_string(lineNumber) +
-                   ",\"track\":" + compactJsonText(formatTrack(spoken.file, format, o.out)) + "}\n";
+            text = "{\"line\":" + std::to_string(lineNumber) + ",\"track\":";
+            text += formatTrackLine(spoken.file, format, o.out);
+            text += "}\n";
         } catch (const InputError& e) {
             const nlohmann::ordered_json answer{{"line", lineNumber}, {"error", e.what()}};
             text = answer.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";

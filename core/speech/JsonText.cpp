@@ -12,6 +12,21 @@ void appendNumber(std::string& text, double value) {
         text += "null";
         return;
     }
+    // Where nlohmann writes the digits in fixed notation (decimal exponent -4 < n <= 15, n counting
+    // the digits before the point), std::to_chars's fixed form has the same shortest digits in the
+    // same place, but for the ".0" nlohmann gives whole numbers. The bounds are exact: a double is
+    // >= 1e-4 exactly when its shortest digits are (the shortest text reads back as the double, and
+    // rounding is monotone), and likewise < 1e15.
+    if (const double magnitude = std::fabs(value); magnitude >= 1e-4 && magnitude < 1e15) {
+        char fixed[40];
+        const auto [last, error] =
+            std::to_chars(fixed, fixed + sizeof fixed, value, std::chars_format::fixed);
+        if (error == std::errc()) {
+            text.append(fixed, last);
+            if (!std::memchr(fixed, '.', std::size_t(last - fixed))) text += ".0";
+            return;
+        }
+    }
     // Shortest round-trip digits in scientific form, d[.ddd]e±XX, then laid out as nlohmann does
     // (detail::dtoa_impl::format_buffer, min_exp -4, max_exp 15). Written into one buffer: a track
     // formats thousands of numbers.
@@ -77,6 +92,26 @@ void appendNumber(std::string& text, double value) {
         o = std::to_chars(o, out + sizeof out, magnitude).ptr;
     }
     text.append(out, std::size_t(o - out));
+}
+
+void appendString(std::string& out, std::string_view text) {
+    // Printable ASCII without a quote or backslash is its own JSON text: most of a track's strings
+    // (viseme and phoneme names), without a Json value and serializer each. Anything else is
+    // escaped, and UTF-8 checked, by nlohmann.
+    for (const char c : text)
+        if (c < 0x20 || c > 0x7e || c == '"' || c == '\\') {
+            out += Json(std::string(text)).dump();
+            return;
+        }
+    out += '"';
+    out += text;
+    out += '"';
+}
+
+std::string string(std::string_view text) {
+    std::string out;
+    appendString(out, text);
+    return out;
 }
 
 std::string number(double value) {

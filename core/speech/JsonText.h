@@ -14,8 +14,8 @@ namespace vl::json_text {
 std::string number(double value);
 void appendNumber(std::string& text, double value); // text += number(value)
 
-inline std::string string(std::string_view text) {
-    return Json(std::string(text)).dump();
-}
+// `text` quoted and escaped as nlohmann's dump (Json(text).dump()): throws on invalid UTF-8.
+std::string string(std::string_view text);
+void appendString(std::string& out, std::string_view text); // out += string(text)
 
 } // namespace vl::json_text

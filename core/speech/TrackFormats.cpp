@@ -3,6 +3,7 @@
 #include "core/common/Error.h"
 #include "core/common/JsonParse.h"
 #include "core/gltf/TargetNames.h"
+#include "core/io/JsonWrite.h"
 #include "core/speech/JsonText.h"
 #include "core/speech/VisemeTrack.h"
 
@@ -124,6 +125,11 @@ std::string formatTrack(const SpeechTrackFile& track, TrackFormat format, std::s
         break;
     }
     return formatTrackJson(track);
+}
+
+std::string formatTrackLine(const SpeechTrackFile& track, TrackFormat format, std::string_view where) {
+    return format == TrackFormat::Oculus ? formatTrackJsonLine(track)
+                                         : compactJsonText(formatTrack(track, format, where));
 }
 
 } // namespace vl

@@ -34,5 +34,7 @@ std::string talkingHeadVisemeOfOculus(std::string_view oculus);
 // The track's full-face cues (mouthCues) in the format. Throws InputError at `where` naming the
 // first cue whose value has no shape in the format (a viseme that is neither Oculus nor Rhubarb).
 std::string formatTrack(const SpeechTrackFile& track, TrackFormat format, std::string_view where);
+// formatTrack's text on one line (compactJsonText), for JSON Lines.
+std::string formatTrackLine(const SpeechTrackFile& track, TrackFormat format, std::string_view where);
 
 } // namespace vl

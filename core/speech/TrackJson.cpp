@@ -9,26 +9,61 @@ namespace vl {
 
 namespace {
 
+// The track's text, appended into one buffer. The separators are written as the pretty layout's
+// literals (one cue a line); `compact` drops their spaces and newlines as they are appended, which
+// gives compactJsonText(pretty) without a second pass (`say --stdin` answers every sentence on one
+// line). Spaces inside keys and strings cannot be dropped: keys have none, strings are appended
+// escaped, not as literals.
+class TrackWriter {
+  public:
+    explicit TrackWriter(bool compact) : compact_(compact) {}
+
+    TrackWriter& operator<<(std::string_view literal) {
+        if (!compact_) {
+            out_ += literal;
+            return *this;
+        }
+        for (const char c : literal)
+            if (c != ' ' && c != '\n') out_ += c;
+        return *this;
+    }
+    void number(double value) { json_text::appendNumber(out_, value); }
+    void integer(long long value) { out_ += std::to_string(value); }
+    void string(std::string_view text) { json_text::appendString(out_, text); }
+    // The literal before a value, then the value.
+    void number(std::string_view before, double value) { *this << before, number(value); }
+    void integer(std::string_view before, long long value) { *this << before, integer(value); }
+    void string(std::string_view before, std::string_view text) { *this << before, string(text); }
+    void reserve(std::size_t size) { out_.reserve(size); }
+    std::string take() { return std::move(out_); }
+
+  private:
+    std::string out_;
+    bool compact_;
+};
+
 // [{"start": s, "end": e, "value": v}, ...], one element per line.
 template <typename Timed, typename ValueOf>
-std::string timedArray(const std::vector<Timed>& items, ValueOf valueOf) {
-    if (items.empty()) return "[]";
-    std::string text = "[";
-    for (std::size_t i = 0; i < items.size(); ++i)
-        text += std::string(i == 0 ? "\n" : ",\n") + "    {\"start\": " + json_text::number(items[i].start) +
-                ", \"end\": " + json_text::number(items[i].end) +
-                ", \"value\": " + json_text::string(valueOf(items[i])) + "}";
-    return text + "\n  ]";
+void timedArray(TrackWriter& w, const std::vector<Timed>& items, ValueOf valueOf) {
+    if (items.empty()) {
+        w << "[]";
+        return;
+    }
+    w << "[";
+    for (std::size_t i = 0; i < items.size(); ++i) {
+        w << (i == 0 ? "\n" : ",\n") << "    {\"start\": ";
+        w.number(items[i].start);
+        w.number(", \"end\": ", items[i].end);
+        w.string(", \"value\": ", valueOf(items[i]));
+        w << "}";
+    }
+    w << "\n  ]";
 }
 
-std::string numberArray(const std::vector<double>& values) {
-    std::string text = "[";
-    text.reserve(values.size() * 22);
-    for (std::size_t i = 0; i < values.size(); ++i) {
-        if (i > 0) text += ", ";
-        json_text::appendNumber(text, values[i]);
-    }
-    return text + "]";
+void numberArray(TrackWriter& w, const std::vector<double>& values) {
+    w << "[";
+    for (std::size_t i = 0; i < values.size(); ++i) w.number(i > 0 ? ", " : "", values[i]);
+    w << "]";
 }
 
 struct TimedElement {
@@ -62,30 +97,36 @@ double optionalNumber(const JsonNode& object, std::string_view key) {
     return object.has(key) ? object[key].nonNegativeNumber() : 0.0;
 }
 
-std::string facePlaybackJson(const FacePlayback& face) {
-    std::string text = "{\"keys\": [";
+void facePlaybackJson(TrackWriter& w, const FacePlayback& face) {
+    w << "{\"keys\": [";
     for (std::size_t k = 0; k < face.keys.size(); ++k) {
-        text += std::string(k == 0 ? "\n      " : ",\n      ") +
-                "{\"name\": " + json_text::string(face.keys[k].name) + ", \"members\": [";
+        w << (k == 0 ? "\n      " : ",\n      ") << "{\"name\": ";
+        w.string(face.keys[k].name);
+        w << ", \"members\": [";
         for (std::size_t j = 0; j < face.keys[k].members.size(); ++j)
-            text += (j == 0 ? "" : ", ") + json_text::string(face.keys[k].members[j]);
-        text += "]}";
+            w.string(j > 0 ? ", " : "", face.keys[k].members[j]);
+        w << "]}";
     }
-    text += "],\n    \"keyframes\": [";
+    w << "],\n    \"keyframes\": [";
     for (std::size_t i = 0; i < face.keyframes.size(); ++i) {
         const PlaybackKeyframe& k = face.keyframes[i];
-        text += std::string(i == 0 ? "" : (i % 4 == 0 ? ",\n      " : ", ")) + "[" +
-                json_text::number(k.time) + ", " + std::to_string(k.key) + ", " +
-                json_text::number(k.dominance) + "]";
+        w << (i == 0 ? "" : (i % 4 == 0 ? ",\n      " : ", ")) << "[";
+        w.number(k.time);
+        w.integer(", ", k.key);
+        w.number(", ", k.dominance);
+        w << "]";
     }
-    return text + "]}";
+    w << "]}";
 }
 
-std::string playbackJson(const TrackPlayback& playback) {
-    return "{\"interpolation\": " + json_text::string(playback.interpolation) +
-           ", \"dominanceRate\": " + json_text::number(playback.dominanceRate) +
-           ",\n    \"full\": " + facePlaybackJson(playback.full) +
-           ",\n    \"reduced\": " + facePlaybackJson(playback.reduced) + "}";
+void playbackJson(TrackWriter& w, const TrackPlayback& playback) {
+    w.string("{\"interpolation\": ", playback.interpolation);
+    w.number(", \"dominanceRate\": ", playback.dominanceRate);
+    w << ",\n    \"full\": ";
+    facePlaybackJson(w, playback.full);
+    w << ",\n    \"reduced\": ";
+    facePlaybackJson(w, playback.reduced);
+    w << "}";
 }
 
 FacePlayback readFacePlayback(const JsonNode& node) {
@@ -136,51 +177,87 @@ TrackDisplacementError readDisplacement(const JsonNode& error) {
 
 } // namespace
 
-std::string formatTrackJson(const SpeechTrackFile& track) {
+namespace {
+
+std::string writeTrackJson(const SpeechTrackFile& track, bool compact) {
+    TrackWriter w(compact);
+    // Room for the whole text at once (about 40 characters a cue, 20 a number).
+    std::size_t numbers = track.errorCurve.size() * 4;
+    if (track.error)
+        numbers += track.error->frames.size() +
+                   (track.error->displacement ? 2 * track.error->displacement->rmsFrames.size() : 0);
+    if (track.playback)
+        numbers += 2 * (track.playback->full.keyframes.size() + track.playback->reduced.keyframes.size());
+    w.reserve(1024 + 72 * (track.mouthCues.size() + track.reducedCues.size() + track.phonemes.size()) +
+              24 * numbers);
     const TrackMetadata& m = track.metadata;
-    std::string text = "{\n  \"metadata\": {\n    \"soundFile\": " + json_text::string(m.soundFile) +
-                       ",\n    \"duration\": " + json_text::number(m.duration) +
-                       ",\n    \"text\": " + json_text::string(m.text) +
-                       ",\n    \"source\": " + json_text::string(m.source) +
-                       ",\n    \"voice\": " + json_text::string(m.voice) +
-                       ",\n    \"wordsPerMinute\": " + std::to_string(m.wordsPerMinute) +
-                       ",\n    \"project\": " + json_text::string(m.project) +
-                       ",\n    \"interpolation\": " + json_text::string(m.interpolation) +
-                       ",\n    \"fps\": " + json_text::number(m.fps) +
-                       ",\n    \"generator\": \"VisemeLab\"\n  },\n";
+    w.string("{\n  \"metadata\": {\n    \"soundFile\": ", m.soundFile);
+    w.number(",\n    \"duration\": ", m.duration);
+    w.string(",\n    \"text\": ", m.text);
+    w.string(",\n    \"source\": ", m.source);
+    w.string(",\n    \"voice\": ", m.voice);
+    w.integer(",\n    \"wordsPerMinute\": ", m.wordsPerMinute);
+    w.string(",\n    \"project\": ", m.project);
+    w.string(",\n    \"interpolation\": ", m.interpolation);
+    w.number(",\n    \"fps\": ", m.fps);
+    w << ",\n    \"generator\": \"VisemeLab\"\n  },\n";
     const auto cueValue = [](const Cue& c) -> const std::string& { return c.value; };
-    text += "  \"mouthCues\": " + timedArray(track.mouthCues, cueValue) + ",\n";
-    text += "  \"reducedCues\": " + timedArray(track.reducedCues, cueValue) + ",\n";
-    text += "  \"phonemes\": " +
-            timedArray(track.phonemes, [](const TimedPhoneme& p) -> const std::string& { return p.phoneme; });
+    w << "  \"mouthCues\": ";
+    timedArray(w, track.mouthCues, cueValue);
+    w << ",\n  \"reducedCues\": ";
+    timedArray(w, track.reducedCues, cueValue);
+    w << ",\n  \"phonemes\": ";
+    timedArray(w, track.phonemes, [](const TimedPhoneme& p) -> const std::string& { return p.phoneme; });
     if (track.error) {
         const TrackError& e = *track.error;
-        text += ",\n  \"error\": {\"mean\": " + json_text::number(e.mean) +
-                ", \"max\": " + json_text::number(e.max) + ", \"maxTime\": " + json_text::number(e.maxTime) +
-                ", \"relative\": " + json_text::number(e.relative) +
-                ",\n    \"frames\": " + numberArray(e.frames);
-        if (const auto& d = e.displacement)
-            text += ",\n    \"displacementUnit\": " + json_text::string(d->unit) +
-                    ", \"displacementRms\": " + json_text::number(d->rms) +
-                    ", \"displacementMax\": " + json_text::number(d->max) +
-                    ", \"displacementMaxTime\": " + json_text::number(d->maxTime) +
-                    ",\n    \"displacementRmsFrames\": " + numberArray(d->rmsFrames) +
-                    ",\n    \"displacementMaxFrames\": " + numberArray(d->maxFrames);
-        text += "}";
+        w.number(",\n  \"error\": {\"mean\": ", e.mean);
+        w.number(", \"max\": ", e.max);
+        w.number(", \"maxTime\": ", e.maxTime);
+        w.number(", \"relative\": ", e.relative);
+        w << ",\n    \"frames\": ";
+        numberArray(w, e.frames);
+        if (const auto& d = e.displacement) {
+            w.string(",\n    \"displacementUnit\": ", d->unit);
+            w.number(", \"displacementRms\": ", d->rms);
+            w.number(", \"displacementMax\": ", d->max);
+            w.number(", \"displacementMaxTime\": ", d->maxTime);
+            w << ",\n    \"displacementRmsFrames\": ";
+            numberArray(w, d->rmsFrames);
+            w << ",\n    \"displacementMaxFrames\": ";
+            numberArray(w, d->maxFrames);
+        }
+        w << "}";
     }
     if (!track.errorCurve.empty()) {
-        text += ",\n  \"errorCurve\": [";
+        w << ",\n  \"errorCurve\": [";
         for (std::size_t i = 0; i < track.errorCurve.size(); ++i) {
             const auto& p = track.errorCurve[i];
-            text += std::string(i == 0 ? "\n" : ",\n") + "    {\"m\": " + std::to_string(p.m) +
-                    ", \"cost\": " + json_text::number(p.cost) + ", \"mean\": " + json_text::number(p.mean) +
-                    ", \"max\": " + json_text::number(p.max) +
-                    ", \"relative\": " + json_text::number(p.relative) + "}";
+            w << (i == 0 ? "\n" : ",\n") << "    {\"m\": ";
+            w.integer(p.m);
+            w.number(", \"cost\": ", p.cost);
+            w.number(", \"mean\": ", p.mean);
+            w.number(", \"max\": ", p.max);
+            w.number(", \"relative\": ", p.relative);
+            w << "}";
         }
-        text += "\n  ]";
+        w << "\n  ]";
     }
-    if (track.playback) text += ",\n  \"playback\": " + playbackJson(*track.playback);
-    return text + "\n}\n";
+    if (track.playback) {
+        w << ",\n  \"playback\": ";
+        playbackJson(w, *track.playback);
+    }
+    w << "\n}\n";
+    return w.take();
+}
+
+} // namespace
+
+std::string formatTrackJson(const SpeechTrackFile& track) {
+    return writeTrackJson(track, false);
+}
+
+std::string formatTrackJsonLine(const SpeechTrackFile& track) {
+    return writeTrackJson(track, true);
 }
 
 SpeechTrackFile parseTrackJson(std::string_view text, std::string_view source) {

@@ -67,6 +67,9 @@ struct SpeechTrackFile {
 
 // Doubles are written so that they read back exactly.
 std::string formatTrackJson(const SpeechTrackFile& track);
+// The same text on one line, without the final newline: compactJsonText(formatTrackJson(track)),
+// written directly (`say --stdin`).
+std::string formatTrackJsonLine(const SpeechTrackFile& track);
 
 // Throws InputError "<source>:<JSON path>: <what>" for malformed JSON, missing or mistyped fields,
 // cues or phonemes that are not contiguous, negative or non-finite errors. Unknown metadata and

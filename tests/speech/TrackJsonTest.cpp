@@ -1,5 +1,6 @@
 #include "core/speech/TrackJson.h"
 #include "core/common/Error.h"
+#include "core/io/JsonWrite.h"
 
 #include <gtest/gtest.h>
 
@@ -49,6 +50,26 @@ TEST(TrackJson, DisplacementErrorRoundTripsAndOlderFilesHaveNone) {
     expectError(R"({"mouthCues": [{"start": 0, "end": 1, "value": "A"}], "error": {"mean": 0, "max": 0,
                   "displacementUnit": "mm", "displacementRms": -1, "displacementMax": 0}})",
                 "/error/displacementRms");
+}
+
+// `say --stdin`'s one-line text is written directly; the reference is the pretty text compacted.
+TEST(TrackJson, TheLineIsThePrettyTextCompacted) {
+    SpeechTrackFile track = sampleTrack();
+    track.metadata.text = "Say \"a b\"\n\tand caf\u00e9 \\ {x: [1, 2]}"; // spaces, escapes, UTF-8 in strings
+    track.error->displacement =
+        TrackDisplacementError{"model units", 0.42, 1.9, 0.4, {0, 1e-5, 2}, {0, 3e20, 2}};
+    track.playback = TrackPlayback{"cubic", 12.5, {}, {}};
+    for (int i = 0; i < 9; ++i) track.playback->full.keyframes.push_back({0.1 * i, i % 3 - 1, 1.0 / (i + 1)});
+    track.playback->full.keys = {{"aa", {"aa"}}, {"PP merged", {"PP", "FF"}}};
+    track.playback->reduced = {{{"k0", {}}}, {{0.0, -1, 1.0}}};
+    const std::string line = formatTrackJsonLine(track);
+    EXPECT_EQ(line, compactJsonText(formatTrackJson(track)));
+    EXPECT_EQ(line.find('\n'), std::string::npos);
+    EXPECT_EQ(parseTrackJson(line, "line"), track);
+    track.errorCurve.clear();
+    track.error.reset();
+    track.playback.reset();
+    EXPECT_EQ(formatTrackJsonLine(track), compactJsonText(formatTrackJson(track)));
 }
 
 TEST(TrackJson, ReadsRhubarbOutput) {
