@@ -236,11 +236,13 @@ TEST_F(SayCli, ACachedSentenceLoadsNoLibraryOfTheCommands) {
     const auto hit = test::runCliWith(cache + "LD_DEBUG=libs ", say + quotedPath(dir / "hit.json"));
     ASSERT_EQ(hit.exitCode, 0) << hit.output;
     EXPECT_NE(hit.output.find("libespeak-ng"), std::string::npos);
-    for (const char* library : {"libOpenMeshCore", "libtbb", "libdraco", "libtinygltf"})
-        EXPECT_EQ(hit.output.find(library), std::string::npos) << library << " loaded for a cached sentence";
-    if (!kSanitized) { // the sanitizers' runtimes load libstdc++ themselves
-        EXPECT_EQ(hit.output.find("libstdc++"), std::string::npos)
-            << "libstdc++ loaded for a cached sentence";
+    // A sanitized build links visemelab-say as any program (app/CMakeLists.txt: the instrumentation
+    // keeps every global alive, so the lean link cannot drop the commands' libraries), and the
+    // sanitizers' runtimes load libstdc++ themselves: the libraries are checked in the release build.
+    if (!kSanitized) {
+        for (const char* library : {"libOpenMeshCore", "libtbb", "libdraco", "libtinygltf", "libstdc++"})
+            EXPECT_EQ(hit.output.find(library), std::string::npos)
+                << library << " loaded for a cached sentence";
     }
     auto track = nlohmann::json::parse(readFileToString(dir / "hit.json"));
     auto reference = nlohmann::json::parse(readFileToString(dir / "miss.json"));
