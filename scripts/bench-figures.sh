@@ -17,7 +17,7 @@ cli=build/release/app/visemelab
 trap './scripts/machine-speed.sh' EXIT
 
 echo "== BM_Reduce (bench_reduce, 5 repetitions, wall)"
-build/release/tests/bench/bench_reduce --benchmark_filter='^BM_Reduce/(16/10|20/10)$' \
+build/release/tests/bench/bench_reduce --benchmark_filter='^BM_Reduce/(16/10|20/10)/' \
   --benchmark_repetitions=5 --benchmark_format=json 2>/dev/null | python3 -c '
 import json, statistics, sys
 runs = {}

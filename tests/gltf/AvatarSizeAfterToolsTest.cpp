@@ -76,10 +76,14 @@ TEST(AvatarSizeAfterTools, ReductionsStaySmallerAfterGltfTransformMeshoptAndGltf
         {"rpm_meshopt", test::FixtureStorage::Meshopt},
         {"rpm_sparse", test::FixtureStorage::Sparse},
         {"rpm_draco", test::FixtureStorage::Draco}};
+    // The plain kind sweeps m; the other storages take the hardest case, m = n - 1 (the fewest
+    // members merged): each tool run is a process of 1-2 s (node), and the suite has a time budget.
     for (const auto& [name, storage] : storages) {
         test::AvatarFixtureOptions options;
         options.storage = storage;
-        kinds.push_back({name, test::rpmLikeAvatar(options), "", {2, 6, 14}});
+        const bool plain = storage == test::FixtureStorage::Plain;
+        kinds.push_back({name, test::rpmLikeAvatar(options), "",
+                         plain ? std::vector<int>{2, 6, 14} : std::vector<int>{14}});
     }
     kinds.push_back({"vroid_vrm0", test::vroidLikeAvatar(false), "Fcl_MTH_[AIUEO]", {2, 4}});
 
