@@ -5,6 +5,7 @@
 // must leave no debris.
 #include "tests/cli/CliRunner.h"
 #include "tests/cli/OutputFolders.h"
+#include "tests/cli/SanitizerBuild.h"
 
 #include "core/common/AtomicFile.h"
 #include "tests/gltf/AvatarFixtures.h"
@@ -29,17 +30,7 @@ const std::vector<std::string> kCalls = {"mkdir",  "openat", "write",   "writev"
 
 // LeakSanitizer cannot run under ptrace, and a sanitizer build would make hundreds of kills per
 // command take minutes: the kill tests are about the write protocol, which the release suite checks.
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kSanitizerBuild = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr bool kSanitizerBuild = true;
-#else
-constexpr bool kSanitizerBuild = false;
-#endif
-#else
-constexpr bool kSanitizerBuild = false;
-#endif
+constexpr bool kSanitizerBuild = test::kAddressSanitizer;
 
 bool straceWorks() {
     static const bool works = std::system("strace -f -o /dev/null true >/dev/null 2>&1") == 0;

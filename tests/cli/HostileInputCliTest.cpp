@@ -3,6 +3,7 @@
 // with a message naming the file, within 20 s of CPU and (outside sanitizer builds) 1.5 GiB of address
 // space, and leaves every input byte for byte as it was and no temporaries behind.
 #include "CliRunner.h"
+#include "tests/cli/SanitizerBuild.h"
 
 #include "core/common/AtomicFile.h"
 #include "core/gltf/GlbContainer.h"
@@ -24,17 +25,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kAddressSanitizer = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr bool kAddressSanitizer = true;
-#else
-constexpr bool kAddressSanitizer = false;
-#endif
-#else
-constexpr bool kAddressSanitizer = false;
-#endif
+constexpr bool kAddressSanitizer = test::kAddressSanitizer;
 
 struct HostileCase {
     std::string name; // the test's name

@@ -1,4 +1,5 @@
 #include "tests/cli/CliRunner.h"
+#include "tests/cli/SanitizerBuild.h"
 
 #include "core/common/AtomicFile.h"
 #include "core/speech/TrackJson.h"
@@ -211,17 +212,7 @@ TEST_F(SayCli, StdinServesOneJsonLinePerSentenceAsSayWould) {
     EXPECT_EQ(test::runCli("say --stdin --wav x.wav --project " + sampleProject() + " --out -").exitCode, 2);
 }
 
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kSanitized = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr bool kSanitized = true;
-#else
-constexpr bool kSanitized = false;
-#endif
-#else
-constexpr bool kSanitized = false;
-#endif
+constexpr bool kSanitized = test::kAddressSanitizer;
 
 // `visemelab say` runs the lean visemelab-say (app/cli/SayMain.cpp): a sentence on a project in the
 // speech cache is served without loading the libraries the commands link (glibc's LD_DEBUG names
