@@ -3,10 +3,9 @@
 #include "core/export/GltfExport.h"
 #include "core/project/AvatarSpeechGlb.h"
 #include "core/project/Project.h"
-#include "core/speech/DisplacementError.h"
+#include "core/speech/SpeechErrors.h"
 #include "core/speech/SpeechGltf.h"
 #include "core/speech/TrackPlayback.h"
-#include "core/speech/UtteranceError.h"
 
 namespace vl {
 
@@ -25,8 +24,9 @@ SpokenTrack spokenTrack(const SpeakingFace& face, const Utterance& utterance, co
     const std::shared_ptr<const SpeechErrorBasis> basis =
         face.errorBasis ? face.errorBasis
                         : std::make_shared<const SpeechErrorBasis>(*face.full, *face.reduced, face.weights);
-    const UtteranceError error = measureUtteranceError(*basis, full, reduced, o.fps);
-    const DisplacementError displacement = measureDisplacementError(*basis, full, reduced, o.fps, face.unit);
+    const SpeechErrors errors = measureSpeechErrors(*basis, full, reduced, o.fps, face.unit);
+    const UtteranceError& error = errors.utterance;
+    const DisplacementError& displacement = errors.displacement;
     SpeechTrackFile& track = spoken.file;
     track.metadata = {o.wav.empty() ? std::string() : projectRelativePath(o.out, o.wav).generic_string(),
                       utterance.duration(),

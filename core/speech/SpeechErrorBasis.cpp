@@ -174,6 +174,7 @@ SpeechErrorBasis::SpeechErrorBasis(const ReducedModel& full, const ReducedModel&
         buildTree();
         computeGram();
     }
+    transposeTree();
 }
 
 SpeechErrorBasis::Stored SpeechErrorBasis::stored() const {
@@ -248,6 +249,18 @@ void SpeechErrorBasis::buildTree() {
                 length = std::max(length, below[child * keys + a]);
             }
         lengths_.push_back(std::move(level));
+    }
+}
+
+void SpeechErrorBasis::transposeTree() {
+    const std::size_t keys = vectorCount();
+    byVector_.assign(lengths_.size(), {});
+    for (std::size_t level = 0; level < lengths_.size(); ++level) {
+        const std::size_t nodes = nodeCount(level), padded = paddedNodes(level);
+        byVector_[level].assign(keys * padded, 0.0);
+        for (std::size_t node = 0; node < nodes; ++node)
+            for (std::size_t a = 0; a < keys; ++a)
+                byVector_[level][a * padded + node] = lengths_[level][node * keys + a];
     }
 }
 

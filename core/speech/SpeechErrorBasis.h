@@ -76,6 +76,14 @@ class SpeechErrorBasis {
     const double* nodeLengths(std::size_t level, std::size_t node) const {
         return &lengths_[level][node * vectorCount()];
     }
+    // The same lengths per basis vector: length_a of the nodes of a level in order, padded with zeros
+    // to whole groups of kFanout (the children of one node), so a node's children's bounds vectorise.
+    const double* vectorLengths(std::size_t level, std::size_t a) const {
+        return &byVector_[level][a * paddedNodes(level)];
+    }
+    std::size_t paddedNodes(std::size_t level) const {
+        return (nodeCount(level) + kFanout - 1) / kFanout * kFanout;
+    }
 
   private:
     SpeechErrorBasis(const ReducedModel& full, const ReducedModel& reduced,
@@ -88,9 +96,11 @@ class SpeechErrorBasis {
     std::vector<std::vector<double>> x_, y_, z_;
     std::vector<std::size_t> fullIndex_, fullPartner_, reducedIndex_;
     std::vector<double> gram_;
-    std::vector<std::vector<double>> lengths_; // per level: node, basis vector
+    std::vector<std::vector<double>> lengths_;  // per level: node, basis vector
+    std::vector<std::vector<double>> byVector_; // per level: basis vector, node (padded)
     std::size_t nodeSpan(std::size_t level) const;
     void buildTree();
+    void transposeTree();
     void computeGram();
     void adopt(const Stored& stored);
 };

@@ -1,52 +1,15 @@
 #include "core/speech/UtteranceError.h"
 
 #include "core/common/Error.h"
+#include "core/speech/ErrorFrames.h"
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace vl {
 
 namespace {
-
-struct Term {
-    std::size_t index; // into the Gram matrix
-    double weight;
-};
-
-// Adds the blend of `face` at t with `sign`, one term per basis vector (SpeechErrorBasis.h).
-void addBlend(const FaceTrack& face, double t, const SpeechErrorBasis& basis, bool full, double sign,
-              std::vector<Term>& terms) {
-    runtime::KeyWeight blend[4];
-    const std::size_t count = face.curve().weightsAt(t, blend);
-    auto add = [&terms](std::size_t at, double weight) {
-        const auto same =
-            std::find_if(terms.begin(), terms.end(), [&](const Term& term) { return term.index == at; });
-        if (same != terms.end())
-            same->weight += weight;
-        else
-            terms.push_back({at, weight});
-    };
-    for (std::size_t j = 0; j < count; ++j) {
-        if (blend[j].key == runtime::kRestKey) continue;
-        const double weight = sign * double(blend[j].weight);
-        if (!full) {
-            add(basis.reducedIndex(blend[j].key), weight);
-            continue;
-        }
-        add(basis.fullIndex(blend[j].key), weight); // f_k = e_k + r_p(k) (SpeechErrorBasis.h)
-        if (const std::size_t partner = basis.fullPartner(blend[j].key);
-            partner != SpeechErrorBasis::kNoPartner)
-            add(basis.reducedIndex(partner), weight);
-    }
-}
-
-double quadraticForm(const SpeechErrorBasis& basis, const std::vector<Term>& terms) {
-    double sum = 0;
-    for (const Term& a : terms)
-        for (const Term& b : terms) sum += a.weight * b.weight * basis.gram(a.index, b.index);
-    return std::max(sum, 0.0); // rounding may make a zero distance slightly negative
-}
 
 // (1/T) * integral by the trapezoid rule over samples at `times`.
 double timeAverage(const std::vector<double>& values, const std::vector<double>& times) {
@@ -60,6 +23,32 @@ double timeAverage(const std::vector<double>& values, const std::vector<double>&
 
 } // namespace
 
+UtteranceErrorFrames::UtteranceErrorFrames(const SpeechErrorBasis& basis, const FrameBlends& frames,
+                                           double fps)
+    : basis_(basis), frames_(frames), motion_(frames.frameCount()), times_(frames.frameCount()) {
+    error_.fps = fps;
+    error_.frames.resize(frames.frameCount());
+}
+
+void UtteranceErrorFrames::add(std::size_t f) {
+    const double t = frames_.time(f);
+    times_[f] = t;
+    // Rounding may make a zero distance slightly negative.
+    motion_[f] = std::max(gramForm(basis_, frames_.motion()), 0.0);
+    error_.frames[f] = frames_.repeats() ? error_.frames[f - 1] : std::max(frames_.differenceForm(), 0.0);
+    if (error_.frames[f] > error_.max) {
+        error_.max = error_.frames[f];
+        error_.maxTime = t;
+    }
+}
+
+UtteranceError UtteranceErrorFrames::finish() {
+    error_.mean = timeAverage(error_.frames, times_);
+    error_.motion = timeAverage(motion_, times_);
+    error_.relative = error_.motion > 0 ? error_.mean / error_.motion : 0.0;
+    return std::move(error_);
+}
+
 UtteranceError measureUtteranceError(const FaceTrack& full, const FaceTrack& reduced,
                                      std::span<const double> vertexWeights, double fps) {
     if (!(fps > 0) || !std::isfinite(fps))
@@ -70,36 +59,13 @@ UtteranceError measureUtteranceError(const FaceTrack& full, const FaceTrack& red
 
 UtteranceError measureUtteranceError(const SpeechErrorBasis& basis, const FaceTrack& full,
                                      const FaceTrack& reduced, double fps) {
-    if (!(fps > 0) || !std::isfinite(fps))
-        throwInputError("utterance error", "frames per second must be > 0");
-    if (basis.fullKeys() != full.keyCount() || basis.reducedKeys() != reduced.keyCount() ||
-        basis.vertexCount() != full.model().neutral.positions.size())
-        throwInputError("utterance error", "the error basis was made for other faces");
-
-    const double duration = std::max(full.duration(), reduced.duration());
-    const auto frameCount = static_cast<std::size_t>(std::ceil(duration * fps - 1e-9)) + 1;
-    UtteranceError error;
-    error.fps = fps;
-    error.frames.resize(frameCount);
-    std::vector<double> motion(frameCount), times(frameCount);
-    std::vector<Term> terms;
-    for (std::size_t f = 0; f < frameCount; ++f) {
-        const double t = std::min(double(f) / fps, duration);
-        times[f] = t;
-        terms.clear();
-        addBlend(full, t, basis, true, 1.0, terms);
-        motion[f] = quadraticForm(basis, terms);
-        addBlend(reduced, t, basis, false, -1.0, terms);
-        error.frames[f] = quadraticForm(basis, terms);
-        if (error.frames[f] > error.max) {
-            error.max = error.frames[f];
-            error.maxTime = t;
-        }
+    FrameBlends frames(basis, full, reduced, fps, "utterance error");
+    UtteranceErrorFrames error(basis, frames, fps);
+    for (std::size_t f = 0; f < frames.frameCount(); ++f) {
+        frames.load(f);
+        error.add(f);
     }
-    error.mean = timeAverage(error.frames, times);
-    error.motion = timeAverage(motion, times);
-    error.relative = error.motion > 0 ? error.mean / error.motion : 0.0;
-    return error;
+    return error.finish();
 }
 
 } // namespace vl

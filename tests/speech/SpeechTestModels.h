@@ -64,6 +64,19 @@ inline std::vector<TimedPhoneme> timed(const std::vector<std::pair<std::string, 
     return phonemes;
 }
 
+// `count` phonemes of the speechModels map (P0..P(2 visemes - 1) and sil) with random durations
+// in [shortest, longest) seconds, for timed().
+inline std::vector<std::pair<std::string, double>>
+randomSpeech(int visemes, int count, std::mt19937& rng, double shortest = 0.02, double longest = 0.3) {
+    std::uniform_real_distribution<double> duration(shortest, longest);
+    std::vector<std::pair<std::string, double>> items;
+    for (int i = 0; i < count; ++i) {
+        const int p = static_cast<int>(rng() % (2 * visemes + 1));
+        items.emplace_back(p == 2 * visemes ? "sil" : "P" + std::to_string(p), duration(rng));
+    }
+    return items;
+}
+
 // A face as a device plays it: the model encoded as a runtime package and the track's keyframes
 // played by runtime::KeyframeAnimation.
 struct RuntimeFace {

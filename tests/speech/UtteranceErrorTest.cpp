@@ -26,16 +26,6 @@ double bruteForceError(const test::RuntimeFace& full, const test::RuntimeFace& r
     return sum;
 }
 
-std::vector<std::pair<std::string, double>> randomSpeech(int visemes, int count, std::mt19937& rng) {
-    std::uniform_real_distribution<double> duration(0.02, 0.3);
-    std::vector<std::pair<std::string, double>> items;
-    for (int i = 0; i < count; ++i) {
-        const int p = static_cast<int>(rng() % (2 * visemes + 1));
-        items.emplace_back(p == 2 * visemes ? "sil" : "P" + std::to_string(p), duration(rng));
-    }
-    return items;
-}
-
 } // namespace
 
 TEST(UtteranceError, GramEvaluationMatchesBruteForceForEveryInterpolation) {
@@ -44,7 +34,7 @@ TEST(UtteranceError, GramEvaluationMatchesBruteForceForEveryInterpolation) {
          {runtime::Interpolation::Linear, runtime::Interpolation::Cubic, runtime::Interpolation::Dominance}) {
         for (int trial = 0; trial < 4; ++trial) {
             const auto m = test::speechModels(5, {0, 1, 1, 2, 0}, 10 + trial);
-            const auto phonemes = test::timed(randomSpeech(5, 20, rng));
+            const auto phonemes = test::timed(test::randomSpeech(5, 20, rng));
             std::vector<double> weights(m.set.vertexCount());
             for (auto& w : weights) w = std::uniform_real_distribution<double>(0.0, 2.0)(rng);
             const PlaybackSettings settings{interpolation};
@@ -72,7 +62,7 @@ TEST(UtteranceError, GramEvaluationMatchesBruteForceForEveryInterpolation) {
 TEST(UtteranceError, NoReductionNoError) {
     std::mt19937 rng(3);
     const auto m = test::speechModels(4, {0, 1, 2, 3}, 5);
-    const auto phonemes = test::timed(randomSpeech(4, 15, rng));
+    const auto phonemes = test::timed(test::randomSpeech(4, 15, rng));
     const std::vector<double> weights(m.set.vertexCount(), 1.0);
     const FaceTrack full(m.full, phonemes, {}, "full"), same(m.reduced, phonemes, {}, "same");
     const UtteranceError error = measureUtteranceError(full, same, weights, 30.0);
@@ -103,7 +93,7 @@ TEST(FaceTrack, KeyWeightsAreTheRuntimeAnimation) {
     for (auto interpolation :
          {runtime::Interpolation::Linear, runtime::Interpolation::Cubic, runtime::Interpolation::Dominance}) {
         const auto m = test::speechModels(5, {0, 1, 1, 2, 0}, 30);
-        const auto phonemes = test::timed(randomSpeech(5, 25, rng));
+        const auto phonemes = test::timed(test::randomSpeech(5, 25, rng));
         for (const ReducedModel* model : {&m.full, &m.reduced}) {
             const FaceTrack track(*model, phonemes, {interpolation}, "face");
             const test::RuntimeFace device(track);

@@ -3,9 +3,11 @@
 #include "core/common/Error.h"
 #include "core/project/ReduceInputs.h"
 #include "core/reduce/ReducedModel.h"
+#include "core/speech/SpeechErrors.h"
 
 #include <algorithm>
 #include <sstream>
+#include <utility>
 
 namespace vl::ui {
 
@@ -139,12 +141,13 @@ const SpeechPlayback* SpeechService::playback(const Document& document, const Do
             playback_.reduced.emplace(trackOf(*inputs.reducedModel(), *clip_, "reduced set"));
             playback_.groups = static_cast<int>(grouping->groups.size());
             const std::vector<double>& weights = inputs.weights();
-            playback_.error =
-                measureUtteranceError(*playback_.full, *playback_.reduced, weights, kSpeechErrorFps);
+            const SpeechErrorBasis basis(playback_.full->model(), playback_.reduced->model(), weights);
             // glTF lengths are metres; mesh files carry no unit.
-            playback_.displacement = measureDisplacementError(
-                *playback_.full, *playback_.reduced, weights, kSpeechErrorFps,
-                document.avatar.isSet() ? millimetresFromMetres() : DisplacementUnit{});
+            SpeechErrors errors =
+                measureSpeechErrors(basis, *playback_.full, *playback_.reduced, kSpeechErrorFps,
+                                    document.avatar.isSet() ? millimetresFromMetres() : DisplacementUnit{});
+            playback_.error = std::move(errors.utterance);
+            playback_.displacement = std::move(errors.displacement);
         }
     } catch (const InputError& e) {
         playback_ = SpeechPlayback();
