@@ -5,6 +5,11 @@
 #include "core/io/JsonRead.h"
 #include "core/speech/JsonText.h"
 
+#include <array>
+#include <bit>
+#include <cstdint>
+#include <cstring>
+
 namespace vl {
 
 namespace {
@@ -23,11 +28,33 @@ class TrackWriter {
             out_ += literal;
             return *this;
         }
-        for (const char c : literal)
-            if (c != ' ' && c != '\n') out_ += c;
+        std::size_t from = 0; // the run of kept characters since the last dropped one
+        for (std::size_t i = 0; i < literal.size(); ++i)
+            if (literal[i] == ' ' || literal[i] == '\n') {
+                out_.append(literal.data() + from, i - from);
+                from = i + 1;
+            }
+        out_.append(literal.data() + from, literal.size() - from);
         return *this;
     }
-    void number(double value) { json_text::appendNumber(out_, value); }
+    // Numbers repeat within a track (a cue's end is the next cue's start; phonemes, cues and
+    // keyframes share their times), so each one's text is kept in a small table by its bits: a
+    // repeat is a copy, not a second shortest-digits search.
+    void number(double value) {
+        const auto bits = std::bit_cast<std::uint64_t>(value);
+        Memo& memo = memo_[(bits * 0x9E3779B97F4A7C15ull) >> (64 - kMemoBits)];
+        if (memo.size > 0 && memo.bits == bits) {
+            out_.append(memo.text, memo.size);
+            return;
+        }
+        const std::size_t before = out_.size();
+        json_text::appendNumber(out_, value);
+        const std::size_t size = out_.size() - before;
+        if (size > sizeof memo.text) return;
+        memo.bits = bits;
+        memo.size = static_cast<std::uint8_t>(size);
+        std::memcpy(memo.text, out_.data() + before, size);
+    }
     void integer(long long value) { out_ += std::to_string(value); }
     void string(std::string_view text) { json_text::appendString(out_, text); }
     // The literal before a value, then the value.
@@ -38,8 +65,15 @@ class TrackWriter {
     std::string take() { return std::move(out_); }
 
   private:
+    struct Memo {
+        std::uint64_t bits = 0;
+        std::uint8_t size = 0; // 0: empty
+        char text[31];
+    };
+    static constexpr int kMemoBits = 8;
     std::string out_;
     bool compact_;
+    std::array<Memo, std::size_t{1} << kMemoBits> memo_{};
 };
 
 // [{"start": s, "end": e, "value": v}, ...], one element per line.

@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <random>
+
 using namespace vl;
 
 namespace {
@@ -70,6 +73,27 @@ TEST(TrackJson, TheLineIsThePrettyTextCompacted) {
     track.error.reset();
     track.playback.reset();
     EXPECT_EQ(formatTrackJsonLine(track), compactJsonText(formatTrackJson(track)));
+}
+
+// The writer keeps each number's text by its bits (numbers repeat in a track): many error frames
+// (>= 0), from a pool that repeats and random ones that collide in its table, each read back as
+// itself.
+TEST(TrackJson, RepeatedAndCollidingNumbersEachReadBackAsThemselves) {
+    SpeechTrackFile track = sampleTrack();
+    std::mt19937_64 rng(5);
+    std::vector<double> pool = {0.0, 1.0, 0.1 / 3, 2.0 / 3, 1e-5, 2.5, 3e20, 60.0, 1e-300};
+    for (int i = 0; i < 50; ++i) pool.push_back(std::ldexp(double(rng() >> 11), -int(rng() % 80)));
+    std::vector<double>& frames = track.error->frames;
+    frames.clear();
+    for (int i = 0; i < 20000; ++i)
+        frames.push_back(i % 3 ? pool[rng() % pool.size()] : std::ldexp(double(rng() >> 11), -60));
+    for (const bool line : {false, true}) {
+        const std::string text = line ? formatTrackJsonLine(track) : formatTrackJson(track);
+        const SpeechTrackFile back = parseTrackJson(text, "t.json");
+        ASSERT_EQ(back.error->frames.size(), frames.size());
+        for (std::size_t i = 0; i < frames.size(); ++i) ASSERT_EQ(back.error->frames[i], frames[i]) << i;
+        EXPECT_EQ(back, track);
+    }
 }
 
 TEST(TrackJson, ReadsRhubarbOutput) {
