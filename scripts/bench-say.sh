@@ -41,11 +41,11 @@ PY
 # (`espeak-ng -v en-us -q --pho`, say's default voice: both speak the same phonemes; espeak-ng's
 # default voice, en, costs about 5 % less; goal <= 1.5x), with the speech cache warm
 # (core/project/SpeechCache.h) and without it (VISEMELAB_CACHE_DIR=off); and `say --stdin` per
-# sentence after the first (60 sentences minus 1: fewer and the difference drowns in the noise of a
-# shared machine; against espeak-ng reading the same lines from a
-# file: goal <= 1.2x). "espeak per line" is espeak-ng reading the same lines from its standard input,
-# one utterance a line as `say --stdin` speaks them (each line ends with its own pause, which costs
-# espeak-ng about 6 % more than running text: docs/performance.md); shown, not the goal's baseline.
+# sentence after the first (200 sentences minus 1: with fewer the difference drowns in the noise of
+# a shared machine; against espeak-ng reading the same lines from a file: goal <= 1.2x).
+# "espeak per line" is espeak-ng reading the same lines from its standard input without the final
+# pause (-z), one utterance a line: exactly the audio `say --stdin` synthesises (the same sample
+# count); shown, not the goal's baseline.
 # BEFORE=path/to/another/visemelab measures that build too, in the same loop (rows marked
 # "(before)"), for a before/after comparison under the same load.
 python3 - "$runs" "$cli" "$out" "${BEFORE:-}" <<'PY'
@@ -55,7 +55,7 @@ sys.path.insert(0, "scripts")
 from process_cpu import cpu_seconds
 
 sentence = "The quick brown fox jumps over the lazy dog again today"
-lines = ["Sentence %d: the quick brown fox jumps over the lazy dog" % i for i in range(60)]
+lines = ["Sentence %d: the quick brown fox jumps over the lazy dog" % i for i in range(200)]
 open(out + "/one.txt", "w").write(lines[0] + "\n")
 open(out + "/many.txt", "w").write("\n".join(lines) + "\n")
 project = ["--project", "assets/sample/sample.vlproj"]
@@ -80,8 +80,8 @@ for _ in range(runs):  # interleaved, so all see the same machine load
     many = cpu_seconds(espeak + ["-f", out + "/many.txt"])
     one = cpu_seconds(espeak + ["-f", out + "/one.txt"])
     r["espeak per sentence"].append((many - one) / (len(lines) - 1))
-    many = cpu_seconds(espeak, stdin=text[len(lines)])
-    one = cpu_seconds(espeak, stdin=text[1])
+    many = cpu_seconds(espeak + ["-z"], stdin=text[len(lines)])
+    one = cpu_seconds(espeak + ["-z"], stdin=text[1])
     r["espeak per line"].append((many - one) / (len(lines) - 1))
 for name, times in r.items():
     digits = 2 if "per" in name else 1  # a sentence's few milliseconds to 0.01 ms

@@ -304,11 +304,12 @@ std::optional<Entry> decodeEntry(std::string_view bytes, std::string_view key) {
     return entry;
 }
 
-std::optional<std::string> readIfPresent(const std::filesystem::path& file) {
+// Read without clearing the buffer first: an entry is about 2 MB, and it is all overwritten.
+std::optional<FileBytes> readIfPresent(const std::filesystem::path& file) {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(file, ec)) return std::nullopt;
     try {
-        return readFileToString(file);
+        return readFileBytes(file);
     } catch (const InputError&) {
         return std::nullopt;
     }
@@ -334,7 +335,7 @@ EntryFile entryFile(const std::filesystem::path& projectFile, const PhonemeVisem
 std::optional<ProjectSpeechFaces> readEntry(const std::filesystem::path& file, std::string_view key) {
     const auto bytes = readIfPresent(file);
     if (!bytes) return std::nullopt;
-    auto entry = decodeEntry(*bytes, key);
+    auto entry = decodeEntry(bytes->view(), key);
     if (!entry) return std::nullopt;
     for (const auto& referenced : entry->referenced) noteReferencedFile(referenced);
     entry->faces.fromCache = true;
