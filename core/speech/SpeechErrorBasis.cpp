@@ -135,10 +135,19 @@ SpeechErrorBasis::SpeechErrorBasis(const ReducedModel& full, const ReducedModel&
         totalWeight_ += vertexWeights[mouth_[i]];
     }
 
-    auto displacement = [&](const ReducedModel& model, const KeyMesh& key, int c) {
-        std::vector<double> d(padded, 0.0);
-        for (std::size_t i = 0; i < n; ++i)
-            d[i] = key.positions[mouth_[i]][c] - model.neutral.positions[mouth_[i]][c];
+    // A key's displacement at the mouth's vertices, its three coordinates in one pass over them.
+    struct Coordinates {
+        std::vector<double> x, y, z;
+    };
+    auto displacement = [&](const ReducedModel& model, const KeyMesh& key) {
+        Coordinates d{std::vector<double>(padded, 0.0), std::vector<double>(padded, 0.0),
+                      std::vector<double>(padded, 0.0)};
+        for (std::size_t i = 0; i < n; ++i) {
+            const Vec3 delta = key.positions[mouth_[i]] - model.neutral.positions[mouth_[i]];
+            d.x[i] = delta[0];
+            d.y[i] = delta[1];
+            d.z[i] = delta[2];
+        }
         return d;
     };
     // The reduced keys, then each full key as its deviation from its partner.
@@ -146,15 +155,15 @@ SpeechErrorBasis::SpeechErrorBasis(const ReducedModel& full, const ReducedModel&
     const std::size_t fullKeys = full.keys.size(), reducedKeys = reduced.keys.size();
     for (auto* vectors : {&x_, &y_, &z_}) vectors->reserve(fullKeys + reducedKeys);
     for (std::size_t g = 0; g < reducedKeys; ++g) {
-        x_.push_back(displacement(reduced, reduced.keys[g], 0));
-        y_.push_back(displacement(reduced, reduced.keys[g], 1));
-        z_.push_back(displacement(reduced, reduced.keys[g], 2));
+        Coordinates d = displacement(reduced, reduced.keys[g]);
+        x_.push_back(std::move(d.x));
+        y_.push_back(std::move(d.y));
+        z_.push_back(std::move(d.z));
         reducedIndex_.push_back(g);
     }
     for (std::size_t k = 0; k < fullKeys; ++k) {
-        std::vector<double> dx = displacement(full, full.keys[k], 0),
-                            dy = displacement(full, full.keys[k], 1),
-                            dz = displacement(full, full.keys[k], 2);
+        Coordinates d = displacement(full, full.keys[k]);
+        std::vector<double>&dx = d.x, &dy = d.y, &dz = d.z;
         const std::size_t partner = partners[k];
         if (partner != kNoPartner)
             for (std::size_t i = 0; i < n; ++i) {
