@@ -69,9 +69,10 @@ for b in builds:
     cpu_seconds(say[b], env=warm[b])  # fills the cache
 r = {"espeak": [], "espeak per sentence": [], "espeak per line": []}
 text = {n: "\n".join(lines[:n]).encode() + b"\n" for n in (1, len(lines))}
-for _ in range(runs):  # interleaved, so all see the same machine load
+for i in range(runs):  # interleaved, so all see the same machine load
     r["espeak"].append(cpu_seconds(espeak + [sentence]))
-    for b in builds:
+    # The builds take turns going first: the one right after espeak-ng ran slower in every run.
+    for b in (list(builds) if i % 2 == 0 else list(builds)[::-1]):
         r.setdefault("say cached" + b, []).append(cpu_seconds(say[b], env=warm[b]))
         r.setdefault("say uncached" + b, []).append(cpu_seconds(say[b], env=cold))
         many = cpu_seconds(serve[b], env=warm[b], stdin=text[len(lines)])
