@@ -72,12 +72,9 @@ class SpeechErrorBasis {
     std::size_t nodeCount(std::size_t level) const { return lengths_[level].size() / vectorCount(); }
     // Vertices [first, last) of the (padded) mouth under a node.
     std::size_t nodeFirst(std::size_t level, std::size_t node) const { return node * nodeSpan(level); }
-    // The largest |b_a(v)| over the node's vertices, for every a.
-    const double* nodeLengths(std::size_t level, std::size_t node) const {
-        return &lengths_[level][node * vectorCount()];
-    }
-    // The same lengths per basis vector: length_a of the nodes of a level in order, padded with zeros
-    // to whole groups of kFanout (the children of one node), so a node's children's bounds vectorise.
+    // The largest |b_a(v)| over each node's vertices, per basis vector: length_a of the nodes of a
+    // level in order, padded with zeros to whole groups of kFanout (the children of one node), so a
+    // node's children's bounds vectorise. (Stored keeps them node by node, as they are built.)
     const double* vectorLengths(std::size_t level, std::size_t a) const {
         return &byVector_[level][a * paddedNodes(level)];
     }
